@@ -1,0 +1,327 @@
+"""``App``: the scene stack, the schedule and the clock.
+
+One frame, in the order of DESIGN.md:
+
+1. **input**: window events (or test calls such as ``app.input.press``) are in
+   the :class:`~kge.input.Input` resource; ``on_key_*`` / ``on_mouse_*`` hooks run.
+2. **fixed loop**: the accumulator decides how many fixed steps run; each one
+   clears the per-step event lists and runs the FIXED stage (behaviours
+   ``on_fixed_update`` -> physics -> contact events), flushing queued changes
+   after every system.
+3. **update**: UPDATE then LATE stages with the scaled frame time.
+4. **render** (when a window or ``app.render()`` asks): poses are blended by
+   ``alpha`` = leftover accumulator / fixed_dt.
+
+Scene changes requested during a frame (``replace_scene`` from a script, say)
+take effect when the frame ends, never half-way through a step.
+
+Headless use, as in tests::
+
+    app = App(my_scene, headless=True)
+    app.step(60)          # 60 fixed steps, each followed by an update pass
+    app.world.query(...)  # the current scene's world
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable
+from typing import Any
+
+from kge.input import Input
+from kge.scene import Scene, SceneLike, Time, as_scene
+from kge.schedule import Stage, System
+from kge.timestep import FixedTimestep
+from kge.world import World
+
+SystemFactory = Callable[[], System]
+
+
+def has_display() -> bool:
+    """True when a window can be opened (a desktop, or X11/Wayland on Linux)."""
+    if os.environ.get("PYGLET_HEADLESS") or os.environ.get("KGE_HEADLESS"):
+        return False
+    if sys.platform.startswith("linux") or "bsd" in sys.platform:
+        return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+    return True
+
+
+def default_systems() -> list[SystemFactory]:
+    """The systems every scene world gets, in schedule order."""
+    from kge.systems.behaviour import (
+        FixedBehaviours,
+        InputBehaviours,
+        LateBehaviours,
+        UpdateBehaviours,
+    )
+
+    factories: list[SystemFactory] = [
+        InputBehaviours,
+        FixedBehaviours,
+        UpdateBehaviours,
+        LateBehaviours,
+    ]
+    try:
+        from kge.systems.physics import PhysicsSystem
+    except ImportError:  # physics is optional only while it is being built
+        pass
+    else:
+        factories.append(PhysicsSystem)
+    return factories
+
+
+class App:
+    """Runs scenes. ``App(scene, headless=True)`` needs no window."""
+
+    def __init__(
+        self,
+        scene: SceneLike | None = None,
+        *,
+        headless: bool | None = None,
+        size: tuple[int, int] = (960, 540),
+        title: str = "kge",
+        fixed_dt: float = 1.0 / 60.0,
+        max_steps_per_frame: int = 5,
+        max_frame_dt: float = 0.25,
+        time_scale: float = 1.0,
+        background: tuple[int, int, int] = (24, 26, 33),
+        systems: list[SystemFactory] | None = None,
+        **scene_kwargs: Any,
+    ) -> None:
+        self.headless = (not has_display()) if headless is None else bool(headless)
+        self.size = (int(size[0]), int(size[1]))
+        self.title = title
+        self.background = background
+        self.timestep = FixedTimestep(
+            fixed_dt=fixed_dt,
+            max_steps_per_frame=max_steps_per_frame,
+            max_frame_dt=max_frame_dt,
+            time_scale=time_scale,
+        )
+        self.input = Input()
+        self.system_factories: list[SystemFactory] = (
+            default_systems() if systems is None else list(systems)
+        )
+        self.extra_systems: list[SystemFactory] = []
+        self._stack: list[tuple[Scene, World]] = []
+        self._scene_ops: list[Callable[[], None]] = []
+        self._in_frame = False
+        self._running = False
+        self.frame_count = 0
+        if scene is not None:
+            self.push_scene(scene, **scene_kwargs)
+
+    # -- clock controls -------------------------------------------------------------
+    @property
+    def fixed_dt(self) -> float:
+        return self.timestep.fixed_dt
+
+    @property
+    def time_scale(self) -> float:
+        return self.timestep.time_scale
+
+    @time_scale.setter
+    def time_scale(self, value: float) -> None:
+        if not value >= 0:
+            raise ValueError(f"App.time_scale must be >= 0, got {value!r}")
+        self.timestep.time_scale = float(value)
+
+    @property
+    def paused(self) -> bool:
+        return self.timestep.paused
+
+    @paused.setter
+    def paused(self, value: bool) -> None:
+        self.timestep.paused = bool(value)
+
+    def single_step(self) -> None:
+        """While paused: run exactly one fixed step on the next frame."""
+        self.timestep.single_step()
+
+    @property
+    def alpha(self) -> float:
+        return self.timestep.alpha
+
+    # -- scenes -----------------------------------------------------------------------
+    @property
+    def world(self) -> World:
+        """The World of the scene on top of the stack."""
+        if not self._stack:
+            raise RuntimeError("the App has no scene: pass one to App(...) or push_scene()")
+        return self._stack[-1][1]
+
+    @property
+    def scene(self) -> Scene:
+        if not self._stack:
+            raise RuntimeError("the App has no scene")
+        return self._stack[-1][0]
+
+    @property
+    def scenes(self) -> list[Scene]:
+        return [s for s, _ in self._stack]
+
+    def push_scene(self, scene: SceneLike, **kwargs: Any) -> None:
+        """Put ``scene`` on top (the one below pauses); kwargs go to its setup."""
+        target = as_scene(scene)
+        self._schedule(lambda: self._push(target, kwargs))
+
+    def pop_scene(self) -> None:
+        """Close the top scene and resume the one below."""
+        self._schedule(self._pop)
+
+    def replace_scene(self, scene: SceneLike, **kwargs: Any) -> None:
+        """Close the top scene and start ``scene`` (with kwargs) in its place."""
+        target = as_scene(scene)
+
+        def op() -> None:
+            if self._stack:
+                self._close_top()
+            self._push(target, kwargs, resume_below=False)
+
+        self._schedule(op)
+
+    def _schedule(self, op: Callable[[], None]) -> None:
+        if self._in_frame:
+            self._scene_ops.append(op)
+        else:
+            op()
+
+    def _push(self, scene: Scene, kwargs: dict[str, Any], resume_below: bool = True) -> None:
+        if self._stack and resume_below:
+            below, below_world = self._stack[-1]
+            below.on_pause(below_world)
+        world = self._make_world(scene)
+        self._stack.append((scene, world))
+        self.input.reset()
+        scene.setup(world, **kwargs)
+        world.flush()
+
+    def _close_top(self) -> None:
+        scene, world = self._stack.pop()
+        scene.on_exit(world)
+        world.close()
+
+    def _pop(self) -> None:
+        if not self._stack:
+            raise RuntimeError("pop_scene() with no scene on the stack")
+        self._close_top()
+        self.input.reset()
+        if self._stack:
+            scene, world = self._stack[-1]
+            scene.on_resume(world)
+
+    def _make_world(self, scene: Scene) -> World:
+        world = World(name=scene.name or type(scene).__name__)
+        world.insert_resource(self.input)
+        world.insert_resource(Time(self.fixed_dt))
+        world.insert_resource(self)
+        for factory in self.system_factories + self.extra_systems:
+            world.add_system(factory())
+        return world
+
+    def add_system_to_all(self, factory: SystemFactory) -> None:
+        """Add a system to every current and future scene world (render, audio...)."""
+        self.extra_systems.append(factory)
+        for _, world in self._stack:
+            world.add_system(factory())
+
+    # -- running ------------------------------------------------------------------------
+    def step(self, n: int = 1) -> None:
+        """Advance ``n`` fixed steps, each followed by an update pass with dt = fixed_dt.
+
+        This ignores the accumulator and the pause flag: it is the test driver.
+        """
+        for _ in range(int(n)):
+            self._frame(steps=1, game_dt=self.fixed_dt)
+
+    def advance(self, frame_dt: float) -> int:
+        """Run one frame of ``frame_dt`` real seconds through the accumulator.
+
+        Returns the number of fixed steps that ran. A window calls this every tick.
+        """
+        steps = self.timestep.advance(frame_dt)
+        game_dt = self.timestep.frame_time(frame_dt)
+        if self.paused and steps:
+            game_dt = self.fixed_dt * steps  # a single step also advances update time
+        self._frame(steps, game_dt)
+        return steps
+
+    def _frame(self, steps: int, game_dt: float) -> None:
+        if not self._stack:
+            raise RuntimeError("the App has no scene to run")
+        world = self.world
+        time = world.resource(Time)
+        self._in_frame = True
+        try:
+            self.input.refresh_world_position()
+            world.schedule.run(Stage.INPUT, game_dt)
+            for _ in range(steps):
+                if self._scene_ops:
+                    break  # the scene is changing: do not step a world about to close
+                world.clear_events()
+                world.schedule.run(Stage.FIXED, self.fixed_dt)
+                time.step += 1
+                time.fixed_elapsed += self.fixed_dt
+            time.dt = game_dt
+            time.elapsed += game_dt
+            time.frame += 1
+            time.alpha = self.timestep.alpha
+            world.schedule.run(Stage.UPDATE, game_dt)
+            world.schedule.run(Stage.LATE, game_dt)
+        finally:
+            self._in_frame = False
+            self.input.end_frame()
+            self.frame_count += 1
+        ops, self._scene_ops = self._scene_ops, []
+        for op in ops:
+            op()
+
+    def render(self) -> None:
+        """Draw one frame of the current scene (offscreen when headless)."""
+        from kge.render.setup import ensure_renderer
+
+        ensure_renderer(self)
+        world = self.world
+        world.schedule.run(Stage.RENDER, self.timestep.alpha)
+
+    def screenshot(self, path: str | os.PathLike[str]) -> None:
+        """Render the current frame and save it as a PNG."""
+        from kge.render.setup import screenshot
+
+        screenshot(self, os.fspath(path))
+
+    def quit(self) -> None:
+        """Stop :meth:`run` after the current frame."""
+        self._running = False
+
+    def run(self, frames: int | None = None) -> None:
+        """Open a window and run until it closes (headless: until ``quit`` or ``frames``)."""
+        if not self.headless:
+            try:
+                from kge.render.window import run_windowed
+            except ImportError:
+                self.headless = True
+            else:
+                run_windowed(self, frames)
+                return
+        self._running = True
+        count = 0
+        while self._running and self._stack and (frames is None or count < frames):
+            self.advance(self.fixed_dt)
+            count += 1
+        self._running = False
+
+    def close(self) -> None:
+        """Close every scene (despawning all entities)."""
+        while self._stack:
+            self._close_top()
+
+
+def run(
+    scene: SceneLike, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
+) -> App:
+    """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
+    app = App(scene, title=title, size=size, **kwargs)
+    app.run()
+    return app

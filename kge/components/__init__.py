@@ -1,0 +1,7 @@
+"""Pure-data components. None of them holds a pymunk or pyglet object."""
+
+from kge.components.behaviour import Behaviour, Script
+from kge.components.name import Name
+from kge.components.transform import Transform
+
+__all__ = ["Behaviour", "Name", "Script", "Transform"]

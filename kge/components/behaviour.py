@@ -1,0 +1,166 @@
+"""``Behaviour``: attach a script object to an entity.
+
+Scripts are plain objects (usually subclasses of :class:`Script`) with any of the
+hooks below; kge calls the ones that exist. Each hook's parameters are checked
+when the Behaviour is created, so a typo such as ``def on_update(self)`` fails
+at once with a message naming the hook, not silently or mid-game.
+
+=====================  ================  =======================================
+hook                   arguments         when
+=====================  ================  =======================================
+on_start               ()                once, before the entity's first update
+on_fixed_update        (dt)              every fixed step, before physics
+on_update              (dt)              every frame
+on_late_update         (dt)              every frame, after all on_update
+on_destroy             ()                the entity is despawned / scene closes
+on_contact_begin/end   (event)           a collider of this entity touches
+on_sensor_begin/end    (event)           a sensor overlap starts/ends
+on_hit                 (event)           an impact above the hit threshold
+on_key_down/up         (key)             a key code from :mod:`kge.keys`
+on_mouse_down/up/move  (event)           a :class:`kge.input.MouseEvent`
+on_mouse_scroll        (event)
+=====================  ================  =======================================
+
+>>> class Spin(Script):
+...     def on_update(self, dt):
+...         self.get(Transform).angle += dt
+>>> b = Behaviour(Spin())
+>>> class Broken(Script):
+...     def on_update(self):
+...         pass
+>>> Behaviour(Broken())
+Traceback (most recent call last):
+...
+kge.errors.HookSignatureError: Broken.on_update(self) takes 0 arguments; kge calls on_update(dt)
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Generator
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, TypeVar
+
+from kge.components.transform import Transform
+from kge.coroutines import Coroutine
+from kge.errors import ComponentTypeError, HookSignatureError
+
+if TYPE_CHECKING:
+    from kge.world import World
+
+T = TypeVar("T")
+
+#: hook name -> (number of arguments after self, how kge calls it)
+HOOKS: dict[str, tuple[int, str]] = {
+    "on_start": (0, "on_start()"),
+    "on_fixed_update": (1, "on_fixed_update(dt)"),
+    "on_update": (1, "on_update(dt)"),
+    "on_late_update": (1, "on_late_update(dt)"),
+    "on_destroy": (0, "on_destroy()"),
+    "on_contact_begin": (1, "on_contact_begin(event)"),
+    "on_contact_end": (1, "on_contact_end(event)"),
+    "on_sensor_begin": (1, "on_sensor_begin(event)"),
+    "on_sensor_end": (1, "on_sensor_end(event)"),
+    "on_hit": (1, "on_hit(event)"),
+    "on_key_down": (1, "on_key_down(key)"),
+    "on_key_up": (1, "on_key_up(key)"),
+    "on_mouse_down": (1, "on_mouse_down(event)"),
+    "on_mouse_up": (1, "on_mouse_up(event)"),
+    "on_mouse_move": (1, "on_mouse_move(event)"),
+    "on_mouse_scroll": (1, "on_mouse_scroll(event)"),
+}
+
+_hook_cache: dict[type, tuple[str, ...]] = {}
+
+
+def _accepts(fn: Callable[..., Any], n: int) -> bool:
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):  # builtins without a signature: trust them
+        return True
+    try:
+        sig.bind(*([None] * n))
+    except TypeError:
+        return False
+    return True
+
+
+def script_hooks(script: object) -> tuple[str, ...]:
+    """The hook names ``script`` defines, after checking their signatures."""
+    cls = type(script)
+    cached = _hook_cache.get(cls)
+    if cached is not None:
+        return cached
+    found = []
+    for name, (nargs, call) in HOOKS.items():
+        fn = getattr(script, name, None)
+        if fn is None:
+            continue
+        if not callable(fn):
+            raise HookSignatureError(f"{cls.__name__}.{name} is not callable; kge calls {call}")
+        if not _accepts(fn, nargs):
+            try:
+                params = str(inspect.signature(getattr(cls, name)))
+            except (TypeError, ValueError, AttributeError):
+                params = "(...)"
+            raise HookSignatureError(
+                f"{cls.__name__}.{name}{params} takes {_count(fn)} arguments; kge calls {call}"
+            )
+        found.append(name)
+    result = tuple(found)
+    _hook_cache[cls] = result
+    return result
+
+
+def _count(fn: Callable[..., Any]) -> int:
+    try:
+        return len(inspect.signature(fn).parameters)
+    except (TypeError, ValueError):  # pragma: no cover
+        return -1
+
+
+class Script:
+    """Convenience base for behaviour scripts: entity, world and coroutine helpers.
+
+    ``self.entity`` and ``self.world`` are set when the Behaviour is attached.
+    """
+
+    entity: int = 0
+    world: World
+
+    def get(self, component_type: type[T]) -> T:
+        """This entity's component of ``component_type``."""
+        return self.world.get(self.entity, component_type)
+
+    @property
+    def transform(self) -> Transform:
+        return self.world.get(self.entity, Transform)
+
+    def start_coroutine(self, gen: Generator[Any, None, Any]) -> Coroutine:
+        """Run generator ``gen`` as a coroutine of this entity (see :mod:`kge.coroutines`)."""
+        co = Coroutine(self.entity, gen)
+        pending: list[Coroutine] = self.__dict__.setdefault("_kge_coroutines", [])
+        pending.append(co)
+        runner = self.__dict__.get("_kge_runner")
+        if runner is not None:
+            runner.adopt(self)
+        return co
+
+    def despawn(self) -> None:
+        """Despawn this script's entity (at the next flush)."""
+        self.world.despawn(self.entity)
+
+
+@dataclass(slots=True)
+class Behaviour:
+    """Attach ``script`` (an object with hooks, usually a :class:`Script`) to an entity."""
+
+    script: Any
+    hooks: tuple[str, ...] = field(init=False, repr=False, compare=False, default=())
+    started: bool = field(init=False, repr=False, compare=False, default=False)
+
+    def __post_init__(self) -> None:
+        if self.script is None or isinstance(self.script, type):
+            what = "None" if self.script is None else f"the class {self.script.__name__}"
+            raise ComponentTypeError(f"Behaviour.script must be a script instance, got {what}")
+        self.hooks = script_hooks(self.script)

@@ -1,0 +1,1 @@
+"""esper processors (systems) that ship with kge; see :mod:`kge.schedule` for the order."""

@@ -1,0 +1,451 @@
+"""The ECS world: entities, components, resources, events and deferred commands.
+
+kge stores entities and components in esper 3.9. esper keeps its state in module
+globals, one "world" at a time, so every :class:`World` owns a uniquely named
+esper world and switches to it before each operation. Several worlds can live at
+once (one per scene, one per test) without seeing each other.
+
+Structural changes (spawn, despawn, add, remove) follow one rule:
+
+* Inside a running schedule (systems, behaviours, event delivery) they are
+  *queued* and applied at the next flush point, in sorted entity order, so the
+  same script always produces the same world and no iteration is invalidated.
+  ``spawn`` still returns the new id at once, and ``get`` already sees the
+  queued components of that entity.
+* Outside a schedule (scene setup, test code between steps) spawn, add and
+  remove apply immediately. ``despawn`` is always deferred to the next flush
+  (``world.flush()`` or the next step) so that it never pulls an entity out
+  from under a loop; ``exists`` is False at once.
+* Inside a physics callback (pre-solve, contact filter) the world is *locked*
+  and any structural change raises :class:`~kge.errors.WorldLockedError`,
+  changing nothing, like Box2D's locked world.
+
+>>> from kge.components import Transform
+>>> w = World()
+>>> e = w.spawn(Transform(1.0, 2.0))
+>>> w.get(e, Transform).x
+1.0
+>>> w.despawn(e); w.exists(e)
+False
+>>> w.flush(); len(w)
+0
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections import defaultdict
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import Any, TypeVar, overload
+
+import esper
+
+from kge.errors import (
+    ComponentTypeError,
+    EntityNotFoundError,
+    MissingComponentError,
+    MissingResourceError,
+    WorldLockedError,
+)
+from kge.schedule import Schedule, System
+
+T = TypeVar("T")
+A = TypeVar("A")
+B = TypeVar("B")
+C = TypeVar("C")
+S = TypeVar("S", bound=System)
+
+Hook = Callable[[int, Any], None]
+Validator = Callable[[int | None, Any], None]
+
+_world_ids = itertools.count(1)
+
+
+def _check_component(component: object, entity: int | None = None) -> None:
+    if isinstance(component, type):
+        target = "" if entity is None else f"entity {entity}: "
+        raise ComponentTypeError(
+            f"{target}expected a component instance, got the class {component.__name__} "
+            f"(write {component.__name__}(...))"
+        )
+    if component is None or isinstance(component, (int, float, str, bytes, tuple, list, dict)):
+        target = "" if entity is None else f"entity {entity}: "
+        raise ComponentTypeError(
+            f"{target}expected a component instance, got {type(component).__name__} {component!r}"
+        )
+
+
+class World:
+    """One isolated ECS world. See the module docstring for the change rules."""
+
+    def __init__(self, name: str | None = None) -> None:
+        self.name = name or f"kge-world-{next(_world_ids)}"
+        self._esper_name = f"{self.name}#{id(self)}"
+        self._resources: dict[type, Any] = {}
+        self._events: dict[type, list[Any]] = defaultdict(list)
+        self._handlers: dict[str, list[Callable[..., Any]]] = defaultdict(list)
+        self._on_add: dict[type, list[Hook]] = defaultdict(list)
+        self._on_remove: dict[type, list[Hook]] = defaultdict(list)
+        self._validators: dict[type, list[Validator]] = defaultdict(list)
+        self._queue: list[tuple[int, int, str, Any]] = []  # (entity, seq, op, payload)
+        self._seq = itertools.count()
+        self._pending: dict[int, dict[type, Any]] = {}  # queued adds, visible to get()
+        self._dying: set[int] = set()  # despawned, awaiting flush
+        self._defer_depth = 0
+        self._lock_depth = 0
+        self._closed = False
+        self.schedule = Schedule(self)
+        self._use()
+
+    # -- esper world switching -------------------------------------------------
+    def _use(self) -> None:
+        if esper.current_world != self._esper_name:
+            esper.switch_world(self._esper_name)
+
+    def _db(self) -> dict[int, dict[type, Any]]:
+        """esper's entity table for this world (entity -> {type: component})."""
+        self._use()
+        db: dict[int, dict[type, Any]] = esper._entities
+        return db
+
+    # -- modes -------------------------------------------------------------------
+    @contextmanager
+    def deferred(self) -> Iterator[None]:
+        """Queue structural changes until the block ends (then flush them)."""
+        self._defer_depth += 1
+        try:
+            yield
+        finally:
+            self._defer_depth -= 1
+        if self._defer_depth == 0:
+            self.flush()
+
+    @contextmanager
+    def locked(self) -> Iterator[None]:
+        """Refuse structural changes inside the block (physics callbacks)."""
+        self._lock_depth += 1
+        try:
+            yield
+        finally:
+            self._lock_depth -= 1
+
+    @property
+    def is_locked(self) -> bool:
+        return self._lock_depth > 0
+
+    def _guard(self, op: str) -> None:
+        if self._lock_depth:
+            raise WorldLockedError(
+                f"world.{op}() inside a physics callback: the world is locked during the "
+                "step (as in Box2D). Queue the change from a Behaviour hook or read "
+                "PhysicsEvents after the step instead."
+            )
+        if self._closed:
+            raise WorldLockedError(f"world.{op}() on a closed world ({self.name})")
+
+    def _live(self, entity: int, op: str) -> None:
+        if isinstance(entity, bool) or not isinstance(entity, int):
+            raise ComponentTypeError(
+                f"world.{op}(): entity must be an int id, got {type(entity).__name__} {entity!r}"
+            )
+        if not self.exists(entity):
+            state = "was despawned" if entity in self._dying else "does not exist"
+            raise EntityNotFoundError(f"world.{op}(): entity {entity} {state}")
+
+    # -- structural changes ---------------------------------------------------------
+    def spawn(self, *components: Any) -> int:
+        """Create an entity with ``components`` and return its id at once."""
+        self._guard("spawn")
+        for c in components:
+            _check_component(c)
+        types = [type(c) for c in components]
+        if len(set(types)) != len(types):
+            dup = next(t for t in types if types.count(t) > 1)
+            raise ComponentTypeError(
+                f"world.spawn(): two {dup.__name__} components; an entity holds one per type"
+            )
+        for c in components:
+            self._validate(None, c)
+        self._use()
+        entity: int = esper.create_entity()
+        if self._defer_depth:
+            pend = self._pending.setdefault(entity, {})
+            for c in components:
+                pend[type(c)] = c
+                self._enqueue(entity, "add", c)
+        else:
+            for c in components:
+                self._apply_add(entity, c)
+        return entity
+
+    def add(self, entity: int, component: Any) -> None:
+        """Attach ``component`` (replacing one of the same type)."""
+        self._guard("add")
+        self._live(entity, "add")
+        _check_component(component, entity)
+        self._validate(entity, component)
+        if self._defer_depth:
+            self._pending.setdefault(entity, {})[type(component)] = component
+            self._enqueue(entity, "add", component)
+        else:
+            self._apply_add(entity, component)
+
+    def remove(self, entity: int, component_type: type[T]) -> T:
+        """Detach and return the component of ``component_type``."""
+        self._guard("remove")
+        self._live(entity, "remove")
+        comp = self.get(entity, component_type)
+        if self._defer_depth:
+            pend = self._pending.get(entity)
+            if pend is not None:
+                pend.pop(component_type, None)
+            self._enqueue(entity, "remove", component_type)
+        else:
+            self._apply_remove(entity, component_type)
+        return comp
+
+    def despawn(self, entity: int) -> None:
+        """Mark ``entity`` for removal at the next flush. ``exists`` is False at once."""
+        self._guard("despawn")
+        self._live(entity, "despawn")
+        self._dying.add(entity)
+        self._enqueue(entity, "despawn", None)
+
+    def _validate(self, entity: int | None, component: Any) -> None:
+        for check in self._validators.get(type(component), ()):
+            check(entity, component)
+
+    def _enqueue(self, entity: int, op: str, payload: Any) -> None:
+        self._queue.append((entity, next(self._seq), op, payload))
+
+    def flush(self) -> None:
+        """Apply queued changes now, in sorted entity order."""
+        self._guard("flush")
+        while self._queue:
+            queue, self._queue = self._queue, []
+            queue.sort(key=lambda item: (item[0], item[1]))
+            for entity, _, op, payload in queue:
+                if op == "add":
+                    if self._entity_known(entity):
+                        self._apply_add(entity, payload)
+                elif op == "remove":
+                    if self._entity_known(entity) and self._has_raw(entity, payload):
+                        self._apply_remove(entity, payload)
+                else:
+                    self._apply_despawn(entity)
+            self._pending.clear()
+
+    def _entity_known(self, entity: int) -> bool:
+        return entity in self._db()
+
+    def _has_raw(self, entity: int, component_type: type) -> bool:
+        return component_type in self._db().get(entity, {})
+
+    def _apply_add(self, entity: int, component: Any) -> None:
+        ctype = type(component)
+        old: Any = self._db()[entity].get(ctype)
+        if old is not None and old is not component:
+            for hook in self._on_remove.get(ctype, ()):
+                hook(entity, old)
+        self._use()
+        esper.add_component(entity, component)
+        if old is not component:
+            for hook in self._on_add.get(ctype, ()):
+                hook(entity, component)
+
+    def _apply_remove(self, entity: int, component_type: type) -> None:
+        self._use()
+        comp = esper.remove_component(entity, component_type)
+        for hook in self._on_remove.get(component_type, ()):
+            hook(entity, comp)
+
+    def _apply_despawn(self, entity: int) -> None:
+        self._use()
+        comps: dict[type, Any] | None = self._db().get(entity)
+        if comps is None:
+            self._dying.discard(entity)
+            return
+        for ctype, comp in list(comps.items()):
+            for hook in self._on_remove.get(ctype, ()):
+                hook(entity, comp)
+        if entity in self._db():
+            esper.delete_entity(entity, immediate=True)
+        self._dying.discard(entity)
+
+    # -- reading ---------------------------------------------------------------------
+    def exists(self, entity: int) -> bool:
+        """True for a spawned entity that has not been despawned."""
+        if entity in self._dying:
+            return False
+        return entity in self._db()
+
+    def get(self, entity: int, component_type: type[T]) -> T:
+        """The entity's component of ``component_type`` (queued adds included)."""
+        self._live(entity, "get")
+        comp: Any = self._db()[entity].get(component_type)
+        if comp is None:
+            pend = self._pending.get(entity)
+            if pend is not None:
+                comp = pend.get(component_type)
+        if comp is None:
+            raise MissingComponentError(
+                f"entity {entity} has no {component_type.__name__} component"
+            )
+        return comp
+
+    def try_get(self, entity: int, component_type: type[T]) -> T | None:
+        """Like :meth:`get`, but None when the entity or component is missing."""
+        if not self.exists(entity):
+            return None
+        comp: Any = self._db()[entity].get(component_type)
+        if comp is None and entity in self._pending:
+            comp = self._pending[entity].get(component_type)
+        return comp
+
+    def has(self, entity: int, component_type: type) -> bool:
+        return self.try_get(entity, component_type) is not None
+
+    def components(self, entity: int) -> tuple[Any, ...]:
+        """Every component of ``entity``."""
+        self._live(entity, "components")
+        self._use()
+        return tuple(esper.components_for_entity(entity))
+
+    @overload
+    def query(self, a: type[A], /) -> list[tuple[int, tuple[A]]]: ...
+    @overload
+    def query(self, a: type[A], b: type[B], /) -> list[tuple[int, tuple[A, B]]]: ...
+    @overload
+    def query(
+        self, a: type[A], b: type[B], c: type[C], /
+    ) -> list[tuple[int, tuple[A, B, C]]]: ...
+    @overload
+    def query(self, *types: type) -> list[tuple[int, tuple[Any, ...]]]: ...
+    def query(self, *types: type) -> list[tuple[int, tuple[Any, ...]]]:
+        """Entities having all ``types``, as ``[(entity, (comp_a, comp_b, ...)), ...]``.
+
+        The list is a snapshot: changing the world while iterating it is safe.
+        Despawned entities awaiting the flush are left out. Order is esper's
+        (deterministic for the same operations); sort by entity where it matters.
+        """
+        self._use()
+        result: list[tuple[int, tuple[Any, ...]]] = esper.get_components(*types)
+        if self._dying:
+            dying = self._dying
+            return [item for item in result if item[0] not in dying]
+        return list(result)
+
+    def entities(self) -> list[int]:
+        """Every live entity id, sorted."""
+        return sorted(e for e in self._db() if e not in self._dying)
+
+    def __len__(self) -> int:
+        return len(self.entities())
+
+    # -- hooks -----------------------------------------------------------------------
+    def on_add(self, component_type: type, hook: Hook) -> None:
+        """Call ``hook(entity, component)`` whenever a ``component_type`` is attached."""
+        self._on_add[component_type].append(hook)
+
+    def on_remove(self, component_type: type, hook: Hook) -> None:
+        """Call ``hook(entity, component)`` when one is detached (remove, replace, despawn)."""
+        self._on_remove[component_type].append(hook)
+
+    def validator(self, component_type: type, check: Validator) -> None:
+        """Run ``check(entity, component)`` before a ``component_type`` is spawned or added.
+
+        ``entity`` is None inside ``spawn`` (the id is not allocated yet). A check
+        raises to refuse the component; nothing has been changed at that point,
+        which is how "bad input leaves the world unchanged" is kept for rules
+        that need the world (a joint naming a missing body, say).
+        """
+        self._validators[component_type].append(check)
+
+    # -- resources -------------------------------------------------------------------
+    def insert_resource(self, resource: Any) -> Any:
+        """Store a singleton, keyed by its type; returns it."""
+        _check_component(resource)
+        self._resources[type(resource)] = resource
+        return resource
+
+    def resource(self, resource_type: type[T]) -> T:
+        """The singleton of ``resource_type`` (settings, physics, input, events...)."""
+        try:
+            return self._resources[resource_type]
+        except KeyError:
+            for value in self._resources.values():
+                if isinstance(value, resource_type):
+                    return value
+            raise MissingResourceError(
+                f"world {self.name!r} has no {resource_type.__name__} resource "
+                f"(insert one with world.insert_resource({resource_type.__name__}(...)))"
+            ) from None
+
+    def try_resource(self, resource_type: type[T]) -> T | None:
+        try:
+            return self.resource(resource_type)
+        except MissingResourceError:
+            return None
+
+    def has_resource(self, resource_type: type) -> bool:
+        return self.try_resource(resource_type) is not None
+
+    # -- per-step events ---------------------------------------------------------------
+    def emit(self, event: Any) -> None:
+        """Append ``event`` to this step's list for its type."""
+        self._events[type(event)].append(event)
+
+    def events(self, event_type: type[T]) -> list[T]:
+        """Events of ``event_type`` emitted since the current fixed step began."""
+        return self._events.get(event_type, [])
+
+    def clear_events(self) -> None:
+        """Start a new step's event lists (the App calls this before each fixed step)."""
+        for lst in self._events.values():
+            lst.clear()
+
+    def set_handler(self, name: str, handler: Callable[..., Any]) -> None:
+        """Register an esper event handler, keeping a strong reference (esper's are weak)."""
+        self._handlers[name].append(handler)
+        self._use()
+        esper.set_handler(name, handler)
+
+    def dispatch(self, name: str, *args: Any) -> None:
+        """Dispatch an esper event to this world's handlers."""
+        if name in self._handlers:
+            self._use()
+            esper.dispatch_event(name, *args)
+
+    # -- systems -----------------------------------------------------------------------
+    def add_system(self, system: System) -> System:
+        """Add ``system`` to this world's schedule (see :mod:`kge.schedule`)."""
+        self._use()
+        return self.schedule.add(system)
+
+    def get_system(self, system_type: type[S]) -> S | None:
+        return self.schedule.get(system_type)  # type: ignore[return-value]
+
+    @property
+    def closed(self) -> bool:
+        return self._closed
+
+    def close(self) -> None:
+        """Despawn everything (running on_remove hooks) and delete the esper world."""
+        if self._closed:
+            return
+        self.schedule.close()
+        self._lock_depth = 0
+        self._queue.clear()
+        self._pending.clear()
+        for entity in self.entities() + sorted(self._dying):
+            self._apply_despawn(entity)
+        self._closed = True
+        name = self._esper_name
+        if esper.current_world == name:
+            esper.switch_world("default")
+        if name in esper.list_worlds():
+            esper.delete_world(name)
+
+    def __repr__(self) -> str:
+        return f"World({self.name!r})"
