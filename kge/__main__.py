@@ -1,38 +1,67 @@
-"""Command line: ``python -m kge demo`` (the README's demo command) and friends."""
+"""Command line: ``kge demo`` (the README's demo command), ``kge testbed``, ``kge bench``.
+
+Also reachable as ``python -m kge ...``. Each command forwards its remaining
+arguments to its own parser (``kge testbed --help``).
+"""
 
 from __future__ import annotations
 
-import argparse
 import runpy
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def _demo(args: argparse.Namespace) -> int:
-    """The main job a user runs. Until the testbed exists: the hello-world example."""
+def _demo(args: list[str]) -> int:
+    """The main job a user runs: the testbed (a window, or the headless showcase)."""
     try:
         from kge.testbed.cli import main as testbed_main
-    except ImportError:
+    except ImportError:  # a trimmed install without the testbed: the hello-world example
         script = ROOT / "examples" / "hello_world.py"
         if not script.exists():
-            print("kge demo: examples/hello_world.py not found (run from a source checkout)")
+            print("kge demo: the testbed is not installed and examples/ is missing")
             return 1
-        sys.argv = [str(script), *args.rest]
+        sys.argv = [str(script), *args]
         runpy.run_path(str(script), run_name="__main__")
         return 0
-    return int(testbed_main(args.rest) or 0)
+    return int(testbed_main(args) or 0)
+
+
+def _testbed(args: list[str]) -> int:
+    from kge.testbed.cli import main as testbed_main
+
+    return int(testbed_main(args) or 0)
+
+
+def _bench(args: list[str]) -> int:
+    """Benchmarks live beside the package (benchmarks/), in a source checkout."""
+    if not (ROOT / "benchmarks" / "run.py").exists():
+        print("kge bench: benchmarks/ not found (run it from a source checkout)")
+        return 1
+    sys.path.insert(0, str(ROOT))
+    from benchmarks.run import main as bench_main
+
+    return int(bench_main(args) or 0)
+
+
+COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
+    "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
+    "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
+    "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
+}
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="kge", description="kge game engine tools")
-    sub = parser.add_subparsers(dest="command", required=True)
-    demo = sub.add_parser("demo", help="run the demo (a window, or a headless summary)")
-    demo.add_argument("rest", nargs=argparse.REMAINDER)
-    demo.set_defaults(func=_demo)
-    args = parser.parse_args(argv)
-    return int(args.func(args))
+    args = sys.argv[1:] if argv is None else list(argv)
+    if not args or args[0] not in COMMANDS:
+        print("usage: kge {demo,testbed,bench} [options]\n")
+        for name, (_, text) in COMMANDS.items():
+            print(f"  {name:<8} {text}")
+        return 0 if args[:1] in ([], ["-h"], ["--help"]) else 2
+    func, _ = COMMANDS[args[0]]
+    return func(args[1:])
 
 
 if __name__ == "__main__":

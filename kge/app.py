@@ -220,6 +220,23 @@ class App:
             world.add_system(factory())
         return world
 
+    def restore(self, data: bytes) -> None:
+        """Replace the current scene's world with one restored from ``world.snapshot()``.
+
+        The scene object stays; its ``setup`` is not run again. Systems are rebuilt,
+        and the physics system recreates every body from the restored components.
+        """
+        from kge.snapshot import restore_into
+
+        def op() -> None:
+            scene, old = self._stack.pop()
+            old.close()
+            world = self._make_world(scene)
+            self._stack.append((scene, world))
+            restore_into(world, data)
+
+        self._schedule(op)
+
     def add_system_to_all(self, factory: SystemFactory) -> None:
         """Add a system to every current and future scene world (render, audio...)."""
         self.extra_systems.append(factory)

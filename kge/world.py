@@ -417,6 +417,20 @@ class World:
             self._use()
             esper.dispatch_event(name, *args)
 
+    # -- snapshots ---------------------------------------------------------------------
+    def snapshot(self) -> bytes:
+        """Every entity, component and simulation resource, as bytes (see kge.snapshot)."""
+        from kge.snapshot import snapshot
+
+        return snapshot(self)
+
+    @classmethod
+    def restore(cls, data: bytes) -> World:
+        """A new World equal to the snapshotted one (no systems; App.restore adds them)."""
+        from kge.snapshot import restore
+
+        return restore(data)
+
     # -- systems -----------------------------------------------------------------------
     def add_system(self, system: System) -> System:
         """Add ``system`` to this world's schedule (see :mod:`kge.schedule`)."""

@@ -150,6 +150,13 @@ class Script:
         """Despawn this script's entity (at the next flush)."""
         self.world.despawn(self.entity)
 
+    def __getstate__(self) -> dict[str, Any]:
+        """Snapshots keep the script's own data, not its world or its running coroutines."""
+        state = dict(self.__dict__)
+        for key in ("world", "_kge_runner", "_kge_coroutines"):
+            state.pop(key, None)
+        return state
+
 
 @dataclass(slots=True)
 class Behaviour:

@@ -17,7 +17,7 @@ which skips both validation and dirty marking.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar
 
 from kge.errors import where
@@ -56,6 +56,15 @@ class Tracked:
         object.__setattr__(self, name, value)
         if binding is not None and name != "_binding":
             binding.dirty.add(binding.entity)
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickle the fields only: a binding belongs to one live system, not to the data."""
+        return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "_binding"}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        object.__setattr__(self, "_binding", None)
+        for name, value in state.items():
+            object.__setattr__(self, name, value)
 
 
 raw_set: Callable[[object, str, Any], None] = object.__setattr__
