@@ -6,7 +6,10 @@ modules; rendering and audio load them when an App first needs them.
 """
 
 from kge.app import App, has_display, run
+from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets, SoundData
+from kge.audio import Audio, SoundHandle
 from kge.components import Behaviour, Name, Script, Transform
+from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
@@ -29,12 +32,20 @@ __version__ = "0.1.0"
 
 __all__ = [
     "App",
+    "AssetDecodeError",
+    "AssetError",
+    "AssetNotFoundError",
+    "Assets",
+    "Audio",
+    "AudioListener",
+    "AudioSource",
     "Behaviour",
     "ComponentTypeError",
     "Coroutine",
     "EntityNotFoundError",
     "FixedTimestep",
     "HookSignatureError",
+    "ImpactSound",
     "Input",
     "Key",
     "KeyEvent",
@@ -47,6 +58,8 @@ __all__ = [
     "Name",
     "Scene",
     "Script",
+    "SoundData",
+    "SoundHandle",
     "Stage",
     "System",
     "Time",

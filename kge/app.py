@@ -68,6 +68,9 @@ def default_systems() -> list[SystemFactory]:
         pass
     else:
         factories.append(PhysicsSystem)
+    from kge.systems.audio import AudioSystem  # no pyglet import until the first sound
+
+    factories.append(AudioSystem)
     return factories
 
 
@@ -330,9 +333,12 @@ class App:
         self._running = False
 
     def close(self) -> None:
-        """Close every scene (despawning all entities)."""
+        """Close every scene (despawning all entities) and stop the App's music."""
         while self._stack:
             self._close_top()
+        from kge.systems.audio import close_app_audio
+
+        close_app_audio(self)
 
 
 def run(

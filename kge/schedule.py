@@ -71,7 +71,12 @@ class Schedule:
         stage = self._by_stage[system.stage]
         stage.append(system)
         stage.sort(key=lambda s: s.order)  # stable: ties keep insertion order
-        system.attach(self.world)
+        try:
+            system.attach(self.world)
+        except BaseException:
+            self._systems.remove(system)
+            stage.remove(system)
+            raise
         return system
 
     def get(self, system_type: type[System]) -> System | None:

@@ -50,7 +50,7 @@ class SnapshotError(KgeError, ValueError):
 
 
 def _state_resources(world: World) -> list[Any]:
-    kept = []
+    kept: list[Any] = []
     try:
         from kge.physics.settings import PhysicsSettings
     except ImportError:  # pragma: no cover

@@ -256,7 +256,7 @@ class World:
 
     def _apply_remove(self, entity: int, component_type: type) -> None:
         self._use()
-        comp = esper.remove_component(entity, component_type)
+        comp: Any = esper.remove_component(entity, component_type)
         for hook in self._on_remove.get(component_type, ()):
             hook(entity, comp)
 
@@ -406,16 +406,25 @@ class World:
             lst.clear()
 
     def set_handler(self, name: str, handler: Callable[..., Any]) -> None:
-        """Register an esper event handler, keeping a strong reference (esper's are weak)."""
+        """Call ``handler(*args)`` for every ``dispatch(name, ...)`` on this world.
+
+        The world keeps a strong reference (esper's own registry holds weak ones,
+        so a lambda registered there vanishes at once, and its clean-up callback
+        can fire against whichever esper world happens to be current).
+        """
         self._handlers[name].append(handler)
-        self._use()
-        esper.set_handler(name, handler)
+
+    def remove_handler(self, name: str, handler: Callable[..., Any]) -> None:
+        handlers = self._handlers.get(name, [])
+        if handler in handlers:
+            handlers.remove(handler)
 
     def dispatch(self, name: str, *args: Any) -> None:
-        """Dispatch an esper event to this world's handlers."""
-        if name in self._handlers:
-            self._use()
-            esper.dispatch_event(name, *args)
+        """Send an event to this world's handlers, then to esper's for this world."""
+        for handler in list(self._handlers.get(name, ())):
+            handler(*args)
+        self._use()
+        esper.dispatch_event(name, *args)
 
     # -- snapshots ---------------------------------------------------------------------
     def snapshot(self) -> bytes:

@@ -1,0 +1,168 @@
+"""Sound as data: what an entity plays, what it plays when hit, and who listens.
+
+* :class:`AudioSource` — a sound attached to an entity. ``play_on_start`` plays
+  it once when the entity appears; it stops when the entity is despawned or its
+  scene closes. ``positional=True`` pans it left/right and fades it with
+  distance from the listener (see :mod:`kge.audio.spatial`).
+* :class:`ImpactSound` — plays when one of the entity's colliders begins a
+  contact faster than ``min_speed`` (the approach speed along the normal, as in
+  the Box2D manual's pre-solve example), louder the faster the hit.
+* :class:`AudioListener` — marks the entity whose Transform is the "ears".
+  Without one, the first Camera is the listener, else the world origin.
+
+``sound`` is an asset name (resolved by the world's asset store), a path, or a
+:class:`~kge.assets.SoundData` made in code; never a pyglet object, so scenes
+stay headless and copyable. Fields are validated on every assignment, and a
+playing source follows changes to ``volume``, ``pitch`` and ``loop``.
+
+>>> AudioSource("hit.wav", volume=0.5).volume
+0.5
+>>> AudioSource("hit.wav", volume=2)
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: AudioSource.volume must be in [0.0, 1.0], got 2.0
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from kge.assets.synth import SoundData, SoundRef
+from kge.components.tracked import Check, Tracked
+from kge.errors import ComponentTypeError, ValidationError
+from kge.validate import boolean, in_range, non_negative, positive
+
+
+def sound_ref(value: Any, owner: str, field: str) -> SoundRef:
+    """An asset name, a path or generated :class:`SoundData` (no pyglet objects)."""
+    if isinstance(value, SoundData):
+        return value
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if isinstance(value, str):
+        if not value.strip():
+            raise ValidationError(f"{owner}.{field} must name a sound file, got {value!r}")
+        return value
+    raise ComponentTypeError(
+        f"{owner}.{field} must be an asset name, a path or kge.assets.SoundData, got "
+        f"{type(value).__name__} (components hold data, never pyglet objects)"
+    )
+
+
+def _volume(value: Any, owner: str, field: str) -> float:
+    return in_range(value, 0.0, 1.0, owner, field)
+
+
+def _pitch(value: Any, owner: str, field: str) -> float:
+    v = positive(value, owner, field)
+    if v > 8.0:
+        raise ValidationError(f"{owner}.{field} must be in (0, 8], got {v!r}")
+    return v
+
+
+def _distance(value: Any, owner: str, field: str) -> float:
+    return positive(value, owner, field)
+
+
+@dataclass(slots=True)
+class AudioSource(Tracked):
+    """A sound an entity plays. Distances are metres from the listener.
+
+    Positional sources are at full volume within ``min_distance``, silent beyond
+    ``max_distance`` and fade linearly between. ``streaming`` decodes while
+    playing (long music files) instead of decoding the whole file up front.
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "sound": sound_ref,
+        "volume": _volume,
+        "pitch": _pitch,
+        "loop": boolean,
+        "play_on_start": boolean,
+        "positional": boolean,
+        "min_distance": _distance,
+        "max_distance": _distance,
+        "streaming": boolean,
+    }
+
+    sound: SoundRef
+    volume: float = 1.0
+    pitch: float = 1.0
+    loop: bool = False
+    play_on_start: bool = False
+    positional: bool = False
+    min_distance: float = 1.0
+    max_distance: float = 30.0
+    streaming: bool = False
+
+    def __post_init__(self) -> None:
+        if self.min_distance >= self.max_distance:
+            raise ValidationError(
+                f"AudioSource.max_distance ({self.max_distance}) must be greater than "
+                f"min_distance ({self.min_distance})"
+            )
+
+
+@dataclass(slots=True)
+class ImpactSound(Tracked):
+    """Play ``sound`` when this entity's collider hits something hard enough.
+
+    A contact qualifies when its approach speed (m/s, along the normal, at first
+    touch) is at least ``min_speed``. The volume is ``volume * min(1, speed /
+    max_speed)``: a hit at ``max_speed`` or faster plays at full ``volume``.
+    ``cooldown`` (seconds of game time) keeps a rattling contact from replaying
+    the sound at every bounce; 0 plays every qualifying hit.
+
+    >>> ImpactSound("thud.wav", min_speed=1.0, max_speed=8.0).gain(4.0)
+    0.5
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "sound": sound_ref,
+        "min_speed": non_negative,
+        "max_speed": positive,
+        "volume": _volume,
+        "pitch": _pitch,
+        "positional": boolean,
+        "cooldown": non_negative,
+    }
+
+    sound: SoundRef
+    min_speed: float = 1.0
+    max_speed: float = 10.0
+    volume: float = 1.0
+    pitch: float = 1.0
+    positional: bool = False
+    cooldown: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.max_speed < self.min_speed:
+            raise ValidationError(
+                f"ImpactSound.max_speed ({self.max_speed}) must be >= min_speed ({self.min_speed})"
+            )
+
+    def gain(self, speed: float) -> float:
+        """The volume a hit at ``speed`` plays at (0 below ``min_speed``)."""
+        if speed < self.min_speed:
+            return 0.0
+        return self.volume * min(1.0, speed / self.max_speed)
+
+
+@dataclass(slots=True)
+class AudioListener(Tracked):
+    """Marks the entity (with a Transform) that hears positional sounds.
+
+    ``pan_width`` is the horizontal distance (m) from the listener at which a
+    sound is panned fully to one side; None takes half the camera's view width
+    when a camera is known, else 10 m.
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {}
+
+    pan_width: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.pan_width is not None:
+            self.pan_width = positive(self.pan_width, "AudioListener", "pan_width")
