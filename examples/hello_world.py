@@ -11,8 +11,7 @@ Run it: ``python examples/hello_world.py`` (or ``make demo`` before the testbed)
 from __future__ import annotations
 
 import kge
-from kge import App, Name, Transform, World
-from kge.components import BodyType, Box, Collider, RigidBody
+from kge import App, BodyType, Box, Collider, Name, RigidBody, Transform, World
 
 
 def hello_world(world: World) -> None:

@@ -69,8 +69,9 @@ def default_systems() -> list[SystemFactory]:
     else:
         factories.append(PhysicsSystem)
     from kge.systems.audio import AudioSystem  # no pyglet import until the first sound
+    from kge.systems.render import CameraFollow  # camera follow + mouse_world, headless too
 
-    factories.append(AudioSystem)
+    factories += [AudioSystem, CameraFollow]
     return factories
 
 
@@ -103,6 +104,7 @@ class App:
             time_scale=time_scale,
         )
         self.input = Input()
+        self.input.screen_to_world = self.screen_to_world
         self.system_factories: list[SystemFactory] = (
             default_systems() if systems is None else list(systems)
         )
@@ -145,6 +147,26 @@ class App:
     @property
     def alpha(self) -> float:
         return self.timestep.alpha
+
+    def screen_to_world(self, point: tuple[float, float]) -> tuple[float, float]:
+        """Window pixels (origin bottom-left) to world metres through the active camera.
+
+        Live: it always uses the current scene's camera and the current window size,
+        so mouse positions are right after a scene change or a resize, headless too.
+        """
+        from kge.components.camera import Camera
+        from kge.systems.render import active_camera
+
+        cam = (active_camera(self.world) if self._stack else None) or Camera()
+        return cam.screen_to_world(point, self.size)
+
+    def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
+        """World metres to window pixels through the active camera (the inverse)."""
+        from kge.components.camera import Camera
+        from kge.systems.render import active_camera
+
+        cam = (active_camera(self.world) if self._stack else None) or Camera()
+        return cam.world_to_screen(point, self.size)
 
     # -- scenes -----------------------------------------------------------------------
     @property

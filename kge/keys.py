@@ -9,7 +9,7 @@ from __future__ import annotations
 
 
 class Key:
-    """Keyboard key codes (``Key.A``, ``Key.LEFT``, ``Key.SPACE``...)."""
+    """Keyboard key codes (``Key.A``, ``Key.LEFT``, ``Key.SPACE``, ``Key._1``...)."""
 
     SPACE = 32
     EXCLAMATION = 33
@@ -28,6 +28,16 @@ class Key:
     MINUS = 45
     PERIOD = 46
     SLASH = 47
+    _0 = 48
+    _1 = 49
+    _2 = 50
+    _3 = 51
+    _4 = 52
+    _5 = 53
+    _6 = 54
+    _7 = 55
+    _8 = 56
+    _9 = 57
     COLON = 58
     SEMICOLON = 59
     LESS = 60
@@ -216,5 +226,5 @@ def key_name(code: int) -> str:
 
 _NAMES: dict[int, str] = {}
 for _n, _v in vars(Key).items():
-    if _n.isupper():
+    if not _n.startswith("__"):
         _NAMES.setdefault(_v, _n)

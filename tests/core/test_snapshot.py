@@ -60,7 +60,7 @@ def test_app_restore_continues_scripts(tmp_path) -> None:
     save(app.world, path)
     app.step(5)
     app.restore(load(path))
-    (e, (beh,)), = app.world.query(Behaviour)
+    ((_, (beh,)),) = app.world.query(Behaviour)
     assert beh.script.ticks == 10
     app.step(3)
     assert beh.script.ticks == 13

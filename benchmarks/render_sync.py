@@ -1,0 +1,146 @@
+"""Render sync cost per sprite: kge's bulk numpy path beside pyglet's ``Sprite.update``.
+
+What is timed, per frame, for N moving sprites (same texture, one batch,
+headless EGL), all in the same run and interleaved so background load hits
+every variant alike; the report gives medians over the repetitions:
+
+* ``bulk_write``: kge's :class:`~kge.render.bulk.BulkPoser` writing N poses
+  (translation, rotation, culling scale) into the batch's vertex buffers; this
+  is the part that replaces one Python call per sprite;
+* ``blend``: reading N ``Transform`` components and blending previous/current
+  poses by alpha (the Python side that remains per entity);
+* ``kge_sync``: both together, i.e. everything kge does per frame to move N
+  sprites before the draw call;
+* ``frame``: a whole ``app.render()`` (sync, GL upload and llvmpipe drawing);
+* ``record``: the pose history update run once per *fixed step* (not per frame);
+* ``sprite_update``: ``pyglet.sprite.Sprite.update(x=, y=, rotation=)`` for N
+  sprites, the per-sprite Python path kge avoids;
+* ``sprite_props``: ``sprite.position = ...; sprite.rotation = ...``, pyglet
+  2.1's recommended setters.
+
+Run ``python benchmarks/render_sync.py`` (add ``--sizes 1000 5000``) for the
+table; :func:`measure` with a small N is what the test suite calls.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import sys
+import time
+from typing import Any
+
+os.environ.setdefault("PYGLET_HEADLESS", "1")
+
+if __package__ in (None, ""):  # run as a script: make the repository importable
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+import numpy as np
+
+VARIANTS = ("bulk_write", "blend", "kge_sync", "frame", "record", "sprite_update", "sprite_props")
+
+
+def _build(n: int) -> tuple[Any, Any, list[Any], list[Any]]:
+    import pyglet
+
+    from kge import App, Transform
+    from kge.components.camera import Camera
+    from kge.components.sprite import Sprite
+    from kge.render.images import solid
+    from kge.systems.render import RenderSystem
+
+    img = solid(8, 8, (255, 200, 0))
+    rng = np.random.default_rng(1)
+    xs = rng.uniform(-7.0, 7.0, n)
+    ys = rng.uniform(-4.0, 4.0, n)
+
+    def scene(world: Any) -> None:
+        world.insert_resource(Camera(pixels_per_meter=64))
+        for x, y in zip(xs, ys, strict=True):
+            world.spawn(Transform(float(x), float(y)), Sprite(img, size=(0.125, 0.125)))
+
+    app = App(scene, headless=True, size=(960, 540))
+    app.render()
+    view = app.world.get_system(RenderSystem).view
+    transforms = [t for _, (t,) in app.world.query(Transform)]
+    batch = pyglet.graphics.Batch()
+    tex = pyglet.image.ImageData(8, 8, "RGBA", bytes((255, 200, 0, 255)) * 64).get_texture()
+    plain = [
+        pyglet.sprite.Sprite(tex, float(x) * 64, float(y) * 64, batch=batch)
+        for x, y in zip(xs, ys, strict=True)
+    ]
+    return app, view, transforms, plain
+
+
+def measure(n: int, repeats: int = 7) -> dict[str, float]:
+    """Median microseconds per sprite for each variant, measured in one run."""
+    app, view, transforms, plain = _build(n)
+    samples: dict[str, list[float]] = {v: [] for v in VARIANTS}
+    viewport = (-7.5, -4.2, 7.5, 4.2)
+    rng = np.random.default_rng(2)
+
+    def move() -> None:
+        """What a physics step does: every Transform changes, then poses are recorded."""
+        jitter = rng.uniform(-0.01, 0.01, (len(transforms), 2))
+        for t, (dx, dy) in zip(transforms, jitter, strict=True):
+            t.x += float(dx)
+            t.y += float(dy)
+            t.angle += 0.01
+        t0 = time.perf_counter()
+        view.poses.record()
+        samples["record"].append(time.perf_counter() - t0)
+
+    for rep in range(repeats):
+        move()
+        t0 = time.perf_counter()
+        poses = view.poses.blend(0.5)
+        samples["blend"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        view.sprites.poser.write(poses, viewport)
+        samples["bulk_write"].append(time.perf_counter() - t0)
+
+        move()
+        t0 = time.perf_counter()
+        poses = view.poses.blend(0.5)
+        view.sprites.poser.write(poses, viewport)
+        samples["kge_sync"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        app.render()
+        samples["frame"].append(time.perf_counter() - t0)
+
+        a = 0.01 * rep
+        t0 = time.perf_counter()
+        for s in plain:
+            s.update(x=s._x + 0.1, y=s._y, rotation=a)
+        samples["sprite_update"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        for s in plain:
+            s.position = (s._x + 0.1, s._y, 0.0)
+            s.rotation = a
+        samples["sprite_props"].append(time.perf_counter() - t0)
+    for s in plain:
+        s.delete()
+    app.close()
+    return {k: statistics.median(v) / n * 1e6 for k, v in samples.items()}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 5000, 10000])
+    parser.add_argument("--repeats", type=int, default=9)
+    args = parser.parse_args(argv)
+    print("render sync, microseconds per sprite (median of", args.repeats, "repetitions)")
+    print(f"{'sprites':>8} " + " ".join(f"{v:>13}" for v in VARIANTS) + "  update/bulk")
+    for n in args.sizes:
+        r = measure(n, args.repeats)
+        ratio = r["sprite_update"] / r["bulk_write"] if r["bulk_write"] else float("nan")
+        print(f"{n:>8} " + " ".join(f"{r[v]:>13.3f}" for v in VARIANTS) + f"  {ratio:>10.1f}x")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

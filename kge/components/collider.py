@@ -1,0 +1,91 @@
+"""``Collider``: one shape with its material and filter (Box2D's fixture).
+
+One collider per entity. ``body=None`` attaches it to the RigidBody of the same
+entity, or, when the entity has none, to an implicit static body placed by the
+entity's Transform (ground, walls). ``body=e`` attaches it to entity ``e``'s
+body in that body's local frame (compound bodies: several collider entities
+on one body).
+
+Material rules are Box2D's: friction mixes as sqrt(a*b), restitution as
+max(a, b) with no bounce at approach speeds of 1 m/s or less; density gives the
+body its mass (sensors count, edges and chains are massless).
+
+``hit_threshold`` (m/s) turns on :class:`~kge.physics.events.Hit` events for
+impacts faster than it. ``contact_hooks=True`` lets the ``Physics`` resource's
+``on_pre_solve`` / ``on_post_solve`` callbacks see this collider's contacts;
+it is opt-in because a Python call per contact per step is the most expensive
+thing a physics scene can do.
+
+>>> from kge.components.shapes import Circle
+>>> c = Collider(Circle(0.5), density=2.0)
+>>> c.friction
+0.2
+>>> c.density = -1
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: Collider.density must be >= 0, got -1.0
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, cast
+
+from kge.components.filter import Filter
+from kge.components.shapes import SHAPE_TYPES, Shape
+from kge.components.tracked import Check, Tracked
+from kge.errors import ComponentTypeError
+from kge.validate import boolean, non_negative
+
+
+def _shape(value: Any, owner: str, field: str) -> Shape:
+    if not isinstance(value, SHAPE_TYPES):
+        names = ", ".join(t.__name__ for t in SHAPE_TYPES)
+        raise ComponentTypeError(f"{owner}.{field} must be one of {names}, got {value!r}")
+    return cast(Shape, value)
+
+
+def _filter(value: Any, owner: str, field: str) -> Filter:
+    if not isinstance(value, Filter):
+        raise ComponentTypeError(f"{owner}.{field} must be a Filter, got {value!r}")
+    return value
+
+
+def _entity_ref(value: Any, owner: str, field: str) -> int | None:
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        raise ComponentTypeError(f"{owner}.{field} must be an entity id or None, got {value!r}")
+    return value
+
+
+def _optional_speed(value: Any, owner: str, field: str) -> float | None:
+    return None if value is None else non_negative(value, owner, field)
+
+
+@dataclass(slots=True)
+class Collider(Tracked):
+    """A shape plus density, friction, restitution, filter and sensor flag."""
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "shape": _shape,
+        "density": non_negative,
+        "friction": non_negative,
+        "restitution": non_negative,
+        "filter": _filter,
+        "sensor": boolean,
+        "body": _entity_ref,
+        "hit_threshold": _optional_speed,
+        "contact_hooks": boolean,
+    }
+
+    shape: Shape
+    density: float = 1.0
+    friction: float = 0.2
+    restitution: float = 0.0
+    filter: Filter = field(default_factory=Filter)
+    sensor: bool = False
+    body: int | None = None
+    user_data: Any = None
+    hit_threshold: float | None = None
+    contact_hooks: bool = False

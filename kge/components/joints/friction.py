@@ -1,0 +1,40 @@
+"""``FrictionJoint``: top-down friction that slows relative motion with bounded force.
+
+Use it between a body and the ground in a top-down game (gravity 0): the body
+slows down and stops as if sliding on a floor, with at most ``max_force`` (N) and
+``max_torque`` (N·m).
+
+>>> FrictionJoint(None, 3, max_force=10.0, max_torque=0.5).max_torque
+0.5
+"""
+
+from __future__ import annotations
+
+from dataclasses import KW_ONLY, dataclass
+from typing import ClassVar
+
+from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.tracked import Check
+from kge.validate import non_negative, vec2
+
+
+@dataclass(slots=True)
+class FrictionJoint(Joint):
+    """Friction of ``body_b`` against ``body_a`` at ``anchor`` (or the local anchors)."""
+
+    _checks: ClassVar[dict[str, Check]] = checks(
+        anchor=optional(vec2),
+        local_anchor_a=vec2,
+        local_anchor_b=vec2,
+        max_force=non_negative,
+        max_torque=non_negative,
+    )
+
+    body_a: int | None
+    body_b: int | None
+    _: KW_ONLY
+    anchor: Vec2 | None = None
+    local_anchor_a: Vec2 = (0.0, 0.0)
+    local_anchor_b: Vec2 = (0.0, 0.0)
+    max_force: float = 0.0
+    max_torque: float = 0.0

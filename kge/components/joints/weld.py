@@ -1,0 +1,41 @@
+"""``WeldJoint``: glue two bodies together, rigidly or with a soft angular spring.
+
+``frequency_hz`` 0 is rigid; above 0 the relative angle springs around
+``reference_angle`` (a flexible beam, a wobbly sign).
+
+>>> WeldJoint(1, 2, anchor=(1.0, 0.0), frequency_hz=5.0, damping_ratio=0.7).frequency_hz
+5.0
+"""
+
+from __future__ import annotations
+
+from dataclasses import KW_ONLY, dataclass
+from typing import ClassVar
+
+from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.tracked import Check
+from kge.validate import finite, non_negative, vec2
+
+
+@dataclass(slots=True)
+class WeldJoint(Joint):
+    """Weld ``body_b`` to ``body_a`` at ``anchor`` (or the local anchors)."""
+
+    _checks: ClassVar[dict[str, Check]] = checks(
+        anchor=optional(vec2),
+        local_anchor_a=vec2,
+        local_anchor_b=vec2,
+        reference_angle=optional(finite),
+        frequency_hz=non_negative,
+        damping_ratio=non_negative,
+    )
+
+    body_a: int | None
+    body_b: int | None
+    _: KW_ONLY
+    anchor: Vec2 | None = None
+    local_anchor_a: Vec2 = (0.0, 0.0)
+    local_anchor_b: Vec2 = (0.0, 0.0)
+    reference_angle: float | None = None
+    frequency_hz: float = 0.0
+    damping_ratio: float = 0.0

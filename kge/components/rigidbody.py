@@ -1,0 +1,91 @@
+"""``RigidBody``: makes an entity's :class:`Transform` move under physics.
+
+The fields are Box2D's ``b2BodyDef`` in snake_case. ``velocity``,
+``angular_velocity`` and ``awake`` are two-way: the physics system writes them
+after every step, and a write from user code is applied before the next step
+(a velocity write wakes the body, as ``SetLinearVelocity`` does).
+
+``mass=None`` means "from the colliders' densities"; a number overrides it
+(Box2D's ``SetMassData``, keeping the centre and scaling the inertia) until it
+is set back to None (``ResetMassData``).
+
+>>> rb = RigidBody(type=BodyType.KINEMATIC, velocity=(1, 0))
+>>> rb.velocity
+(1.0, 0.0)
+>>> rb.linear_damping = -1
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: RigidBody.linear_damping must be >= 0, got -1.0
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from typing import Any, ClassVar
+
+from kge.components.tracked import Check, Tracked
+from kge.errors import ComponentTypeError
+from kge.validate import Vec2, boolean, finite, non_negative, positive, vec2
+
+
+class BodyType(Enum):
+    """Box2D's body types."""
+
+    STATIC = "static"  #: never moves; infinite mass
+    KINEMATIC = "kinematic"  #: moves by its velocity only; pushes dynamic bodies
+    DYNAMIC = "dynamic"  #: moved by gravity, forces and contacts
+
+
+def _body_type(value: Any, owner: str, field: str) -> BodyType:
+    if isinstance(value, BodyType):
+        return value
+    if isinstance(value, str):
+        try:
+            return BodyType(value.lower())
+        except ValueError:
+            pass
+    raise ComponentTypeError(
+        f"{owner}.{field} must be a BodyType (STATIC, KINEMATIC or DYNAMIC), got {value!r}"
+    )
+
+
+def _optional_mass(value: Any, owner: str, field: str) -> float | None:
+    return None if value is None else positive(value, owner, field)
+
+
+@dataclass(slots=True)
+class RigidBody(Tracked):
+    """A simulated body; its colliders are the entity's (and those naming it)."""
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "type": _body_type,
+        "velocity": vec2,
+        "angular_velocity": finite,
+        "linear_damping": non_negative,
+        "angular_damping": non_negative,
+        "gravity_scale": finite,
+        "fixed_rotation": boolean,
+        "bullet": boolean,
+        "allow_sleep": boolean,
+        "awake": boolean,
+        "enabled": boolean,
+        "mass": _optional_mass,
+    }
+
+    type: BodyType = BodyType.DYNAMIC
+    velocity: Vec2 = (0.0, 0.0)
+    angular_velocity: float = 0.0
+    linear_damping: float = 0.0
+    angular_damping: float = 0.0
+    gravity_scale: float = 1.0
+    fixed_rotation: bool = False
+    bullet: bool = False
+    allow_sleep: bool = True
+    awake: bool = True
+    enabled: bool = True
+    mass: float | None = None
+
+    @property
+    def is_dynamic(self) -> bool:
+        return self.type is BodyType.DYNAMIC

@@ -1,0 +1,75 @@
+"""``Text``: a label in the world (follows its entity) or on the screen (HUD).
+
+* World text (``screen_space=False``) sits at the entity's Transform plus
+  ``offset`` metres and scales with the camera zoom; ``size`` is the font size
+  in points as seen at zoom 1.
+* Screen text (``screen_space=True``) ignores the camera: ``offset`` is its
+  position in pixels from the window's bottom-left corner. Scores and timers.
+
+``anchor`` is the point of the text's box placed there, as fractions:
+(0, 0) bottom-left, (0.5, 0.5) centre, (1, 1) top-right. The render system
+rebuilds the glyphs only when ``value`` or the style changes.
+
+>>> t = Text("Score: 0", size=24, screen_space=True, offset=(10, 500), anchor=(0, 1))
+>>> t.value = 10
+Traceback (most recent call last):
+...
+kge.errors.ComponentTypeError: Text.value must be a str, got int 10
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from kge.components.color import RGBA, rgba
+from kge.components.tracked import Check, Tracked
+from kge.errors import ComponentTypeError
+from kge.validate import Vec2, boolean, integer, positive, vec2
+
+
+def _str(value: Any, owner: str, field: str) -> str:
+    if not isinstance(value, str):
+        raise ComponentTypeError(
+            f"{owner}.{field} must be a str, got {type(value).__name__} {value!r}"
+        )
+    return value
+
+
+def _font(value: Any, owner: str, field: str) -> str | None:
+    return None if value is None else _str(value, owner, field)
+
+
+def _int(value: Any, owner: str, field: str) -> int:
+    return integer(value, owner, field)
+
+
+@dataclass(slots=True)
+class Text(Tracked):
+    """A text label. See the module docstring for world vs screen space."""
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "value": _str,
+        "size": positive,
+        "color": rgba,
+        "bold": boolean,
+        "anchor": vec2,
+        "screen_space": boolean,
+        "offset": vec2,
+        "layer": _int,
+        "order": _int,
+        "visible": boolean,
+        "font": _font,
+    }
+
+    value: str
+    size: float = 16.0
+    color: RGBA = (255, 255, 255, 255)
+    anchor: Vec2 = (0.5, 0.5)
+    screen_space: bool = False
+    bold: bool = False
+    offset: Vec2 = (0.0, 0.0)
+    layer: int = 0
+    order: int = 0
+    visible: bool = True
+    font: str | None = None

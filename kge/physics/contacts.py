@@ -1,0 +1,331 @@
+"""Contact handling: Box2D's implicit rules, materials and events, at pymunk speed.
+
+A Python call per contact per step is the most expensive thing a physics
+scene can do (DESIGN.md "Performance traps"), so kge registers:
+
+* one wildcard ``begin`` + ``separate`` pair, which run once per *new* or
+  *ended* contact. ``begin`` applies the rules pymunk lacks: static and
+  kinematic pairs never touch; positive filter groups (exact Box2D rule); the
+  one-way platform; the user's contact filter; restitution ``max(a, b)`` only
+  above the 1 m/s threshold (Chipmunk recomputes the arbiter's restitution from
+  the shapes every step, so a value set here lasts for the impact only); and it
+  records the begin event. ``separate`` records the matching end event.
+* ``pre_solve`` / ``post_solve`` only on :data:`HOOKED` collision type, given to
+  colliders with ``contact_hooks=True``, for the user's per-step hooks.
+
+Side A of a contact is chosen as Box2D does: edge before polygon before circle,
+otherwise the older collider (lower entity id); sensors are always side A of a
+sensor event. The normal reported points from A to B.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import pymunk
+
+from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
+
+if TYPE_CHECKING:
+    from kge.world import World
+
+Vec2 = tuple[float, float]
+
+#: collision type of shapes whose contacts run the user's pre/post-solve hooks
+HOOKED = 1
+
+DYNAMIC = pymunk.Body.DYNAMIC
+
+
+@dataclass(slots=True)
+class PreSolve:
+    """What a pre-solve hook sees and may change for this step's contact."""
+
+    collider_a: int
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+    normal: Vec2
+    points: tuple[Vec2, ...]
+    separation: float
+    #: False disables the contact for this step only (re-apply it every step)
+    enabled: bool = True
+    friction: float = 0.0
+    restitution: float = 0.0
+    #: Box2D's tangentSpeed: B slides along t = (n.y, -n.x) at this speed relative to A
+    tangent_speed: float = 0.0
+
+
+@dataclass(slots=True, frozen=True)
+class PostSolve:
+    """Impulses the solver applied to this contact over the last fixed step."""
+
+    collider_a: int
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+    normal: Vec2
+    point_count: int
+    normal_impulse: float  #: N*s, >= 0, summed over points and substeps
+    tangent_impulse: float  #: N*s along t = (n.y, -n.x)
+
+
+PreSolveFn = Callable[[PreSolve], Any]
+PostSolveFn = Callable[[PostSolve], Any]
+ContactFilterFn = Callable[[int, int], bool]
+
+
+def a_first(sa: pymunk.Shape, sb: pymunk.Shape) -> bool:
+    """True when ``sa`` is Box2D's fixture A of the pair."""
+    if sa.sensor != sb.sensor:
+        return bool(sa.sensor)
+    return (sa.kge_rank, sa.kge_collider) <= (sb.kge_rank, sb.kge_collider)
+
+
+def _key(sa: pymunk.Shape, sb: pymunk.Shape) -> tuple[int, int]:
+    return (id(sa), id(sb))
+
+
+def _geometry(arb: pymunk.Arbiter, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], float]:
+    cps = arb.contact_point_set
+    n = cps.normal
+    nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
+    pts = []
+    sep = 0.0
+    for i, p in enumerate(cps.points):
+        pa, pb = p.point_a, p.point_b
+        pts.append((0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)))
+        sep = p.distance if i == 0 else min(sep, p.distance)
+    return (nx, ny), tuple(pts), sep
+
+
+def _approach(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2, point: Vec2) -> float:
+    """Speed at which B approaches A along the normal A->B at ``point`` (>= 0)."""
+    ba, bb = sa.body, sb.body
+    assert ba is not None and bb is not None  # shapes in a space have bodies
+    va = ba.velocity_at_world_point(point)
+    vb = bb.velocity_at_world_point(point)
+    rel = (vb.x - va.x) * normal[0] + (vb.y - va.y) * normal[1]
+    return max(0.0, -rel)
+
+
+class ContactRecorder:
+    """Owns the collision handlers of one space and records events into ``events``."""
+
+    def __init__(self, world: World, space: pymunk.Space, events: PhysicsEvents) -> None:
+        self.world = world
+        self.space = space
+        self.events = events
+        self.velocity_threshold = 1.0
+        #: canonical shape pair -> (A shape, B shape, is sensor pair)
+        self.active: dict[tuple[int, int], tuple[pymunk.Shape, pymunk.Shape, bool]] = {}
+        self.contact_filter: ContactFilterFn | None = None
+        self.pre_solve: list[PreSolveFn] = []
+        self.post_solve: list[PostSolveFn] = []
+        self.substep = 0
+        self._pre_cache: dict[tuple[int, int], PreSolve] = {}
+        self._post_acc: dict[tuple[int, int], list[Any]] = {}
+        #: first exception raised inside a callback this step (re-raised after the step)
+        self.error: BaseException | None = None
+        space.on_collision(
+            None, None, begin=self._guarded(self._begin), separate=self._guarded(self._separate)
+        )
+        space.on_collision(
+            HOOKED,
+            None,
+            pre_solve=self._guarded(self._pre_solve),
+            post_solve=self._guarded(self._post_solve),
+        )
+
+    def _guarded(self, fn: Callable[..., None]) -> Callable[..., None]:
+        """Keep an exception raised inside a pymunk callback for after the step.
+
+        cffi would print and swallow it; kge re-raises it from the step instead
+        (:meth:`raise_pending`), so a WorldLockedError or a bug in a hook is seen.
+        """
+
+        def call(arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
+            try:
+                fn(arb, space, data)
+            except Exception as exc:
+                if self.error is None:
+                    self.error = exc
+
+        return call
+
+    def raise_pending(self) -> None:
+        """Re-raise the first callback exception of the step, if any."""
+        err, self.error = self.error, None
+        if err is not None:
+            raise err
+
+    # -- begin / separate (once per contact) ------------------------------------------
+    def _begin(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
+        s0, s1 = arb.shapes
+        b0, b1 = arb.bodies
+        if b0.body_type != DYNAMIC and b1.body_type != DYNAMIC:
+            arb.process_collision = False  # Box2D: static/kinematic pairs never touch
+            return
+        if not arb.process_collision:
+            return
+        fa, fb = s0.kge_filter, s1.kge_filter
+        if (fa.group_index > 0 or fb.group_index > 0) and not fa.collides_with(fb):
+            arb.process_collision = False
+            return
+        flip = not a_first(s0, s1)
+        sa, sb = (s1, s0) if flip else (s0, s1)
+        sensor = bool(sa.sensor or sb.sensor)
+        normal, points, sep = _geometry(arb, flip)
+        one_way = sa.kge_oneway is not None or sb.kge_oneway is not None
+        if one_way and not sensor and not self._one_way_accepts(sa, sb, normal):
+            arb.process_collision = False
+            return
+        if self.contact_filter is not None:
+            with self.world.locked():
+                ok = self.contact_filter(sa.kge_collider, sb.kge_collider)
+            if not ok:
+                arb.process_collision = False
+                return
+        self.active[_key(sa, sb)] = (sa, sb, sensor)
+        ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
+        if sensor:
+            self.events.sensor_begin.append(SensorBegin(ca, cb, ba, bb))
+            return
+        speed = _approach(sa, sb, normal, points[0]) if points else 0.0
+        e = max(sa.kge_material[1], sb.kge_material[1])
+        if e > 0.0 and speed > self.velocity_threshold:
+            arb.restitution = e
+        self.events.contact_begin.append(ContactBegin(ca, cb, ba, bb, normal, points, sep, speed))
+        ta, tb = sa.kge_hit, sb.kge_hit
+        if (ta is not None or tb is not None) and points:
+            limit = max(t for t in (ta, tb) if t is not None)
+            if speed > limit:
+                self.events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed))
+
+    @staticmethod
+    def _one_way_accepts(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2) -> bool:
+        for plat, sign in ((sa, 1.0), (sb, -1.0)):
+            spec = plat.kge_oneway
+            if spec is None:
+                continue
+            (ux, uy), min_cos = spec
+            # normal from the platform to the other shape
+            if sign * (normal[0] * ux + normal[1] * uy) < min_cos:
+                return False
+        return True
+
+    def _separate(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
+        s0, s1 = arb.shapes
+        key = _key(s0, s1)
+        rec = self.active.pop(key, None)
+        if rec is None:
+            rec = self.active.pop((key[1], key[0]), None)
+            if rec is None:
+                return
+        self._pre_cache.pop(key, None)
+        sa, sb, sensor = rec
+        ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
+        if sensor:
+            self.events.sensor_end.append(SensorEnd(ca, cb, ba, bb))
+        else:
+            self.events.contact_end.append(ContactEnd(ca, cb, ba, bb))
+
+    # -- user hooks (per step, only for HOOKED shapes) -------------------------------------
+    def _ordered(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape, bool] | None:
+        """Canonical (A, B, flip) of a hooked contact, or None to skip this call.
+
+        pymunk runs the (HOOKED, None) handler twice when both shapes are hooked,
+        once per order; only the call seeing A first goes on.
+        """
+        s0, s1 = arb.shapes
+        flip = not a_first(s0, s1)
+        if flip and s1.collision_type == HOOKED:
+            return None
+        sa, sb = (s1, s0) if flip else (s0, s1)
+        if (id(sa), id(sb)) not in self.active or sa.sensor or sb.sensor:
+            return None
+        return sa, sb, flip
+
+    def _pre_solve(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
+        if not self.pre_solve:
+            return
+        got = self._ordered(arb)
+        if got is None:
+            return
+        sa, sb, flip = got
+        key = (id(sa), id(sb))
+        contact = self._pre_cache.get(key) if self.substep > 0 else None
+        fresh = contact is None
+        if contact is None:
+            normal, points, sep = _geometry(arb, flip)
+            fr = (sa.kge_material[0] * sb.kge_material[0]) ** 0.5
+            contact = PreSolve(
+                sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, points, sep,
+                True, fr, arb.restitution,
+            )
+            with self.world.locked():
+                for fn in self.pre_solve:
+                    fn(contact)
+            self._pre_cache[key] = contact
+        if not contact.enabled:
+            arb.process_collision = False
+            return
+        arb.process_collision = True
+        arb.friction = contact.friction
+        if fresh and contact.restitution != arb.restitution:
+            arb.restitution = contact.restitution
+        if contact.tangent_speed:
+            nx, ny = contact.normal
+            t = (ny * contact.tangent_speed, -nx * contact.tangent_speed)
+            # pymunk drives v(shape0) - v(shape1) to the surface velocity
+            arb.surface_velocity = t if flip else (-t[0], -t[1])
+
+    def _post_solve(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
+        if not self.post_solve:
+            return
+        got = self._ordered(arb)
+        if got is None:
+            return
+        sa, sb, flip = got
+        key = (id(sa), id(sb))
+        j = arb.total_impulse  # applied to shapes[0]
+        n = arb.normal  # shapes[0] -> shapes[1]
+        acc = self._post_acc.get(key)
+        if acc is None:
+            acc = self._post_acc[key] = [sa, sb, flip, 0.0, 0.0, 0, (0.0, 0.0)]
+        nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
+        # impulse on B = -impulse on shapes[0] when A is shapes[0]
+        jb = (j.x, j.y) if flip else (-j.x, -j.y)
+        acc[3] += jb[0] * nx + jb[1] * ny
+        acc[4] += jb[0] * ny - jb[1] * nx
+        acc[5] = len(arb.contact_point_set.points)
+        acc[6] = (nx, ny)
+
+    def begin_step(self) -> None:
+        self._pre_cache.clear()
+        self._post_acc.clear()
+
+    def deliver_post_solve(self) -> None:
+        """Call the post-solve hooks once per hooked contact with the step's impulses."""
+        if not self._post_acc:
+            return
+        items = sorted(
+            self._post_acc.values(), key=lambda a: (a[0].kge_collider, a[1].kge_collider)
+        )
+        self._post_acc.clear()
+        with self.world.locked():
+            for sa, sb, _flip, jn, jt, count, normal in items:
+                ev = PostSolve(
+                    sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, count,
+                    abs(jn), jt,
+                )
+                for fn in self.post_solve:
+                    fn(ev)
+
+    def forget_shape(self, shape: pymunk.Shape) -> None:
+        """Drop cached state of a shape leaving the space (its separate already ran)."""
+        sid = id(shape)
+        for key in [k for k in self._pre_cache if sid in k]:
+            del self._pre_cache[key]

@@ -1,0 +1,120 @@
+"""Physics events as data, and the per-step ``PhysicsEvents`` resource.
+
+Callbacks inside the pymunk step only *record* events; they are delivered after
+the step (resource lists, esper events named like the lists, and Behaviour
+hooks), when the world is unlocked again. Every begin is matched by exactly one
+end: when the shapes part, when a collider or body is despawned, disabled, or
+refiltered so that the pair no longer collides.
+
+Entities: ``collider_a`` / ``collider_b`` are collider entities; ``body_a`` /
+``body_b`` are the body entities (``None`` for a collider on the implicit
+static body). The normal points from collider A to collider B, with A chosen
+as Box2D does (edge before polygon before circle; otherwise the older
+collider).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+Vec2 = tuple[float, float]
+
+
+@dataclass(slots=True, frozen=True)
+class ContactBegin:
+    collider_a: int
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+    normal: Vec2  #: unit, from collider A to collider B
+    points: tuple[Vec2, ...]  #: world points, 1 or 2
+    separation: float  #: most negative distance (< 0 = overlap)
+    approach_speed: float  #: relative normal speed at first contact (>= 0), m/s
+
+
+@dataclass(slots=True, frozen=True)
+class ContactEnd:
+    collider_a: int
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+
+
+@dataclass(slots=True, frozen=True)
+class SensorBegin:
+    collider_a: int  #: the sensor
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+
+
+@dataclass(slots=True, frozen=True)
+class SensorEnd:
+    collider_a: int  #: the sensor
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+
+
+@dataclass(slots=True, frozen=True)
+class Hit:
+    """An impact faster than the larger ``hit_threshold`` of the two colliders."""
+
+    collider_a: int
+    collider_b: int
+    body_a: int | None
+    body_b: int | None
+    point: Vec2
+    normal: Vec2
+    approach_speed: float
+
+
+@dataclass(slots=True, frozen=True)
+class JointBroken:
+    joint: int
+    body_a: int
+    body_b: int
+    reaction_force: Vec2
+    reaction_torque: float
+
+
+@dataclass(slots=True, frozen=True)
+class JointDestroyed:
+    joint: int
+    body_a: int
+    body_b: int
+
+
+ContactEvent = ContactBegin | ContactEnd | SensorBegin | SensorEnd | Hit
+
+
+@dataclass(slots=True)
+class PhysicsEvents:
+    """Events of the last fixed step (cleared when the next physics step starts)."""
+
+    contact_begin: list[ContactBegin] = field(default_factory=list)
+    contact_end: list[ContactEnd] = field(default_factory=list)
+    sensor_begin: list[SensorBegin] = field(default_factory=list)
+    sensor_end: list[SensorEnd] = field(default_factory=list)
+    hits: list[Hit] = field(default_factory=list)
+    joint_broken: list[JointBroken] = field(default_factory=list)
+    joint_destroyed: list[JointDestroyed] = field(default_factory=list)
+
+    #: (list name, Behaviour hook or None) in delivery order
+    CHANNELS: ClassVar[tuple[tuple[str, str | None], ...]] = (
+        ("contact_begin", "on_contact_begin"),
+        ("contact_end", "on_contact_end"),
+        ("sensor_begin", "on_sensor_begin"),
+        ("sensor_end", "on_sensor_end"),
+        ("hits", "on_hit"),
+        ("joint_broken", None),
+        ("joint_destroyed", None),
+    )
+
+    def clear(self) -> None:
+        for name, _ in self.CHANNELS:
+            getattr(self, name).clear()
+
+    def __len__(self) -> int:
+        return sum(len(getattr(self, name)) for name, _ in self.CHANNELS)

@@ -1,0 +1,180 @@
+"""The physics side of :mod:`kge.physics.joint_api`: joint lifecycle in the space.
+
+Joint components are entities of their own naming two body entities. The
+bridge builds a joint (through the builder its module registered) once both
+bodies exist, pushes component changes with ``apply``, runs ``before_step``
+and ``read_back`` around the step, breaks joints whose reaction exceeds their
+limits (JointBroken) and destroys joints whose body or prerequisite joint goes
+away (JointDestroyed). A joint's constraints are in the space only while both
+of its bodies are (a disabled body takes its joints out, as in Box2D).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib
+from typing import TYPE_CHECKING, Any
+
+import pymunk
+
+from kge.components.tracked import Tracked, bind, unbind
+from kge.physics import joint_api
+from kge.physics.events import JointBroken, JointDestroyed
+
+if TYPE_CHECKING:
+    from kge.physics.simulation import Simulation
+
+
+def load_joint_modules() -> None:
+    """Import the joint implementations so they register their builders (optional)."""
+    for name in ("kge.components.joints", "kge.physics.joints"):
+        with contextlib.suppress(ImportError):
+            importlib.import_module(name)
+
+
+def body_fields(component: Any) -> tuple[int | None, int | None]:
+    return getattr(component, "body_a", None), getattr(component, "body_b", None)
+
+
+class JointBridge:
+    """Implements :class:`~kge.physics.joint_api.JointContext` for the builders."""
+
+    def __init__(self, sim: Simulation) -> None:
+        self.sim = sim
+        self.space: pymunk.Space = sim.space
+        self.dt = sim.dt
+        self.handles: dict[int, joint_api.JointHandle] = {}
+        self.components: dict[int, Any] = {}
+        self.pending: set[int] = set()
+        self.dirty: set[int] = set()
+        self.removed: set[int] = set()
+        self.membership_dirty = False
+
+    # -- JointContext ----------------------------------------------------------------
+    def body(self, entity: int) -> pymunk.Body:
+        rec = self.sim.bodies.get(entity)
+        if rec is None:
+            return self.space.static_body
+        return rec.body
+
+    def joint(self, entity: int) -> joint_api.JointHandle | None:
+        return self.handles.get(entity)
+
+    # -- world hooks -----------------------------------------------------------------
+    def added(self, entity: int, component: Any) -> None:
+        if isinstance(component, Tracked):
+            bind(component, entity, self.dirty)
+        self.components[entity] = component
+        if entity in self.handles:  # replaced: rebuild
+            self.removed.add(entity)
+        self.pending.add(entity)
+
+    def removed_hook(self, entity: int, component: Any) -> None:
+        if isinstance(component, Tracked):
+            unbind(component)
+        if self.components.get(entity) is component:
+            del self.components[entity]
+            self.removed.add(entity)
+            self.pending.discard(entity)
+
+    # -- per step -----------------------------------------------------------------------
+    def sync(self) -> None:
+        # a joint despawned (or replaced) by the user: no event, as Box2D's DestroyJoint
+        for e in sorted(self.removed):
+            if e not in self.components or e in self.pending:
+                self._destroy(e, event=False)
+        self.removed.clear()
+        if self.pending:
+            for e in sorted(self.pending):
+                self._try_build(e)
+        if self.dirty:
+            for e in sorted(self.dirty):
+                h = self.handles.get(e)
+                comp = self.components.get(e)
+                if h is not None and comp is not None:
+                    h.apply(comp)
+            self.dirty.clear()
+        if self.membership_dirty:
+            self.refresh_membership()
+
+    def _try_build(self, entity: int) -> None:
+        comp = self.components.get(entity)
+        if comp is None:
+            self.pending.discard(entity)
+            return
+        a, b = body_fields(comp)
+        bodies = self.sim.bodies
+        if (a is not None and a not in bodies) or (b is not None and b not in bodies):
+            return  # waits for its bodies
+        builder = joint_api.BUILDERS.get(type(comp))
+        if builder is None:
+            return
+        handle = builder(self, entity, comp)
+        handle.apply(comp)
+        self.handles[entity] = handle
+        self.membership_dirty = True
+        self.pending.discard(entity)
+        self.dirty.discard(entity)
+
+    def refresh_membership(self) -> None:
+        """Constraints are in the space exactly while both bodies are."""
+        self.membership_dirty = False
+        space = self.space
+        present = set(space.constraints)
+        for h in self.handles.values():
+            for c in h.constraints:
+                a, b = c.a, c.b
+                want = (
+                    a.space is space
+                    and b.space is space
+                    and (a.body_type == pymunk.Body.DYNAMIC or b.body_type == pymunk.Body.DYNAMIC)
+                )
+                if want and c not in present:
+                    space.add(c)
+                elif not want and c in present:
+                    space.remove(c)
+
+    def before_step(self, dt: float) -> None:
+        for e in sorted(self.handles):
+            self.handles[e].before_step(dt)
+
+    def after_step(self, dt: float) -> None:
+        events = self.sim.events
+        for e in sorted(self.handles):
+            h = self.handles[e]
+            comp = self.components.get(e)
+            if comp is None:
+                continue
+            h.read_back(comp, dt)
+            if h.exceeds_break_limits(comp):
+                fx, fy = getattr(comp, "reaction_force", (0.0, 0.0))
+                torque = float(getattr(comp, "reaction_torque", 0.0))
+                events.joint_broken.append(
+                    JointBroken(e, h.body_a, h.body_b, (float(fx), float(fy)), torque)
+                )
+                self._destroy(e, event=False)
+                if self.sim.world.exists(e):
+                    self.sim.world.despawn(e)
+
+    def body_removed(self, body_entity: int) -> None:
+        """A body left: destroy every joint on it (and joints depending on those)."""
+        for e in sorted(self.handles):
+            h = self.handles.get(e)
+            if h is not None and body_entity in (h.body_a, h.body_b):
+                self._destroy(e, event=True)
+                if self.sim.world.exists(e):
+                    self.sim.world.despawn(e)
+
+    def _destroy(self, entity: int, event: bool) -> None:
+        h = self.handles.pop(entity, None)
+        if h is None:
+            return
+        for other in sorted(self.handles):
+            oh = self.handles.get(other)
+            if oh is not None and entity in oh.depends_on:
+                self._destroy(other, event=True)
+                if self.sim.world.exists(other):
+                    self.sim.world.despawn(other)
+        h.remove(self.space)
+        if event:
+            self.sim.events.joint_destroyed.append(JointDestroyed(entity, h.body_a, h.body_b))

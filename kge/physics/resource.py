@@ -1,0 +1,319 @@
+"""``Physics``: the imperative side of kge physics (Box2D's b2World and b2Body calls).
+
+Components say *what* exists; this resource does what components cannot:
+forces and impulses, mass data, coordinate helpers, queries, and the per-step
+contact hooks. Get it with ``world.resource(Physics)``.
+
+Forces follow Box2D: they act for the next fixed step only, at a world point
+(or the centre of mass), wake the body unless ``wake=False``, and are ignored
+for static and kinematic bodies. A sleeping body with ``wake=False`` ignores
+them entirely. Impulses change the velocity at once (visible in
+``RigidBody.velocity`` before the step).
+
+Queries (``raycast``, ``query_aabb``, ``query_point``, ``query_shape``) are
+implemented in :mod:`kge.physics.queries` and only forwarded here.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, Literal
+
+import numpy as np
+import pymunk
+
+from kge.components.rigidbody import RigidBody
+from kge.components.tracked import raw_set
+from kge.errors import EntityNotFoundError, ValidationError
+from kge.physics.bodies import DYNAMIC, BodyRecord
+from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
+from kge.physics.mass import MassData
+from kge.physics.settings import PhysicsSettings
+from kge.validate import finite, vec2
+
+if TYPE_CHECKING:
+    from kge.physics.simulation import Simulation
+    from kge.world import World
+
+Vec2 = tuple[float, float]
+Pose = tuple[float, float, float]
+
+
+class Physics:
+    """Forces, mass data, coordinate helpers, queries and contact hooks of one world."""
+
+    def __init__(self, world: World, sim: Simulation) -> None:
+        self._world = world
+        self._sim = sim
+
+    # -- configuration ------------------------------------------------------------------
+    @property
+    def settings(self) -> PhysicsSettings:
+        return self._world.resource(PhysicsSettings)
+
+    @property
+    def space(self) -> pymunk.Space:
+        """The pymunk Space (read-only use: queries, debug drawing, benchmarks)."""
+        return self._sim.space
+
+    @property
+    def step_count(self) -> int:
+        return self._sim.steps
+
+    # -- lookups -----------------------------------------------------------------------------
+    def _synced(self) -> None:
+        sim = self._sim
+        if self._world.is_locked:
+            return
+        if (
+            sim.body_struct or sim.collider_struct or sim.pending or sim.rb_dirty
+            or sim.col_dirty or sim.tf_dirty or sim.mass_dirty
+        ):
+            sim.sync_in()
+
+    def _record(self, entity: int, op: str) -> BodyRecord:
+        if isinstance(entity, bool) or not isinstance(entity, int):
+            raise ValidationError(f"physics.{op}(): entity must be an int id, got {entity!r}")
+        if not self._world.exists(entity):
+            raise EntityNotFoundError(f"physics.{op}(): entity {entity} does not exist")
+        self._synced()
+        rec = self._sim.bodies.get(entity)
+        if rec is None:
+            raise ValidationError(
+                f"physics.{op}(): entity {entity} has no body (add a RigidBody or a Collider)"
+            )
+        return rec
+
+    def body(self, entity: int) -> pymunk.Body:
+        """The pymunk Body behind ``entity`` (for advanced read-only use)."""
+        return self._record(entity, "body").body
+
+    # -- forces --------------------------------------------------------------------------------
+    def _force_target(self, entity: int, op: str, wake: bool) -> BodyRecord | None:
+        rec = self._record(entity, op)
+        body = rec.body
+        if body.body_type != DYNAMIC or not rec.in_space:
+            return None
+        if body.is_sleeping:
+            if not wake:
+                return None
+            body.activate()
+            self._mark_awake(entity)
+        return rec
+
+    def _mark_awake(self, entity: int) -> None:
+        rb = self._world.try_get(entity, RigidBody)
+        if rb is not None:
+            self._sim._mark_awake(entity, rb)
+
+    def apply_force(
+        self, entity: int, force: Vec2, point: Vec2 | None = None, wake: bool = True
+    ) -> None:
+        """Apply ``force`` (N) at world ``point`` (default: the centre of mass) for one step."""
+        fx, fy = vec2(force, "apply_force", "force")
+        rec = self._force_target(entity, "apply_force", wake)
+        if rec is None:
+            return
+        torque = 0.0
+        if point is not None:
+            px, py = vec2(point, "apply_force", "point")
+            c = rec.body.local_to_world(rec.body.center_of_gravity)
+            torque = (px - c.x) * fy - (py - c.y) * fx
+        acc = self._sim.forces.setdefault(entity, [0.0, 0.0, 0.0])
+        acc[0] += fx
+        acc[1] += fy
+        acc[2] += torque
+
+    def apply_torque(self, entity: int, torque: float, wake: bool = True) -> None:
+        """Apply ``torque`` (N m) for one step."""
+        tq = finite(torque, "apply_torque", "torque")
+        rec = self._force_target(entity, "apply_torque", wake)
+        if rec is None:
+            return
+        self._sim.forces.setdefault(entity, [0.0, 0.0, 0.0])[2] += tq
+
+    def apply_linear_impulse(
+        self, entity: int, impulse: Vec2, point: Vec2 | None = None, wake: bool = True
+    ) -> None:
+        """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre)."""
+        jx, jy = vec2(impulse, "apply_linear_impulse", "impulse")
+        rec = self._force_target(entity, "apply_linear_impulse", wake)
+        if rec is None:
+            return
+        body = rec.body
+        c = body.local_to_world(body.center_of_gravity)
+        px, py = (c.x, c.y) if point is None else vec2(point, "apply_linear_impulse", "point")
+        v = body.velocity
+        body.velocity = (v.x + jx / body.mass, v.y + jy / body.mass)
+        if math.isfinite(body.moment):
+            body.angular_velocity += ((px - c.x) * jy - (py - c.y) * jx) / body.moment
+        self._velocity_changed(entity, body)
+
+    def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
+        """Change the angular velocity at once by ``impulse / inertia``."""
+        j = finite(impulse, "apply_angular_impulse", "impulse")
+        rec = self._force_target(entity, "apply_angular_impulse", wake)
+        if rec is None:
+            return
+        body = rec.body
+        if math.isfinite(body.moment):
+            body.angular_velocity += j / body.moment
+        self._velocity_changed(entity, body)
+
+    def _velocity_changed(self, entity: int, body: pymunk.Body) -> None:
+        rb = self._world.try_get(entity, RigidBody)
+        if rb is not None:
+            v = body.velocity
+            raw_set(rb, "velocity", (v.x, v.y))
+            raw_set(rb, "angular_velocity", body.angular_velocity)
+
+    # -- mass and helpers -------------------------------------------------------------------
+    def mass_data(self, entity: int) -> MassData:
+        """Mass (kg), inertia about the centre of mass (kg m^2) and local centre."""
+        rec = self._record(entity, "mass_data")
+        return rec.mass
+
+    def world_point(self, entity: int, local_point: Vec2) -> Vec2:
+        p = self._record(entity, "world_point").body.local_to_world(
+            vec2(local_point, "world_point", "local_point")
+        )
+        return (p.x, p.y)
+
+    def local_point(self, entity: int, world_point: Vec2) -> Vec2:
+        p = self._record(entity, "local_point").body.world_to_local(
+            vec2(world_point, "local_point", "world_point")
+        )
+        return (p.x, p.y)
+
+    def world_vector(self, entity: int, local_vector: Vec2) -> Vec2:
+        v = pymunk.Vec2d(*vec2(local_vector, "world_vector", "local_vector"))
+        r = v.rotated(self._record(entity, "world_vector").body.angle)
+        return (r.x, r.y)
+
+    def local_vector(self, entity: int, world_vector: Vec2) -> Vec2:
+        v = pymunk.Vec2d(*vec2(world_vector, "local_vector", "world_vector"))
+        r = v.rotated(-self._record(entity, "local_vector").body.angle)
+        return (r.x, r.y)
+
+    def world_center(self, entity: int) -> Vec2:
+        """The centre of mass in world coordinates."""
+        body = self._record(entity, "world_center").body
+        c = body.local_to_world(body.center_of_gravity)
+        return (c.x, c.y)
+
+    def local_center(self, entity: int) -> Vec2:
+        return self.mass_data(entity).center
+
+    def velocity_at_point(self, entity: int, world_point: Vec2) -> Vec2:
+        """Velocity of the body's material point at ``world_point``.
+
+        Box2D's GetLinearVelocityFromWorldPoint.
+        """
+        body = self._record(entity, "velocity_at_point").body
+        v = body.velocity_at_world_point(vec2(world_point, "velocity_at_point", "world_point"))
+        return (v.x, v.y)
+
+    def is_awake(self, entity: int) -> bool:
+        rec = self._record(entity, "is_awake")
+        body = rec.body
+        return rec.in_space and body.body_type != pymunk.Body.STATIC and not body.is_sleeping
+
+    # -- interpolation ------------------------------------------------------------------------
+    def previous_pose(self, entity: int) -> Pose | None:
+        """Pose before the last step (x, y, angle), or None for non-moving entities."""
+        poses = self._sim.poses
+        i = poses.slot.get(entity)
+        if i is None:
+            return None
+        x, y, a = poses.prev[i].tolist()
+        return (x, y, a)
+
+    def poses(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Bulk form: (entities, previous poses (n,3), current poses (n,3)) of moving bodies.
+
+        The arrays are copies, safe to keep.
+        """
+        p = self._sim.poses
+        return p.entities.copy(), p.prev.copy(), p.state[:, :3].copy()
+
+    # -- contact hooks -------------------------------------------------------------------------
+    def on_pre_solve(self, fn: PreSolveFn) -> PreSolveFn:
+        """Call ``fn(contact)`` once per step for each contact of a ``contact_hooks`` collider.
+
+        ``contact`` is a :class:`kge.physics.contacts.PreSolve`: set ``enabled = False``
+        to disable it for this step, or change ``friction``, ``restitution`` and
+        ``tangent_speed`` (conveyor belts). The world is locked inside ``fn``.
+        Usable as a decorator.
+        """
+        if not callable(fn):
+            raise ValidationError(f"physics.on_pre_solve() needs a callable, got {fn!r}")
+        self._sim.recorder.pre_solve.append(fn)
+        return fn
+
+    def on_post_solve(self, fn: PostSolveFn) -> PostSolveFn:
+        """Call ``fn(impulses)`` after each step for each solved ``contact_hooks`` contact."""
+        if not callable(fn):
+            raise ValidationError(f"physics.on_post_solve() needs a callable, got {fn!r}")
+        self._sim.recorder.post_solve.append(fn)
+        return fn
+
+    def remove_hook(self, fn: Callable[..., Any]) -> None:
+        """Unregister a pre-solve or post-solve function."""
+        rec = self._sim.recorder
+        for lst in (rec.pre_solve, rec.post_solve):
+            while fn in lst:
+                lst.remove(fn)
+
+    @property
+    def contact_filter(self) -> ContactFilterFn | None:
+        """Box2D's ShouldCollide: ``fn(collider_a, collider_b) -> bool``, once per new pair."""
+        return self._sim.recorder.contact_filter
+
+    @contact_filter.setter
+    def contact_filter(self, fn: ContactFilterFn | None) -> None:
+        if fn is not None and not callable(fn):
+            raise ValidationError(f"physics.contact_filter must be callable or None, got {fn!r}")
+        self._sim.recorder.contact_filter = fn
+
+    # -- queries (kge.physics.queries) ---------------------------------------------------------
+    def _query_space(self, op: str) -> pymunk.Space:
+        self._synced()  # (skipped inside callbacks, where queries see the live step)
+        return self._sim.space
+
+    def raycast(
+        self,
+        p1: Vec2,
+        p2: Vec2,
+        callback: Callable[..., float] | None = None,
+        mode: Literal["closest", "all", "any"] = "closest",
+        filter: Any = None,
+    ) -> Any:
+        """Cast a ray (Box2D callback protocol, or ``mode`` closest / all / any)."""
+        from kge.physics import queries
+
+        return queries.raycast(self._query_space("raycast"), p1, p2, callback, mode, filter)
+
+    def query_aabb(
+        self,
+        lower: Vec2,
+        upper: Vec2,
+        callback: Callable[..., bool] | None = None,
+        filter: Any = None,
+    ) -> Any:
+        """Colliders whose bounds overlap the box (list, or callback that may stop early)."""
+        from kge.physics import queries
+
+        return queries.query_aabb(self._query_space("query_aabb"), lower, upper, callback, filter)
+
+    def query_point(self, p: Vec2, filter: Any = None) -> Any:
+        """Colliders containing the point ``p``."""
+        from kge.physics import queries
+
+        return queries.query_point(self._query_space("query_point"), p, filter)
+
+    def query_shape(self, shape: Any, transform: Any, filter: Any = None) -> Any:
+        """Colliders overlapping ``shape`` placed at ``transform``."""
+        from kge.physics import queries
+
+        return queries.query_shape(self._query_space("query_shape"), shape, transform, filter)

@@ -1,0 +1,89 @@
+"""Building pymunk shapes from a :class:`~kge.components.collider.Collider`.
+
+Every pymunk shape kge builds carries these attributes, so queries, contact
+callbacks and debug drawing can map it back to entities without a lookup:
+
+``kge_collider``  the collider entity
+``kge_body``      the body entity (None for the implicit static body)
+``kge_filter``    the kge :class:`~kge.components.filter.Filter` value
+``kge_material``  (friction, restitution) as the user gave them
+``kge_rank``      Box2D's fixture order for choosing contact side A
+``kge_hit``       the collider's hit threshold (m/s) or None
+``kge_oneway``    a OneWayPlatform (up, min_cos) or None
+
+Material: pymunk multiplies the two shapes' friction, so each shape gets
+``sqrt(friction)`` and the pair gets sqrt(a)*sqrt(b) = sqrt(a*b), Box2D's mixing,
+with no callback. Elasticity stays 0; restitution is set once per new contact
+(see :mod:`kge.physics.contacts`). Density stays 0 in pymunk: kge computes the
+mass itself (:mod:`kge.physics.mass`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+
+from kge.components.collider import Collider
+from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
+from kge.physics.filtering import to_pymunk
+
+#: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
+RANK_EDGE, RANK_POLYGON, RANK_CIRCLE = 0, 1, 2
+
+
+def build_shapes(
+    body: pymunk.Body,
+    collider: Collider,
+    collider_entity: int,
+    body_entity: int | None,
+    skin: float,
+) -> list[pymunk.Shape]:
+    """The pymunk shapes of one collider (several for a chain), not yet in a space."""
+    geom = collider.shape
+    shapes: list[pymunk.Shape] = []
+    rank = RANK_POLYGON
+    if isinstance(geom, Circle):
+        shapes.append(pymunk.Circle(body, geom.radius, geom.center))
+        rank = RANK_CIRCLE
+    elif isinstance(geom, Box):
+        shapes.append(pymunk.Poly(body, geom.vertices(), radius=skin))
+    elif isinstance(geom, Polygon):
+        shapes.append(pymunk.Poly(body, geom.vertices, radius=skin))
+    elif isinstance(geom, Edge):
+        shapes.append(pymunk.Segment(body, geom.v1, geom.v2, skin))
+        rank = RANK_EDGE
+    elif isinstance(geom, Chain):
+        rank = RANK_EDGE
+        pts = geom.vertices
+        segs = geom.segments()
+        n = len(pts)
+        for i, (a, b) in enumerate(segs):
+            seg = pymunk.Segment(body, a, b, skin)
+            if geom.loop:
+                prev, nxt = pts[(i - 1) % n], pts[(i + 2) % n]
+            else:
+                prev = pts[i - 1] if i > 0 else a
+                nxt = pts[i + 2] if i + 2 < n else b
+            seg.set_neighbors(prev, nxt)
+            shapes.append(seg)
+    for s in shapes:
+        s.kge_collider = collider_entity
+        s.kge_body = body_entity
+        s.kge_rank = rank
+        s.kge_oneway = None
+        apply_material(s, collider)
+    return shapes
+
+
+def apply_material(shape: pymunk.Shape, collider: Collider) -> None:
+    """Copy the collider's material, filter and flags onto an existing shape."""
+    shape.friction = math.sqrt(collider.friction)
+    shape.elasticity = 0.0
+    shape.kge_material = (collider.friction, collider.restitution)
+    shape.kge_filter = collider.filter
+    shape.kge_hit = collider.hit_threshold
+    if shape.filter != (pf := to_pymunk(collider.filter)):
+        shape.filter = pf
+    if shape.sensor != collider.sensor:
+        shape.sensor = collider.sensor

@@ -1,0 +1,640 @@
+"""The simulation: one pymunk Space per World, kept in step with the components.
+
+Each fixed step runs three phases (DESIGN.md "Frame order"):
+
+1. **sync-in**, in sorted entity order and O(changes): bodies and colliders that
+   appeared or disappeared (recorded by world hooks), then component fields
+   that user code wrote (recorded by :mod:`kge.components.tracked` bindings):
+   body type, enabled, velocities, damping, mass, collider material and filter,
+   teleports (a user write to Transform). Everything that pymunk forbids inside
+   a step (body type changes, sleeping) happens here, between steps.
+2. **step**: ``substeps`` pymunk steps of ``dt / substeps``, with joints'
+   ``before_step`` before and ``read_back`` after.
+3. **sync-out** with :class:`~kge.physics.sync.PoseTable`: only changed bodies
+   are written back (with ``raw_set``, so they do not look like user writes);
+   ``RigidBody.awake`` follows pymunk's sleeping; Box2D's speed caps are applied.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import pymunk
+
+from kge.components.collider import Collider
+from kge.components.platform import OneWayPlatform
+from kge.components.rigidbody import BodyType, RigidBody
+from kge.components.tracked import bind, raw_set, unbind
+from kge.components.transform import Transform
+from kge.physics.bodies import (
+    DYNAMIC,
+    PYMUNK_TYPE,
+    STATIC,
+    BodyRecord,
+    ColliderRecord,
+    configure_dynamics,
+    make_body,
+    set_body_type,
+    sleep,
+    wake_neighbours,
+)
+from kge.physics.contacts import HOOKED, ContactRecorder
+from kge.physics.events import PhysicsEvents
+from kge.physics.joint_bridge import JointBridge
+from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
+from kge.physics.settings import PhysicsSettings
+from kge.physics.shapes import apply_material, build_shapes
+from kge.physics.sync import PoseTable
+from kge.world import World
+
+
+class Simulation:
+    """pymunk mirror of one World's physics components."""
+
+    def __init__(
+        self,
+        world: World,
+        settings: Callable[[], PhysicsSettings],
+        events: PhysicsEvents,
+        dt: float,
+    ) -> None:
+        self.world = world
+        self._settings = settings
+        self.events = events
+        self.dt = dt
+        self.space = pymunk.Space()
+        self.recorder = ContactRecorder(world, self.space, events)
+        self.bodies: dict[int, BodyRecord] = {}
+        self.colliders: dict[int, ColliderRecord] = {}
+        self.pending: set[int] = set()  # colliders waiting for their body
+        self.body_struct: set[int] = set()
+        self.collider_struct: set[int] = set()
+        self.rb_dirty: set[int] = set()
+        self.col_dirty: set[int] = set()
+        self.tf_dirty: set[int] = set()
+        self.mass_dirty: set[int] = set()
+        self.no_sleep: set[int] = set()
+        self.poses = PoseTable()
+        self.poses_stale = True
+        self._transforms: list[Transform | None] = []
+        self._rigidbodies: list[RigidBody | None] = []
+        self.joints = JointBridge(self)
+        self._applied: tuple[Any, ...] = ()
+        self.skin = 0.01
+        self.substeps = 1
+        self.steps = 0
+        #: body entity -> [fx, fy, torque about the centre of mass] for this step
+        self.forces: dict[int, list[float]] = {}
+        self.ccd = _make_ccd(self.space)
+        self.ccd_dirty: set[int] = set()
+
+    @property
+    def settings(self) -> PhysicsSettings:
+        return self._settings()
+
+    # -- world hooks (record only; the work happens in sync-in) ----------------------------
+    def on_rigidbody_added(self, entity: int, rb: RigidBody) -> None:
+        bind(rb, entity, self.rb_dirty)
+        self.body_struct.add(entity)
+        self.rb_dirty.add(entity)
+        self.poses_stale = True
+
+    def on_rigidbody_removed(self, entity: int, rb: RigidBody) -> None:
+        unbind(rb)
+        self.body_struct.add(entity)
+
+    def on_collider_added(self, entity: int, col: Collider) -> None:
+        bind(col, entity, self.col_dirty)
+        self.collider_struct.add(entity)
+        self.body_struct.add(entity)
+
+    def on_collider_removed(self, entity: int, col: Collider) -> None:
+        unbind(col)
+        self.collider_struct.add(entity)
+        self.body_struct.add(entity)
+
+    def on_transform_added(self, entity: int, t: Transform) -> None:
+        bind(t, entity, self.tf_dirty)
+        self.tf_dirty.add(entity)
+        self.poses_stale = True
+
+    def on_transform_removed(self, entity: int, t: Transform) -> None:
+        unbind(t)
+        self.poses_stale = True
+
+    def on_platform_changed(self, entity: int, p: OneWayPlatform) -> None:
+        if self.world.exists(entity) and self.world.try_get(entity, OneWayPlatform) is p:
+            bind(p, entity, self.col_dirty)
+        else:
+            unbind(p)
+        self.col_dirty.add(entity)
+
+    # -- sync-in --------------------------------------------------------------------------
+    def _apply_settings(self) -> None:
+        s = self.settings
+        key = (
+            s.gravity, s.iterations, s.collision_slop, s.sleep, s.time_to_sleep,
+            s.sleep_speed, s.substeps, s.velocity_threshold, s.polygon_radius,
+        )
+        if key == self._applied:
+            return
+        space = self.space
+        if self._applied and s.gravity != self._applied[0]:
+            for e in sorted(self.bodies):  # a new gravity concerns resting bodies too
+                rec = self.bodies[e]
+                if rec.in_space and rec.body.body_type == DYNAMIC:
+                    rec.body.activate()  # also restarts the idle timer
+        space.gravity = s.gravity
+        space.iterations = s.iterations
+        space.collision_slop = s.collision_slop
+        if not s.sleep and math.isfinite(space.sleep_time_threshold):
+            for rec in self.bodies.values():
+                if rec.body.is_sleeping:
+                    rec.body.activate()
+        space.sleep_time_threshold = s.time_to_sleep if s.sleep else math.inf
+        space.idle_speed_threshold = s.sleep_speed
+        self.recorder.velocity_threshold = s.velocity_threshold
+        if self.ccd is not None:
+            self.ccd.max_translation = s.max_translation
+            self.ccd.max_rotation = s.max_rotation
+        if s.substeps != self.substeps:
+            self.substeps = s.substeps
+            self.rb_dirty.update(e for e, r in self.bodies.items() if not r.implicit)
+        if s.polygon_radius != self.skin:
+            self.skin = s.polygon_radius
+            for c in self.colliders:
+                self.collider_struct.add(c)
+        self._applied = key
+
+    def sync_in(self) -> None:
+        self._apply_settings()
+        if self.body_struct:
+            ents = sorted(self.body_struct)
+            self.body_struct.clear()
+            for e in ents:
+                self._restructure_body(e)
+        if self.collider_struct:
+            ents = sorted(self.collider_struct)
+            self.collider_struct.clear()
+            for e in ents:
+                crec = self.colliders.pop(e, None)
+                if crec is not None:
+                    self._detach(crec)
+                if self.world.try_get(e, Collider) is not None:
+                    self.pending.add(e)
+                else:
+                    self.pending.discard(e)
+        if self.pending:
+            self._attach_pending()
+        if self.rb_dirty:
+            ents = sorted(self.rb_dirty)
+            self.rb_dirty.clear()
+            for e in ents:
+                self._apply_rigidbody(e)
+        if self.col_dirty:
+            ents = sorted(self.col_dirty)
+            self.col_dirty.clear()
+            for e in ents:
+                self._apply_collider(e)
+            if self.pending:
+                self._attach_pending()
+        if self.tf_dirty:
+            ents = sorted(self.tf_dirty)
+            self.tf_dirty.clear()
+            for e in ents:
+                self._teleport(e)
+        if self.mass_dirty:
+            ents = sorted(self.mass_dirty)
+            self.mass_dirty.clear()
+            for e in ents:
+                self._update_mass(e)
+        self.joints.sync()
+        if self.ccd_dirty:
+            self._sync_ccd()
+        if self.poses_stale:
+            self._rebuild_poses()
+        for e in sorted(self.no_sleep):
+            rec = self.bodies.get(e)
+            if rec is not None and rec.body.is_sleeping:
+                rec.body.activate()
+
+    def _sync_ccd(self) -> None:
+        """(Re)register bodies with continuous collision after shape or type changes."""
+        ccd = self.ccd
+        ents = sorted(self.ccd_dirty)
+        self.ccd_dirty.clear()
+        if ccd is None:
+            return
+        for e in ents:
+            rec = self.bodies.get(e)
+            if rec is None:
+                continue
+            body = rec.body
+            if rec.in_space and body.body_type == DYNAMIC and rec.colliders:
+                ccd.track(body, bullet=bool(body.kge_bullet))
+            else:
+                ccd.untrack(body)
+
+    def _restructure_body(self, e: int) -> None:
+        world = self.world
+        rb = world.try_get(e, RigidBody)
+        col = world.try_get(e, Collider)
+        implicit = rb is None and col is not None and col.body is None
+        rec = self.bodies.get(e)
+        if rec is not None:
+            if (rb is not None and not rec.implicit) or (implicit and rec.implicit):
+                if rb is not None:
+                    self.rb_dirty.add(e)
+                return
+            self._destroy_body(rec)
+        if rb is not None or implicit:
+            self._create_body(e, rb)
+
+    def _create_body(self, e: int, rb: RigidBody | None) -> None:
+        t = self.world.try_get(e, Transform)
+        if t is None:
+            t = Transform()
+            self.world.add(e, t)
+        kind = BodyType.STATIC if rb is None else rb.type
+        body = make_body(kind, t.x, t.y, t.angle)
+        rec = BodyRecord(e, body, implicit=rb is None)
+        self.bodies[e] = rec
+        if rb is not None:
+            self.rb_dirty.add(e)
+        if rb is None or rb.enabled:
+            self.space.add(body)
+            rec.in_space = True
+        else:
+            rec.enabled = False
+        self.mass_dirty.add(e)
+        self.poses_stale = True
+
+    def _destroy_body(self, rec: BodyRecord) -> None:
+        self.joints.body_removed(rec.entity)
+        if self.ccd is not None:
+            self.ccd.untrack(rec.body)
+        if rec.in_space:
+            wake_neighbours(rec.body)
+        for c in sorted(rec.colliders):
+            crec = self.colliders.pop(c, None)
+            if crec is not None:
+                self._remove_shapes(crec)
+            if self.world.try_get(c, Collider) is not None:
+                self.pending.add(c)
+        rec.colliders.clear()
+        if rec.in_space:
+            self.space.remove(rec.body)
+            rec.in_space = False
+        del self.bodies[rec.entity]
+        self.no_sleep.discard(rec.entity)
+        self.poses_stale = True
+
+    def _remove_shapes(self, crec: ColliderRecord) -> None:
+        space = self.space
+        for s in crec.shapes:
+            if s.space is space:
+                space.remove(s)
+            self.recorder.forget_shape(s)
+
+    def _detach(self, crec: ColliderRecord) -> None:
+        rec = self.bodies.get(crec.owner)
+        if rec is not None:
+            if rec.in_space and crec.shapes:
+                wake_neighbours(rec.body)
+                if rec.body.body_type == DYNAMIC:
+                    rec.body.activate()
+            rec.colliders.discard(crec.entity)
+            self.mass_dirty.add(crec.owner)
+            self.ccd_dirty.add(crec.owner)
+        self._remove_shapes(crec)
+
+    def _attach_pending(self) -> None:
+        world = self.world
+        for c in sorted(self.pending):
+            col = world.try_get(c, Collider)
+            if col is None:
+                self.pending.discard(c)
+                continue
+            owner = c if col.body is None else col.body
+            rec = self.bodies.get(owner)
+            if rec is None:
+                continue
+            shapes = build_shapes(rec.body, col, c, rec.kge_body, self.skin)
+            self._configure_shapes(c, col, shapes)
+            if rec.in_space:
+                self.space.add(*shapes)
+            self.colliders[c] = ColliderRecord(c, owner, shapes, col.shape)
+            rec.colliders.add(c)
+            self.mass_dirty.add(owner)
+            self.ccd_dirty.add(owner)
+            self.pending.discard(c)
+
+    def _configure_shapes(self, c: int, col: Collider, shapes: list[pymunk.Shape]) -> None:
+        plat = self.world.try_get(c, OneWayPlatform)
+        oneway = None if plat is None else (plat.up, plat.min_cos)
+        ctype = HOOKED if col.contact_hooks else 0
+        for s in shapes:
+            s.kge_oneway = oneway
+            if s.collision_type != ctype:
+                s.collision_type = ctype
+
+    def _apply_collider(self, e: int) -> None:
+        crec = self.colliders.get(e)
+        col = self.world.try_get(e, Collider)
+        if crec is None or col is None:
+            return
+        owner = e if col.body is None else col.body
+        if owner != crec.owner or crec.geometry is not col.shape:
+            self.colliders.pop(e)
+            self._detach(crec)
+            self.pending.add(e)
+            return
+        rec = self.bodies.get(owner)
+        refilter = False
+        for s in crec.shapes:
+            refilter = refilter or s.kge_filter != col.filter or s.sensor != col.sensor
+            apply_material(s, col)
+        self._configure_shapes(e, col, crec.shapes)
+        if rec is not None:
+            self.mass_dirty.add(owner)
+            if refilter and rec.body.body_type == DYNAMIC and rec.in_space:
+                rec.body.activate()  # Box2D: assigning a filter wakes the body
+
+    def _apply_rigidbody(self, e: int) -> None:
+        rec = self.bodies.get(e)
+        rb = self.world.try_get(e, RigidBody)
+        if rec is None or rec.implicit or rb is None:
+            return
+        body = rec.body
+        space = self.space
+        ptype = PYMUNK_TYPE[rb.type]
+        if body.body_type != ptype:
+            # joints come out of the space; the bridge puts back the ones that still act
+            set_body_type(body, ptype)  # safe: sync-in runs between steps
+            self.joints.refresh_membership()
+            if ptype == STATIC and rec.in_space:
+                space.reindex_shapes_for_body(body)
+            self.mass_dirty.add(e)
+            self.poses_stale = True
+        if rb.enabled != rec.enabled:
+            self._set_enabled(rec, rb.enabled)
+        if ptype == STATIC:
+            if rb.velocity != (0.0, 0.0) or rb.angular_velocity != 0.0:
+                raw_set(rb, "velocity", (0.0, 0.0))
+                raw_set(rb, "angular_velocity", 0.0)
+        else:
+            s = self.settings
+            vx, vy = rb.velocity
+            vmax = s.max_translation / self.dt
+            speed = math.hypot(vx, vy)
+            if speed > vmax:
+                vx, vy = vx * vmax / speed, vy * vmax / speed
+                raw_set(rb, "velocity", (vx, vy))
+            wmax = s.max_rotation / self.dt
+            w = max(-wmax, min(wmax, rb.angular_velocity))
+            if w != rb.angular_velocity:
+                raw_set(rb, "angular_velocity", w)
+            if ptype == DYNAMIC and rb.fixed_rotation:
+                w = 0.0
+                raw_set(rb, "angular_velocity", 0.0)
+            v = body.velocity
+            if (v.x, v.y) != (vx, vy):
+                body.velocity = (vx, vy)
+            if body.angular_velocity != w:
+                body.angular_velocity = w
+        configure_dynamics(body, rb, self.dt, self.substeps)
+        body.kge_bullet = rb.bullet
+        self.mass_dirty.add(e)
+        self.ccd_dirty.add(e)
+        if rb.allow_sleep:
+            self.no_sleep.discard(e)
+        else:
+            self.no_sleep.add(e)
+        if not rec.in_space:
+            return
+        if rb.awake != body.kge_awake:  # the user wrote awake
+            if rb.awake and body.is_sleeping:
+                body.activate()
+            elif not rb.awake and not body.is_sleeping and rb.allow_sleep:
+                self._put_to_sleep(rec, rb)
+        elif not body.is_sleeping and not rb.awake:
+            self._mark_awake(e, rb)  # a velocity write woke it
+
+    def _mark_awake(self, e: int, rb: RigidBody) -> None:
+        raw_set(rb, "awake", True)
+        self.bodies[e].body.kge_awake = True
+        i = self.poses.slot.get(e)
+        if i is not None and not self.poses_stale:
+            self.poses.asleep[i] = False
+
+    def _put_to_sleep(self, rec: BodyRecord, rb: RigidBody) -> None:
+        body = rec.body
+        if self.mass_dirty:  # sleep with the final mass
+            e = rec.entity
+            if e in self.mass_dirty:
+                self.mass_dirty.discard(e)
+                self._update_mass(e)
+        body.velocity = (0.0, 0.0)
+        body.angular_velocity = 0.0
+        if sleep(self.space, body):
+            body.kge_awake = False
+            raw_set(rb, "velocity", (0.0, 0.0))
+            raw_set(rb, "angular_velocity", 0.0)
+            i = self.poses.slot.get(rec.entity)
+            if i is not None and not self.poses_stale:
+                self.poses.asleep[i] = True
+                self.poses.state[i, 3:] = 0.0
+        else:
+            raw_set(rb, "awake", True)
+            body.kge_awake = True
+
+    def _set_enabled(self, rec: BodyRecord, on: bool) -> None:
+        space = self.space
+        shapes = [s for c in sorted(rec.colliders) for s in self.colliders[c].shapes]
+        if on and not rec.in_space:
+            space.add(rec.body, *shapes)
+            rec.in_space = True
+        elif not on and rec.in_space:
+            if self.ccd is not None:
+                self.ccd.untrack(rec.body)
+            wake_neighbours(rec.body)
+            for s in shapes:
+                space.remove(s)
+            for c in list(rec.body.constraints):
+                if c in space.constraints:
+                    space.remove(c)
+            space.remove(rec.body)
+            rec.in_space = False
+        rec.enabled = on
+        self.poses_stale = True
+        self.joints.membership_dirty = True
+
+    def _teleport(self, e: int) -> None:
+        rec = self.bodies.get(e)
+        t = self.world.try_get(e, Transform)
+        if rec is None or t is None:
+            return
+        body = rec.body
+        p = body.position
+        if (p.x, p.y, body.angle) == (t.x, t.y, t.angle):
+            return
+        body.position = (t.x, t.y)
+        body.angle = t.angle
+        if body.body_type == STATIC and rec.in_space:
+            self.space.reindex_shapes_for_body(body)
+        self.poses.teleported(e, t.x, t.y, t.angle)
+
+    def _update_mass(self, e: int) -> None:
+        rec = self.bodies.get(e)
+        if rec is None:
+            return
+        body = rec.body
+        world = self.world
+        parts = []
+        for c in sorted(rec.colliders):
+            col = world.try_get(c, Collider)
+            if col is not None:
+                parts.append(shape_mass(col.shape, col.density))
+        computed = combine(parts)
+        rb = None if rec.implicit else world.try_get(e, RigidBody)
+        if rb is None or body.body_type != DYNAMIC:
+            rec.mass = MassData(0.0, 0.0, computed.center)
+            return
+        md = dynamic_mass(computed, rb.mass, rb.fixed_rotation)
+        rec.mass = md
+        body.mass = md.mass
+        body.moment = md.inertia
+        body.center_of_gravity = md.center
+
+    def _rebuild_poses(self) -> None:
+        items = [
+            (e, r.body)
+            for e, r in self.bodies.items()
+            if not r.implicit and r.body.body_type != STATIC
+        ]
+        self.poses.rebuild(items)
+        world = self.world
+        ents = self.poses.entities.tolist()
+        self._transforms = [world.try_get(e, Transform) for e in ents]
+        self._rigidbodies = [world.try_get(e, RigidBody) for e in ents]
+        self.poses_stale = False
+
+    # -- step ------------------------------------------------------------------------------
+    def step(self) -> None:
+        """sync-in, substeps, joints read-back, sync-out (events are recorded meanwhile)."""
+        self.sync_in()
+        self.events_step_started()
+        n = self.substeps
+        h = self.dt / n
+        self.joints.before_step(self.dt)
+        rec = self.recorder
+        if self.ccd is not None:
+            self.ccd.before_step(self.dt)
+        forces = self.forces
+        for i in range(n):
+            rec.substep = i
+            if forces:
+                self._apply_forces()
+            self.space.step(h)
+        forces.clear()
+        rec.substep = 0
+        if self.ccd is not None:
+            self.ccd.after_step(self.dt)
+        self.steps += 1
+        self.joints.after_step(self.dt)
+        self.sync_out()
+        rec.raise_pending()
+        rec.deliver_post_solve()
+
+    def _apply_forces(self) -> None:
+        """Box2D forces act for the whole step; pymunk clears them every substep."""
+        for e in sorted(self.forces):
+            rec = self.bodies.get(e)
+            if rec is None or not rec.in_space or rec.body.body_type != DYNAMIC:
+                continue
+            fx, fy, tq = self.forces[e]
+            rec.body.force = (fx, fy)
+            rec.body.torque = tq
+
+    def events_step_started(self) -> None:
+        self.recorder.begin_step()
+
+    # -- sync-out -------------------------------------------------------------------------
+    def sync_out(self) -> None:
+        if self.poses_stale:
+            self._rebuild_poses()
+        poses = self.poses
+        slots, rows = poses.read(self.space)
+        if len(slots) == 0:
+            return
+        s = self.settings
+        vmax = s.max_translation / self.dt
+        wmax = s.max_rotation / self.dt
+        speed2 = rows[:, 3] ** 2 + rows[:, 4] ** 2
+        over = (speed2 > vmax * vmax) | (np.abs(rows[:, 5]) > wmax)
+        if over.any():
+            rows = rows.copy()
+            for k in np.flatnonzero(over).tolist():
+                body = poses.bodies[int(slots[k])]
+                sp = math.sqrt(speed2[k])
+                if sp > vmax:
+                    rows[k, 3] *= vmax / sp
+                    rows[k, 4] *= vmax / sp
+                    body.velocity = (float(rows[k, 3]), float(rows[k, 4]))
+                if abs(rows[k, 5]) > wmax:
+                    rows[k, 5] = math.copysign(wmax, rows[k, 5])
+                    body.angular_velocity = float(rows[k, 5])
+        poses.prev[:] = poses.state[:, :3]
+        old = poses.state[slots]
+        changed = np.any(rows != old, axis=1)
+        poses.state[slots] = rows
+        moved = slots[changed]
+        if len(moved):
+            vals = rows[changed].tolist()
+            transforms, rigidbodies, asleep = self._transforms, self._rigidbodies, poses.asleep
+            for i, (x, y, a, vx, vy, w) in zip(moved.tolist(), vals, strict=True):
+                t = transforms[i]
+                if t is not None:
+                    raw_set(t, "x", x)
+                    raw_set(t, "y", y)
+                    raw_set(t, "angle", a)
+                rb = rigidbodies[i]
+                if rb is not None:
+                    raw_set(rb, "velocity", (vx, vy))
+                    raw_set(rb, "angular_velocity", w)
+                    if asleep[i]:
+                        asleep[i] = False
+                        raw_set(rb, "awake", True)
+                        poses.bodies[i].kge_awake = True
+        still = slots[~changed & ~poses.asleep[slots] & poses.dynamic[slots]]
+        if len(still):
+            for i in still.tolist():
+                body = poses.bodies[i]
+                if body.is_sleeping:
+                    poses.asleep[i] = True
+                    body.kge_awake = False
+                    rb = self._rigidbodies[i]
+                    if rb is not None:
+                        raw_set(rb, "awake", False)
+                        raw_set(rb, "velocity", (0.0, 0.0))
+                        raw_set(rb, "angular_velocity", 0.0)
+
+    # -- teardown ---------------------------------------------------------------------------
+    def close(self) -> None:
+        for rec in list(self.bodies.values()):
+            if rec.in_space:
+                rec.in_space = False
+        self.bodies.clear()
+        self.colliders.clear()
+
+
+def _make_ccd(space: pymunk.Space) -> Any:
+    """Continuous collision (kge.physics.ccd) when available; None otherwise."""
+    try:
+        from kge.physics.ccd import ContinuousCollision
+    except ImportError:  # pragma: no cover - the module ships with kge
+        return None
+    return ContinuousCollision(space)

@@ -1,0 +1,98 @@
+"""Sync-out: reading every body's pose in bulk after a step.
+
+``pymunk.batch.get_space_bodies`` copies id, position, angle and velocities of
+all bodies into one buffer (~100x faster than a property loop). Its row order
+is unstable (removals swap rows, sleeping reorders them), so rows are mapped
+to kge slots by BODY_ID with ``np.searchsorted`` over the sorted ids of the
+bodies kge tracks. Only rows whose values changed since the last step are
+written to components, so sleeping bodies cost nothing in Python.
+
+The table also keeps the previous step's pose of every tracked body, for
+render interpolation.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import pymunk
+import pymunk.batch as pb
+
+FIELDS = (
+    pb.BodyFields.BODY_ID
+    | pb.BodyFields.POSITION
+    | pb.BodyFields.ANGLE
+    | pb.BodyFields.VELOCITY
+    | pb.BodyFields.ANGULAR_VELOCITY
+)
+
+# columns of the float rows
+X, Y, A, VX, VY, W = range(6)
+
+
+class PoseTable:
+    """Slots for the moving (dynamic and kinematic) bodies kge tracks."""
+
+    def __init__(self) -> None:
+        self.ids = np.empty(0, dtype=np.int64)  # sorted pymunk body ids
+        self.entities = np.empty(0, dtype=np.int64)
+        self.state = np.empty((0, 6))  # x, y, angle, vx, vy, w after the last step
+        self.prev = np.empty((0, 3))  # pose one step earlier
+        self.asleep = np.empty(0, dtype=bool)
+        self.dynamic = np.empty(0, dtype=bool)  # kinematic bodies never sleep in pymunk
+        self.slot: dict[int, int] = {}
+        self.bodies: list[pymunk.Body] = []
+        self._buffer = pb.Buffer()
+
+    def rebuild(self, items: Sequence[tuple[int, pymunk.Body]]) -> None:
+        """Reset the slots to ``items`` (entity, body), keeping known states."""
+        old_slot, old_state, old_prev, old_sleep = self.slot, self.state, self.prev, self.asleep
+        pairs = sorted(items, key=lambda it: it[1].id)
+        n = len(pairs)
+        self.ids = np.fromiter((b.id for _, b in pairs), dtype=np.int64, count=n)
+        self.entities = np.fromiter((e for e, _ in pairs), dtype=np.int64, count=n)
+        self.bodies = [b for _, b in pairs]
+        self.state = np.empty((n, 6))
+        self.prev = np.empty((n, 3))
+        self.asleep = np.zeros(n, dtype=bool)
+        self.dynamic = np.fromiter(
+            (b.body_type == pymunk.Body.DYNAMIC for _, b in pairs), dtype=bool, count=n
+        )
+        self.slot = {}
+        for i, (e, b) in enumerate(pairs):
+            self.slot[e] = i
+            j = old_slot.get(e)
+            if j is not None:
+                self.state[i] = old_state[j]
+                self.prev[i] = old_prev[j]
+                self.asleep[i] = old_sleep[j]
+            else:
+                p, v = b.position, b.velocity
+                self.state[i] = (p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
+                self.prev[i] = self.state[i, :3]
+                self.asleep[i] = b.is_sleeping
+
+    def teleported(self, entity: int, x: float, y: float, angle: float) -> None:
+        """A user moved the body: no interpolation across the jump."""
+        i = self.slot.get(entity)
+        if i is not None:
+            self.state[i, :3] = (x, y, angle)
+            self.prev[i] = (x, y, angle)
+
+    def read(self, space: pymunk.Space) -> tuple[np.ndarray, np.ndarray]:
+        """Fetch all rows; returns (slots, rows) of the tracked bodies, in slot order."""
+        buf = self._buffer
+        buf.clear()
+        pb.get_space_bodies(space, FIELDS, buf)
+        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
+        rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        if len(self.ids) == 0 or len(ids) == 0:
+            return np.empty(0, dtype=np.int64), np.empty((0, 6))
+        idx = np.searchsorted(self.ids, ids)
+        idx[idx >= len(self.ids)] = 0
+        hit = self.ids[idx] == ids
+        slots = idx[hit]
+        rows = rows[hit]
+        order = np.argsort(slots, kind="stable")
+        return slots[order], rows[order]

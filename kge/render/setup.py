@@ -1,0 +1,153 @@
+"""Create the window (or the offscreen one) once per App and hook rendering in.
+
+``App.render()`` calls :func:`ensure_renderer` on first use. Headless Apps get
+an EGL pbuffer window (``PYGLET_HEADLESS=1``, Mesa llvmpipe on a bare
+machine); these are pooled by size and reused by later Apps in the same
+process, so a test session opens one GL context, not one per test. The
+render systems are added to every current and future scene world of the App.
+
+:func:`frame_pixels` reads the last frame back as a numpy array (tests),
+:func:`screenshot` saves it as a PNG (no PIL needed).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import weakref
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from kge.render.stats import FrameClock
+
+if TYPE_CHECKING:
+    from kge.app import App
+
+_renderers: weakref.WeakKeyDictionary[Any, Renderer] = weakref.WeakKeyDictionary()
+_offscreen: dict[tuple[int, int], Any] = {}
+
+
+def configure_headless(headless: bool) -> None:
+    """pyglet must be told *before* its window module is first imported."""
+    if headless and "pyglet.window" not in sys.modules:
+        import pyglet
+
+        pyglet.options["headless"] = True
+        os.environ.setdefault("PYGLET_HEADLESS", "1")
+
+
+class Renderer:
+    """The window of one App, and its frame timing."""
+
+    def __init__(self, app: App, window: Any, owns_window: bool) -> None:
+        self.app_ref = weakref.ref(app)
+        self.window = window
+        self.owns_window = owns_window
+        self.clock = FrameClock()
+
+    @property
+    def size(self) -> tuple[int, int]:
+        return (int(self.window.width), int(self.window.height))
+
+    def begin_frame(self, background: tuple[int, ...]) -> None:
+        """Make the window current, fit viewport and projection, clear it."""
+        import pyglet
+        from pyglet import gl
+
+        w = self.window
+        w.switch_to()
+        fw, fh = w.get_framebuffer_size()
+        gl.glViewport(0, 0, int(fw), int(fh))
+        w.projection = pyglet.math.Mat4.orthogonal_projection(0, w.width, 0, w.height, -255, 255)
+        r, g, b = (c / 255.0 for c in background[:3])
+        gl.glClearColor(r, g, b, 1.0)
+        w.clear()
+
+
+def create_window(width: int, height: int, **kwargs: Any) -> Any:
+    """A pyglet window, safe to create even after ``pyglet.app.run()`` has returned.
+
+    pyglet's loop switches windows to immediate event dispatch and leaves it so;
+    a window created afterwards would then handle its first resize before its GL
+    state exists. Creation is done with events queued, as before any loop ran.
+    """
+    import pyglet
+
+    window_cls = pyglet.window.Window
+    queued, window_cls._enable_event_queue = window_cls._enable_event_queue, True
+    try:
+        return window_cls(width, height, **kwargs)
+    finally:
+        window_cls._enable_event_queue = queued
+
+
+def _new_window(app: App) -> tuple[Any, bool]:
+    configure_headless(app.headless)
+    import pyglet
+
+    size = app.size
+    if app.headless or pyglet.options.get("headless"):
+        win = _offscreen.get(size)
+        if win is None:
+            win = _offscreen[size] = create_window(size[0], size[1], visible=False)
+        return win, False
+    return create_window(size[0], size[1], caption=app.title, visible=False), True
+
+
+def renderer_for(app: App) -> Renderer | None:
+    return _renderers.get(app)
+
+
+def ensure_renderer(app: App, window: Any = None) -> Renderer:
+    """The App's Renderer, created (window + systems in every world) on first call."""
+    r = _renderers.get(app)
+    if r is not None:
+        return r
+    if window is None:
+        window, owns = _new_window(app)
+    else:
+        owns = True
+    r = _renderers[app] = Renderer(app, window, owns)
+    from kge.systems.render import CameraFollow, RenderStepClock, RenderStepRecorder, RenderSystem
+
+    app.add_system_to_all(RenderStepClock)
+    app.add_system_to_all(RenderStepRecorder)
+    if CameraFollow not in app.system_factories and CameraFollow not in app.extra_systems:
+        app.add_system_to_all(CameraFollow)
+    app.add_system_to_all(RenderSystem)
+    return r
+
+
+def frame_pixels(app: App) -> np.ndarray:
+    """The current frame as an (height, width, 4) uint8 array, row 0 at the **bottom**.
+
+    Indexing is ``pixels[y, x]`` in window pixels, the same coordinates as
+    ``Camera.world_to_screen``.
+    """
+    import pyglet
+
+    r = ensure_renderer(app)
+    r.window.switch_to()
+    data = pyglet.image.get_buffer_manager().get_color_buffer().get_image_data()
+    raw = data.get_data("RGBA", data.width * 4)
+    return np.frombuffer(raw, np.uint8).reshape(data.height, data.width, 4)
+
+
+def screenshot(app: App, path: str) -> None:
+    """Render the current frame and save it as a PNG at ``path``."""
+    import pyglet
+
+    app.render()
+    r = ensure_renderer(app)
+    r.window.switch_to()
+    directory = os.path.dirname(os.path.abspath(path))
+    os.makedirs(directory, exist_ok=True)
+    pyglet.image.get_buffer_manager().get_color_buffer().save(path)
+
+
+def release(app: App) -> None:
+    """Forget the App's renderer (closing a window it owns; pooled offscreen ones stay)."""
+    r = _renderers.pop(app, None)
+    if r is not None and r.owns_window:
+        r.window.close()

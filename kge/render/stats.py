@@ -1,0 +1,87 @@
+"""The stats overlay: FPS, fixed-step time, bodies, contacts, sprites drawn.
+
+FPS and step time are averaged over the last half second, so the numbers are
+readable rather than flickering; in a window the label text is rebuilt at most
+four times a second (glyph layout is not free). Headless Apps render only when
+asked (tests, screenshots), so there every frame shows fresh numbers.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import deque
+from typing import Any
+
+import pyglet
+
+from kge.render.groups import OVERLAY_LAYER, SCREEN, Groups
+
+
+class FrameClock:
+    """Frame and fixed-step timings (kept even when the overlay is hidden)."""
+
+    def __init__(self) -> None:
+        self.frames: deque[float] = deque(maxlen=240)
+        self.steps: deque[float] = deque(maxlen=240)
+
+    def frame(self) -> None:
+        self.frames.append(time.perf_counter())
+
+    def step(self, seconds: float) -> None:
+        self.steps.append(seconds)
+
+    @property
+    def fps(self) -> float:
+        now = time.perf_counter()
+        recent = [t for t in self.frames if now - t <= 0.5]
+        if len(recent) < 2:
+            return 0.0
+        return (len(recent) - 1) / (recent[-1] - recent[0]) if recent[-1] > recent[0] else 0.0
+
+    @property
+    def step_ms(self) -> float:
+        last = list(self.steps)[-30:]
+        return 1000.0 * sum(last) / len(last) if last else 0.0
+
+
+class StatsOverlay:
+    """A screen-space label at the top-left corner."""
+
+    def __init__(self, batch: Any, groups: Groups) -> None:
+        self.batch = batch
+        self.groups = groups
+        self.label: Any = None
+        self._last = 0.0
+        self.text = ""
+
+    def update(
+        self, shown: bool, height: int, values: dict[str, Any], throttle: bool = True
+    ) -> None:
+        """Show ``values`` at the top-left; ``throttle`` limits relayouts to 4 a second."""
+        if not shown:
+            if self.label is not None:
+                self.label.delete()
+                self.label = None
+            return
+        now = time.perf_counter()
+        if self.label is None:
+            self.label = pyglet.text.Label(
+                "",
+                font_size=11,
+                color=(255, 255, 255, 230),
+                anchor_x="left",
+                anchor_y="top",
+                batch=self.batch,
+                group=self.groups.get(OVERLAY_LAYER + 1, SCREEN, 0),
+            )
+            self._last = 0.0
+        self.label.position = (8.0, height - 8.0, 0.0)
+        if not throttle or now - self._last >= 0.25:
+            self._last = now
+            self.text = "   ".join(f"{k} {v}" for k, v in values.items())
+            self.label.text = self.text
+
+    def clear(self) -> None:
+        if self.label is not None:
+            self.label.delete()
+            self.label = None

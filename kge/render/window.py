@@ -1,0 +1,124 @@
+"""``App.run()`` with a display: a pyglet window driving the App.
+
+pyglet's loop redraws the window 60 times a second (or at the display's vsync);
+each ``on_draw`` runs one game frame with the real time since the previous one
+(:meth:`App.advance`: the App's accumulator turns it into fixed steps) and
+renders it. Window events feed the :class:`~kge.input.Input` resource. kge key and button codes are
+pyglet's, so events pass through untranslated.
+
+Keys the window itself handles: F11 toggles fullscreen, F1 toggles the physics
+debug view (:class:`~kge.components.debug.DebugDraw`), F2 the stats overlay.
+Losing focus releases every held key, so nothing stays stuck.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import TYPE_CHECKING, Any
+
+from kge.components.debug import DebugDraw
+from kge.keys import Key
+
+if TYPE_CHECKING:
+    from kge.app import App
+
+
+def _toggle_debug(app: App, field: str) -> None:
+    world = app.world
+    settings = world.try_resource(DebugDraw)
+    if settings is None:
+        settings = world.insert_resource(DebugDraw(enabled=False))
+    setattr(settings, field, not getattr(settings, field))
+
+
+def connect(app: App, window: Any, frames: int | None = None) -> None:
+    """Wire ``window`` events to ``app`` (separate from the loop so it can be tested)."""
+    import pyglet
+
+    inp = app.input
+    state = {"count": 0, "last": time.perf_counter()}
+
+    @window.event
+    def on_draw() -> None:
+        # One game frame per drawn frame: advance by the real time since the last
+        # one (the App's accumulator turns it into fixed steps), then draw.
+        now = time.perf_counter()
+        dt, state["last"] = now - state["last"], now
+        if not app._running or not app._stack:
+            pyglet.app.exit()
+            return
+        app.advance(dt)
+        state["count"] += 1
+        if frames is not None and state["count"] >= frames:
+            app.quit()
+        if app._stack:
+            app.render()
+
+    @window.event
+    def on_key_press(symbol: int, modifiers: int) -> bool | None:
+        if symbol == Key.F11:
+            window.set_fullscreen(not window.fullscreen)
+            return True
+        if symbol == Key.F1:
+            _toggle_debug(app, "enabled")
+        elif symbol == Key.F2:
+            _toggle_debug(app, "stats")
+        inp.press(symbol, modifiers)
+        return True  # keep pyglet's default Escape-closes-window out of the game's way
+
+    @window.event
+    def on_key_release(symbol: int, modifiers: int) -> None:
+        inp.release(symbol, modifiers)
+
+    @window.event
+    def on_mouse_press(x: int, y: int, button: int, modifiers: int) -> None:
+        inp.mouse_down(button, (x, y), modifiers)
+
+    @window.event
+    def on_mouse_release(x: int, y: int, button: int, modifiers: int) -> None:
+        inp.mouse_up(button, (x, y), modifiers)
+
+    @window.event
+    def on_mouse_motion(x: int, y: int, dx: int, dy: int) -> None:
+        inp.move_mouse(x, y)
+
+    @window.event
+    def on_mouse_drag(x: int, y: int, dx: int, dy: int, buttons: int, modifiers: int) -> None:
+        inp.move_mouse(x, y)
+
+    @window.event
+    def on_mouse_scroll(x: int, y: int, scroll_x: float, scroll_y: float) -> None:
+        inp.scroll_by(scroll_x, scroll_y)
+
+    @window.event
+    def on_deactivate() -> None:
+        inp.reset()
+
+    @window.event
+    def on_resize(width: int, height: int) -> None:
+        app.size = (int(width), int(height))  # cameras clamp to bounds with the real size
+
+    @window.event
+    def on_close() -> None:
+        app.quit()
+
+
+def run_windowed(app: App, frames: int | None = None) -> None:
+    """Open a window of ``app.size`` and run until it closes, ``app.quit()`` or ``frames``."""
+    import pyglet
+
+    from kge.render.setup import configure_headless, create_window, ensure_renderer, release
+
+    configure_headless(app.headless)
+    window = create_window(app.size[0], app.size[1], caption=app.title, resizable=True, vsync=True)
+    ensure_renderer(app, window)
+    connect(app, window, frames)
+    app._running = True
+    queued = pyglet.window.Window._enable_event_queue
+    try:
+        pyglet.app.run(1 / 60)
+    finally:
+        pyglet.clock.unschedule(pyglet.app.event_loop._redraw_windows)
+        pyglet.window.Window._enable_event_queue = queued  # see setup.create_window
+        app._running = False
+        release(app)

@@ -1,0 +1,172 @@
+"""``PhysicsSystem``: runs the world's physics step; ``PhysicsEventDelivery`` hands out events.
+
+Adding ``PhysicsSystem`` to a world (every App scene gets one) inserts three
+resources: :class:`~kge.physics.settings.PhysicsSettings` (unless the scene
+brings its own), :class:`~kge.physics.resource.Physics` and
+:class:`~kge.physics.events.PhysicsEvents`. It registers world hooks so that
+adding or removing a RigidBody, Collider, Transform, OneWayPlatform or joint is
+mirrored at the next step, and validators so that a collider naming a body
+that does not exist, or a joint of a body to itself, is refused by the
+``spawn`` / ``add`` that made it, with the world unchanged.
+
+Frame order (DESIGN.md): FIXED stage, behaviours (100) -> physics (200: sync-in,
+step, sync-out, events recorded) -> flush -> delivery (300: resource lists are
+already filled; esper events and Behaviour hooks now) -> flush.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from kge.components.collider import Collider
+from kge.components.platform import OneWayPlatform
+from kge.components.rigidbody import RigidBody
+from kge.components.transform import Transform
+from kge.errors import ValidationError
+from kge.physics import joint_api
+from kge.physics.events import PhysicsEvents
+from kge.physics.joint_bridge import body_fields, load_joint_modules
+from kge.physics.resource import Physics
+from kge.physics.settings import PhysicsSettings
+from kge.physics.simulation import Simulation
+from kge.schedule import Stage, System
+from kge.world import World
+
+
+def _where(entity: int | None, what: str) -> str:
+    return what if entity is None else f"entity {entity}, {what}"
+
+
+class PhysicsSystem(System):
+    """Owns the world's :class:`~kge.physics.simulation.Simulation` and steps it."""
+
+    stage = Stage.FIXED
+    order = 200
+    sim: Simulation
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        if not world.has_resource(PhysicsSettings):
+            world.insert_resource(PhysicsSettings())
+        events = world.try_resource(PhysicsEvents)
+        if events is None:
+            events = world.insert_resource(PhysicsEvents())
+        dt = 1.0 / 60.0
+        time = _fixed_dt(world)
+        if time is not None:
+            dt = time
+        self.sim = sim = Simulation(world, lambda: world.resource(PhysicsSettings), events, dt)
+        self.events = events
+        world.insert_resource(Physics(world, sim))
+        world.on_add(RigidBody, sim.on_rigidbody_added)
+        world.on_remove(RigidBody, sim.on_rigidbody_removed)
+        world.on_add(Collider, sim.on_collider_added)
+        world.on_remove(Collider, sim.on_collider_removed)
+        world.on_add(Transform, sim.on_transform_added)
+        world.on_remove(Transform, sim.on_transform_removed)
+        world.on_add(OneWayPlatform, sim.on_platform_changed)
+        world.on_remove(OneWayPlatform, sim.on_platform_changed)
+        world.validator(Collider, self._check_collider)
+        load_joint_modules()
+        for jtype in joint_api.joint_types():
+            world.on_add(jtype, sim.joints.added)
+            world.on_remove(jtype, sim.joints.removed_hook)
+            world.validator(jtype, self._check_joint)
+        if world.get_system(PhysicsEventDelivery) is None:
+            world.add_system(PhysicsEventDelivery())
+
+    # -- validators (run before spawn/add changes anything) ----------------------------------
+    def _check_collider(self, entity: int | None, col: Collider) -> None:
+        b = col.body
+        if b is None:
+            return
+        world = self.world
+        if not world.exists(b):
+            raise ValidationError(
+                f"{_where(entity, 'Collider.body')}: body entity {b} does not exist"
+            )
+        if world.try_get(b, RigidBody) is None:
+            raise ValidationError(
+                f"{_where(entity, 'Collider.body')}: entity {b} has no RigidBody "
+                "(give it one, or leave body=None for a static collider)"
+            )
+
+    def _check_joint(self, entity: int | None, joint: Any) -> None:
+        name = type(joint).__name__
+        a, b = body_fields(joint)
+        world = self.world
+        for field, ref in (("body_a", a), ("body_b", b)):
+            if ref is None:
+                continue
+            if isinstance(ref, bool) or not isinstance(ref, int):
+                raise ValidationError(
+                    f"{_where(entity, f'{name}.{field}')} must be an entity id, got {ref!r}"
+                )
+            if not world.exists(ref):
+                raise ValidationError(
+                    f"{_where(entity, f'{name}.{field}')}: body entity {ref} does not exist"
+                )
+            if world.try_get(ref, RigidBody) is None and world.try_get(ref, Collider) is None:
+                raise ValidationError(
+                    f"{_where(entity, f'{name}.{field}')}: entity {ref} has no RigidBody "
+                    "or Collider, so there is no body to join"
+                )
+        if a is not None and a == b:
+            raise ValidationError(
+                f"{_where(entity, name)}: body_a and body_b are both entity {a}; "
+                "a joint needs two different bodies"
+            )
+
+    # -- running -------------------------------------------------------------------------------
+    def process(self, dt: float) -> None:
+        sim = self.sim
+        if dt != sim.dt:
+            sim.dt = dt
+            sim.joints.dt = dt
+            sim.rb_dirty.update(e for e, r in sim.bodies.items() if not r.implicit)
+        self.events.clear()
+        self.world.flush()  # changes queued since the last flush take part in this step
+        sim.step()
+
+    def detach(self) -> None:
+        self.sim.close()
+
+
+def _fixed_dt(world: World) -> float | None:
+    from kge.scene import Time
+
+    t = world.try_resource(Time)
+    return None if t is None else t.fixed_dt
+
+
+class PhysicsEventDelivery(System):
+    """Deliver the step's physics events: esper events and Behaviour hooks.
+
+    Each contact event goes to the scripts of collider A, collider B and (if
+    different) their body entities; a script is called at most once per event.
+    """
+
+    stage = Stage.FIXED
+    order = 300
+
+    def process(self, dt: float) -> None:
+        world = self.world
+        events = world.try_resource(PhysicsEvents)
+        if events is None or not len(events):
+            return
+        from kge.systems.behaviour import runner
+
+        run = runner(world)
+        for name, hook in PhysicsEvents.CHANNELS:
+            lst = getattr(events, name)
+            if not lst:
+                continue
+            for ev in list(lst):
+                world.dispatch(name, ev)
+                if hook is None:
+                    continue
+                seen: list[int] = []
+                for ent in (ev.collider_a, ev.collider_b, ev.body_a, ev.body_b):
+                    if ent is not None and ent not in seen:
+                        seen.append(ent)
+                        run.call_one(ent, hook, ev)

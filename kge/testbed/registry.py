@@ -1,0 +1,93 @@
+"""One registry of sample scenes, shared by the testbed, the tests and the benchmarks.
+
+A sample is a setup function registered once with a category and a name::
+
+    @sample("Stacking", "Pyramid", help="A 10-row pyramid of boxes that must stand.")
+    def pyramid(world: World, rows: int = 10) -> None:
+        ...
+
+The testbed lists samples by category, the test suite runs every one of them
+headless (and asserts the physical claim a sample declares with ``@s.claim``),
+and the benchmarks build the same geometry at larger sizes through the keyword
+arguments. Keeping one definition is what stops the three from drifting apart.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from kge.world import World
+
+Setup = Callable[..., None]
+Claim = Callable[[Any], None]  # receives the App after the sample has run
+
+
+@dataclass(slots=True)
+class Sample:
+    """A registered sample scene."""
+
+    category: str
+    name: str
+    setup: Setup
+    help: str = ""
+    keys: dict[str, str] = field(default_factory=dict)
+    camera: tuple[float, float, float] = (0.0, 10.0, 1.0)  # centre x, y, zoom
+    claims: list[Claim] = field(default_factory=list)
+
+    @property
+    def slug(self) -> str:
+        """The command-line name: lower case, words joined by dashes."""
+        return self.name.lower().replace(" ", "-").replace("/", "-")
+
+    def claim(self, check: Claim) -> Claim:
+        """Register a check of the sample's physical claim (used by the tests)."""
+        self.claims.append(check)
+        return check
+
+    def __call__(self, world: World, **kwargs: Any) -> None:
+        self.setup(world, **kwargs)
+
+
+_SAMPLES: dict[str, Sample] = {}
+
+
+def sample(
+    category: str,
+    name: str,
+    *,
+    help: str = "",
+    keys: dict[str, str] | None = None,
+    camera: tuple[float, float, float] = (0.0, 10.0, 1.0),
+) -> Callable[[Setup], Sample]:
+    """Decorator registering ``setup`` as a sample; returns the :class:`Sample`."""
+
+    def register(setup: Setup) -> Sample:
+        s = Sample(category, name, setup, help, dict(keys or {}), camera)
+        if s.slug in _SAMPLES:
+            raise ValueError(f"two samples are named {name!r}")
+        _SAMPLES[s.slug] = s
+        return s
+
+    return register
+
+
+def _load() -> None:
+    import kge.testbed.samples  # noqa: F401  (registers every sample on import)
+
+
+def all_samples() -> list[Sample]:
+    """Every sample, ordered by category then name."""
+    _load()
+    return sorted(_SAMPLES.values(), key=lambda s: (s.category, s.name))
+
+
+def get_sample(name: str) -> Sample:
+    """A sample by slug or by name (case-insensitive)."""
+    _load()
+    key = name.lower().replace(" ", "-")
+    if key in _SAMPLES:
+        return _SAMPLES[key]
+    known = ", ".join(sorted(_SAMPLES))
+    raise KeyError(f"no sample named {name!r}; known samples: {known}")

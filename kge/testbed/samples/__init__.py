@@ -1,0 +1,12 @@
+"""Every sample module; importing this package registers them all."""
+
+from kge.testbed.samples import (  # noqa: F401
+    basics,
+    bodies,
+    collision,
+    joints,
+    large,
+    materials,
+    queries,
+    stacking,
+)
