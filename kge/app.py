@@ -337,15 +337,18 @@ class App:
         """Stop :meth:`run` after the current frame."""
         self._running = False
 
-    def run(self, frames: int | None = None) -> None:
-        """Open a window and run until it closes (headless: until ``quit`` or ``frames``)."""
+    def run(self, frames: int | None = None, screenshot: str | None = None) -> None:
+        """Open a window and run until it closes (headless: until ``quit`` or ``frames``).
+
+        ``screenshot`` saves the last frame as a PNG (smoke tests, docs).
+        """
         if not self.headless:
             try:
                 from kge.render.window import run_windowed
             except ImportError:
                 self.headless = True
             else:
-                run_windowed(self, frames)
+                run_windowed(self, frames, screenshot)
                 return
         self._running = True
         count = 0
@@ -353,6 +356,8 @@ class App:
             self.advance(self.fixed_dt)
             count += 1
         self._running = False
+        if screenshot:
+            self.screenshot(screenshot)
 
     def close(self) -> None:
         """Close every scene (despawning all entities) and stop the App's music."""

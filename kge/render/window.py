@@ -103,8 +103,11 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
         app.quit()
 
 
-def run_windowed(app: App, frames: int | None = None) -> None:
-    """Open a window of ``app.size`` and run until it closes, ``app.quit()`` or ``frames``."""
+def run_windowed(app: App, frames: int | None = None, screenshot: str | None = None) -> None:
+    """Open a window of ``app.size`` and run until it closes, ``app.quit()`` or ``frames``.
+
+    ``screenshot`` saves the last frame as a PNG while the window still exists.
+    """
     import pyglet
 
     from kge.render.setup import configure_headless, create_window, ensure_renderer, release
@@ -118,6 +121,10 @@ def run_windowed(app: App, frames: int | None = None) -> None:
     try:
         pyglet.app.run(1 / 60)
     finally:
+        if screenshot:
+            from kge.render.setup import screenshot as save
+
+            save(app, screenshot)
         pyglet.clock.unschedule(pyglet.app.event_loop._redraw_windows)
         pyglet.window.Window._enable_event_queue = queued  # see setup.create_window
         app._running = False

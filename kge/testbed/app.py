@@ -39,7 +39,7 @@ from kge.scene import Scene
 from kge.testbed.registry import Sample, all_samples, get_sample
 from kge.world import World
 
-LIST_TOP = 12.0  # pixels from the top of the window to the first list line
+LIST_TOP = 36.0  # pixels from the top of the window to the first list line (below the stats)
 LINE = 15.0  # pixels per list line
 LIST_WIDTH = 190.0  # clickable width of the sample list
 PAN_SPEED = 0.6  # screen widths per second with the arrow keys
@@ -215,9 +215,15 @@ class TestbedController(Script):
         )
 
 
-def run_testbed(start: str | None = None, size: tuple[int, int] = (1280, 720)) -> int:
-    """Open the testbed window on ``start`` (a sample name) or the first sample."""
+def run_testbed(start: str | None = None, size: tuple[int, int] = (1280, 720),
+                frames: int | None = None, screenshot: str | None = None) -> int:
+    """Open the testbed window on ``start`` (a sample name) or the first sample.
+
+    ``frames`` closes it after that many frames (smoke tests on a virtual display);
+    ``screenshot`` then saves the last frame.
+    """
     sample = get_sample(start) if start else all_samples()[0]
     app = App(TestbedScene(sample), title="kge testbed", size=size, headless=False)
-    app.run()
+    app.run(frames, screenshot)
+    app.close()
     return 0

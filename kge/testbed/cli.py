@@ -93,7 +93,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="kge testbed", description=__doc__.split("\n")[0])
     parser.add_argument("--list", action="store_true", help="list the samples and exit")
     parser.add_argument("--sample", help="run this sample (see --list)")
-    parser.add_argument("--frames", type=int, default=180, help="fixed steps to run headless")
+    parser.add_argument("--frames", type=int, default=None,
+                        help="headless: fixed steps to run (default 180); window: close after N")
     parser.add_argument("--screenshot", help="write a PNG of the last frame")
     parser.add_argument("--headless", action="store_true", help="never open a window")
     parser.add_argument("--showcase", action="store_true", help="run every sample headless")
@@ -114,19 +115,19 @@ def main(argv: list[str] | None = None) -> int:
             print(err.args[0], file=sys.stderr)
             return 2
         if headless:
-            print(run_one(s, args.frames, args.screenshot).line())
+            print(run_one(s, args.frames or 180, args.screenshot).line())
             if args.screenshot:
                 print(f"screenshot: {args.screenshot}")
             return 0
         from kge.testbed.app import run_testbed
 
-        return run_testbed(start=s.slug)
+        return run_testbed(start=s.slug, frames=args.frames, screenshot=args.screenshot)
     if headless or args.showcase:
         Path(args.sheet).parent.mkdir(parents=True, exist_ok=True)
         return showcase(args.seconds, args.sheet)
     from kge.testbed.app import run_testbed
 
-    return run_testbed()
+    return run_testbed(frames=args.frames, screenshot=args.screenshot)
 
 
 if __name__ == "__main__":

@@ -5,7 +5,7 @@ from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 from kge.components.joints import MouseJoint
 from kge.testbed import get_sample
-from kge.testbed.app import TestbedScene
+from kge.testbed.app import LINE, LIST_TOP, TestbedScene
 from kge.testbed.samples.build import named
 
 
@@ -101,7 +101,7 @@ def test_clicking_the_list_switches_sample() -> None:
     app = open_testbed("hello-world")
     list_names = [app.world.get(e, Name) for e in named(app.world, "sample-list")]
     assert len(list_names) >= 25
-    app.input.click(Mouse.LEFT, at=(20.0, app.size[1] - 12.0 - 15.0 * 3 - 5.0))
+    app.input.click(Mouse.LEFT, at=(20.0, app.size[1] - LIST_TOP - LINE * 3 - 5.0))
     app.step()
     from kge.testbed import all_samples
 
