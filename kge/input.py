@@ -121,29 +121,28 @@ class Input:
     def mouse_down(
         self, button: int = Mouse.LEFT, at: Vec2 | None = None, modifiers: int = 0
     ) -> None:
-        self.modifiers = modifiers
-        if at is not None:
-            self.mouse_screen = (float(at[0]), float(at[1]))
-        self.mouse_world = self.screen_to_world(self.mouse_screen)
-        if button not in self._buttons:
-            self._buttons.add(button)
-            self._buttons_pressed.add(button)
-        self.events.append(
-            MouseEvent("down", button, self.mouse_screen, self.mouse_world, modifiers=modifiers)
-        )
+        """A button goes down (at screen pixel ``at``, or where the pointer is)."""
+        self._button("down", button, at, modifiers)
 
     def mouse_up(
         self, button: int = Mouse.LEFT, at: Vec2 | None = None, modifiers: int = 0
     ) -> None:
+        self._button("up", button, at, modifiers)
+
+    def _button(self, kind: str, button: int, at: Vec2 | None, modifiers: int) -> None:
         self.modifiers = modifiers
         if at is not None:
             self.mouse_screen = (float(at[0]), float(at[1]))
         self.mouse_world = self.screen_to_world(self.mouse_screen)
-        if button in self._buttons:
-            self._buttons.discard(button)
+        held, edge = (self._buttons, self._buttons_pressed)
+        if kind == "down" and button not in held:
+            held.add(button)
+            edge.add(button)
+        elif kind == "up" and button in held:
+            held.discard(button)
             self._buttons_released.add(button)
         self.events.append(
-            MouseEvent("up", button, self.mouse_screen, self.mouse_world, modifiers=modifiers)
+            MouseEvent(kind, button, self.mouse_screen, self.mouse_world, modifiers=modifiers)
         )
 
     def click(self, button: int = Mouse.LEFT, at: Vec2 | None = None, modifiers: int = 0) -> None:

@@ -20,7 +20,8 @@ kge.errors.ValidationError: Circle.radius must be > 0, got -1.0
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import KW_ONLY, dataclass
 from typing import Any, ClassVar
 
 from kge.components.color import RGBA, rgba
@@ -68,41 +69,47 @@ _COMMON: dict[str, Check] = {
 
 
 @dataclass(slots=True)
-class Rect(Tracked):
+class _Drawn(Tracked):
+    """Style every drawable shares; keyword-only, after each shape's own geometry."""
+
+    _: KW_ONLY
+    color: RGBA = _WHITE
+    thickness: float = 0.05
+    offset: Vec2 = (0.0, 0.0)
+    layer: int = 0
+    order: int = 0
+    visible: bool = True
+
+
+@dataclass(slots=True)
+class _Fillable(_Drawn):
+    _: KW_ONLY
+    filled: bool = True
+
+
+@dataclass(slots=True)
+class Rect(_Fillable):
     """An axis-aligned (in the entity frame) rectangle, ``width`` x ``height`` metres, centred."""
 
     _checks: ClassVar[dict[str, Check]] = {**_COMMON, "width": positive, "height": positive}
 
     width: float
     height: float
-    color: RGBA = _WHITE
-    filled: bool = True
-    thickness: float = 0.05
-    offset: Vec2 = (0.0, 0.0)
-    layer: int = 0
-    order: int = 0
-    visible: bool = True
 
 
 @dataclass(slots=True)
-class Circle(Tracked):
+class Circle(_Fillable):
     """A disc (or ring) of ``radius`` metres; ``segments=None`` picks a smooth count."""
 
     _checks: ClassVar[dict[str, Check]] = {**_COMMON, "radius": positive, "segments": _segments}
 
     radius: float
-    color: RGBA = _WHITE
-    filled: bool = True
-    thickness: float = 0.05
-    offset: Vec2 = (0.0, 0.0)
-    layer: int = 0
-    order: int = 0
-    visible: bool = True
+    _: KW_ONLY
     segments: int | None = None
 
 
 @dataclass(slots=True)
-class Triangle(Tracked):
+class Triangle(_Fillable):
     """A triangle with corners ``a``, ``b``, ``c`` in the entity frame (any winding)."""
 
     _checks: ClassVar[dict[str, Check]] = {**_COMMON, "a": vec2, "b": vec2, "c": vec2}
@@ -110,52 +117,28 @@ class Triangle(Tracked):
     a: Vec2
     b: Vec2
     c: Vec2
-    color: RGBA = _WHITE
-    filled: bool = True
-    thickness: float = 0.05
-    offset: Vec2 = (0.0, 0.0)
-    layer: int = 0
-    order: int = 0
-    visible: bool = True
 
     def __post_init__(self) -> None:
         _points((self.a, self.b, self.c), "Triangle", "corners")
 
 
 @dataclass(slots=True)
-class Polygon(Tracked):
+class Polygon(_Fillable):
     """A simple polygon (convex or not, any winding) from ``vertices`` in the entity frame."""
 
     _checks: ClassVar[dict[str, Check]] = {**_COMMON, "vertices": _points}
 
-    vertices: tuple[Vec2, ...]
-    color: RGBA = _WHITE
-    filled: bool = True
-    thickness: float = 0.05
-    offset: Vec2 = (0.0, 0.0)
-    layer: int = 0
-    order: int = 0
-    visible: bool = True
+    vertices: Sequence[Vec2]  # any sequence in; stored as a tuple
 
 
 @dataclass(slots=True)
-class Line(Tracked):
+class Line(_Drawn):
     """A segment from ``start`` to ``end`` (entity frame), ``thickness`` metres wide."""
 
-    _checks: ClassVar[dict[str, Check]] = {
-        **_COMMON,
-        "start": vec2,
-        "end": vec2,
-    }
+    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "start": vec2, "end": vec2}
 
     start: Vec2
     end: Vec2
-    color: RGBA = _WHITE
-    thickness: float = 0.05
-    offset: Vec2 = (0.0, 0.0)
-    layer: int = 0
-    order: int = 0
-    visible: bool = True
 
     @property
     def filled(self) -> bool:

@@ -6,11 +6,13 @@ code it mirrors, and a user can copy one into a game unchanged.
 
 from __future__ import annotations
 
+from typing import Any
+
 from kge.components import Name, Transform
 from kge.components.collider import Collider
 from kge.components.filter import Filter
 from kge.components.rigidbody import BodyType, RigidBody
-from kge.components.shapes import Box, Chain, Circle, Edge
+from kge.components.shapes import Box, Chain, Circle, Edge, Shape
 from kge.world import World
 
 Vec2 = tuple[float, float]
@@ -25,64 +27,41 @@ def ground(world: World, half_width: float = 40.0, y: float = 0.0, friction: flo
     )
 
 
-def box(
+def spawn_body(
     world: World,
     x: float,
     y: float,
-    half_width: float = 0.5,
-    half_height: float = 0.5,
+    shape: Shape,
     *,
     angle: float = 0.0,
     density: float = 1.0,
     friction: float = 0.6,
     restitution: float = 0.0,
     body: BodyType = BodyType.DYNAMIC,
-    name: str = "box",
+    name: str = "body",
     filter: Filter | None = None,
-    **rigidbody: object,
+    **rigidbody: Any,
 ) -> int:
-    """A box body (half extents, like Box2D's SetAsBox)."""
+    """A body with one collider; extra keywords go to its RigidBody (velocity=...)."""
     return world.spawn(
         Transform(x, y, angle),
-        RigidBody(type=body, **rigidbody),  # type: ignore[arg-type]
-        Collider(
-            Box(half_width, half_height),
-            density=density,
-            friction=friction,
-            restitution=restitution,
-            filter=filter or Filter(),
-        ),
+        RigidBody(type=body, **rigidbody),
+        Collider(shape, density=density, friction=friction, restitution=restitution,
+                 filter=filter or Filter()),
         Name(name),
     )
 
 
-def ball(
-    world: World,
-    x: float,
-    y: float,
-    radius: float = 0.5,
-    *,
-    density: float = 1.0,
-    friction: float = 0.6,
-    restitution: float = 0.0,
-    body: BodyType = BodyType.DYNAMIC,
-    name: str = "ball",
-    filter: Filter | None = None,
-    **rigidbody: object,
-) -> int:
-    """A circle body."""
-    return world.spawn(
-        Transform(x, y),
-        RigidBody(type=body, **rigidbody),  # type: ignore[arg-type]
-        Collider(
-            Circle(radius),
-            density=density,
-            friction=friction,
-            restitution=restitution,
-            filter=filter or Filter(),
-        ),
-        Name(name),
-    )
+def box(world: World, x: float, y: float, half_width: float = 0.5, half_height: float = 0.5,
+        *, name: str = "box", **options: Any) -> int:
+    """A box body (half extents, like Box2D's SetAsBox); options as :func:`spawn_body`."""
+    return spawn_body(world, x, y, Box(half_width, half_height), name=name, **options)
+
+
+def ball(world: World, x: float, y: float, radius: float = 0.5, *, name: str = "ball",
+         **options: Any) -> int:
+    """A circle body; options as :func:`spawn_body`."""
+    return spawn_body(world, x, y, Circle(radius), name=name, **options)
 
 
 def static_box(
