@@ -67,6 +67,7 @@ from kge.physics.events import (
     SensorEnd,
 )
 from kge.physics.mass import MassData
+from kge.physics.queries import QueryHit, RayHit
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.render.images import PixelImage, checker, from_array, solid
@@ -134,6 +135,8 @@ __all__ = [
     "PreSolve",
     "PrismaticJoint",
     "PulleyJoint",
+    "QueryHit",
+    "RayHit",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",

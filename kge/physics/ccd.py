@@ -16,28 +16,35 @@ this module reproduces:
 How: :class:`ContinuousCollision` reads every body's velocity once per step
 with ``pymunk.batch`` (about 0.05 ms for 800 bodies), clamps the few that
 exceed the caps, and *arms* a swept integrator - a pymunk ``position_func`` -
-only on the tracked dynamic bodies that move more than ``threshold`` times
-their core radius in the step *and* have something they could hit within
-reach (and on slow ones a fast kinematic body is about to sweep over). All
-other bodies keep pymunk's C integrator, so a scene of slow bodies pays
-nothing but the read, and a bullet in open air only a box query per step.
+only on tracked dynamic bodies that move more than ``threshold`` times their
+core radius per substep *and* have something they could hit within reach, on
+the neighbours such a body could launch, and on bodies a fast kinematic body
+is about to sweep over. All other bodies keep pymunk's C integrator, so a
+scene of slow bodies pays nothing but the read, and a bullet in open air a
+couple of box queries per step.
 
-An armed body, at each pymunk (sub)step whose motion is still fast, sweeps
-its collision shapes along the step's motion against the candidate shapes in
-its swept bounding box: circles as swept circles, polygons as their vertices
-plus an inscribed circle, all shrunk by ``margin`` so that surfaces it is
-already resting on are never "hit". At the earliest time of impact it stops
-there (the shapes then overlap by about ``margin``) and keeps its velocity;
-pymunk's contact solver, which runs right after in the same substep, resolves
-the contact (bounce, friction, events) as for any other contact. The sweep
-honours everything that decides whether two colliders touch: same body,
-sensors, Box2D filtering (``shape.kge_filter``), joints without
-``collide_bodies``, one-way platforms (``shape.kge_oneway``) and an optional
-``pair_filter``. Moving obstacles (kinematic bodies, and dynamic ones for
-bullets) are swept against in their own frame, and a body they hit is carried
-along for the rest of the substep, so a fast kinematic paddle pushes a ball
-instead of passing over it. Motion within a substep is linearised (a rotating
-body's vertices move along chords), which is exact for pure translation.
+An armed body, at each substep whose motion is still fast, is capped again
+(collisions inside a step can exceed the caps) and sweeps its shapes along
+the motion against the candidate shapes in its swept bounding box: circles as
+swept circles, polygons as their vertices plus an inscribed circle, all
+shrunk by ``margin`` so that surfaces it already rests on are never "hit";
+a spinning body's points follow their arcs as short chords. At the earliest
+impact it stops (its shapes then overlap by about ``margin``) and keeps its
+velocity; pymunk's contact solver, which runs right after in the same
+substep, resolves the contact (bounce, friction, events) as for any other.
+A small *guard* circle deep inside each shape catches the rare body that the
+solver fails to stop at a contact the world accepted (crushed by others, or
+spinning into a wall): it is held for that substep and its approach removed.
+
+The sweep honours everything that decides whether two colliders touch: same
+body, sensors, Box2D filtering (``shape.kge_filter``), joints without
+``collide_bodies``, one-way platforms (``shape.kge_oneway``), an optional
+``pair_filter`` (the world's contact filter) and, for the guard, the contacts
+pymunk actually accepted in the last substep (pre-solve hooks). Moving
+obstacles (kinematic bodies, and dynamic ones for bullets) are swept against
+in their own frame; a kinematic one carries what it hits along for the rest
+of the substep (never through static geometry), so a fast paddle pushes a
+ball instead of passing over it.
 
 >>> import math, pymunk
 >>> space = pymunk.Space()
@@ -209,7 +216,8 @@ class _Tracked:
     armed: bool = False
     sweeps: int = 0  # sweeps run (statistics for benchmarks)
     impacts: int = 0  # sweeps that stopped the body early
-    #: this step's motion (m) of the fastest kinematic body near this one
+    #: this step's motion (m) of the fastest body that may hit this one: a kinematic
+    #: body, or for a bullet any fast body
     boost: float = 0.0
     #: shapes in an accepted contact with the body after the last substep's solve,
     #: recorded by a post-step callback whenever the body swept near obstacles
@@ -290,8 +298,9 @@ class _Tracked:
     ) -> _Impact | None:
         """Earliest fraction of this motion at which a shrunk shape touches an obstacle.
 
-        Returns (fraction, displacement by which a kinematic obstacle carries the
-        body for the rest of the substep, hold normal) or None. A hold normal is
+        Returns (fraction, displacement by which the obstacle carries the body for
+        the rest of the substep - zero unless it is sure to complete its motion -,
+        hold normal) or None. A hold normal is
         set when a guard - a circle deep inside a shape - already touches an
         obstacle and is driven into it: the contact solver failed to stop the
         body (it is being crushed, or spins into the obstacle), so it must not
@@ -325,9 +334,13 @@ class _Tracked:
                 if static_only and ob is not None and ob.body_type != _STATIC:
                     continue
                 ov = ob.velocity if ob is not None and ob.body_type != _STATIC else (0.0, 0.0)
-                # only a kinematic body is sure to complete its motion (a dynamic one
-                # may be stopped itself), so only a kinematic one carries what it hits
-                carries = ob is not None and ob.body_type == _KINEMATIC
+                # A moving obstacle that completes its motion carries what it hits:
+                # a kinematic body always; a dynamic one unless it is a bullet too
+                # (then both stop at their common time of impact instead).
+                carries = ob is not None and (
+                    ob.body_type == _KINEMATIC
+                    or (ob.body_type == _DYNAMIC and not self.owner._is_bullet(ob))
+                )
                 flt = getattr(s, "kge_filter", None) or _DEFAULT_FILTER
                 obstacles.append((s, s.bb, flt, ov[0] * dt, ov[1] * dt, carries))
         if not obstacles:
@@ -568,6 +581,10 @@ class ContinuousCollision:
             if info.armed:
                 self._disarm(self._armed.pop(id(info)))
 
+    def _is_bullet(self, body: pymunk.Body) -> bool:
+        info = self._tracked.get(body.id)
+        return info is not None and info.bullet
+
     def is_armed(self, body: pymunk.Body) -> bool:
         """True when ``body`` carries the swept integrator for the current step."""
         info = self._tracked.get(body.id)
@@ -646,15 +663,18 @@ class ContinuousCollision:
     def _arm_neighbours(
         self, fast: list[tuple[_Tracked, float]], want: dict[int, _Tracked]
     ) -> None:
-        """Arm the bodies a fast body may hit this step, if they have walls nearby.
+        """Arm the bodies a fast body may hit this step.
 
         A collision inside the step can launch a slow body at up to the speed cap
         (Box2D computes impacts after the solve, with the new velocities), so a
         neighbour within a fast body's reach is armed when something it could
-        then hit is within one step's cap of it. Its integrator stays cheap
-        until it is actually fast.
+        then hit is within twice the speed cap of it; its integrator stays cheap
+        until it is actually fast. A bullet neighbour is also boosted, so it
+        sweeps against the fast body even while it is itself at rest.
         """
-        cap = self.max_translation
+        # a light body hit by a heavy one leaves at up to (1 + e) times its speed,
+        # and only armed bodies are capped within the step
+        cap = 2.0 * self.max_translation
         for info, motion in fast:
             box = info._bounds()
             if box is None:
@@ -662,9 +682,16 @@ class ContinuousCollision:
             for shape in self.space.bb_query(_grown(box, motion), _ALL):
                 other = shape.body
                 near = self._tracked.get(other.id) if other is not None else None
-                if near is None or near is info or id(near) in want:
+                if near is None or near is info:
                     continue
-                if near.near_obstacles(cap):
+                if near.bullet and motion > near.boost:
+                    # Box2D sweeps every pair with a bullet in it: a slow bullet must
+                    # see the fast body coming, in that body's frame
+                    if near.boost == 0.0:
+                        self._boosted.append(near)
+                    near.boost = motion
+                    want[id(near)] = near
+                elif id(near) not in want and near.near_obstacles(cap):
                     want[id(near)] = near
 
     def _boost_near_movers(

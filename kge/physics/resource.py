@@ -25,7 +25,7 @@ import pymunk
 
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
-from kge.errors import EntityNotFoundError, ValidationError
+from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.mass import MassData
@@ -111,13 +111,15 @@ class Physics:
         self, entity: int, force: Vec2, point: Vec2 | None = None, wake: bool = True
     ) -> None:
         """Apply ``force`` (N) at world ``point`` (default: the centre of mass) for one step."""
-        fx, fy = vec2(force, "apply_force", "force")
+        owner = where(entity, "Physics.apply_force")
+        fx, fy = vec2(force, owner, "force")
+        at = None if point is None else vec2(point, owner, "point")  # before any change
         rec = self._force_target(entity, "apply_force", wake)
         if rec is None:
             return
         torque = 0.0
-        if point is not None:
-            px, py = vec2(point, "apply_force", "point")
+        if at is not None:
+            px, py = at
             c = rec.body.local_to_world(rec.body.center_of_gravity)
             torque = (px - c.x) * fy - (py - c.y) * fx
         acc = self._sim.forces.setdefault(entity, [0.0, 0.0, 0.0])
@@ -127,7 +129,7 @@ class Physics:
 
     def apply_torque(self, entity: int, torque: float, wake: bool = True) -> None:
         """Apply ``torque`` (N m) for one step."""
-        tq = finite(torque, "apply_torque", "torque")
+        tq = finite(torque, where(entity, "Physics.apply_torque"), "torque")
         rec = self._force_target(entity, "apply_torque", wake)
         if rec is None:
             return
@@ -137,13 +139,15 @@ class Physics:
         self, entity: int, impulse: Vec2, point: Vec2 | None = None, wake: bool = True
     ) -> None:
         """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre)."""
-        jx, jy = vec2(impulse, "apply_linear_impulse", "impulse")
+        owner = where(entity, "Physics.apply_linear_impulse")
+        jx, jy = vec2(impulse, owner, "impulse")
+        at = None if point is None else vec2(point, owner, "point")  # before any change
         rec = self._force_target(entity, "apply_linear_impulse", wake)
         if rec is None:
             return
         body = rec.body
         c = body.local_to_world(body.center_of_gravity)
-        px, py = (c.x, c.y) if point is None else vec2(point, "apply_linear_impulse", "point")
+        px, py = (c.x, c.y) if at is None else at
         v = body.velocity
         body.velocity = (v.x + jx / body.mass, v.y + jy / body.mass)
         if math.isfinite(body.moment):
@@ -152,7 +156,7 @@ class Physics:
 
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
         """Change the angular velocity at once by ``impulse / inertia``."""
-        j = finite(impulse, "apply_angular_impulse", "impulse")
+        j = finite(impulse, where(entity, "Physics.apply_angular_impulse"), "impulse")
         rec = self._force_target(entity, "apply_angular_impulse", wake)
         if rec is None:
             return
@@ -275,6 +279,16 @@ class Physics:
         if fn is not None and not callable(fn):
             raise ValidationError(f"physics.contact_filter must be callable or None, got {fn!r}")
         self._sim.recorder.contact_filter = fn
+        ccd = self._sim.ccd
+        if ccd is not None:  # sweeps must not stop a body at a pair the filter rejects
+            ccd.pair_filter = None if fn is None else self._pair_filter
+
+    def _pair_filter(self, a: pymunk.Shape, b: pymunk.Shape) -> bool:
+        fn = self._sim.recorder.contact_filter
+        if fn is None:
+            return True
+        with self._sim.world.locked():
+            return bool(fn(a.kge_collider, b.kge_collider))
 
     # -- queries (kge.physics.queries) ---------------------------------------------------------
     def _query_space(self, op: str) -> pymunk.Space:

@@ -532,7 +532,7 @@ class Simulation:
         self.joints.before_step(self.dt)
         rec = self.recorder
         if self.ccd is not None:
-            self.ccd.before_step(self.dt)
+            self.ccd.before_step(self.dt, n)
         forces = self.forces
         for i in range(n):
             rec.substep = i
@@ -541,8 +541,6 @@ class Simulation:
             self.space.step(h)
         forces.clear()
         rec.substep = 0
-        if self.ccd is not None:
-            self.ccd.after_step(self.dt)
         self.steps += 1
         self.joints.after_step(self.dt)
         self.sync_out()

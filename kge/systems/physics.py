@@ -19,6 +19,7 @@ from __future__ import annotations
 from typing import Any
 
 from kge.components.collider import Collider
+from kge.components.joints import GearJoint, PrismaticJoint, RevoluteJoint
 from kge.components.platform import OneWayPlatform
 from kge.components.rigidbody import RigidBody
 from kge.components.transform import Transform
@@ -116,6 +117,24 @@ class PhysicsSystem(System):
                 f"{_where(entity, name)}: body_a and body_b are both entity {a}; "
                 "a joint needs two different bodies"
             )
+        if isinstance(joint, GearJoint):
+            self._check_gear(entity, joint)
+
+    def _check_gear(self, entity: int | None, gear: GearJoint) -> None:
+        """A gear must name two live revolute/prismatic joints (else every step would fail)."""
+        world = self.world
+        for field in ("joint_a", "joint_b"):
+            ref = getattr(gear, field)
+            if not world.exists(ref):
+                raise ValidationError(
+                    f"{_where(entity, f'GearJoint.{field}')}: joint entity {ref} does not exist"
+                )
+            if not (world.has(ref, RevoluteJoint) or world.has(ref, PrismaticJoint)):
+                held = ", ".join(type(c).__name__ for c in world.components(ref)) or "nothing"
+                raise ValidationError(
+                    f"{_where(entity, f'GearJoint.{field}')}: entity {ref} must hold a "
+                    f"RevoluteJoint or PrismaticJoint (it holds {held})"
+                )
 
     # -- running -------------------------------------------------------------------------------
     def process(self, dt: float) -> None:

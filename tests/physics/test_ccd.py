@@ -135,6 +135,23 @@ def test_bullets_never_tunnel_through_a_dynamic_plank(speed: float) -> None:
         assert plank_x > WALL_X  # the plank was hit and pushed
 
 
+@pytest.mark.parametrize("bullet", [True, False])
+def test_a_fast_plank_hits_a_resting_bullet(bullet: bool) -> None:
+    # Box2D sweeps every pair that contains a bullet, whichever body is the fast one
+    hit = 0
+    for phase in PHASES:
+        sim = Sim()
+        plank = sim.box(pymunk.Body.DYNAMIC, (-phase * 0.25, 0.0), (0.05, 1.0))
+        plank.velocity = (120.0, 0.0)
+        ball = sim.ball((5.0, 0.0), 0.05, bullet=bullet)
+        sim.step(10)
+        hit += ball.position.x > plank.position.x and ball.velocity.x > 100.0
+    if bullet:
+        assert hit == 8
+    else:
+        assert hit < 8  # two non-bullets may tunnel, as in Box2D
+
+
 def test_non_bullets_may_tunnel_through_dynamic_bodies() -> None:
     # Box2D: 8/8 at 500 m/s; kge only pays for sweeps against dynamic bodies on bullets
     tunnelled = sum(
