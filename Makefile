@@ -12,6 +12,12 @@ test:
 	@tools/bootstrap.sh
 	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m pytest
 
+bench:
+	@tools/bootstrap.sh
+	@$(PY) -c "import Box2D" 2>/dev/null || $(PY) -m pip install -q -e ".[bench]" || \
+	  echo "make bench: could not install pybox2d (box2d 2.3.10); its column is skipped"
+	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m kge bench --breakdown $(BENCH_ARGS)
+
 lint:
 	@tools/bootstrap.sh
 	$(PY) -m ruff check kge tests examples benchmarks

@@ -10,13 +10,17 @@
   awake body's pose into plain Python objects each frame), which is what KGE 1.0
   did. Optional: skipped with a message when ``Box2D`` is not installed.
 
-Each runner exposes ``poses()`` (entity -> (x, y, angle) for dynamic bodies, keyed
-by the kge entity ids of the scene description) so quality figures are computed
-the same way for all three.
+The raw runners build from a :class:`~benchmarks.mirror.SceneSpec` (what the
+kge scene holds, read back as plain data), can add and remove bodies between
+steps (for the churn and spawn scenes), and pin a joint whose body is ``None``
+to a static ground body, as Box2D's samples do. Each runner exposes ``poses()``
+(entity -> (x, y, angle) of the dynamic bodies, keyed by the kge entity ids of
+the description) so quality figures are computed the same way for all three.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any
 
@@ -26,14 +30,15 @@ from benchmarks.mirror import BodySpec, SceneSpec, ShapeSpec, describe
 from kge.app import App
 from kge.components import Transform
 from kge.components.rigidbody import BodyType, RigidBody
-from kge.physics.settings import PhysicsSettings
-from kge.testbed.registry import Sample
+from kge.testbed.registry import Sample, get_sample
 
 DT = 1.0 / 60.0
 Pose = tuple[float, float, float]
 
 
 class KgeRunner:
+    """A testbed sample in a headless kge App; ``step`` is one whole frame."""
+
     def __init__(self, s: Sample, **kwargs: Any) -> None:
         self.app = App(s.setup, headless=True, **kwargs)
 
@@ -51,20 +56,28 @@ class KgeRunner:
         self.app.close()
 
 
-def spec_of(s: Sample, **kwargs: Any) -> SceneSpec:
-    """Build the sample in a throwaway kge world and read its description back."""
-    app = App(s.setup, headless=True, **kwargs)
+@functools.lru_cache(maxsize=4)
+def _spec_cached(slug: str, items: tuple[tuple[str, Any], ...]) -> SceneSpec:
+    app = App(get_sample(slug).setup, headless=True, **dict(items))
     try:
         return describe(app.world)
     finally:
         app.close()
 
 
+def spec_of(s: Sample, **kwargs: Any) -> SceneSpec:
+    """Build the sample in a throwaway kge world and read its description back (cached).
+
+    The description is read-only for the runners, so pymunk and pybox2d share one.
+    """
+    return _spec_cached(s.slug, tuple(sorted(kwargs.items())))
+
+
 class PymunkRunner:
-    def __init__(self, spec: SceneSpec, settings: PhysicsSettings | None = None,
-                 events: bool = False) -> None:
-        st = settings or PhysicsSettings()
+    def __init__(self, spec: SceneSpec, events: bool = False) -> None:
+        st = spec.settings
         self.substeps = st.substeps
+        self.skin = st.polygon_radius
         space = pymunk.Space()
         space.gravity = st.gravity
         space.iterations = st.iterations
@@ -76,10 +89,14 @@ class PymunkRunner:
         self.bodies: dict[int, pymunk.Body] = {}
         self.begins = 0
         self.ends = 0
-        for b in spec.bodies:
-            self._add_body(b, st.polygon_radius)
+        for spec_body in spec.bodies:
+            self.add_body(spec_body)
         for j in spec.joints:
-            pivot = pymunk.PivotJoint(self.bodies[j.body_a], self.bodies[j.body_b], j.anchor)
+            a = space.static_body if j.body_a is None else self.bodies[j.body_a]
+            b = space.static_body if j.body_b is None else self.bodies[j.body_b]
+            if pymunk.Body.DYNAMIC not in (a.body_type, b.body_type):
+                continue  # a joint between two fixed bodies does nothing (pymunk refuses it)
+            pivot = pymunk.PivotJoint(a, b, j.local_a, j.local_b)
             pivot.collide_bodies = False
             space.add(pivot)
         if events or any(s.events for b in spec.bodies for s in b.shapes):
@@ -91,13 +108,13 @@ class PymunkRunner:
     def _separate(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
         self.ends += 1
 
-    def _add_body(self, b: BodySpec, skin: float) -> None:
+    def add_body(self, b: BodySpec) -> None:
         kind = {"static": pymunk.Body.STATIC, "kinematic": pymunk.Body.KINEMATIC,
                 "dynamic": pymunk.Body.DYNAMIC}[b.type]
         body = pymunk.Body(body_type=kind)
         body.position = b.position
         body.angle = b.angle
-        shapes = [self._shape(body, s, skin) for s in b.shapes]
+        shapes = [self._shape(body, s, self.skin) for s in b.shapes]
         self.space.add(body, *shapes)
         if b.type == "dynamic":
             if body.mass <= 0:
@@ -108,6 +125,10 @@ class PymunkRunner:
             body.velocity = b.velocity
             body.angular_velocity = b.angular_velocity
         self.bodies[b.entity] = body
+
+    def remove_body(self, entity: int) -> None:
+        body = self.bodies.pop(entity)
+        self.space.remove(*body.shapes, *body.constraints, body)
 
     @staticmethod
     def _shape(body: pymunk.Body, s: ShapeSpec, skin: float) -> pymunk.Shape:
@@ -170,22 +191,25 @@ class Box2DRunner:
                     runner.ends += 1
 
             listener = Listener()
-        self.world = b2.b2World(gravity=PhysicsSettings().gravity, doSleep=True)
+        st = spec.settings
+        self.world = b2.b2World(gravity=st.gravity, doSleep=st.sleep)
         if listener is not None:
             self.world.contactListener = listener
             self._listener = listener
         self.bodies: dict[int, Any] = {}
-        for b in spec.bodies:
-            self._add_body(b)
-        for j in spec.joints:
-            self.world.CreateRevoluteJoint(bodyA=self.bodies[j.body_a],
-                                           bodyB=self.bodies[j.body_b], anchor=j.anchor)
         # The minimal ECS sync an engine on pybox2d performs every frame.
-        self.mirror: dict[int, list[float]] = {
-            e: [0.0, 0.0, 0.0] for e, body in self.bodies.items() if body.type == b2.b2_dynamicBody
-        }
+        self.mirror: dict[int, list[float]] = {}
+        for spec_body in spec.bodies:
+            self.add_body(spec_body)
+        ground = None
+        for j in spec.joints:
+            if (j.body_a is None or j.body_b is None) and ground is None:
+                ground = self.world.CreateStaticBody(position=(0.0, 0.0))
+            a = ground if j.body_a is None else self.bodies[j.body_a]
+            b = ground if j.body_b is None else self.bodies[j.body_b]
+            self.world.CreateRevoluteJoint(bodyA=a, bodyB=b, anchor=j.anchor)
 
-    def _add_body(self, b: BodySpec) -> None:
+    def add_body(self, b: BodySpec) -> None:
         b2 = self.b2
         kind = {"static": b2.b2_staticBody, "kinematic": b2.b2_kinematicBody,
                 "dynamic": b2.b2_dynamicBody}[b.type]
@@ -207,6 +231,12 @@ class Box2DRunner:
                 isSensor=s.sensor, filter=b2.b2Filter(categoryBits=s.category, maskBits=s.mask,
                                                       groupIndex=s.group)))
         self.bodies[b.entity] = body
+        if b.type == "dynamic":
+            self.mirror[b.entity] = [b.position[0], b.position[1], b.angle]
+
+    def remove_body(self, entity: int) -> None:
+        self.world.DestroyBody(self.bodies.pop(entity))
+        self.mirror.pop(entity, None)
 
     def step(self) -> None:
         self.world.Step(DT, 8, 3)

@@ -28,7 +28,11 @@ FRAME_BUDGET_MS = 1000.0 / 60.0
 
 
 class Runner(Protocol):
-    """One engine running one scene: advance a frame, report a quality figure."""
+    """One engine running one scene: advance a frame, report a quality figure.
+
+    A runner may also have a ``prepare()`` method, called untimed before each
+    frame (the spawn scene removes the previous wave there).
+    """
 
     def step(self) -> None: ...
 
@@ -76,6 +80,10 @@ def percentile(values: list[float], q: float) -> float:
     return ordered[lo] + (ordered[hi] - ordered[lo]) * (k - lo)
 
 
+def _nothing() -> None:
+    pass
+
+
 def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
             progress: Callable[[str], None] = lambda s: None) -> list[Result]:
     """Time ``engines`` on ``scene`` at ``size`` in interleaved blocks."""
@@ -85,7 +93,9 @@ def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
     for name in names:
         progress(f"{scene.name}[{size}] building {name}")
         runner = scene.engines[name](size)
+        prepare = getattr(runner, "prepare", None) or _nothing
         for _ in range(scene.warmup):
+            prepare()
             runner.step()
         runners[name] = runner
         samples[name] = []
@@ -97,8 +107,10 @@ def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
             for name in names:
                 progress(f"{scene.name}[{size}] block {b + 1}/{blocks} {name}")
                 runner = runners[name]
+                prepare = getattr(runner, "prepare", None) or _nothing
                 times = samples[name]
                 for _ in range(per_block):
+                    prepare()
                     t0 = time.perf_counter()
                     runner.step()
                     times.append((time.perf_counter() - t0) * 1000.0)

@@ -8,6 +8,7 @@ from the components. The raw-engine runners then build from that description.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from itertools import pairwise
 
@@ -16,6 +17,7 @@ from kge.components.collider import Collider
 from kge.components.joints import RevoluteJoint
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
+from kge.physics.settings import PhysicsSettings
 from kge.world import World
 
 Vec2 = tuple[float, float]
@@ -53,15 +55,26 @@ class BodySpec:
 
 @dataclass(slots=True)
 class JointSpec:
-    body_a: int
-    body_b: int
-    anchor: Vec2  # world anchor (revolute)
+    """A revolute joint; ``None`` for a body is the static ground (Box2D's ground body)."""
+
+    body_a: int | None
+    body_b: int | None
+    anchor: Vec2  # world anchor at build time
+    local_a: Vec2 = (0.0, 0.0)  # anchor in body A's frame (world frame for the ground)
+    local_b: Vec2 = (0.0, 0.0)
 
 
 @dataclass(slots=True)
 class SceneSpec:
     bodies: list[BodySpec]
     joints: list[JointSpec]
+    settings: PhysicsSettings = field(default_factory=PhysicsSettings)
+
+    def body(self, entity: int) -> BodySpec:
+        for b in self.bodies:
+            if b.entity == entity:
+                return b
+        raise KeyError(entity)
 
     @property
     def dynamic_count(self) -> int:
@@ -69,8 +82,6 @@ class SceneSpec:
 
 
 def _box_vertices(b: Box) -> tuple[Vec2, ...]:
-    import math
-
     c, s = math.cos(b.angle), math.sin(b.angle)
     cx, cy = b.center
     out = []
@@ -120,18 +131,38 @@ def describe(world: World) -> SceneSpec:
         bodies[owner].shapes.extend(_shape_specs(col))
     joints: list[JointSpec] = []
     for _, (j,) in sorted(world.query(RevoluteJoint), key=lambda item: item[0]):
-        if j.body_a is None or j.body_b is None:
-            raise TypeError("benchmarks mirror revolute joints between two bodies only")
-        anchor = _world_anchor(j, world.get(j.body_a, Transform))
-        joints.append(JointSpec(j.body_a, j.body_b, anchor))
-    return SceneSpec([bodies[k] for k in sorted(bodies)], joints)
+        if j.body_a is None and j.body_b is None:
+            raise TypeError("a revolute joint needs at least one body")
+        anchor = _world_anchor(j, world)
+        joints.append(JointSpec(j.body_a, j.body_b, anchor,
+                                _to_local(world, j.body_a, anchor),
+                                _to_local(world, j.body_b, anchor)))
+    settings = world.try_resource(PhysicsSettings) or PhysicsSettings()
+    return SceneSpec([bodies[k] for k in sorted(bodies)], joints, settings)
 
 
-def _world_anchor(joint: RevoluteJoint, body_a: Transform) -> Vec2:
-    import math
+def _pose(world: World, entity: int | None) -> tuple[float, float, float]:
+    if entity is None:  # the ground: the world frame
+        return (0.0, 0.0, 0.0)
+    t = world.get(entity, Transform)
+    return (t.x, t.y, t.angle)
 
+
+def _world_anchor(joint: RevoluteJoint, world: World) -> Vec2:
     if joint.anchor is not None:
         return (float(joint.anchor[0]), float(joint.anchor[1]))
-    lx, ly = joint.local_anchor_a
-    c, s = math.cos(body_a.angle), math.sin(body_a.angle)
-    return (body_a.x + c * lx - s * ly, body_a.y + s * lx + c * ly)
+    return to_world(_pose(world, joint.body_a), joint.local_anchor_a)
+
+
+def _to_local(world: World, entity: int | None, point: Vec2) -> Vec2:
+    x, y, a = _pose(world, entity)
+    c, s = math.cos(a), math.sin(a)
+    dx, dy = point[0] - x, point[1] - y
+    return (c * dx + s * dy, -s * dx + c * dy)
+
+
+def to_world(pose: tuple[float, float, float], local: Vec2) -> Vec2:
+    """A point given in a body's frame, in world coordinates."""
+    x, y, a = pose
+    c, s = math.cos(a), math.sin(a)
+    return (x + c * local[0] - s * local[1], y + s * local[0] + c * local[1])

@@ -62,7 +62,9 @@ def _build(n: int) -> tuple[Any, Any, list[Any], list[Any]]:
 
     app = App(scene, headless=True, size=(960, 540))
     app.render()
-    view = app.world.get_system(RenderSystem).view
+    system = app.world.get_system(RenderSystem)
+    assert system is not None, "App.render() adds the RenderSystem"
+    view = system.view
     transforms = [t for _, (t,) in app.world.query(Transform)]
     batch = pyglet.graphics.Batch()
     tex = pyglet.image.ImageData(8, 8, "RGBA", bytes((255, 200, 0, 255)) * 64).get_texture()

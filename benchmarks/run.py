@@ -1,9 +1,13 @@
 """``kge bench`` / ``make bench``: every scene, every engine, one table.
 
-Writes a table to the terminal (with progress on stderr), ``out/bench.json`` and
-``out/bench.png`` (matplotlib). ``--quick`` runs every scene at its smallest size
-in seconds (the test suite does this so the benchmarks cannot rot);
+Writes a table to the terminal (with progress on stderr), ``out/bench.json``,
+``out/bench.png`` (matplotlib) and ``out/bench.md`` (the same report as
+markdown, for docs/benchmarks.md). ``--quick`` runs every scene at its smallest
+size in seconds (the test suite does this so the benchmarks cannot rot);
 ``--breakdown`` adds kge's time per phase (sync-in, step, sync-out, events).
+Render sync (sprites moved per frame, headless) is measured in the same run
+unless ``--no-render``; the issue's targets are checked against the numbers at
+the end (reported, never asserted).
 """
 
 from __future__ import annotations
@@ -14,16 +18,40 @@ import json
 import os
 import platform
 import sys
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from benchmarks.harness import FRAME_BUDGET_MS, Result, largest_fitting, measure
 from benchmarks.scenes import scenes, skipped_engines
 
 ENGINES = ("kge", "pymunk", "box2d")
+RENDER_SIZES = (1000, 5000, 10000)
+Progress = Callable[[str], None]
 
 
 def machine() -> str:
-    return f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            cpu = next((ln.split(":", 1)[1].strip() for ln in f if ln.startswith("model name")),
+                       cpu)
+    except OSError:
+        pass
+    return (f"{cpu}, {os.cpu_count()} cores, {platform.system()}, "
+            f"Python {platform.python_version()}")
+
+
+def versions() -> dict[str, str]:
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {}
+    for pkg in ("pymunk", "esper", "pyglet", "numpy", "box2d"):
+        try:
+            out[pkg] = version(pkg)
+        except PackageNotFoundError:
+            out[pkg] = "not installed"
+    return out
 
 
 def ratio(results: list[Result], scene: str, size: int, a: str, b: str) -> float | None:
@@ -31,6 +59,10 @@ def ratio(results: list[Result], scene: str, size: int, a: str, b: str) -> float
     if a in by and b in by and by[b] > 0:
         return by[a] / by[b]
     return None
+
+
+def _fmt_q(q: dict[str, float]) -> str:
+    return ", ".join(f"{k}={v:g}" for k, v in q.items())
 
 
 def table(results: list[Result]) -> str:
@@ -41,10 +73,10 @@ def table(results: list[Result]) -> str:
     for r in results:
         rp = ratio(results, r.scene, r.size, "kge", "pymunk") if r.engine == "kge" else None
         rb = ratio(results, r.scene, r.size, "kge", "box2d") if r.engine == "kge" else None
-        q = ", ".join(f"{k}={v:g}" for k, v in r.quality.items())
         lines.append(
             f"{r.scene:<15}{r.size:>7}  {r.engine:<7}{r.median_ms:>10.3f}{r.p95_ms:>9.3f}"
-            f"{'' if rp is None else f'{rp:.2f}':>11}{'' if rb is None else f'{rb:.2f}':>10}  {q}"
+            f"{'' if rp is None else f'{rp:.2f}':>11}{'' if rb is None else f'{rb:.2f}':>10}"
+            f"  {_fmt_q(r.quality)}"
         )
     return "\n".join(lines)
 
@@ -61,70 +93,259 @@ def fits(results: list[Result]) -> dict[str, dict[str, float]]:
     return out
 
 
-def chart(results: list[Result], path: Path) -> None:
+def _median(results: list[Result], scene: str, size: int, engine: str) -> float | None:
+    return next((r.median_ms for r in results
+                 if (r.scene, r.size, r.engine) == (scene, size, engine)), None)
+
+
+def targets(results: list[Result], fitting: dict[str, dict[str, float]],
+            render: dict[int, dict[str, float]]) -> list[dict[str, Any]]:
+    """The issue's targets beside the measured figures (None when not measured)."""
+    rows: list[dict[str, Any]] = []
+
+    def add(what: str, value: float | None, goal: float, at_most: bool, unit: str = "") -> None:
+        met = None if value is None else (value <= goal if at_most else value >= goal)
+        rows.append({"target": what, "value": value, "goal": goal,
+                     "at_most": at_most, "unit": unit, "met": met})
+
+    for scene, size in (("pyramid", 40), ("rain", 5000)):
+        add(f"kge / raw pymunk, {scene}-{size}", ratio(results, scene, size, "kge", "pymunk"),
+            1.10, True)
+    for scene, size, goal in (("pyramid", 40, 0.80), ("chain", 200, 0.70),
+                              ("many-sleeping", 5000, 0.10)):
+        add(f"kge / pybox2d, {scene}-{size}", ratio(results, scene, size, "kge", "box2d"),
+            goal, True)
+    per_sprite = [r["kge_sync"] for n, r in sorted(render.items()) if n >= 1000]
+    add("render sync per sprite (kge_sync, largest N)", per_sprite[-1] if per_sprite else None,
+        0.15, True, "µs")
+    add("bodies in a dense pile at 60 Hz (dense-pile, sleep off)",
+        fitting.get("dense-pile", {}).get("kge"), 6000, False)
+    add("sparse bodies at 60 Hz (sparse)", fitting.get("sparse", {}).get("kge"), 20000, False)
+    add("spawning 1,000 bodies in one frame", _median(results, "spawn", 1000, "kge"),
+        25.0, True, "ms")
+    return rows
+
+
+def _fmt_target(t: dict[str, Any]) -> tuple[str, str, str, str]:
+    value = "not measured" if t["value"] is None else f"{t['value']:.3g} {t['unit']}".strip()
+    goal = f"{'≤' if t['at_most'] else '≥'} {t['goal']:g} {t['unit']}".strip()
+    met = {None: "-", True: "met", False: "missed"}[t["met"]]
+    return t["target"], value, goal, met
+
+
+def chart(results: list[Result], path: Path, stamp: str) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    groups = sorted({(r.scene, r.size) for r in results})
-    fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(groups)), 4))
+    groups = list(dict.fromkeys((r.scene, r.size) for r in results))  # run order
+    fig, ax = plt.subplots(figsize=(max(6.0, 0.75 * len(groups)), 4.5))
     width = 0.8 / len(ENGINES)
     for i, engine in enumerate(ENGINES):
         xs, ys = [], []
         for g, (scene, size) in enumerate(groups):
-            for r in results:
-                if (r.scene, r.size, r.engine) == (scene, size, engine):
-                    xs.append(g + (i - 1) * width)
-                    ys.append(r.median_ms)
+            ms = _median(results, scene, size, engine)
+            if ms is not None:
+                xs.append(g + (i - 1) * width)
+                ys.append(ms)
         if xs:
             ax.bar(xs, ys, width, label=engine)
     ax.axhline(FRAME_BUDGET_MS, color="grey", linestyle="--", linewidth=1, label="16.7 ms")
-    ax.set_xticks(range(len(groups)), [f"{s}\n{n}" for s, n in groups], fontsize=8)
-    ax.set_ylabel("median ms per frame")
+    ax.set_xticks(range(len(groups)), [f"{s}\n{n}" for s, n in groups], fontsize=7,
+                  rotation=60)
+    ax.set_ylabel("median ms per frame (log)")
     ax.set_yscale("log")
-    ax.set_title(f"kge vs raw pymunk vs pybox2d ({dt.date.today()}, {machine()})", fontsize=9)
+    ax.set_title(f"kge vs raw pymunk vs pybox2d, {stamp}", fontsize=8)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
+def run_breakdown(chosen: list[Any], progress: Progress, quick: bool) -> list[dict[str, Any]]:
+    """kge's phases per scene and size (median ms), from a separate kge-only pass."""
+    from benchmarks.breakdown import breakdown
+
+    rows = []
+    for scene in chosen:
+        for size in scene.sizes:
+            measured = scene.engines["kge"](size)
+            app = getattr(measured.runner, "app", None)
+            if app is None or getattr(measured.runner, "prepare", None) is not None:
+                measured.close()  # the spawn scene's frame is not a plain App.step
+                continue
+            progress(f"breakdown {scene.name}[{size}]")
+            phases = breakdown(app, scene.warmup, scene.frames)
+            rows.append({"scene": scene.name, "size": size, **phases})
+            measured.close()
+    return rows
+
+
+def breakdown_table(rows: list[dict[str, Any]]) -> str:
+    from benchmarks.breakdown import PHASES
+
+    head = f"{'scene':<15}{'size':>7}" + "".join(f"{p:>10}" for p in (*PHASES, "total"))
+    lines = [head]
+    for r in rows:
+        lines.append(f"{r['scene']:<15}{r['size']:>7}"
+                     + "".join(f"{r[p]:>10.3f}" for p in (*PHASES, "total")))
+    return "\n".join(lines)
+
+
+def run_render(sizes: tuple[int, ...], repeats: int, progress: Progress
+               ) -> tuple[dict[int, dict[str, float]], str | None]:
+    """Render sync per sprite (µs) at each size, or the reason it could not run."""
+    try:
+        from benchmarks.render_sync import measure as render_measure
+
+        out = {}
+        for n in sizes:
+            progress(f"render sync [{n} sprites]")
+            out[n] = render_measure(n, repeats)
+        return out, None
+    except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
+        return {}, f"render sync skipped: {type(err).__name__}: {err}"
+
+
+def render_table(render: dict[int, dict[str, float]]) -> str:
+    cols = ("blend", "bulk_write", "kge_sync", "sprite_update", "frame")
+    lines = [f"{'sprites':>8}" + "".join(f"{c:>15}" for c in cols)]
+    for n, r in sorted(render.items()):
+        lines.append(f"{n:>8}" + "".join(f"{r[c]:>15.3f}" for c in cols))
+    return "\n".join(lines)
+
+
+def markdown(report: dict[str, Any], chart_link: str | None) -> str:
+    """The report as markdown (what docs/benchmarks.md carries)."""
+    res = [Result(**r) for r in report["results"]]
+    out = [f"Measured {report['date']} on {report['machine']}.", "",
+           "Versions: " + ", ".join(f"{k} {v}" for k, v in report["versions"].items()) + ".", ""]
+    if chart_link:
+        out += [f"![kge vs raw pymunk vs pybox2d]({chart_link})", ""]
+    out += ["| scene | size | kge ms (p95) | pymunk ms | pybox2d ms | kge/pymunk | kge/pybox2d "
+            "| quality (kge; pymunk; pybox2d) |",
+            "|---|---:|---:|---:|---:|---:|---:|---|"]
+    for scene, size in dict.fromkeys((r.scene, r.size) for r in res):
+        by = {r.engine: r for r in res if (r.scene, r.size) == (scene, size)}
+        k = by.get("kge")
+
+        def ms(e: str, by: dict[str, Result] = by) -> str:
+            r = by.get(e)
+            return "-" if r is None else f"{r.median_ms:.2f}"
+
+        rp, rb = ratio(res, scene, size, "kge", "pymunk"), ratio(res, scene, size, "kge", "box2d")
+        q = "; ".join(_fmt_q(by[e].quality) for e in ENGINES if e in by)
+        out.append(f"| {scene} | {size} | {'-' if k is None else f'{k.median_ms:.2f} '}"
+                   f"({'-' if k is None else f'{k.p95_ms:.2f}'}) | {ms('pymunk')} | {ms('box2d')}"
+                   f" | {'-' if rp is None else f'{rp:.2f}'} | {'-' if rb is None else f'{rb:.2f}'}"
+                   f" | {q} |")
+    out += ["", "Largest size fitting a 16.7 ms frame (log-log interpolation between sizes, "
+            "extrapolated beyond the largest):", "",
+            "| scene | kge | pymunk | pybox2d |", "|---|---:|---:|---:|"]
+    for name, per in report["largest_fitting"].items():
+        out.append(f"| {name} | " + " | ".join(f"{per.get(e, float('nan')):,.0f}"
+                                               for e in ENGINES) + " |")
+    if report.get("render"):
+        out += ["", "Render sync, µs per sprite (median; `kge_sync` = pose blend + bulk "
+                "vertex write, `sprite_update` = pyglet's per-sprite `Sprite.update`):", "",
+                "| sprites | blend | bulk_write | kge_sync | sprite_update | whole frame |",
+                "|---:|---:|---:|---:|---:|---:|"]
+        for n, r in sorted(report["render"].items(), key=lambda kv: int(kv[0])):
+            out.append(f"| {n} | {r['blend']:.3f} | {r['bulk_write']:.3f} | {r['kge_sync']:.3f}"
+                       f" | {r['sprite_update']:.3f} | {r['frame']:.3f} |")
+    if report.get("breakdown"):
+        from benchmarks.breakdown import PHASES
+
+        out += ["", "kge frame breakdown, median ms per phase:", "",
+                "| scene | size | " + " | ".join((*PHASES, "total")) + " |",
+                "|---|---:|" + "---:|" * (len(PHASES) + 1)]
+        for r in report["breakdown"]:
+            out.append(f"| {r['scene']} | {r['size']} | "
+                       + " | ".join(f"{r[p]:.2f}" for p in (*PHASES, "total")) + " |")
+    out += ["", "Targets:", "", "| target | measured | goal | |", "|---|---:|---:|---|"]
+    for t in report["targets"]:
+        out.append("| " + " | ".join(_fmt_target(t)) + " |")
+    if report["skipped"]:
+        out += ["", "Skipped: " + "; ".join(report["skipped"])]
+    return "\n".join(out) + "\n"
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="kge bench", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog="kge bench", description=(__doc__ or "").split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="smallest sizes, few frames")
     parser.add_argument("--scene", action="append", help="only these scenes")
     parser.add_argument("--blocks", type=int, default=5, help="interleaved blocks per engine")
-    parser.add_argument("--out", default="out", help="folder for bench.json and bench.png")
+    parser.add_argument("--out", default="out", help="folder for bench.json/.png/.md")
     parser.add_argument("--no-chart", action="store_true")
+    parser.add_argument("--no-render", action="store_true", help="skip the render sync section")
+    parser.add_argument("--breakdown", action="store_true",
+                        help="also time kge's phases (sync-in, step, sync-out, events)")
     args = parser.parse_args(argv)
+
+    def progress(msg: str) -> None:
+        print(f"  {msg}", file=sys.stderr, flush=True)
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     for line in skipped_engines():
         print(f"skipped {line}", file=sys.stderr)
+    started = dt.datetime.now(dt.UTC)
     results: list[Result] = []
     chosen = [s for s in scenes(args.quick) if not args.scene or s.name in args.scene]
     for scene in chosen:
         for size in scene.sizes:
             results += measure(scene, size, ENGINES, blocks=2 if args.quick else args.blocks,
-                               progress=lambda msg: print(f"  {msg}", file=sys.stderr))
+                               progress=progress)
     print(table(results))
     fitting = fits(results)
     print("\nlargest size fitting a 16.7 ms frame (log-log interpolation):")
     for name, per in fitting.items():
         print(f"  {name:<15} " + "  ".join(f"{e} {n:g}" for e, n in per.items()))
+    skipped = skipped_engines()
+    render: dict[int, dict[str, float]] = {}
+    if not args.no_render and not args.scene:
+        sizes = (200,) if args.quick else RENDER_SIZES
+        render, why = run_render(sizes, 2 if args.quick else 9, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        else:
+            print("\nrender sync, µs per sprite (median):")
+            print(render_table(render))
+    rows: list[dict[str, Any]] = []
+    if args.breakdown:
+        rows = run_breakdown(chosen, progress, args.quick)
+        print("\nkge frame breakdown, median ms per phase:")
+        print(breakdown_table(rows))
+    goals = targets(results, fitting, render)
+    print("\ntargets:")
+    for t in goals:
+        what, value, goal, met = _fmt_target(t)
+        print(f"  {what:<58} {value:>14}  goal {goal:<10} {met}")
+    seconds = (dt.datetime.now(dt.UTC) - started).total_seconds()
     report = {
-        "date": dt.datetime.now().isoformat(timespec="seconds"),
+        "date": started.strftime("%Y-%m-%d %H:%M UTC"),
         "machine": machine(),
+        "versions": versions(),
+        "seconds": round(seconds, 1),
+        "quick": args.quick,
         "results": [r.as_dict() for r in results],
         "largest_fitting": fitting,
-        "skipped": skipped_engines(),
+        "render": {str(n): r for n, r in render.items()},
+        "breakdown": rows,
+        "targets": goals,
+        "skipped": skipped,
     }
     (out / "bench.json").write_text(json.dumps(report, indent=2))
+    chart_name = None
     if not args.no_chart:
-        chart(results, out / "bench.png")
-    print(f"\nwrote {out / 'bench.json'}" + ("" if args.no_chart else f" and {out / 'bench.png'}"))
+        chart(results, out / "bench.png", f"{report['date']}, {report['machine']}")
+        chart_name = "bench.png"
+    (out / "bench.md").write_text(markdown(report, chart_name))
+    print(f"\nwrote {out / 'bench.json'}, {out / 'bench.md'}"
+          + ("" if args.no_chart else f" and {out / 'bench.png'}")
+          + f" in {seconds:.0f} s")
     return 0
 
 

@@ -38,6 +38,12 @@ class MassData:
 
 ZERO = MassData(0.0, 0.0, (0.0, 0.0))
 
+#: masses and inertias at or below this count as none (Box2D's float32 could not even
+#: hold them; in float64 their inverses overflow and the solver produces NaN)
+TINY = 1e-30
+#: larger masses are clamped, larger inertias mean "does not rotate" (overflow guards)
+HUGE = 1e30
+
 
 def polygon_mass(vertices: Sequence[Vec2], density: float) -> MassData:
     """Mass, centroidal inertia and centroid of a convex polygon (Box2D's formula)."""
@@ -105,8 +111,9 @@ def dynamic_mass(
     if override is not None:
         inertia = inertia * override / mass if mass > 0 else 0.0
         mass = override
-    if mass <= 0:
+    if not mass > TINY:  # also denormal masses (1/m overflows to inf -> NaN poses) and NaN
         mass, inertia = 1.0, 0.0
-    if fixed_rotation or inertia <= 0:
+    mass = min(mass, HUGE)  # density * area can overflow to inf, which pymunk refuses
+    if fixed_rotation or not TINY < inertia < HUGE:  # NaN, overflowed or no inertia
         inertia = math.inf
     return MassData(mass, inertia, center)

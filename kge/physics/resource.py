@@ -28,6 +28,7 @@ from kge.components.tracked import raw_set
 from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
+from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
 from kge.physics.settings import PhysicsSettings
 from kge.validate import finite, vec2
@@ -46,6 +47,7 @@ class Physics:
     def __init__(self, world: World, sim: Simulation) -> None:
         self._world = world
         self._sim = sim
+        self._carried = PhysicsEvents()  #: events of between-step syncs, for the next step
 
     # -- configuration ------------------------------------------------------------------
     @property
@@ -70,7 +72,26 @@ class Physics:
             sim.body_struct or sim.collider_struct or sim.pending or sim.rb_dirty
             or sim.col_dirty or sim.tf_dirty or sim.mass_dirty
         ):
+            # Events this early sync produces (contact ends of a removed collider,
+            # joints destroyed with their body) belong to the *next* step: keep them
+            # aside, or the next step's clear() would lose them and leave a begin
+            # without its end.
+            events = sim.events
+            marks = [len(getattr(events, name)) for name, _ in PhysicsEvents.CHANNELS]
             sim.sync_in()
+            for (name, _), n in zip(PhysicsEvents.CHANNELS, marks, strict=True):
+                lst = getattr(events, name)
+                if len(lst) > n:
+                    getattr(self._carried, name).extend(lst[n:])
+                    del lst[n:]
+
+    def _take_carried(self, events: PhysicsEvents) -> None:
+        """Move events of between-step syncs into ``events`` (called as a step starts)."""
+        carried = self._carried
+        if len(carried):
+            for name, _ in PhysicsEvents.CHANNELS:
+                getattr(events, name).extend(getattr(carried, name))
+            carried.clear()
 
     def _record(self, entity: int, op: str) -> BodyRecord:
         if isinstance(entity, bool) or not isinstance(entity, int):

@@ -21,7 +21,9 @@ kge.errors.ValidationError: PhysicsSettings.substeps must be >= 1, got 0
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from kge.errors import ValidationError
 from kge.validate import Vec2, boolean, integer, non_negative, positive, vec2
@@ -52,19 +54,32 @@ class PhysicsSettings:
     #: b2_maxRotation per fixed step
     max_rotation: float = 0.5 * math.pi
 
-    def __post_init__(self) -> None:
-        o = "PhysicsSettings"
-        self.gravity = vec2(self.gravity, o, "gravity")
-        for name in ("substeps", "iterations"):
-            v = integer(getattr(self, name), o, name)
-            if v < 1:
-                raise ValidationError(f"{o}.{name} must be >= 1, got {v!r}")
-            setattr(self, name, v)
-        self.collision_slop = non_negative(self.collision_slop, o, "collision_slop")
-        self.polygon_radius = non_negative(self.polygon_radius, o, "polygon_radius")
-        self.sleep = boolean(self.sleep, o, "sleep")
-        self.time_to_sleep = positive(self.time_to_sleep, o, "time_to_sleep")
-        self.sleep_speed = non_negative(self.sleep_speed, o, "sleep_speed")
-        self.velocity_threshold = non_negative(self.velocity_threshold, o, "velocity_threshold")
-        self.max_translation = positive(self.max_translation, o, "max_translation")
-        self.max_rotation = positive(self.max_rotation, o, "max_rotation")
+    def __setattr__(self, name: str, value: Any) -> None:
+        # every assignment is checked, not only the constructor's: a NaN gravity set
+        # between steps would otherwise turn every pose into NaN at the next step
+        check = _CHECKS.get(name)
+        if check is not None:
+            value = check(value, "PhysicsSettings", name)
+        object.__setattr__(self, name, value)
+
+
+def _at_least_one(value: Any, owner: str, name: str) -> int:
+    v = integer(value, owner, name)
+    if v < 1:
+        raise ValidationError(f"{owner}.{name} must be >= 1, got {v!r}")
+    return v
+
+
+_CHECKS: dict[str, Callable[[Any, str, str], Any]] = {
+    "gravity": vec2,
+    "substeps": _at_least_one,
+    "iterations": _at_least_one,
+    "collision_slop": non_negative,
+    "polygon_radius": non_negative,
+    "sleep": boolean,
+    "time_to_sleep": positive,
+    "sleep_speed": non_negative,
+    "velocity_threshold": non_negative,
+    "max_translation": positive,
+    "max_rotation": positive,
+}

@@ -44,10 +44,15 @@ class PoseTable:
         self.slot: dict[int, int] = {}
         self.bodies: list[pymunk.Body] = []
         self._buffer = pb.Buffer()
+        # the last row-to-slot mapping: pymunk keeps its row order from step to step
+        # unless bodies are added, removed, or fall asleep, so it is usually reused
+        self._row_ids = np.empty(0, dtype=np.int64)
+        self._mapping: tuple[np.ndarray, np.ndarray] | None = None
 
     def rebuild(self, items: Sequence[tuple[int, pymunk.Body]]) -> None:
         """Reset the slots to ``items`` (entity, body), keeping known states."""
         old_slot, old_state, old_prev, old_sleep = self.slot, self.state, self.prev, self.asleep
+        self._mapping = None
         pairs = sorted(items, key=lambda it: it[1].id)
         n = len(pairs)
         self.ids = np.fromiter((b.id for _, b in pairs), dtype=np.int64, count=n)
@@ -89,10 +94,13 @@ class PoseTable:
         rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
         if len(self.ids) == 0 or len(ids) == 0:
             return np.empty(0, dtype=np.int64), np.empty((0, 6))
-        idx = np.searchsorted(self.ids, ids)
-        idx[idx >= len(self.ids)] = 0
-        hit = self.ids[idx] == ids
-        slots = idx[hit]
-        rows = rows[hit]
-        order = np.argsort(slots, kind="stable")
-        return slots[order], rows[order]
+        if self._mapping is None or not np.array_equal(ids, self._row_ids):
+            idx = np.searchsorted(self.ids, ids)
+            idx[idx >= len(self.ids)] = 0
+            hit = self.ids[idx] == ids
+            slots = idx[hit]
+            order = np.argsort(slots, kind="stable")
+            self._mapping = (np.flatnonzero(hit)[order], slots[order])
+            self._row_ids = ids.copy()  # ``ids`` views the buffer, which the next read reuses
+        rows_of_slots, slots = self._mapping  # slots is shared: callers must not write to it
+        return slots, rows[rows_of_slots]

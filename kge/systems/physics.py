@@ -44,6 +44,7 @@ class PhysicsSystem(System):
     stage = Stage.FIXED
     order = 200
     sim: Simulation
+    physics: Physics
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -58,7 +59,7 @@ class PhysicsSystem(System):
             dt = time
         self.sim = sim = Simulation(world, lambda: world.resource(PhysicsSettings), events, dt)
         self.events = events
-        world.insert_resource(Physics(world, sim))
+        self.physics = world.insert_resource(Physics(world, sim))
         world.on_add(RigidBody, sim.on_rigidbody_added)
         world.on_remove(RigidBody, sim.on_rigidbody_removed)
         world.on_add(Collider, sim.on_collider_added)
@@ -144,6 +145,7 @@ class PhysicsSystem(System):
             sim.joints.dt = dt
             sim.rb_dirty.update(e for e, r in sim.bodies.items() if not r.implicit)
         self.events.clear()
+        self.physics._take_carried(self.events)  # ends recorded by syncs between steps
         self.world.flush()  # changes queued since the last flush take part in this step
         sim.step()
 

@@ -1,0 +1,88 @@
+"""The benchmark suite runs end to end at its smallest sizes, so it cannot rot.
+
+Nothing here looks at a timing: the suite measures, the tests only check that
+every scene still builds the same geometry on every engine and reports its
+figures. (Timings are never asserted; see benchmarks/harness.py.)
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from benchmarks import run
+from benchmarks.engines import PymunkRunner, box2d_available, spec_of
+from benchmarks.scenes import RawChurn, joint_quality, scenes
+from kge.testbed.registry import get_sample
+
+ENGINES = {"kge", "pymunk"} | ({"box2d"} if box2d_available() is None else set())
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
+    out = tmp_path_factory.mktemp("bench")
+    assert run.main(["--quick", "--breakdown", "--out", str(out)]) == 0
+    data = json.loads((out / "bench.json").read_text())
+    data["_md"] = (out / "bench.md").read_text()
+    data["_png"] = (out / "bench.png").read_bytes()
+    return data
+
+
+def test_every_scene_runs_on_every_engine(report: dict) -> None:
+    names = {s.name for s in scenes(quick=True)}
+    assert len(names) >= 11
+    seen: dict[str, set[str]] = {}
+    for r in report["results"]:
+        seen.setdefault(r["scene"], set()).add(r["engine"])
+        assert r["frames"] > 0 and r["median_ms"] > 0 and r["p95_ms"] >= r["median_ms"]
+        assert r["quality"], f"{r['scene']} on {r['engine']} reports no quality figure"
+    assert set(seen) == names
+    for scene, engines in seen.items():
+        assert engines == ENGINES, f"{scene} ran on {engines}"
+
+
+def test_engines_agree_on_quality(report: dict) -> None:
+    """Same geometry everywhere: nothing escapes, joints hold, populations match."""
+    for r in report["results"]:
+        q = r["quality"]
+        assert q.get("escaped", 0.0) == 0.0, r
+        assert q.get("joint_gap_m", 0.0) < 0.1, r
+    for scene in ("churn", "spawn", "sparse"):
+        counts = {r["engine"]: r["quality"]["bodies"] for r in report["results"]
+                  if r["scene"] == scene}
+        assert len(set(counts.values())) == 1, (scene, counts)
+
+
+def test_report_has_breakdown_targets_chart_and_markdown(report: dict) -> None:
+    phases = {"sync-in", "step", "sync-out", "events", "other", "total"}
+    assert report["breakdown"] and all(phases <= set(row) for row in report["breakdown"])
+    assert {t["target"] for t in report["targets"]} >= {
+        "kge / raw pymunk, pyramid-40", "spawning 1,000 bodies in one frame"}
+    assert report["_png"][:8] == b"\x89PNG\r\n\x1a\n"
+    assert "| scene | size |" in report["_md"] and report["machine"] in report["_md"]
+    assert report["render"] or any("render" in s for s in report["skipped"])
+
+
+def test_ground_pinned_chain_mirrors_on_raw_pymunk() -> None:
+    spec = spec_of(get_sample("chains"), count=40, links=40)
+    assert sum(j.body_a is None for j in spec.joints) == 1
+    runner = PymunkRunner(spec)
+    first = runner.poses()
+    for _ in range(60):
+        runner.step()
+    last = runner.poses()
+    assert joint_quality(spec, first, last)["joint_gap_m"] < 0.05
+    tip = max(last, key=lambda e: first[e][0])
+    assert last[tip][1] < first[tip][1] - 1.0, "the chain should swing down under gravity"
+    assert all(math.isfinite(v) for p in last.values() for v in p)
+
+
+def test_raw_churn_keeps_the_population() -> None:
+    spec = spec_of(get_sample("churn"), count=40)
+    churn = RawChurn(PymunkRunner(spec), spec, 40)
+    for _ in range(23):
+        churn.step()
+    assert len(churn.poses()) == 40
+    assert churn.spawned == 4 * 4  # four periods of 5 steps, a tenth (4) each
