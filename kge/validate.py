@@ -5,12 +5,24 @@ component, field) in the message, so a bad value is reported at the call that
 made it instead of as a NaN a thousand steps later. They return the value
 converted to the canonical type (``float`` or ``tuple[float, float]``) so
 callers can write ``self.x = finite(x, ...)``.
+
+Validation runs on every component construction and field write, so each check
+starts with a fast path for the value it almost always gets (a finite ``float``
+is recognised by ``type(v) is float and v - v == 0.0``: NaN and infinities
+give NaN there). :data:`FAST` maps a check to a predicate that is true only
+for values the check would return unchanged, so :class:`~kge.components.
+tracked.Tracked` can skip formatting the owner's name and calling the check.
+
+>>> finite(1.5, "Transform", "x"), finite(2, "Transform", "x")
+(1.5, 2.0)
+>>> FAST[finite](float("inf")), FAST[vec2]((0.0, 1.0))
+(False, True)
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from kge.errors import ComponentTypeError, ValidationError
@@ -24,6 +36,8 @@ def _label(owner: str, field: str) -> str:
 
 def number(value: Any, owner: str, field: str) -> float:
     """Return ``value`` as a float, refusing bools, strings and other non-numbers."""
+    if type(value) is float:
+        return value
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         try:
             import numpy as np  # numpy scalars are common in game code
@@ -40,6 +54,8 @@ def number(value: Any, owner: str, field: str) -> float:
 
 def finite(value: Any, owner: str, field: str) -> float:
     """A finite float (no NaN, no infinity)."""
+    if type(value) is float and value - value == 0.0:
+        return value
     v = number(value, owner, field)
     if not math.isfinite(v):
         raise ValidationError(f"{_label(owner, field)} must be finite, got {v!r}")
@@ -47,6 +63,8 @@ def finite(value: Any, owner: str, field: str) -> float:
 
 
 def non_negative(value: Any, owner: str, field: str) -> float:
+    if type(value) is float and value - value == 0.0 and value >= 0.0:
+        return value
     v = finite(value, owner, field)
     if v < 0:
         raise ValidationError(f"{_label(owner, field)} must be >= 0, got {v!r}")
@@ -54,6 +72,8 @@ def non_negative(value: Any, owner: str, field: str) -> float:
 
 
 def positive(value: Any, owner: str, field: str) -> float:
+    if type(value) is float and value - value == 0.0 and value > 0.0:
+        return value
     v = finite(value, owner, field)
     if v <= 0:
         raise ValidationError(f"{_label(owner, field)} must be > 0, got {v!r}")
@@ -69,6 +89,8 @@ def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:
 
 def vec2(value: Any, owner: str, field: str) -> Vec2:
     """A pair of finite floats, from any 2-sequence (tuple, list, pymunk Vec2d, numpy)."""
+    if _is_float_pair(value):
+        return value
     if isinstance(value, (str, bytes)) or (not isinstance(value, Sequence) and not hasattr(
         value, "__len__"
     )):
@@ -85,6 +107,8 @@ def vec2(value: Any, owner: str, field: str) -> Vec2:
 
 
 def boolean(value: Any, owner: str, field: str) -> bool:
+    if type(value) is bool:
+        return value
     if not isinstance(value, bool):
         raise ComponentTypeError(
             f"{_label(owner, field)} must be True or False, got {type(value).__name__} {value!r}"
@@ -93,6 +117,8 @@ def boolean(value: Any, owner: str, field: str) -> bool:
 
 
 def integer(value: Any, owner: str, field: str) -> int:
+    if type(value) is int:
+        return value
     if isinstance(value, bool) or not isinstance(value, int):
         try:
             import numpy as np
@@ -105,3 +131,48 @@ def integer(value: Any, owner: str, field: str) -> int:
             f"{_label(owner, field)} must be an int, got {type(value).__name__} {value!r}"
         )
     return value
+
+
+# -- fast paths -------------------------------------------------------------------------------
+
+
+def _is_finite_float(v: Any) -> bool:
+    return type(v) is float and v - v == 0.0
+
+
+def _is_float_pair(v: Any) -> bool:
+    """A tuple of two finite floats (what :func:`vec2` returns): accepted as it is."""
+    if type(v) is not tuple or len(v) != 2:
+        return False
+    x, y = v
+    return type(x) is float and type(y) is float and x - x == 0.0 and y - y == 0.0
+
+
+def _is_bool(v: Any) -> bool:
+    return type(v) is bool
+
+
+FAST: dict[Callable[..., Any], Callable[[Any], bool]] = {
+    finite: _is_finite_float,
+    non_negative: lambda v: type(v) is float and v - v == 0.0 and v >= 0.0,
+    positive: lambda v: type(v) is float and v - v == 0.0 and v > 0.0,
+    vec2: _is_float_pair,
+    boolean: _is_bool,
+    integer: lambda v: type(v) is int,
+}
+"""check -> predicate that is True only for values the check returns unchanged.
+
+A predicate may say False for a valid value (an ``int`` for :func:`finite`):
+the check itself then runs, converts, or raises its usual message.
+"""
+
+#: the same tests as :data:`FAST`, as Python expressions for generated code: ``{v}`` is
+#: the value, ``{type}`` / ``{float}`` / ``{bool}`` / ``{int}`` name the builtins (a field
+#: may be called ``type``)
+FAST_EXPR: dict[Callable[..., Any], str] = {
+    finite: "{type}({v}) is {float} and {v} - {v} == 0.0",
+    non_negative: "{type}({v}) is {float} and {v} - {v} == 0.0 and {v} >= 0.0",
+    positive: "{type}({v}) is {float} and {v} - {v} == 0.0 and {v} > 0.0",
+    boolean: "{type}({v}) is {bool}",
+    integer: "{type}({v}) is {int}",
+}

@@ -33,9 +33,9 @@ from typing import Any, ClassVar, cast
 
 from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Shape
-from kge.components.tracked import Check, Tracked
+from kge.components.tracked import Check, Tracked, fast_init
 from kge.errors import ComponentTypeError
-from kge.validate import boolean, non_negative
+from kge.validate import FAST, boolean, non_negative
 
 
 def _shape(value: Any, owner: str, field: str) -> Shape:
@@ -63,6 +63,14 @@ def _optional_speed(value: Any, owner: str, field: str) -> float | None:
     return None if value is None else non_negative(value, owner, field)
 
 
+_EXACT_SHAPES = frozenset(SHAPE_TYPES)
+FAST[_shape] = lambda v: type(v) in _EXACT_SHAPES
+FAST[_filter] = lambda v: type(v) is Filter
+FAST[_entity_ref] = lambda v: v is None or (type(v) is int and v >= 0)
+FAST[_optional_speed] = lambda v: v is None or (type(v) is float and v - v == 0.0 and v >= 0.0)
+
+
+@fast_init
 @dataclass(slots=True)
 class Collider(Tracked):
     """A shape plus density, friction, restitution, filter and sensor flag."""

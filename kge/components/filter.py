@@ -34,6 +34,12 @@ class Filter:
     group_index: int = 0
 
     def __post_init__(self) -> None:
+        c, m, g = self.category_bits, self.mask_bits, self.group_index
+        if (
+            type(c) is int and type(m) is int and type(g) is int
+            and 0 <= c <= MAX_BITS and 0 <= m <= MAX_BITS and -(2**31) <= g < 2**31
+        ):
+            return  # the common case: plain ints in range, nothing to convert
         for name in ("category_bits", "mask_bits"):
             v = integer(getattr(self, name), "Filter", name)
             if not 0 <= v <= MAX_BITS:

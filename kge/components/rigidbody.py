@@ -24,9 +24,9 @@ from dataclasses import dataclass
 from enum import Enum
 from typing import Any, ClassVar
 
-from kge.components.tracked import Check, Tracked
+from kge.components.tracked import Check, Tracked, fast_init
 from kge.errors import ComponentTypeError
-from kge.validate import Vec2, boolean, finite, non_negative, positive, vec2
+from kge.validate import FAST, Vec2, boolean, finite, non_negative, positive, vec2
 
 
 class BodyType(Enum):
@@ -54,6 +54,11 @@ def _optional_mass(value: Any, owner: str, field: str) -> float | None:
     return None if value is None else positive(value, owner, field)
 
 
+FAST[_body_type] = lambda v: type(v) is BodyType
+FAST[_optional_mass] = lambda v: v is None or (type(v) is float and v - v == 0.0 and v > 0.0)
+
+
+@fast_init
 @dataclass(slots=True)
 class RigidBody(Tracked):
     """A simulated body; its colliders are the entity's (and those naming it)."""

@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 from kge.errors import ValidationError
@@ -121,13 +122,18 @@ class Box:
 
     def vertices(self) -> tuple[Vec2, ...]:
         """The four corners, counter-clockwise, in body-local coordinates."""
-        hw, hh = self.half_width, self.half_height
-        c, s = math.cos(self.angle), math.sin(self.angle)
-        cx, cy = self.center
-        corners = ((-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh))
-        if self.angle == 0.0:
-            return tuple((cx + x, cy + y) for x, y in corners)
-        return tuple((cx + c * x - s * y, cy + s * x + c * y) for x, y in corners)
+        return _box_corners(self.half_width, self.half_height, self.center, self.angle)
+
+
+@lru_cache(maxsize=1024)
+def _box_corners(hw: float, hh: float, center: Vec2, angle: float) -> tuple[Vec2, ...]:
+    """Box corners, cached: games spawn many boxes of a few sizes (the tuples are immutable)."""
+    c, s = math.cos(angle), math.sin(angle)
+    cx, cy = center
+    corners = ((-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh))
+    if angle == 0.0:
+        return tuple((cx + x, cy + y) for x, y in corners)
+    return tuple((cx + c * x - s * y, cy + s * x + c * y) for x, y in corners)
 
 
 @dataclass(slots=True, frozen=True)

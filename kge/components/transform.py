@@ -19,10 +19,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from kge.components.tracked import Check, Tracked
+from kge.components.tracked import Check, Tracked, fast_init
 from kge.validate import finite
 
 
+@fast_init
 @dataclass(slots=True)
 class Transform(Tracked):
     """Pose of an entity: ``x``, ``y`` (m) and ``angle`` (rad, CCW)."""

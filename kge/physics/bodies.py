@@ -71,15 +71,25 @@ class ColliderRecord:
 
 
 def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
-    """A pymunk body of ``kind`` at the pose (dynamic bodies get mass 1 until sized)."""
-    body = pymunk.Body(body_type=PYMUNK_TYPE[kind])
+    """A pymunk body of ``kind`` at the pose (dynamic bodies get mass 1 until sized).
+
+    Runs once per spawned body, so it writes through Chipmunk's setters directly
+    and sets kge's attributes in one ``__dict__`` update: pymunk routes every
+    Python-level attribute write through a ``__setattr__`` of its own.
+    """
     if kind is BodyType.DYNAMIC:
-        body.mass = 1.0
-        body.moment = math.inf
-    body.position = (x, y)
-    body.angle = angle
-    body.kge_bullet = False
-    body.kge_awake = True  # what kge last saw; a different RigidBody.awake is a user request
+        body = pymunk.Body(1.0, math.inf)
+    else:
+        body = pymunk.Body(body_type=PYMUNK_TYPE[kind])
+    cp = body._body
+    _lib.cpBodySetPosition(cp, (x, y))
+    _lib.cpBodySetAngle(cp, angle)
+    vars(body).update(
+        kge_bullet=False,
+        # what kge last saw; a different RigidBody.awake is a user request
+        kge_awake=True,
+        kge_dynamics=None,  # (gravity scale, damping factors) when a velocity_func is set
+    )
     return body
 
 
@@ -164,3 +174,15 @@ def wake_neighbours(body: pymunk.Body) -> None:
     body.each_arbiter(visit)
     for other in others:
         other.activate()
+
+
+def set_mass(body: pymunk.Body, md: MassData) -> None:
+    """Give a dynamic body kge's mass data (Chipmunk's setters directly: once per new body).
+
+    ``md`` comes from :func:`kge.physics.mass.dynamic_mass`: 0 < mass < inf and
+    inertia > 0 (inf for no rotation), the values pymunk's setters assert.
+    """
+    cp = body._body
+    _lib.cpBodySetMass(cp, md.mass)
+    _lib.cpBodySetMoment(cp, md.inertia)
+    _lib.cpBodySetCenterOfGravity(cp, md.center)

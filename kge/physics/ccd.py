@@ -13,15 +13,18 @@ this module reproduces:
   Ordinary dynamic bodies may tunnel through each other, as in Box2D (that is
   what the bullet flag is for).
 
-How: :class:`ContinuousCollision` reads every body's velocity once per step
-with ``pymunk.batch`` (about 0.05 ms for 800 bodies), clamps the few that
-exceed the caps, and *arms* a swept integrator - a pymunk ``position_func`` -
-only on tracked dynamic bodies that move more than ``threshold`` times their
-core radius per substep *and* have something they could hit within reach, on
-the neighbours such a body could launch, and on bodies a fast kinematic body
-is about to sweep over. All other bodies keep pymunk's C integrator, so a
-scene of slow bodies pays nothing but the read, and a bullet in open air a
-couple of box queries per step.
+How: :class:`ContinuousCollision` reads every body's pose and velocity once
+per step with ``pymunk.batch`` (about 0.5 ms for 20,000 bodies), clamps the few
+that exceed the caps, and *arms* a swept integrator - a pymunk
+``position_func`` - only on tracked dynamic bodies that move more than
+``threshold`` times their core radius per substep *and* have something they
+could hit within reach, on the neighbours such a body could launch, and on
+bodies a fast kinematic body is about to sweep over. All other bodies keep
+pymunk's C integrator, so a scene of slow bodies pays nothing but the read.
+"Within reach" is answered by a numpy index of the static and kinematic
+shapes (the only ones that stop a non-bullet), which screens all fast bodies
+in one vectorised pass: a swinging chain far from any wall costs no shape
+walk at all, and a bullet in open air a couple of box queries per step.
 
 An armed body, at each substep whose motion is still fast, is capped again
 (collisions inside a step can exceed the caps) and sweeps its shapes along
@@ -94,6 +97,8 @@ _STATIC = pymunk.Body.STATIC
 _MAX_CHORD = 0.2
 _FIELDS = (
     pymunk.batch.BodyFields.BODY_ID
+    | pymunk.batch.BodyFields.POSITION
+    | pymunk.batch.BodyFields.ANGLE
     | pymunk.batch.BodyFields.VELOCITY
     | pymunk.batch.BodyFields.ANGULAR_VELOCITY
 )
@@ -201,6 +206,24 @@ def _parts(body: pymunk.Body, margin: float) -> tuple[list[_Part], float, float]
     return parts, (core if math.isfinite(core) else margin), reach
 
 
+def _extent(body: pymunk.Body, reach: float) -> float:
+    """Radius about the body's origin that holds all its shapes' bounding boxes (skin included).
+
+    With the positions read in bulk, ``position ± extent`` bounds the body in
+    any orientation, so fast bodies are screened against the obstacle index
+    in one vectorised pass. ``reach`` (from the centre of gravity, see
+    :func:`_parts`) leaves out only a segment's radius.
+    """
+    pad = 0.0
+    for shape in body.shapes:
+        if isinstance(shape, pymunk.Segment):
+            pad = max(pad, shape.radius)
+        elif not isinstance(shape, (pymunk.Circle, pymunk.Poly)):
+            return math.inf
+    gx, gy = body.center_of_gravity
+    return math.hypot(gx, gy) + reach + pad
+
+
 @dataclass(slots=True, eq=False)
 class _Tracked:
     """A tracked dynamic body; when armed it *is* the body's ``position_func``."""
@@ -212,6 +235,8 @@ class _Tracked:
     core: float
     reach: float
     shapes: tuple[pymunk.Shape, ...] = ()
+    #: radius about the body's origin that holds every shape's bounding box
+    extent: float = math.inf
     saved: Any = None  # the position_func to restore when disarmed
     armed: bool = False
     sweeps: int = 0  # sweeps run (statistics for benchmarks)
@@ -459,21 +484,27 @@ class _Tracked:
         Static shapes are tested against the body's box grown by ``motion``;
         moving ones (kinematic, or dynamic for bullets) may approach by up to
         their own step motion too, so the search is widened by the speed cap.
+        A non-bullet asks the owner's index of static and kinematic shapes
+        (the only ones that can stop it), never walking the dynamic shapes
+        around it; a bullet, which every body can stop, asks the space.
         """
         box = self._bounds()
         space = self.body.space
         if box is None or space is None:
             return False
         reach = motion + self.owner.max_translation
-        region = _grown(box, reach)
+        if self.bullet:
+            shapes = space.bb_query(_grown(box, reach), _ALL)
+        else:
+            shapes = self.owner._obstacles.candidates(box, motion, reach)
         joint_free: set[pymunk.Body] | None = None
-        for shape in space.bb_query(region, _ALL):
+        for shape in shapes:
             if joint_free is None:
                 joint_free = _joint_free_bodies(self.body)
             if not self._is_obstacle(shape, joint_free):
                 continue
             moving = shape.body is not None and shape.body.body_type != pymunk.Body.STATIC
-            if moving or _grown(box, motion).intersects(shape.bb):
+            if _grown(box, reach if moving else motion).intersects(shape.bb):
                 return True
         return False
 
@@ -497,6 +528,251 @@ def _joint_free_bodies(body: pymunk.Body) -> set[pymunk.Body]:
         if not c.collide_bodies:
             out.add(c.b if c.a is body else c.a)
     return out
+
+
+# --------------------------------------------------------------------------- obstacle index
+
+#: rows x fast bodies compared at once by _Obstacles.near_any (bounds temporary memory)
+_CHUNK = 1 << 16
+
+
+class _Obstacles:
+    """Bounding boxes of the space's static and kinematic shapes, in numpy.
+
+    A non-bullet body can only be stopped by static or kinematic geometry, so
+    "is anything within reach?" must not walk the (often many) dynamic shapes
+    around it, as ``space.bb_query`` would. This index holds one row per
+    static or kinematic shape: its cached bounding box and whether its body
+    moves (kinematic). It is kept current at a cost proportional to what
+    changed, never to the size of the space:
+
+    * **new shapes**: Chipmunk gives every shape added to a space the next
+      ``hashid``, and pymunk keeps ``space.shapes`` in insertion order, so the
+      shapes added since the last look are the tail of that view whose hashid
+      exceeds the newest one seen;
+    * **removed shapes**: rows whose shape left the space are dropped when a
+      query meets them, and swept out once removals outnumber the rows;
+    * **moved bodies**: the owners' poses, read in bulk with the velocities,
+      are compared with the last ones; the boxes of a body that moved (and of
+      every moving kinematic body) are re-read, also on the next step, so a
+      ``reindex`` that lags a move by one step is still seen;
+    * **type changes**: :meth:`reclassify`, called by ``track``/``untrack``
+      (the physics system calls one of them after every type change).
+
+    Rows are candidates only: every hit is re-checked on the live shape.
+    """
+
+    def __init__(self, space: pymunk.Space) -> None:
+        self.space = space
+        self.shapes: list[pymunk.Shape | None] = []
+        self.owner_of: list[int] = []  # row -> owner body id
+        self.row_of: dict[pymunk.Shape, int] = {}
+        self.box = np.full((16, 4), np.nan)  # left, bottom, right, top (nan: free row)
+        self.kinematic = np.zeros(16, dtype=bool)
+        self.live = 0
+        self._count = 0  # len(space.shapes) at the last scan
+        self._newest = -1  # largest hashid seen
+        self._removed = 0  # removals seen since the last sweep of dead rows
+        self._owners: dict[int, pymunk.Body] = {}  # body id -> body owning rows
+        self._owner_rows: dict[int, list[int]] = {}
+        self._owners_dirty = True
+        self._oids = np.empty(0, dtype=np.int64)  # sorted owner ids
+        self._opose = np.empty((0, 3))
+        self._orow = np.empty(0, dtype=np.intp)  # owner -> row in the bulk read (-1: none)
+        self._recent = np.empty(0, dtype=bool)
+        self._order = -1  # the bulk-read order _orow was computed for
+
+    # ----------------------------------------------------------------- upkeep
+
+    def refresh(self, ids: np.ndarray, pose: np.ndarray, vel: np.ndarray, order: int) -> None:
+        """Bring the rows up to date from this step's bulk read.
+
+        ``order`` changes whenever the read's body order may have changed.
+        """
+        self._scan()
+        fresh = order != self._order
+        self._order = order
+        if self._owners_dirty:
+            self._oids = np.array(sorted(self._owners), dtype=np.int64)
+            self._opose = np.full((len(self._oids), 3), np.nan)
+            self._recent = np.zeros(len(self._oids), dtype=bool)
+            self._owners_dirty = False
+            fresh = True
+        k = len(self._oids)
+        if k == 0:
+            return
+        if fresh:
+            at = np.minimum(np.searchsorted(self._oids, ids), k - 1)
+            hit = self._oids[at] == ids
+            self._orow = np.full(k, -1, dtype=np.intp)
+            self._orow[at[hit]] = np.flatnonzero(hit)
+        present = self._orow >= 0
+        rows = np.where(present, self._orow, 0)
+        cur = np.where(present[:, None], pose[rows], np.nan)
+        moved = ~(cur == self._opose).all(axis=1)  # nan (absent) counts as moved
+        spinning = present & (vel[rows] != 0.0).any(axis=1)
+        update = moved | spinning | self._recent
+        self._recent = moved
+        self._opose = cur
+        if update.any():
+            for j in np.flatnonzero(update).tolist():
+                self._update_owner(int(self._oids[j]))
+
+    def _scan(self) -> None:
+        """Index the shapes added since the last scan (see the class docstring)."""
+        shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
+        n = len(shapes)
+        if n == self._count and (n == 0 or next(reversed(shapes))._hashid == self._newest):
+            return
+        added = 0
+        newest = self._newest
+        for shape in reversed(shapes):
+            h = shape._hashid
+            if h <= self._newest:
+                break
+            added += 1
+            newest = max(newest, h)
+            body = shape.body
+            if shape in self.row_of or (body is not None and body.body_type != _DYNAMIC):
+                self._classify(shape)
+        self._newest = newest
+        self._removed += max(0, self._count + added - n)
+        self._count = n
+        if self._removed > max(32, self.live):
+            self._removed = 0
+            for shape in [s for s in self.shapes if s is not None]:
+                if shape.space is not self.space:
+                    self._drop(shape)
+
+    def reclassify(self, body: pymunk.Body) -> None:
+        """Re-read ``body``'s shapes after its type (or shape set) may have changed."""
+        if body.body_type == _DYNAMIC and body.id not in self._owner_rows:
+            return  # the common case (a dynamic body tracked): nothing of it is indexed
+        own = set(body.shapes)
+        for shape in own:
+            self._classify(shape)
+        for row in list(self._owner_rows.get(body.id, ())):
+            gone = self.shapes[row]
+            if gone is not None and gone not in own:
+                self._classify(gone)
+
+    def _classify(self, shape: pymunk.Shape) -> None:
+        body = shape.body
+        if body is None or shape.space is not self.space or body.body_type == _DYNAMIC:
+            self._drop(shape)
+            return
+        row = self.row_of.get(shape)
+        if row is None:
+            row = self._free_row()
+            self.row_of[shape] = row
+            self.shapes[row] = shape
+            self.owner_of[row] = body.id
+            self.live += 1
+            rows = self._owner_rows.setdefault(body.id, [])
+            if not rows:
+                self._owners[body.id] = body
+                self._owners_dirty = True
+            rows.append(row)
+        bb = shape.bb
+        self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
+        self.kinematic[row] = body.body_type == _KINEMATIC
+
+    def _free_row(self) -> int:
+        if len(self.shapes) == len(self.box):
+            grow = len(self.box)
+            self.box = np.concatenate([self.box, np.full((grow, 4), np.nan)])
+            self.kinematic = np.concatenate([self.kinematic, np.zeros(grow, dtype=bool)])
+        self.shapes.append(None)
+        self.owner_of.append(0)
+        return len(self.shapes) - 1
+
+    def _drop(self, shape: pymunk.Shape) -> None:
+        row = self.row_of.pop(shape, None)
+        if row is None:
+            return
+        self.shapes[row] = None
+        self.box[row] = np.nan
+        self.live -= 1
+        key = self.owner_of[row]
+        rows = self._owner_rows.get(key)
+        if rows is not None and row in rows:
+            rows.remove(row)
+            if not rows:
+                del self._owner_rows[key]
+                self._owners.pop(key, None)
+                self._owners_dirty = True
+        if self.live == 0:  # compact: nothing left to keep
+            self.shapes.clear()
+            self.owner_of.clear()
+            self.box[:] = np.nan
+            self._owner_rows.clear()
+            self._owners.clear()
+            self._owners_dirty = True
+
+    def _update_owner(self, body_id: int) -> None:
+        for row in list(self._owner_rows.get(body_id, ())):
+            shape = self.shapes[row]
+            if shape is not None:
+                self._classify(shape)
+
+    def body(self, body_id: int) -> pymunk.Body | None:
+        """A static or kinematic body that owns indexed shapes, by id."""
+        return self._owners.get(body_id)
+
+    # ----------------------------------------------------------------- queries
+
+    def near_any(self, x: np.ndarray, y: np.ndarray, r: np.ndarray) -> np.ndarray:
+        """For each square ``(x, y) ± r``: does it overlap any row's box?"""
+        out = np.zeros(len(x), dtype=bool)
+        m = len(self.shapes)
+        if self.live == 0 or m == 0:
+            return out
+        left, bottom, right, top = (self.box[:m, i] for i in range(4))
+        step = max(1, _CHUNK // m)
+        for i in range(0, len(x), step):
+            xs, ys, rs = x[i : i + step, None], y[i : i + step, None], r[i : i + step, None]
+            hit = (left <= xs + rs) & (right >= xs - rs) & (bottom <= ys + rs) & (top >= ys - rs)
+            out[i : i + step] = hit.any(axis=1)
+        return out
+
+    def candidates(self, box: pymunk.BB, still: float, moving: float) -> list[pymunk.Shape]:
+        """Shapes whose cached box overlaps ``box`` grown by ``still`` (static) or ``moving``."""
+        m = len(self.shapes)
+        if self.live == 0 or m == 0:
+            return []
+        g = np.where(self.kinematic[:m], moving, still)
+        b = self.box[:m]
+        hit = (
+            (b[:, 0] <= box.right + g)
+            & (b[:, 2] >= box.left - g)
+            & (b[:, 1] <= box.top + g)
+            & (b[:, 3] >= box.bottom - g)
+        )
+        out = []
+        for row in np.flatnonzero(hit).tolist():
+            shape = self.shapes[row]
+            if shape is None:
+                continue
+            if shape.space is not self.space:
+                self._drop(shape)
+                continue
+            out.append(shape)
+        return out
+
+
+class _Index:
+    """The tracked bodies sorted by id, with their radii as arrays (rebuilt on track/untrack)."""
+
+    __slots__ = ("bullets", "core", "extent", "ids", "infos", "max_extent", "reach")
+
+    def __init__(self, infos: list[_Tracked]) -> None:
+        self.infos = infos
+        self.ids = np.array([t.body.id for t in infos], dtype=np.int64)
+        self.core = np.array([t.core for t in infos], dtype=np.float64)
+        self.reach = np.array([t.reach for t in infos], dtype=np.float64)
+        self.extent = np.array([t.extent for t in infos], dtype=np.float64)
+        self.max_extent = float(self.extent.max()) if infos else 0.0
+        self.bullets = any(t.bullet for t in infos)
 
 
 # --------------------------------------------------------------------------- the manager
@@ -549,7 +825,15 @@ class ContinuousCollision:
         self._boosted: list[_Tracked] = []
         self._armed: dict[int, _Tracked] = {}  # id(info) -> info
         self._buffer = pymunk.batch.Buffer()
-        self._index: tuple[np.ndarray, np.ndarray, np.ndarray, list[_Tracked]] | None = None
+        self._index: _Index | None = None
+        #: the last bulk read's body ids and their rows in the index (reused while unchanged)
+        self._rows: (
+            tuple[np.ndarray, _Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
+        ) = None
+        self._generation = 0  # bumped whenever _rows is recomputed
+        self._obstacles = _Obstacles(space)
+        #: this step's answers of near_obstacles(cap) for neighbours of fast bodies
+        self._near_memo: dict[int, bool] = {}
 
     # ----------------------------------------------------------------- bookkeeping
 
@@ -565,16 +849,19 @@ class ContinuousCollision:
         if old is not None and old.armed:
             self._disarm(self._armed.pop(id(old)))
         self._index = None
+        self._obstacles.reclassify(body)  # its type may have changed in place
         if body.body_type != _DYNAMIC:
             return
         parts, core, reach = _parts(body, self.margin)
         self._tracked[body.id] = _Tracked(
-            self, body, bullet, parts, core, reach, tuple(body.shapes)
+            self, body, bullet, parts, core, reach, tuple(body.shapes), _extent(body, reach)
         )
 
     def untrack(self, body: pymunk.Body) -> None:
         """Forget ``body`` (restores its plain integrator); unknown bodies are ignored."""
         self._bodies.pop(body.id, None)
+        self._movers.pop(body.id, None)  # else a removed kinematic body stays referenced
+        self._obstacles.reclassify(body)  # it may have become static or kinematic
         info = self._tracked.pop(body.id, None)
         if info is not None:
             self._index = None
@@ -618,27 +905,21 @@ class ContinuousCollision:
                 f"ContinuousCollision.before_step: substeps must be >= 1, got {n}"
             )
         self.step_dt = dt
-        ids, vel = self._read()
+        ids, pose, vel = self._read()
         vel = self._clamp(ids, vel, dt)
         for info in self._boosted:
             info.boost = 0.0
         self._boosted.clear()
+        self._near_memo.clear()
         if not self._tracked:
             return 0
-        tracked_ids, core, reach, infos = self._lookup_index()
-        pos = np.minimum(np.searchsorted(tracked_ids, ids), len(tracked_ids) - 1)
-        known = tracked_ids[pos] == ids
+        pos, known, core, reach = self._rows_of(ids)
         speed = np.hypot(vel[:, 0], vel[:, 1])
-        motion = (speed + np.abs(vel[:, 2]) * reach[pos]) * dt
-        fast = known & (motion > self.threshold * n * core[pos])
-        want = {
-            id(infos[i]): infos[i]
-            for i, m in zip(pos[fast], motion[fast], strict=True)
-            if infos[i].near_obstacles(float(m))
-        }
-        self._arm_neighbours(
-            [(infos[i], float(m)) for i, m in zip(pos[fast], motion[fast], strict=True)], want
-        )
+        motion = (speed + np.abs(vel[:, 2]) * reach) * dt
+        fast = np.flatnonzero(known & (motion > self.threshold * n * core))
+        want: dict[int, _Tracked] = {}
+        if len(fast):
+            self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
         moving = ~known & ((speed > 0.0) | (vel[:, 2] != 0.0))
         if moving.any() or self._movers:
             self._boost_near_movers(ids, moving, vel, dt, n, want)
@@ -655,13 +936,51 @@ class ContinuousCollision:
     def after_step(self, step_dt: float) -> None:
         """Clamp speeds again, so the velocity read back is the capped one (Box2D keeps it)."""
         dt = positive(step_dt, "ContinuousCollision.after_step", "step_dt")
-        ids, vel = self._read()
+        ids, _, vel = self._read()
         self._clamp(ids, vel, dt)
 
     # ----------------------------------------------------------------- internals
 
+    def _arm_fast(
+        self,
+        rows: np.ndarray,
+        slots: np.ndarray,
+        ids: np.ndarray,
+        pose: np.ndarray,
+        vel: np.ndarray,
+        motion: np.ndarray,
+        want: dict[int, _Tracked],
+    ) -> None:
+        """Arm the fast tracked bodies (bulk-read ``rows``) that have something in reach.
+
+        The obstacle index screens them all in one vectorised pass (a square of
+        ``extent`` plus the reach around each position), so only bodies near a
+        static or kinematic shape - and bullets - are examined one by one.
+        """
+        index = self._lookup_index()
+        obstacles = self._obstacles
+        obstacles.refresh(ids, pose, vel, self._generation)
+        x, y = pose[rows, 0], pose[rows, 1]
+        reach = index.extent[slots] + motion + self.max_translation
+        # what a neighbour launched by the body could hit (see _arm_neighbours)
+        wide = reach + 2.0 * self.max_translation + 2.0 * index.max_extent
+        close = obstacles.near_any(x, y, wide)
+        near = close.copy()
+        if close.any():
+            near[close] = obstacles.near_any(x[close], y[close], reach[close])
+        # with no bullet anywhere, a body with nothing close needs no look at all
+        todo = np.arange(len(slots)) if index.bullets else np.flatnonzero(close)
+        fast = []
+        for k, slot in zip(todo.tolist(), slots[todo].tolist(), strict=True):
+            info = index.infos[slot]
+            m = float(motion[k])
+            if (info.bullet or near[k]) and info.near_obstacles(m):
+                want[id(info)] = info
+            fast.append((info, m, bool(close[k])))
+        self._arm_neighbours(fast, want, index.bullets)
+
     def _arm_neighbours(
-        self, fast: list[tuple[_Tracked, float]], want: dict[int, _Tracked]
+        self, fast: list[tuple[_Tracked, float, bool]], want: dict[int, _Tracked], bullets: bool
     ) -> None:
         """Arm the bodies a fast body may hit this step.
 
@@ -671,11 +990,17 @@ class ContinuousCollision:
         then hit is within twice the speed cap of it; its integrator stays cheap
         until it is actually fast. A bullet neighbour is also boosted, so it
         sweeps against the fast body even while it is itself at rest.
+
+        ``fast`` holds (body, step motion, close): ``close`` is False when no
+        static or kinematic shape lies within what any neighbour could reach,
+        so only bullet neighbours matter (none when ``bullets`` is False).
         """
         # a light body hit by a heavy one leaves at up to (1 + e) times its speed,
         # and only armed bodies are capped within the step
         cap = 2.0 * self.max_translation
-        for info, motion in fast:
+        for info, motion, close in fast:
+            if not (close or bullets):
+                continue
             box = info._bounds()
             if box is None:
                 continue
@@ -691,8 +1016,18 @@ class ContinuousCollision:
                         self._boosted.append(near)
                     near.boost = motion
                     want[id(near)] = near
-                elif id(near) not in want and near.near_obstacles(cap):
+                elif (
+                    id(near) not in want and (close or near.bullet) and self._near_within(near, cap)
+                ):
                     want[id(near)] = near
+
+    def _near_within(self, info: _Tracked, reach: float) -> bool:
+        """``info.near_obstacles(reach)``, asked at most once per body and step."""
+        key = id(info)
+        hit = self._near_memo.get(key)
+        if hit is None:
+            hit = self._near_memo[key] = info.near_obstacles(reach)
+        return hit
 
     def _boost_near_movers(
         self,
@@ -714,7 +1049,7 @@ class ContinuousCollision:
         self._movers = {k: b for k, b in self._movers.items() if k in alive}
         for row in np.flatnonzero(moving).tolist():
             key = int(ids[row])
-            body = self._movers.get(key) or self._bodies.get(key)
+            body = self._movers.get(key) or self._bodies.get(key) or self._obstacles.body(key)
             if body is None:
                 body = next((b for b in self.space.bodies if b.id == key), None)
                 if body is None:
@@ -741,13 +1076,14 @@ class ContinuousCollision:
                 if step > self.threshold * info.core * substeps:
                     want[id(info)] = info
 
-    def _read(self) -> tuple[np.ndarray, np.ndarray]:
+    def _read(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every body's id, pose (x, y, angle) and velocity (vx, vy, w), in one bulk read."""
         buf = self._buffer
         buf.clear()
         pymunk.batch.get_space_bodies(self.space, _FIELDS, buf)
         ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
-        vel = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 3)
-        return ids, vel
+        data = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        return ids, data[:, :3], data[:, 3:]
 
     def _clamp(self, ids: np.ndarray, vel: np.ndarray, dt: float) -> np.ndarray:
         max_v = self.max_translation / dt
@@ -772,21 +1108,38 @@ class ContinuousCollision:
         return vel
 
     def _body(self, body_id: int) -> pymunk.Body | None:
-        body = self._bodies.get(body_id)
+        body = self._bodies.get(body_id) or self._movers.get(body_id)
+        body = body or self._obstacles.body(body_id)
         if body is None:  # untracked (e.g. a user-made pymunk body): rare, so a plain scan
             body = next((b for b in self.space.bodies if b.id == body_id), None)
         return body
 
-    def _lookup_index(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[_Tracked]]:
+    def _lookup_index(self) -> _Index:
         if self._index is None:
-            infos = sorted(self._tracked.values(), key=lambda t: t.body.id)
-            self._index = (
-                np.array([t.body.id for t in infos], dtype=np.int64),
-                np.array([t.core for t in infos], dtype=np.float64),
-                np.array([t.reach for t in infos], dtype=np.float64),
-                infos,
-            )
+            self._index = _Index(sorted(self._tracked.values(), key=lambda t: t.body.id))
         return self._index
+
+    def _rows_of(self, ids: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Per bulk-read row: its slot in the index, whether tracked, core radius and reach.
+
+        Recomputed only when the read's body order or the tracked set changed
+        (bodies added, removed, falling asleep or waking), else reused.
+        """
+        index = self._lookup_index()
+        cached = self._rows
+        if cached is not None and cached[1] is index and np.array_equal(cached[0], ids):
+            return cached[2:]
+        pos = np.minimum(np.searchsorted(index.ids, ids), len(index.ids) - 1)
+        self._rows = (
+            ids.copy(),
+            index,
+            pos,
+            index.ids[pos] == ids,
+            index.core[pos],
+            index.reach[pos],
+        )
+        self._generation += 1
+        return self._rows[2:]
 
     @staticmethod
     def _disarm(info: _Tracked) -> None:

@@ -13,6 +13,11 @@ scene can do (DESIGN.md "Performance traps"), so kge registers:
 * ``pre_solve`` / ``post_solve`` only on :data:`HOOKED` collision type, given to
   colliders with ``contact_hooks=True``, for the user's per-step hooks.
 
+``begin`` and ``separate`` run for every contact of the scene (events are
+delivered for all of them), so they read the arbiter, shapes and bodies through
+Chipmunk's C getters instead of pymunk's properties, which build a Vec2d or a
+wrapper tuple per read: half the cost per contact.
+
 Side A of a contact is chosen as Box2D does: edge before polygon before circle,
 otherwise the older collider (lower entity id); sensors are always side A of a
 sensor event. The normal reported points from A to B.
@@ -25,6 +30,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import pymunk
+from pymunk._chipmunk import ffi as _ffi
+from pymunk._chipmunk import lib as _lib
 
 from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
 
@@ -37,6 +44,8 @@ Vec2 = tuple[float, float]
 HOOKED = 1
 
 DYNAMIC = pymunk.Body.DYNAMIC
+_CP_DYNAMIC = _lib.CP_BODY_TYPE_DYNAMIC
+_from_handle = _ffi.from_handle
 
 
 @dataclass(slots=True)
@@ -84,29 +93,31 @@ def a_first(sa: pymunk.Shape, sb: pymunk.Shape) -> bool:
     return (sa.kge_rank, sa.kge_collider) <= (sb.kge_rank, sb.kge_collider)
 
 
-def _key(sa: pymunk.Shape, sb: pymunk.Shape) -> tuple[int, int]:
-    return (id(sa), id(sb))
-
-
 def _geometry(arb: pymunk.Arbiter, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], float]:
-    cps = arb.contact_point_set
+    """Normal (A to B), world points (midpoints of the two surfaces) and separation.
+
+    Read from Chipmunk's contact point set struct directly: pymunk's
+    ``contact_point_set`` builds a Vec2d per number, and this runs for every
+    new contact.
+    """
+    cps = _lib.cpArbiterGetContactPointSet(arb._arbiter)
     n = cps.normal
     nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
-    pts = []
-    sep = 0.0
-    for i, p in enumerate(cps.points):
-        pa, pb = p.point_a, p.point_b
-        pts.append((0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)))
-        sep = p.distance if i == 0 else min(sep, p.distance)
-    return (nx, ny), tuple(pts), sep
+    p = cps.points[0]
+    pa, pb = p.pointA, p.pointB
+    sep = p.distance
+    first = (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))
+    if cps.count == 1:
+        return (nx, ny), (first,), sep
+    p = cps.points[1]
+    pa, pb = p.pointA, p.pointB
+    return (nx, ny), (first, (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))), min(sep, p.distance)
 
 
 def _approach(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2, point: Vec2) -> float:
     """Speed at which B approaches A along the normal A->B at ``point`` (>= 0)."""
-    ba, bb = sa.body, sb.body
-    assert ba is not None and bb is not None  # shapes in a space have bodies
-    va = ba.velocity_at_world_point(point)
-    vb = bb.velocity_at_world_point(point)
+    va = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(sa._shape), point)
+    vb = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(sb._shape), point)
     rel = (vb.x - va.x) * normal[0] + (vb.y - va.y) * normal[1]
     return max(0.0, -rel)
 
@@ -129,6 +140,7 @@ class ContactRecorder:
         self._post_acc: dict[tuple[int, int], list[Any]] = {}
         #: first exception raised inside a callback this step (re-raised after the step)
         self.error: BaseException | None = None
+        self._shape_ptrs = (_ffi.new("cpShape *[1]"), _ffi.new("cpShape *[1]"))
         space.on_collision(
             None, None, begin=self._guarded(self._begin), separate=self._guarded(self._separate)
         )
@@ -162,47 +174,70 @@ class ContactRecorder:
             raise err
 
     # -- begin / separate (once per contact) ------------------------------------------
+    def _shapes(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape]:
+        """``arb.shapes`` without its two allocations.
+
+        The two pointer cells are reused: they are read back at once, with no
+        Python call in between that could run another callback.
+        """
+        pa, pb = self._shape_ptrs
+        _lib.cpArbiterGetShapes(arb._arbiter, pa, pb)
+        return (
+            _from_handle(_lib.cpShapeGetUserData(pa[0])),
+            _from_handle(_lib.cpShapeGetUserData(pb[0])),
+        )
+
     def _begin(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = arb.shapes
-        b0, b1 = arb.bodies
-        if b0.body_type != DYNAMIC and b1.body_type != DYNAMIC:
+        s0, s1 = self._shapes(arb)
+        if (
+            _lib.cpBodyGetType(_lib.cpShapeGetBody(s0._shape)) != _CP_DYNAMIC
+            and _lib.cpBodyGetType(_lib.cpShapeGetBody(s1._shape)) != _CP_DYNAMIC
+        ):
             arb.process_collision = False  # Box2D: static/kinematic pairs never touch
             return
-        if not arb.process_collision:
+        cp_arb = arb._arbiter
+        if not _lib.cpArbiterGetProcessCollision(cp_arb):
             return
         fa, fb = s0.kge_filter, s1.kge_filter
         if (fa.group_index > 0 or fb.group_index > 0) and not fa.collides_with(fb):
-            arb.process_collision = False
+            _lib.cpArbiterSetProcessCollision(cp_arb, False)
             return
-        flip = not a_first(s0, s1)
+        sensor0 = _lib.cpShapeGetSensor(s0._shape)
+        sensor1 = _lib.cpShapeGetSensor(s1._shape)
+        if sensor0 != sensor1:
+            flip = not sensor0
+        else:
+            flip = (s0.kge_rank, s0.kge_collider) > (s1.kge_rank, s1.kge_collider)
         sa, sb = (s1, s0) if flip else (s0, s1)
-        sensor = bool(sa.sensor or sb.sensor)
+        sensor = bool(sensor0 or sensor1)
         normal, points, sep = _geometry(arb, flip)
         one_way = sa.kge_oneway is not None or sb.kge_oneway is not None
         if one_way and not sensor and not self._one_way_accepts(sa, sb, normal):
-            arb.process_collision = False
+            _lib.cpArbiterSetProcessCollision(cp_arb, False)
             return
         if self.contact_filter is not None:
             with self.world.locked():
                 ok = self.contact_filter(sa.kge_collider, sb.kge_collider)
             if not ok:
-                arb.process_collision = False
+                _lib.cpArbiterSetProcessCollision(cp_arb, False)
                 return
-        self.active[_key(sa, sb)] = (sa, sb, sensor)
+        self.active[(id(sa), id(sb))] = (sa, sb, sensor)
         ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
+        events = self.events
         if sensor:
-            self.events.sensor_begin.append(SensorBegin(ca, cb, ba, bb))
+            events.sensor_begin.append(SensorBegin(ca, cb, ba, bb))
             return
-        speed = _approach(sa, sb, normal, points[0]) if points else 0.0
-        e = max(sa.kge_material[1], sb.kge_material[1])
+        speed = _approach(sa, sb, normal, points[0])
+        ea, eb = sa.kge_material[1], sb.kge_material[1]
+        e = ea if ea > eb else eb
         if e > 0.0 and speed > self.velocity_threshold:
             arb.restitution = e
-        self.events.contact_begin.append(ContactBegin(ca, cb, ba, bb, normal, points, sep, speed))
+        events.contact_begin.append(ContactBegin(ca, cb, ba, bb, normal, points, sep, speed))
         ta, tb = sa.kge_hit, sb.kge_hit
-        if (ta is not None or tb is not None) and points:
+        if ta is not None or tb is not None:
             limit = max(t for t in (ta, tb) if t is not None)
             if speed > limit:
-                self.events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed))
+                events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed))
 
     @staticmethod
     def _one_way_accepts(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2) -> bool:
@@ -217,14 +252,15 @@ class ContactRecorder:
         return True
 
     def _separate(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = arb.shapes
-        key = _key(s0, s1)
+        s0, s1 = self._shapes(arb)
+        key = (id(s0), id(s1))
         rec = self.active.pop(key, None)
         if rec is None:
             rec = self.active.pop((key[1], key[0]), None)
             if rec is None:
                 return
-        self._pre_cache.pop(key, None)
+        if self._pre_cache:
+            self._pre_cache.pop(key, None)
         sa, sb, sensor = rec
         ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
         if sensor:

@@ -19,6 +19,8 @@ True
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import pymunk
 
 from kge.components.filter import Filter
@@ -26,8 +28,17 @@ from kge.components.filter import Filter
 ALL = 0xFFFFFFFF
 
 
+#: the filter a new pymunk shape has
+DEFAULT_FILTER = pymunk.ShapeFilter()
+
+
+@lru_cache(maxsize=256)
 def to_pymunk(f: Filter) -> pymunk.ShapeFilter:
-    """The pymunk filter that pre-screens pairs for Box2D filter ``f``."""
+    """The pymunk filter that pre-screens pairs for Box2D filter ``f``.
+
+    Cached: a game has a handful of distinct filters and spawns thousands of
+    colliders with them (Filter and ShapeFilter are immutable).
+    """
     if f.group_index > 0:
         return pymunk.ShapeFilter(group=0, categories=ALL, mask=ALL)
     group = -f.group_index if f.group_index < 0 else 0

@@ -7,6 +7,14 @@ and ``read_back`` around the step, breaks joints whose reaction exceeds their
 limits (JointBroken) and destroys joints whose body or prerequisite joint goes
 away (JointDestroyed). A joint's constraints are in the space only while both
 of its bodies are (a disabled body takes its joints out, as in Box2D).
+
+Revolute joints, the ones scenes have by the hundred (chains, bridges, grids),
+skip the per-joint path in the steady state: a
+:class:`~kge.physics.joints.pivots.PivotBatch` does their position pass and
+read-back over all of them at once. A joint leaves the batch (and takes the
+per-joint path) while it is inert, suspended or has a body out of the space;
+the batch is rebuilt whenever joints come or go, are changed, or a body's type
+or membership changes (``refresh_membership``, which every type change calls).
 """
 
 from __future__ import annotations
@@ -39,6 +47,9 @@ def body_fields(component: Any) -> tuple[int | None, int | None]:
 class JointBridge:
     """Implements :class:`~kge.physics.joint_api.JointContext` for the builders."""
 
+    #: handle revolute joints in bulk (False: every joint on the per-joint path)
+    batch_revolutes = True
+
     def __init__(self, sim: Simulation) -> None:
         self.sim = sim
         self.space: pymunk.Space = sim.space
@@ -49,6 +60,15 @@ class JointBridge:
         self.dirty: set[int] = set()
         self.removed: set[int] = set()
         self.membership_dirty = False
+        #: bumped by every membership refresh (body types or enabled flags changed)
+        self.types_epoch = 0
+        self._batch_epoch = -1
+        self._ordered: list[tuple[int, joint_api.JointHandle]] | None = None
+        self._batch: Any = None  # PivotBatch, created on first use
+        self._batched: set[int] = set()
+        self._checked: list[tuple[int, joint_api.JointHandle]] = []
+        self._others: list[tuple[int, joint_api.JointHandle]] = []
+        self._batch_live = False
 
     # -- JointContext ----------------------------------------------------------------
     def body(self, entity: int) -> pymunk.Body:
@@ -93,6 +113,8 @@ class JointBridge:
                 comp = self.components.get(e)
                 if h is not None and comp is not None:
                     h.apply(comp)
+                    if e in self._batched or self._batchable(e, h):
+                        self._batch_epoch = -1  # anchors, reference or motor changed
             self.dirty.clear()
         if self.membership_dirty:
             self.refresh_membership()
@@ -112,6 +134,7 @@ class JointBridge:
         handle = builder(self, entity, comp)
         handle.apply(comp)
         self.handles[entity] = handle
+        self._ordered = None
         self.membership_dirty = True
         self.pending.discard(entity)
         self.dirty.discard(entity)
@@ -119,6 +142,7 @@ class JointBridge:
     def refresh_membership(self) -> None:
         """Constraints are in the space exactly while both bodies are."""
         self.membership_dirty = False
+        self.types_epoch += 1
         space = self.space
         present = set(space.constraints)
         for h in self.handles.values():
@@ -134,18 +158,102 @@ class JointBridge:
                 elif not want and c in present:
                     space.remove(c)
 
+    def ordered(self) -> list[tuple[int, joint_api.JointHandle]]:
+        """The live handles in entity order (cached until joints come or go)."""
+        if self._ordered is None:
+            self._ordered = sorted(self.handles.items())
+        return self._ordered
+
+    def _batchable(self, e: int, h: joint_api.JointHandle) -> bool:
+        """A live plain hinge: a revolute joint with no motor and no limit.
+
+        Motors and limits already run Python rows every substep, which dwarfs their
+        after-step work; keeping them on the per-joint path also keeps their
+        position pass in entity order, which a tumbling ragdoll is sensitive to.
+        """
+        from kge.physics.joints.revolute import Revolute
+
+        if not (self.batch_revolutes and type(h) is Revolute):
+            return False
+        j = h.settings
+        return (
+            h.active
+            and h.suspended is None
+            and h.pivot is not None
+            and not (j.enable_motor or j.enable_limit)
+            and self.components.get(e) is h.component
+        )
+
+    def _rebuild_batch(self) -> None:
+        from kge.physics.joints.pivots import PivotBatch
+
+        if self._batch is None:
+            self._batch = PivotBatch(self.space, self.sim.bodies)
+        present = self.space.constraints
+        chosen = [
+            (e, h)
+            for e, h in self.ordered()
+            if self._batchable(e, h) and h.pivot in present  # type: ignore[attr-defined]
+        ]
+        self._batch.rebuild([h for _, h in chosen])
+        self._batched = {e for e, _ in chosen}
+        # the break check skips batched joints that have no break limit
+        unbreakable = {
+            e for e, _ in chosen
+            if self.components[e].break_force is None and self.components[e].break_torque is None
+        }
+        self._checked = [(e, h) for e, h in self.ordered() if e not in unbreakable]
+        self._others = [(e, h) for e, h in self.ordered() if e not in self._batched]
+        self._batch_epoch = self.types_epoch
+
     def before_step(self, dt: float) -> None:
-        for e in sorted(self.handles):
-            self.handles[e].before_step(dt)
+        ordered = self.ordered()
+        if self._batch_epoch != self.types_epoch:
+            for _, h in ordered:
+                h.before_step(dt)
+            self._rebuild_batch()
+        else:
+            for _, h in self._others:
+                h.before_step(dt)
+            if self._batched and self._batch.mass_changed():
+                self._batch.refresh_mass()
+        self._batch_live = bool(self._batched) and self._batch.before_step()
+        if self._batched and not self._batch_live:  # a body left the space: per joint
+            for e, h in ordered:
+                if e in self._batched:
+                    h.before_step(dt)
+            self._batch_epoch = -1
 
     def after_step(self, dt: float) -> None:
         events = self.sim.events
-        for e in sorted(self.handles):
-            h = self.handles[e]
+        ordered = self.ordered()
+        batch = self._batch
+        live = self._batch_live
+        state = batch.read() if live else None
+        if live and state is None:  # cannot happen between before and after step
+            live = False
+            self._batch_epoch = -1
+        if state is not None:
+            batch.project(state)
+        others = False
+        for e, h in self._others if state is not None else ordered:
             comp = self.components.get(e)
             if comp is None:
                 continue
             h.read_back(comp, dt)
+            others = True
+        if state is not None:
+            if others:  # their position passes may have moved shared bodies
+                state = batch.read()
+            if state is not None:
+                h0 = self.space.current_time_step
+                batch.read_back(state, dt, h0 if h0 > 0 else 1.0 / 60.0, self.space.gravity)
+        for e, h in self._checked if live else ordered:
+            if e not in self.handles:
+                continue  # destroyed with a joint it depended on
+            comp = self.components.get(e)
+            if comp is None:
+                continue
             if h.exceeds_break_limits(comp):
                 fx, fy = getattr(comp, "reaction_force", (0.0, 0.0))
                 torque = float(getattr(comp, "reaction_torque", 0.0))
@@ -169,6 +277,8 @@ class JointBridge:
         h = self.handles.pop(entity, None)
         if h is None:
             return
+        self._ordered = None
+        self._batch_epoch = -1
         for other in sorted(self.handles):
             oh = self.handles.get(other)
             if oh is not None and entity in oh.depends_on:

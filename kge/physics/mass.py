@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon, Shape
 
@@ -70,8 +71,13 @@ def polygon_mass(vertices: Sequence[Vec2], density: float) -> MassData:
     return MassData(mass, i_centroid, (cx + ox, cy + oy))
 
 
+@lru_cache(maxsize=1024)
 def shape_mass(shape: Shape, density: float) -> MassData:
-    """Mass data of one shape (centre in body-local coordinates)."""
+    """Mass data of one shape (centre in body-local coordinates).
+
+    Cached by value (shapes and MassData are frozen): spawning a thousand equal
+    boxes computes one polygon mass.
+    """
     if isinstance(shape, Circle):
         m = density * math.pi * shape.radius**2
         return MassData(m, 0.5 * m * shape.radius**2, shape.center)
@@ -86,6 +92,11 @@ def shape_mass(shape: Shape, density: float) -> MassData:
 
 def combine(parts: Iterable[MassData]) -> MassData:
     """Sum shape masses; inertia moved to the common centre (parallel axis)."""
+    return _combine(tuple(parts))
+
+
+@lru_cache(maxsize=1024)
+def _combine(parts: tuple[MassData, ...]) -> MassData:
     items = [p for p in parts if p.mass > 0]
     mass = sum(p.mass for p in items)
     if mass <= 0:
@@ -98,6 +109,7 @@ def combine(parts: Iterable[MassData]) -> MassData:
     return MassData(mass, inertia, (cx, cy))
 
 
+@lru_cache(maxsize=1024)
 def dynamic_mass(
     computed: MassData, override: float | None, fixed_rotation: bool
 ) -> MassData:

@@ -135,22 +135,25 @@ class Physics:
         owner = where(entity, "Physics.apply_force")
         fx, fy = vec2(force, owner, "force")
         at = None if point is None else vec2(point, owner, "point")  # before any change
-        rec = self._force_target(entity, "apply_force", wake)
-        if rec is None:
-            return
+        body = self._record(entity, "apply_force").body
         torque = 0.0
         if at is not None:
             px, py = at
-            c = rec.body.local_to_world(rec.body.center_of_gravity)
+            c = body.local_to_world(body.center_of_gravity)
             torque = (px - c.x) * fy - (py - c.y) * fx
-        acc = self._sim.forces.setdefault(entity, [0.0, 0.0, 0.0])
-        acc[0] += fx
-        acc[1] += fy
-        acc[2] += torque
+        old = self._sim.forces.get(entity, (0.0, 0.0, 0.0))
+        total = (old[0] + fx, old[1] + fy, old[2] + torque)
+        _finite_result(owner, "the force or its torque", total)
+        if self._force_target(entity, "apply_force", wake) is None:
+            return
+        self._sim.forces[entity] = list(total)
 
     def apply_torque(self, entity: int, torque: float, wake: bool = True) -> None:
         """Apply ``torque`` (N m) for one step."""
-        tq = finite(torque, where(entity, "Physics.apply_torque"), "torque")
+        owner = where(entity, "Physics.apply_torque")
+        tq = finite(torque, owner, "torque")
+        old = self._sim.forces.get(entity, (0.0, 0.0, 0.0))
+        _finite_result(owner, "the total torque", (old[2] + tq,))
         rec = self._force_target(entity, "apply_torque", wake)
         if rec is None:
             return
@@ -163,27 +166,33 @@ class Physics:
         owner = where(entity, "Physics.apply_linear_impulse")
         jx, jy = vec2(impulse, owner, "impulse")
         at = None if point is None else vec2(point, owner, "point")  # before any change
-        rec = self._force_target(entity, "apply_linear_impulse", wake)
-        if rec is None:
-            return
-        body = rec.body
+        body = self._record(entity, "apply_linear_impulse").body
         c = body.local_to_world(body.center_of_gravity)
         px, py = (c.x, c.y) if at is None else at
         v = body.velocity
-        body.velocity = (v.x + jx / body.mass, v.y + jy / body.mass)
+        new_v = (v.x + jx / body.mass, v.y + jy / body.mass)
+        w = body.angular_velocity
         if math.isfinite(body.moment):
-            body.angular_velocity += ((px - c.x) * jy - (py - c.y) * jx) / body.moment
+            w += ((px - c.x) * jy - (py - c.y) * jx) / body.moment
+        _finite_result(owner, "the resulting velocity", (*new_v, w))
+        if self._force_target(entity, "apply_linear_impulse", wake) is None:
+            return
+        body.velocity = new_v
+        body.angular_velocity = w
         self._velocity_changed(entity, body)
 
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
         """Change the angular velocity at once by ``impulse / inertia``."""
-        j = finite(impulse, where(entity, "Physics.apply_angular_impulse"), "impulse")
-        rec = self._force_target(entity, "apply_angular_impulse", wake)
-        if rec is None:
-            return
-        body = rec.body
+        owner = where(entity, "Physics.apply_angular_impulse")
+        j = finite(impulse, owner, "impulse")
+        body = self._record(entity, "apply_angular_impulse").body
+        w = body.angular_velocity
         if math.isfinite(body.moment):
-            body.angular_velocity += j / body.moment
+            w += j / body.moment
+        _finite_result(owner, "the resulting angular velocity", (w,))
+        if self._force_target(entity, "apply_angular_impulse", wake) is None:
+            return
+        body.angular_velocity = w
         self._velocity_changed(entity, body)
 
     def _velocity_changed(self, entity: int, body: pymunk.Body) -> None:
@@ -352,3 +361,11 @@ class Physics:
         from kge.physics import queries
 
         return queries.query_shape(self._query_space("query_shape"), shape, transform, filter)
+
+
+def _finite_result(owner: str, what: str, values: tuple[float, ...]) -> None:
+    """Refuse finite inputs whose product overflows (a 1e300 lever arm...), before any change."""
+    if not all(math.isfinite(v) for v in values):
+        raise ValidationError(
+            f"{owner}: {what} would not be finite ({values!r}); the input is too large"
+        )

@@ -26,7 +26,7 @@ import pymunk
 
 from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
-from kge.physics.filtering import to_pymunk
+from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
 RANK_EDGE, RANK_POLYGON, RANK_CIRCLE = 0, 1, 2
@@ -67,12 +67,26 @@ def build_shapes(
                 nxt = pts[i + 2] if i + 2 < n else b
             seg.set_neighbors(prev, nxt)
             shapes.append(seg)
+    friction = math.sqrt(collider.friction)
+    pf = to_pymunk(collider.filter)
+    attrs = {
+        "kge_collider": collider_entity,
+        "kge_body": body_entity,
+        "kge_rank": rank,
+        "kge_oneway": None,
+        "kge_material": (collider.friction, collider.restitution),
+        "kge_filter": collider.filter,
+        "kge_hit": collider.hit_threshold,
+    }
     for s in shapes:
-        s.kge_collider = collider_entity
-        s.kge_body = body_entity
-        s.kge_rank = rank
-        s.kge_oneway = None
-        apply_material(s, collider)
+        # what apply_material does, minus the writes a fresh shape does not need
+        # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
+        vars(s).update(attrs)
+        s.friction = friction
+        if pf != DEFAULT_FILTER:
+            s.filter = pf
+        if collider.sensor:
+            s.sensor = True
     return shapes
 
 

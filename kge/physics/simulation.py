@@ -40,6 +40,7 @@ from kge.physics.bodies import (
     configure_dynamics,
     make_body,
     set_body_type,
+    set_mass,
     sleep,
     wake_neighbours,
 )
@@ -264,6 +265,7 @@ class Simulation:
             self.world.add(e, t)
         kind = BodyType.STATIC if rb is None else rb.type
         body = make_body(kind, t.x, t.y, t.angle)
+        self.tf_dirty.discard(e)  # the body starts at the Transform: no teleport to apply
         rec = BodyRecord(e, body, implicit=rb is None)
         self.bodies[e] = rec
         if rb is not None:
@@ -317,29 +319,40 @@ class Simulation:
 
     def _attach_pending(self) -> None:
         world = self.world
+        space = self.space
+        to_add: list[pymunk.Shape] = []
+        attached: list[int] = []
         for c in sorted(self.pending):
             col = world.try_get(c, Collider)
             if col is None:
-                self.pending.discard(c)
+                attached.append(c)
                 continue
             owner = c if col.body is None else col.body
             rec = self.bodies.get(owner)
             if rec is None:
                 continue
             shapes = build_shapes(rec.body, col, c, rec.kge_body, self.skin)
-            self._configure_shapes(c, col, shapes)
+            self._configure_shapes(c, col, shapes, fresh=True)
             if rec.in_space:
-                self.space.add(*shapes)
+                to_add.extend(shapes)
             self.colliders[c] = ColliderRecord(c, owner, shapes, col.shape)
             rec.colliders.add(c)
             self.mass_dirty.add(owner)
             self.ccd_dirty.add(owner)
-            self.pending.discard(c)
+            attached.append(c)
+        if to_add:
+            space.add(*to_add)  # one call, same order as shape by shape
+        self.pending.difference_update(attached)
 
-    def _configure_shapes(self, c: int, col: Collider, shapes: list[pymunk.Shape]) -> None:
+    def _configure_shapes(
+        self, c: int, col: Collider, shapes: list[pymunk.Shape], fresh: bool = False
+    ) -> None:
+        """One-way platform and hook flag; ``fresh`` shapes have neither yet."""
         plat = self.world.try_get(c, OneWayPlatform)
         oneway = None if plat is None else (plat.up, plat.min_cos)
         ctype = HOOKED if col.contact_hooks else 0
+        if fresh and oneway is None and ctype == 0:
+            return
         for s in shapes:
             s.kge_oneway = oneway
             if s.collision_type != ctype:
@@ -509,9 +522,7 @@ class Simulation:
             return
         md = dynamic_mass(computed, rb.mass, rb.fixed_rotation)
         rec.mass = md
-        body.mass = md.mass
-        body.moment = md.inertia
-        body.center_of_gravity = md.center
+        set_mass(body, md)
 
     def _rebuild_poses(self) -> None:
         items = [

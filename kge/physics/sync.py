@@ -18,6 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 import pymunk
 import pymunk.batch as pb
+from pymunk._chipmunk import lib as _lib
 
 FIELDS = (
     pb.BodyFields.BODY_ID
@@ -26,6 +27,13 @@ FIELDS = (
     | pb.BodyFields.VELOCITY
     | pb.BodyFields.ANGULAR_VELOCITY
 )
+
+_DYNAMIC = pymunk.Body.DYNAMIC
+
+
+def _first(item: tuple[int, int, pymunk.Body]) -> int:
+    return item[0]
+
 
 # columns of the float rows
 X, Y, A, VX, VY, W = range(6)
@@ -50,33 +58,48 @@ class PoseTable:
         self._mapping: tuple[np.ndarray, np.ndarray] | None = None
 
     def rebuild(self, items: Sequence[tuple[int, pymunk.Body]]) -> None:
-        """Reset the slots to ``items`` (entity, body), keeping known states."""
+        """Reset the slots to ``items`` (entity, body), keeping known states.
+
+        Runs once per sync-in that added or removed bodies, so it is written for
+        a wave of new bodies among many known ones: known rows are copied with
+        one numpy gather, and only new bodies are read through pymunk.
+        """
         old_slot, old_state, old_prev, old_sleep = self.slot, self.state, self.prev, self.asleep
         self._mapping = None
-        pairs = sorted(items, key=lambda it: it[1].id)
-        n = len(pairs)
-        self.ids = np.fromiter((b.id for _, b in pairs), dtype=np.int64, count=n)
-        self.entities = np.fromiter((e for e, _ in pairs), dtype=np.int64, count=n)
-        self.bodies = [b for _, b in pairs]
+        keyed = sorted([(b.id, e, b) for e, b in items], key=_first)  # ids are unique
+        n = len(keyed)
+        self.ids = np.fromiter([k[0] for k in keyed], dtype=np.int64, count=n)
+        ents = [k[1] for k in keyed]
+        self.entities = np.fromiter(ents, dtype=np.int64, count=n)
+        self.bodies = bodies = [k[2] for k in keyed]
+        self.slot = dict(zip(ents, range(n), strict=True))
+        self.dynamic = np.fromiter(
+            [b.body_type == _DYNAMIC for b in bodies], dtype=bool, count=n
+        )
+        old = np.fromiter([old_slot.get(e, -1) for e in ents], dtype=np.int64, count=n)
+        known = old >= 0
         self.state = np.empty((n, 6))
         self.prev = np.empty((n, 3))
         self.asleep = np.zeros(n, dtype=bool)
-        self.dynamic = np.fromiter(
-            (b.body_type == pymunk.Body.DYNAMIC for _, b in pairs), dtype=bool, count=n
-        )
-        self.slot = {}
-        for i, (e, b) in enumerate(pairs):
-            self.slot[e] = i
-            j = old_slot.get(e)
-            if j is not None:
-                self.state[i] = old_state[j]
-                self.prev[i] = old_prev[j]
-                self.asleep[i] = old_sleep[j]
-            else:
-                p, v = b.position, b.velocity
-                self.state[i] = (p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
-                self.prev[i] = self.state[i, :3]
-                self.asleep[i] = b.is_sleeping
+        if known.any():
+            src = old[known]
+            self.state[known] = old_state[src]
+            self.prev[known] = old_prev[src]
+            self.asleep[known] = old_sleep[src]
+        fresh = np.flatnonzero(~known).tolist()
+        if fresh:
+            rows = []
+            lib = _lib
+            for i in fresh:
+                cp = bodies[i]._body  # Chipmunk's getters: no Vec2d per read
+                p, v = lib.cpBodyGetPosition(cp), lib.cpBodyGetVelocity(cp)
+                rows.append(
+                    (p.x, p.y, lib.cpBodyGetAngle(cp), v.x, v.y, lib.cpBodyGetAngularVelocity(cp))
+                )
+                if lib.cpBodyIsSleeping(cp):
+                    self.asleep[i] = True
+            self.state[fresh] = rows
+            self.prev[fresh] = self.state[fresh, :3]
 
     def teleported(self, entity: int, x: float, y: float, angle: float) -> None:
         """A user moved the body: no interpolation across the jump."""

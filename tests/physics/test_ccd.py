@@ -499,3 +499,120 @@ def test_nothing_escapes_a_box_of_thin_edges(seed: int) -> None:
 
 def test_the_arena_needs_ccd() -> None:
     assert _arena(0, use_ccd=False) > 20  # control: pymunk alone loses most of them
+
+
+# ------------------------------------------------------------------------------ obstacle index
+
+
+def _own_static_wall(sim: Sim, x: float, y: float = 0.0) -> tuple[pymunk.Body, pymunk.Shape]:
+    """A thin wall on its own static body (as kge makes one per static entity)."""
+    body = pymunk.Body(body_type=pymunk.Body.STATIC)
+    body.position = (x, y)
+    wall = tag(pymunk.Poly.create_box(body, (0.1, 4.0), radius=SKIN), sim._next())
+    sim.space.add(body, wall)
+    return body, wall
+
+
+@pytest.mark.parametrize("event", ["added", "moved", "reindexed-late", "retyped"])
+def test_walls_that_appear_mid_flight_are_never_tunnelled(event: str) -> None:
+    # The index of static and kinematic shapes must see every way a wall can appear
+    # after the ball was launched: a new shape, a static body moved (and reindexed,
+    # now or one step later), a dynamic body turned static in place.
+    sim = Sim()
+    ball = sim.ball((0.0, 0.0), 0.05)
+    ball.velocity = (500.0, 0.0)  # capped to 120 m/s: 2 m per step
+    sim.step(1)
+    if event == "added":
+        _own_static_wall(sim, WALL_X)
+    elif event in ("moved", "reindexed-late"):
+        body, _ = _own_static_wall(sim, WALL_X, 50.0)  # out of the way
+        sim.step(1)
+        body.position = (WALL_X, 0.0)
+        if event == "reindexed-late":
+            sim.step(1)
+        sim.space.reindex_shapes_for_body(body)
+    else:
+        plank = sim.box(pymunk.Body.DYNAMIC, (WALL_X, 0.0), (0.05, 2.0))
+        sim.step(1)
+        plank.body_type = pymunk.Body.STATIC
+        sim.ccd.untrack(plank)  # what the physics system does after a type change
+        sim.space.reindex_shapes_for_body(plank)
+    sim.step(20)
+    assert ball.position.x < WALL_X
+
+
+def test_a_removed_wall_stops_nothing_and_arms_nothing() -> None:
+    sim = Sim()
+    body, wall = _own_static_wall(sim, WALL_X)
+    ball = sim.ball((WALL_X - 1.0, 0.0), 0.05)
+    ball.velocity = (60.0, 0.0)  # 1 m per step: the wall is within reach
+    sim.ccd.before_step(DT, 4)
+    assert sim.ccd.is_armed(ball)
+    sim.space.remove(wall, body)
+    sim.ccd.before_step(DT, 4)
+    assert not sim.ccd.is_armed(ball)  # a non-bullet in open air
+    sim.step(20)
+    assert ball.position.x > WALL_X + 5.0 and ball.velocity.x == pytest.approx(60.0)
+
+
+def _spinning_cluster(sim: Sim, n: int, *, bullets: bool = False) -> list[pymunk.Body]:
+    rng = random.Random(7)
+    bodies = []
+    for k in range(n):
+        body = sim.box(
+            pymunk.Body.DYNAMIC,
+            (rng.uniform(-3, 3), rng.uniform(-3, 3)),
+            (0.3, 0.05),
+            bullet=bullets and k % 10 == 0,
+        )
+        body.velocity = (rng.uniform(-30, 30), rng.uniform(-30, 30))
+        body.angular_velocity = rng.uniform(-40, 40)
+        bodies.append(body)
+    return bodies
+
+
+def test_fast_bodies_far_from_static_geometry_cost_no_shape_walks(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # A non-bullet can only be stopped by static or kinematic shapes: a swarm of fast
+    # thin bodies (a swinging chain) with the only wall 50 m away must be screened in
+    # bulk, never by testing the dynamic shapes around each of them.
+    from kge.physics import ccd as ccd_module
+
+    tested = []
+    original = ccd_module._Tracked._is_obstacle
+
+    def counting(self, shape, joint_free):  # type: ignore[no-untyped-def]
+        tested.append(shape)
+        return original(self, shape, joint_free)
+
+    monkeypatch.setattr(ccd_module._Tracked, "_is_obstacle", counting)
+    sim = Sim()
+    _own_static_wall(sim, 50.0)
+    _spinning_cluster(sim, 150)
+    for _ in range(5):
+        assert sim.ccd.before_step(DT, 4) == 0
+        for _ in range(4):
+            sim.space.step(DT / 4)
+    assert tested == []
+    # the same swarm around a wall: armed, and only the wall was ever examined
+    sim = Sim()
+    _, wall = _own_static_wall(sim, 0.0)
+    _spinning_cluster(sim, 150)
+    assert sim.ccd.before_step(DT, 4) > 0
+    assert tested and all(s is wall for s in tested)
+
+
+def test_a_fast_body_arms_the_neighbour_it_may_launch_into_a_wall() -> None:
+    # Box2D's impacts use post-solve velocities: a resting body that a fast one is about
+    # to strike is armed when a wall is within the speed cap of it - and only then.
+    for wall in (True, False):
+        sim = Sim()
+        if wall:
+            _own_static_wall(sim, 3.5)
+        fast = sim.ball((0.0, 0.0), 0.1)
+        resting = sim.ball((1.0, 0.0), 0.1)
+        fast.velocity = (100.0, 0.0)  # 1.67 m this step
+        sim.ccd.before_step(DT, 4)
+        assert sim.ccd.is_armed(resting) == wall
+        assert not sim.ccd.is_armed(fast)  # the wall is 3.3 m away: out of its own reach

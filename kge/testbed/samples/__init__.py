@@ -4,6 +4,7 @@ from kge.testbed.samples import (  # noqa: F401
     basics,
     bodies,
     collision,
+    determinism,
     joints,
     large,
     materials,
