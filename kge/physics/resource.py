@@ -113,6 +113,7 @@ class Physics:
     # -- forces --------------------------------------------------------------------------------
     def _force_target(self, entity: int, op: str, wake: bool) -> BodyRecord | None:
         rec = self._record(entity, op)
+        self._sim.touched = True
         body = rec.body
         if body.body_type != DYNAMIC or not rec.in_space:
             return None

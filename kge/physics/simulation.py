@@ -95,6 +95,10 @@ class Simulation:
         self.forces: dict[int, list[float]] = {}
         self.ccd = _make_ccd(self.space)
         self.ccd_dirty: set[int] = set()
+        #: every tracked body was asleep after the last step (and none is kinematic)
+        self.all_asleep = False
+        #: something outside the dirty sets (an impulse, a wake-up) touched a body
+        self.touched = False
 
     @property
     def settings(self) -> PhysicsSettings:
@@ -540,15 +544,34 @@ class Simulation:
         self.poses_stale = False
 
     # -- step ------------------------------------------------------------------------------
+    def _busy(self) -> bool:
+        """Is any change waiting to be applied (anything that could wake a body)?"""
+        return bool(
+            self.touched or self.forces or self.poses_stale or self.no_sleep
+            or self.body_struct or self.collider_struct or self.pending or self.rb_dirty
+            or self.col_dirty or self.tf_dirty or self.mass_dirty or self.ccd_dirty
+        )
+
     def step(self) -> None:
-        """sync-in, substeps, joints read-back, sync-out (events are recorded meanwhile)."""
+        """sync-in, substeps, joints read-back, sync-out (events are recorded meanwhile).
+
+        When every body was asleep after the last step and nothing has touched the
+        world since, no body can move during this one: sleeping islands only wake
+        through an awake body or a change made from outside. The step then skips the
+        bulk reads of continuous collision and sync-out, so a world at rest costs
+        almost nothing however many bodies it holds.
+        """
+        applied = self._applied
+        quiet = self.all_asleep and not self._busy() and not self.joints.handles
         self.sync_in()
+        quiet = quiet and self._applied is applied
+        self.touched = False
         self.events_step_started()
         n = self.substeps
         h = self.dt / n
         self.joints.before_step(self.dt)
         rec = self.recorder
-        if self.ccd is not None:
+        if self.ccd is not None and not quiet:
             self.ccd.before_step(self.dt, n)
         forces = self.forces
         for i in range(n):
@@ -560,7 +583,10 @@ class Simulation:
         rec.substep = 0
         self.steps += 1
         self.joints.after_step(self.dt)
-        self.sync_out()
+        if quiet:
+            self.poses.prev[:] = self.poses.state[:, :3]  # at rest: no interpolation
+        else:
+            self.sync_out()
         rec.raise_pending()
         rec.deliver_post_solve()
 
@@ -584,6 +610,7 @@ class Simulation:
         poses = self.poses
         slots, rows = poses.read(self.space)
         if len(slots) == 0:
+            self.all_asleep = len(poses.dynamic) == 0
             return
         s = self.settings
         vmax = s.max_translation / self.dt
@@ -621,6 +648,7 @@ class Simulation:
                         raw_set(rb, "awake", False)
                         raw_set(rb, "velocity", (0.0, 0.0))
                         raw_set(rb, "angular_velocity", 0.0)
+        self.all_asleep = bool(poses.dynamic.all() and poses.asleep.all())
 
     def _write_back(self, moved: np.ndarray, new: np.ndarray, old: np.ndarray) -> None:
         """Write the changed rows to the components, a column at a time.
