@@ -296,9 +296,12 @@ class World:
 
     def try_get(self, entity: int, component_type: type[T]) -> T | None:
         """Like :meth:`get`, but None when the entity or component is missing."""
-        if not self.exists(entity):
+        if entity in self._dying:
             return None
-        comp: Any = self._db()[entity].get(component_type)
+        comps = self._db().get(entity)
+        if comps is None:
+            return None
+        comp: Any = comps.get(component_type)
         if comp is None and entity in self._pending:
             comp = self._pending[entity].get(component_type)
         return comp

@@ -29,7 +29,7 @@ kge.errors.ValidationError: RevoluteJoint.upper_angle must be >= lower_angle (-0
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
@@ -169,6 +169,31 @@ def _has(obj: object, name: str) -> bool:
     return True
 
 
+#: the checks of the anchor fields every one-point joint has (see AnchoredJoint)
+ANCHOR_CHECKS: dict[str, Check] = {
+    "anchor": optional(vec2),
+    "local_anchor_a": vec2,
+    "local_anchor_b": vec2,
+}
+
+
 def checks(**extra: Check) -> dict[str, Check]:
     """The base checks plus a joint's own (bodies are checked for every two-body joint)."""
     return {**BASE_CHECKS, "body_a": entity_ref, "body_b": entity_ref, **extra}
+
+
+@dataclass(slots=True)
+class AnchoredJoint(Joint):
+    """Base of the joints placed at one point (revolute, prismatic, weld, wheel, friction).
+
+    Give either ``anchor``, a world point resolved from the bodies' poses when the
+    joint is built (the manual's ``Initialize(bodyA, bodyB, anchor)``), or the two
+    ``local_anchor_a`` / ``local_anchor_b`` in each body's frame.
+    """
+
+    body_a: int | None
+    body_b: int | None
+    _: KW_ONLY
+    anchor: Vec2 | None = None
+    local_anchor_a: Vec2 = (0.0, 0.0)
+    local_anchor_b: Vec2 = (0.0, 0.0)

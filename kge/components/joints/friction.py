@@ -13,28 +13,21 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.joints.base import ANCHOR_CHECKS, AnchoredJoint, checks
 from kge.components.tracked import Check
-from kge.validate import non_negative, vec2
+from kge.validate import non_negative
 
 
 @dataclass(slots=True)
-class FrictionJoint(Joint):
+class FrictionJoint(AnchoredJoint):
     """Friction of ``body_b`` against ``body_a`` at ``anchor`` (or the local anchors)."""
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **ANCHOR_CHECKS,
         max_force=non_negative,
         max_torque=non_negative,
     )
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     max_force: float = 0.0
     max_torque: float = 0.0

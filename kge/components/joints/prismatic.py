@@ -18,13 +18,20 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass, field
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional, unit_vector
+from kge.components.joints.base import (
+    ANCHOR_CHECKS,
+    AnchoredJoint,
+    Vec2,
+    checks,
+    optional,
+    unit_vector,
+)
 from kge.components.tracked import Check
-from kge.validate import boolean, finite, non_negative, vec2
+from kge.validate import boolean, finite, non_negative
 
 
 @dataclass(slots=True)
-class PrismaticJoint(Joint):
+class PrismaticJoint(AnchoredJoint):
     """Let ``body_b`` slide along an axis fixed in ``body_a``.
 
     ``anchor`` (world) or ``local_anchor_a`` / ``local_anchor_b``; ``local_axis_a``
@@ -34,9 +41,7 @@ class PrismaticJoint(Joint):
     """
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **ANCHOR_CHECKS,
         local_axis_a=unit_vector,
         reference_angle=optional(finite),
         enable_limit=boolean,
@@ -48,12 +53,7 @@ class PrismaticJoint(Joint):
     )
     _ordered: ClassVar[tuple[tuple[str, str], ...]] = (("lower_translation", "upper_translation"),)
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     local_axis_a: Vec2 = (1.0, 0.0)
     reference_angle: float | None = None
     enable_limit: bool = False

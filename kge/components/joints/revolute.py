@@ -19,13 +19,13 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass, field
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.joints.base import ANCHOR_CHECKS, AnchoredJoint, checks, optional
 from kge.components.tracked import Check
-from kge.validate import boolean, finite, non_negative, vec2
+from kge.validate import boolean, finite, non_negative
 
 
 @dataclass(slots=True)
-class RevoluteJoint(Joint):
+class RevoluteJoint(AnchoredJoint):
     """Pin ``body_a`` and ``body_b`` together at one point.
 
     Give the pivot either as ``anchor`` (world point, resolved against the bodies'
@@ -38,9 +38,7 @@ class RevoluteJoint(Joint):
     """
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **ANCHOR_CHECKS,
         reference_angle=optional(finite),
         enable_limit=boolean,
         lower_angle=finite,
@@ -51,12 +49,7 @@ class RevoluteJoint(Joint):
     )
     _ordered: ClassVar[tuple[tuple[str, str], ...]] = (("lower_angle", "upper_angle"),)
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     reference_angle: float | None = None
     enable_limit: bool = False
     lower_angle: float = 0.0

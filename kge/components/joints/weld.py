@@ -12,30 +12,23 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.joints.base import ANCHOR_CHECKS, AnchoredJoint, checks, optional
 from kge.components.tracked import Check
-from kge.validate import finite, non_negative, vec2
+from kge.validate import finite, non_negative
 
 
 @dataclass(slots=True)
-class WeldJoint(Joint):
+class WeldJoint(AnchoredJoint):
     """Weld ``body_b`` to ``body_a`` at ``anchor`` (or the local anchors)."""
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **ANCHOR_CHECKS,
         reference_angle=optional(finite),
         frequency_hz=non_negative,
         damping_ratio=non_negative,
     )
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     reference_angle: float | None = None
     frequency_hz: float = 0.0
     damping_ratio: float = 0.0

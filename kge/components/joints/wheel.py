@@ -13,21 +13,25 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass, field
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional, unit_vector
+from kge.components.joints.base import (
+    ANCHOR_CHECKS,
+    AnchoredJoint,
+    Vec2,
+    checks,
+    unit_vector,
+)
 from kge.components.tracked import Check
-from kge.validate import boolean, finite, non_negative, vec2
+from kge.validate import boolean, finite, non_negative
 
 
 @dataclass(slots=True)
-class WheelJoint(Joint):
+class WheelJoint(AnchoredJoint):
     """Axle of ``body_b`` on ``body_a``. Read back: ``translation`` (along the
     axis, m), ``speed`` (wheel spin relative to the chassis, rad/s),
     ``motor_torque`` (N·m, magnitude)."""
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **ANCHOR_CHECKS,
         local_axis_a=unit_vector,
         enable_motor=boolean,
         motor_speed=finite,
@@ -36,12 +40,7 @@ class WheelJoint(Joint):
         damping_ratio=non_negative,
     )
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     local_axis_a: Vec2 = (1.0, 0.0)
     enable_motor: bool = False
     motor_speed: float = 0.0
