@@ -65,7 +65,11 @@ def sample(
 
     def register(setup: Setup) -> Sample:
         s = Sample(category, name, setup, help, dict(keys or {}), camera)
-        if s.slug in _SAMPLES:
+        old = _SAMPLES.get(s.slug)
+        # The same function registered again (its module run with ``python -m`` after
+        # the package imported it) replaces itself; two different samples may not
+        # share a name.
+        if old is not None and old.setup.__qualname__ != setup.__qualname__:
             raise ValueError(f"two samples are named {name!r}")
         _SAMPLES[s.slug] = s
         return s
