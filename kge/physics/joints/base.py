@@ -37,6 +37,17 @@ from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, JointHandle
 from kge.physics.joints.mechanics import is_dynamic
 
+#: pymunk constraints acting on rotation only: with both bodies unable to rotate
+#: (infinite moments: static ground plus a fixed-rotation or massless body) their
+#: effective mass is 1/0 and Chipmunk turns the bodies' velocities into NaN.
+ANGULAR = (
+    pymunk.GearJoint,
+    pymunk.RotaryLimitJoint,
+    pymunk.DampedRotarySpring,
+    pymunk.SimpleMotor,
+    pymunk.RatchetJoint,
+)
+
 Vec2 = tuple[float, float]
 
 #: fraction of a hard constraint's position error removed per 1/60 s step by
@@ -73,6 +84,8 @@ class Composite(JointHandle):
         self.parts: list[pymunk.Constraint] = []
         #: the switched-on constraints while neither body is dynamic (see before_step)
         self.suspended: list[pymunk.Constraint] | None = None
+        #: angular constraints switched off while neither body can rotate
+        self.rotation_off: list[pymunk.Constraint] = []
         self.collide = bool(component.collide_connected)
         #: False when neither body is dynamic: the joint exists but does nothing
         self.active = is_dynamic(self.a) or is_dynamic(self.b)
@@ -106,6 +119,8 @@ class Composite(JointHandle):
 
     def enable(self, constraint: pymunk.Constraint, on: bool) -> None:
         """Switch one owned constraint on or off (a limit, motor or spring)."""
+        if not on and constraint in self.rotation_off:  # the joint itself turns it off
+            self.rotation_off.remove(constraint)
         if self.suspended is not None:  # remembered for when a body is dynamic again
             if on and constraint not in self.suspended:
                 self.suspended.append(constraint)
@@ -182,7 +197,26 @@ class Composite(JointHandle):
             if self.active:
                 self.apply(self.component)
         self.track_body_types()
+        self.track_rotation()
         self.before_step_momentum()
+
+    def track_rotation(self) -> None:
+        """Keep rotation-only constraints out while neither body can rotate.
+
+        Box2D gives such a constraint a zero effective mass and skips it (a prismatic
+        joint between the ground and a fixed-rotation body simply has nothing to
+        lock); pymunk would divide by zero. They come back when a body can rotate.
+        """
+        if self.suspended is not None:
+            return
+        if math.isinf(self.a.moment) and math.isinf(self.b.moment):
+            for rot in [c for c in self.constraints if isinstance(c, ANGULAR)]:
+                self.enable(rot, False)
+                self.rotation_off.append(rot)
+        elif self.rotation_off:
+            back, self.rotation_off = self.rotation_off, []
+            for c in back:
+                self.enable(c, True)
 
     def before_step_momentum(self) -> None:
         """Remember body B's momentum (for the reaction direction)."""

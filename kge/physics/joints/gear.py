@@ -111,6 +111,7 @@ class Gear(Composite):
             self.resolve()
         if self.ready:
             self.track_body_types()
+            self.track_rotation()
             self.before_step_momentum()
 
     def read_back(self, component: Any, dt: float) -> None:
