@@ -94,7 +94,8 @@ class JointBridge:
             unbind(component)
         if self.components.get(entity) is component:
             del self.components[entity]
-            self.removed.add(entity)
+            if entity in self.handles:  # a handle the bridge has not destroyed itself
+                self.removed.add(entity)
             self.pending.discard(entity)
 
     # -- per step -----------------------------------------------------------------------
