@@ -177,6 +177,15 @@ ANCHOR_CHECKS: dict[str, Check] = {
 }
 
 
+#: the checks of the two anchor points of rods and ropes (see TwoPointJoint)
+TWO_POINT_CHECKS: dict[str, Check] = {
+    "anchor_a": optional(vec2),
+    "anchor_b": optional(vec2),
+    "local_anchor_a": vec2,
+    "local_anchor_b": vec2,
+}
+
+
 def checks(**extra: Check) -> dict[str, Check]:
     """The base checks plus a joint's own (bodies are checked for every two-body joint)."""
     return {**BASE_CHECKS, "body_a": entity_ref, "body_b": entity_ref, **extra}
@@ -195,5 +204,23 @@ class AnchoredJoint(Joint):
     body_b: int | None
     _: KW_ONLY
     anchor: Vec2 | None = None
+    local_anchor_a: Vec2 = (0.0, 0.0)
+    local_anchor_b: Vec2 = (0.0, 0.0)
+
+
+@dataclass(slots=True)
+class TwoPointJoint(Joint):
+    """Base of the joints between two points (distance, rope).
+
+    Give ``anchor_a`` / ``anchor_b`` as world points, resolved from the bodies' poses
+    when the joint is built, or ``local_anchor_a`` / ``local_anchor_b`` in each
+    body's frame.
+    """
+
+    body_a: int | None
+    body_b: int | None
+    _: KW_ONLY
+    anchor_a: Vec2 | None = None
+    anchor_b: Vec2 | None = None
     local_anchor_a: Vec2 = (0.0, 0.0)
     local_anchor_b: Vec2 = (0.0, 0.0)

@@ -18,13 +18,13 @@ from __future__ import annotations
 from dataclasses import KW_ONLY, dataclass
 from typing import ClassVar
 
-from kge.components.joints.base import Joint, Vec2, checks, optional
+from kge.components.joints.base import TWO_POINT_CHECKS, TwoPointJoint, checks, optional
 from kge.components.tracked import Check
-from kge.validate import non_negative, vec2
+from kge.validate import non_negative
 
 
 @dataclass(slots=True)
-class DistanceJoint(Joint):
+class DistanceJoint(TwoPointJoint):
     """A rod (or spring) between ``body_a`` and ``body_b``.
 
     Anchors: world points ``anchor_a`` / ``anchor_b`` (resolved when built), or
@@ -33,10 +33,7 @@ class DistanceJoint(Joint):
     """
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        anchor_a=optional(vec2),
-        anchor_b=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        **TWO_POINT_CHECKS,
         length=optional(non_negative),
         min_length=optional(non_negative),
         max_length=optional(non_negative),
@@ -45,13 +42,7 @@ class DistanceJoint(Joint):
     )
     _ordered: ClassVar[tuple[tuple[str, str], ...]] = (("min_length", "max_length"),)
 
-    body_a: int | None
-    body_b: int | None
     _: KW_ONLY
-    anchor_a: Vec2 | None = None
-    anchor_b: Vec2 | None = None
-    local_anchor_a: Vec2 = (0.0, 0.0)
-    local_anchor_b: Vec2 = (0.0, 0.0)
     length: float | None = None
     min_length: float | None = None
     max_length: float | None = None
