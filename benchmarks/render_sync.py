@@ -7,12 +7,18 @@ every variant alike; the report gives medians over the repetitions:
 * ``bulk_write``: kge's :class:`~kge.render.bulk.BulkPoser` writing N poses
   (translation, rotation, culling scale) into the batch's vertex buffers; this
   is the part that replaces one Python call per sprite;
-* ``blend``: reading N ``Transform`` components and blending previous/current
-  poses by alpha (the Python side that remains per entity);
+* ``blend``: blending previous/current poses of N entities by alpha after a
+  physics step moved them all. Nothing is read from the Transforms: physics
+  handed its history over (``record`` + ``adopt``), so it is numpy over the table;
+* ``blend_written``: the same after user code wrote all N Transforms outside
+  the fixed step (an ``on_update`` script moving everything every frame), the
+  worst case: each written Transform is read again (not part of ``kge_sync``);
 * ``kge_sync``: both together, i.e. everything kge does per frame to move N
   sprites before the draw call;
 * ``frame``: a whole ``app.render()`` (sync, GL upload and llvmpipe drawing);
-* ``record``: the pose history update run once per *fixed step* (not per frame);
+* ``record``: what the renderer does once per *fixed step* (not per frame): roll
+  the history, read the Transforms user code wrote (none here: physics' sync-out
+  writes without marks) and adopt physics' previous/current poses;
 * ``sprite_update``: ``pyglet.sprite.Sprite.update(x=, y=, rotation=)`` for N
   sprites, the per-sprite Python path kge avoids;
 * ``sprite_props``: ``sprite.position = ...; sprite.rotation = ...``, pyglet
@@ -38,7 +44,18 @@ if __package__ in (None, ""):  # run as a script: make the repository importable
 
 import numpy as np
 
-VARIANTS = ("bulk_write", "blend", "kge_sync", "frame", "record", "sprite_update", "sprite_props")
+from kge.components.tracked import raw_set
+
+VARIANTS = (
+    "bulk_write",
+    "blend",
+    "kge_sync",
+    "frame",
+    "record",
+    "blend_written",
+    "sprite_update",
+    "sprite_props",
+)
 
 
 def _build(n: int) -> tuple[Any, Any, list[Any], list[Any]]:
@@ -65,7 +82,7 @@ def _build(n: int) -> tuple[Any, Any, list[Any], list[Any]]:
     system = app.world.get_system(RenderSystem)
     assert system is not None, "App.render() adds the RenderSystem"
     view = system.view
-    transforms = [t for _, (t,) in app.world.query(Transform)]
+    transforms = [t for _, (t,) in sorted(app.world.query(Transform), key=lambda item: item[0])]
     batch = pyglet.graphics.Batch()
     tex = pyglet.image.ImageData(8, 8, "RGBA", bytes((255, 200, 0, 255)) * 64).get_texture()
     plain = [
@@ -82,15 +99,32 @@ def measure(n: int, repeats: int = 7) -> dict[str, float]:
     viewport = (-7.5, -4.2, 7.5, 4.2)
     rng = np.random.default_rng(2)
 
-    def move() -> None:
-        """What a physics step does: every Transform changes, then poses are recorded."""
+    def write() -> None:
+        """User code moves every Transform a little (tracked writes)."""
         jitter = rng.uniform(-0.01, 0.01, (len(transforms), 2))
         for t, (dx, dy) in zip(transforms, jitter, strict=True):
             t.x += float(dx)
             t.y += float(dy)
             t.angle += 0.01
+
+    from kge import Transform
+
+    entities = np.array(sorted(e for e, _ in app.world.query(Transform)))
+    now = np.array([(t.x, t.y, t.angle) for t in transforms])
+
+    def move() -> None:
+        """What a physics step does: sync-out writes every Transform (no marks), then
+        the renderer records the step and adopts physics' history of the bodies."""
+        nonlocal now
+        before = now
+        now = before + rng.uniform(-0.01, 0.01, before.shape)
+        for t, (x, y, a) in zip(transforms, now.tolist(), strict=True):
+            raw_set(t, "x", x)
+            raw_set(t, "y", y)
+            raw_set(t, "angle", a)
         t0 = time.perf_counter()
         view.poses.record()
+        view.poses.adopt(entities, before, now)
         samples["record"].append(time.perf_counter() - t0)
 
     for rep in range(repeats):
@@ -112,6 +146,11 @@ def measure(n: int, repeats: int = 7) -> dict[str, float]:
         t0 = time.perf_counter()
         app.render()
         samples["frame"].append(time.perf_counter() - t0)
+
+        write()  # outside the fixed step: every row is marked
+        t0 = time.perf_counter()
+        view.poses.blend(0.5)
+        samples["blend_written"].append(time.perf_counter() - t0)
 
         a = 0.01 * rep
         t0 = time.perf_counter()

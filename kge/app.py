@@ -24,16 +24,20 @@ Headless use, as in tests::
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from kge.input import Input
 from kge.scene import Scene, SceneLike, Time, as_scene
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
 from kge.world import World
+
+if TYPE_CHECKING:
+    from kge.components.camera import Camera
 
 SystemFactory = Callable[[], System]
 
@@ -154,19 +158,18 @@ class App:
         Live: it always uses the current scene's camera and the current window size,
         so mouse positions are right after a scene change or a resize, headless too.
         """
-        from kge.components.camera import Camera
-        from kge.systems.render import active_camera
-
-        cam = (active_camera(self.world) if self._stack else None) or Camera()
-        return cam.screen_to_world(point, self.size)
+        return self._camera().screen_to_world(point, self.size)
 
     def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
         """World metres to window pixels through the active camera (the inverse)."""
-        from kge.components.camera import Camera
+        return self._camera().world_to_screen(point, self.size)
+
+    def _camera(self) -> Camera:
+        """The active camera of the current scene, or a default one (shared, never written)."""
         from kge.systems.render import active_camera
 
-        cam = (active_camera(self.world) if self._stack else None) or Camera()
-        return cam.world_to_screen(point, self.size)
+        cam = active_camera(self.world) if self._stack else None
+        return cam if cam is not None else _default_camera()
 
     # -- scenes -----------------------------------------------------------------------
     @property
@@ -375,3 +378,11 @@ def run(
     app = App(scene, title=title, size=size, **kwargs)
     app.run()
     return app
+
+
+@functools.cache
+def _default_camera() -> Camera:
+    """The camera used when a scene has none (built once: the mouse is mapped every frame)."""
+    from kge.components.camera import Camera
+
+    return Camera()

@@ -96,8 +96,7 @@ class Schedule:
         """Run every system of ``stage``, flushing queued changes after each."""
         world = self.world
         for system in self._by_stage[stage]:
-            with world.deferred():
-                system.process(dt)
+            world.run_deferred(system.process, dt)
 
     def systems(self, stage: Stage | None = None) -> list[System]:
         return list(self._systems if stage is None else self._by_stage[stage])

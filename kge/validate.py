@@ -80,6 +80,18 @@ def positive(value: Any, owner: str, field: str) -> float:
     return v
 
 
+def at_most(value: float, limit: float, owner: str, field: str, unit: str) -> float:
+    """``value`` (already checked finite) if it is no larger than ``limit``.
+
+    Used for quantities whose products overflow float64 far beyond any game's
+    range (mass times size squared): refusing them at the call beats NaN poses
+    several steps later.
+    """
+    if value > limit:
+        raise ValidationError(f"{_label(owner, field)} must be <= {limit:g} {unit}, got {value!r}")
+    return value
+
+
 def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:
     v = finite(value, owner, field)
     if not lo <= v <= hi:

@@ -121,6 +121,16 @@ class World:
         if self._defer_depth == 0:
             self.flush()
 
+    def run_deferred(self, fn: Callable[[float], None], dt: float) -> None:
+        """``fn(dt)`` inside :meth:`deferred` without a context manager (per system, per frame)."""
+        self._defer_depth += 1
+        try:
+            fn(dt)
+        finally:
+            self._defer_depth -= 1
+        if self._defer_depth == 0:
+            self.flush()
+
     @contextmanager
     def locked(self) -> Iterator[None]:
         """Refuse structural changes inside the block (physics callbacks)."""

@@ -35,7 +35,11 @@ from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Shape
 from kge.components.tracked import Check, Tracked, fast_init
 from kge.errors import ComponentTypeError
-from kge.validate import FAST, boolean, non_negative
+from kge.validate import FAST, at_most, boolean, non_negative
+
+#: Densest material accepted, kg/m^2 (osmium sheet 1 m thick is about 2e4): with
+#: shapes up to 1e6 m, mass and inertia stay finite.
+MAX_DENSITY = 1e12
 
 
 def _shape(value: Any, owner: str, field: str) -> Shape:
@@ -59,12 +63,17 @@ def _entity_ref(value: Any, owner: str, field: str) -> int | None:
     return value
 
 
+def _density(value: Any, owner: str, field: str) -> float:
+    return at_most(non_negative(value, owner, field), MAX_DENSITY, owner, field, "kg/m^2")
+
+
 def _optional_speed(value: Any, owner: str, field: str) -> float | None:
     return None if value is None else non_negative(value, owner, field)
 
 
 _EXACT_SHAPES = frozenset(SHAPE_TYPES)
 FAST[_shape] = lambda v: type(v) in _EXACT_SHAPES
+FAST[_density] = lambda v: type(v) is float and 0.0 <= v <= MAX_DENSITY
 FAST[_filter] = lambda v: type(v) is Filter
 FAST[_entity_ref] = lambda v: v is None or (type(v) is int and v >= 0)
 FAST[_optional_speed] = lambda v: v is None or (type(v) is float and v - v == 0.0 and v >= 0.0)
@@ -77,7 +86,7 @@ class Collider(Tracked):
 
     _checks: ClassVar[dict[str, Check]] = {
         "shape": _shape,
-        "density": non_negative,
+        "density": _density,
         "friction": non_negative,
         "restitution": non_negative,
         "filter": _filter,

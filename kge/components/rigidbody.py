@@ -26,7 +26,7 @@ from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked, fast_init
 from kge.errors import ComponentTypeError
-from kge.validate import FAST, Vec2, boolean, finite, non_negative, positive, vec2
+from kge.validate import FAST, Vec2, at_most, boolean, finite, non_negative, positive, vec2
 
 
 class BodyType(Enum):
@@ -50,12 +50,18 @@ def _body_type(value: Any, owner: str, field: str) -> BodyType:
     )
 
 
+#: Heaviest mass override accepted, kg (about the Earth's mass): its inertia stays finite.
+MAX_MASS = 1e24
+
+
 def _optional_mass(value: Any, owner: str, field: str) -> float | None:
-    return None if value is None else positive(value, owner, field)
+    if value is None:
+        return None
+    return at_most(positive(value, owner, field), MAX_MASS, owner, field, "kg")
 
 
 FAST[_body_type] = lambda v: type(v) is BodyType
-FAST[_optional_mass] = lambda v: v is None or (type(v) is float and v - v == 0.0 and v > 0.0)
+FAST[_optional_mass] = lambda v: v is None or (type(v) is float and 0.0 < v <= MAX_MASS)
 
 
 @fast_init

@@ -35,12 +35,35 @@ Vec2 = tuple[float, float]
 MAX_POLYGON_VERTICES = 16
 #: Box2D's b2_linearSlop: lengths below this are degenerate.
 LINEAR_SLOP = 0.005
+#: Largest size or body-local coordinate of a shape, in metres. Box2D is tuned for
+#: moving shapes of 0.1-10 m and static ones up to about 50 m; far beyond, mass and
+#: inertia (which grow with the fourth power of size) overflow to infinity and
+#: every pose becomes NaN. A thousand kilometres is far past any sensible world.
+MAX_LENGTH = 1e6
 
 
 def _points(value: Any, owner: str, field: str) -> tuple[Vec2, ...]:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
         raise ValidationError(f"{owner}.{field} must be a sequence of (x, y) points, got {value!r}")
-    return tuple(vec2(p, owner, f"{field}[{i}]") for i, p in enumerate(value))
+    return tuple(_point(p, owner, f"{field}[{i}]") for i, p in enumerate(value))
+
+
+def _point(value: Any, owner: str, field: str) -> Vec2:
+    """A finite (x, y) within :data:`MAX_LENGTH` of the body origin."""
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_LENGTH or abs(y) > MAX_LENGTH:
+        raise ValidationError(
+            f"{owner}.{field} must lie within {MAX_LENGTH:g} m of the body origin, got {(x, y)!r}"
+        )
+    return (x, y)
+
+
+def _length(value: Any, owner: str, field: str) -> float:
+    """A positive size no larger than :data:`MAX_LENGTH`."""
+    v = positive(value, owner, field)
+    if v > MAX_LENGTH:
+        raise ValidationError(f"{owner}.{field} must be <= {MAX_LENGTH:g} m, got {v!r}")
+    return v
 
 
 def _set(obj: object, name: str, value: Any) -> None:
@@ -98,8 +121,8 @@ class Circle:
     center: Vec2 = (0.0, 0.0)
 
     def __post_init__(self) -> None:
-        _set(self, "radius", positive(self.radius, "Circle", "radius"))
-        _set(self, "center", vec2(self.center, "Circle", "center"))
+        _set(self, "radius", _length(self.radius, "Circle", "radius"))
+        _set(self, "center", _point(self.center, "Circle", "center"))
 
 
 @dataclass(slots=True, frozen=True)
@@ -113,11 +136,11 @@ class Box:
 
     def __post_init__(self) -> None:
         for name in ("half_width", "half_height"):
-            v = positive(getattr(self, name), "Box", name)
+            v = _length(getattr(self, name), "Box", name)
             if v < LINEAR_SLOP:
                 raise ValidationError(f"Box.{name} must be >= {LINEAR_SLOP} m, got {v!r}")
             _set(self, name, v)
-        _set(self, "center", vec2(self.center, "Box", "center"))
+        _set(self, "center", _point(self.center, "Box", "center"))
         _set(self, "angle", finite(self.angle, "Box", "angle"))
 
     def vertices(self) -> tuple[Vec2, ...]:
@@ -156,8 +179,8 @@ class Edge:
     v2: Vec2
 
     def __post_init__(self) -> None:
-        a = vec2(self.v1, "Edge", "v1")
-        b = vec2(self.v2, "Edge", "v2")
+        a = _point(self.v1, "Edge", "v1")
+        b = _point(self.v2, "Edge", "v2")
         if math.hypot(b[0] - a[0], b[1] - a[1]) < LINEAR_SLOP:
             raise ValidationError(f"Edge has zero length ({a!r} to {b!r})")
         _set(self, "v1", a)

@@ -36,13 +36,41 @@ _SET = object.__setattr__
 
 
 class Binding:
-    """Ties a component instance to an entity and a system's dirty set."""
+    """Ties a component instance to an entity and the dirty sets of the systems mirroring it.
 
-    __slots__ = ("dirty", "entity")
+    :meth:`Tracked.__setattr__` marks a write with ``dirty.add(entity)``. With one
+    system watching (the usual case) ``dirty`` is that system's set, so a write
+    costs one C-level ``set.add``. When several systems mirror the same component
+    (physics and the renderer both follow Transform), ``dirty`` is the binding
+    itself and :meth:`add` marks each of their sets.
+    """
 
-    def __init__(self, entity: int, dirty: set[int]) -> None:
+    __slots__ = ("dirty", "entity", "sets")
+
+    def __init__(self, entity: int, dirty: set[int], *more: set[int]) -> None:
         self.entity = entity
-        self.dirty = dirty
+        self.sets: tuple[set[int], ...] = (dirty, *more)
+        self.dirty: set[int] | Binding = self if more else dirty
+
+    def add(self, entity: int) -> None:
+        """Mark ``entity`` in every bound set (the fan-out behind ``dirty.add``)."""
+        for dirty in self.sets:
+            dirty.add(entity)
+
+    def joined(self, entity: int, dirty: set[int]) -> Binding:
+        """This binding plus ``dirty``; a binding to another entity is replaced, not joined."""
+        if entity != self.entity:
+            return Binding(entity, dirty)
+        if any(s is dirty for s in self.sets):  # identity: two empty sets are equal
+            return self
+        return Binding(entity, *self.sets, dirty)
+
+    def without(self, dirty: set[int]) -> Binding | None:
+        """This binding minus ``dirty`` (None when nothing is left to mark)."""
+        rest = [s for s in self.sets if s is not dirty]
+        if len(rest) == len(self.sets):
+            return self
+        return Binding(self.entity, *rest) if rest else None
 
 
 @dataclass(slots=True)
@@ -171,9 +199,16 @@ raw_set: Callable[[object, str, Any], None] = object.__setattr__
 
 
 def bind(component: Tracked, entity: int, dirty: set[int]) -> None:
-    """Start tracking writes to ``component`` as changes of ``entity``."""
-    raw_set(component, "_binding", Binding(entity, dirty))
+    """Start tracking writes to ``component`` as changes of ``entity`` in ``dirty``.
+
+    Sets other systems bound for the same entity keep being marked too.
+    """
+    old = component._binding
+    new = Binding(entity, dirty) if old is None else old.joined(entity, dirty)
+    raw_set(component, "_binding", new)
 
 
-def unbind(component: Tracked) -> None:
-    raw_set(component, "_binding", None)
+def unbind(component: Tracked, dirty: set[int] | None = None) -> None:
+    """Stop tracking writes to ``component`` into ``dirty``, or into every set (None)."""
+    old = component._binding
+    raw_set(component, "_binding", None if old is None or dirty is None else old.without(dirty))

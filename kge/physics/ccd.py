@@ -69,6 +69,7 @@ ball instead of passing over it.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -77,6 +78,7 @@ from typing import Any
 import numpy as np
 import pymunk
 import pymunk.batch
+from pymunk._chipmunk import lib as _lib
 
 from kge.components.filter import Filter
 from kge.errors import ComponentTypeError, ValidationError
@@ -151,10 +153,78 @@ class _Part:
     shape: pymunk.Shape
     #: (x, y, radius, guard): the point is swept as a circle of that radius; a
     #: guard is a small circle deep inside the shape (see _Tracked._time_of_impact)
-    points: list[tuple[float, float, float, bool]]
+    points: tuple[tuple[float, float, float, bool], ...]
 
 
-def _parts(body: pymunk.Body, margin: float) -> tuple[list[_Part], float, float]:
+#: what :func:`_shape_points` computes for one shape: points, core radius, reach
+_ShapePoints = tuple[tuple[tuple[float, float, float, bool], ...], float, float]
+
+
+def _geometry(shape: pymunk.Shape) -> tuple[Any, ...] | None:
+    """A hashable description of a shape's body-local geometry (Chipmunk's getters).
+
+    Read through Chipmunk directly: pymunk's ``get_vertices`` builds a Vec2d per
+    vertex, and a game spawning a wave of 1,000 boxes tracks 1,000 bodies at once.
+    """
+    cp = shape._shape
+    if isinstance(shape, pymunk.Circle):
+        o = _lib.cpCircleShapeGetOffset(cp)
+        return ("circle", _lib.cpCircleShapeGetRadius(cp), o.x, o.y)
+    if isinstance(shape, pymunk.Poly):
+        verts = []
+        for i in range(_lib.cpPolyShapeGetCount(cp)):
+            v = _lib.cpPolyShapeGetVert(cp, i)
+            verts.append((v.x, v.y))
+        c = _lib.cpShapeGetCenterOfGravity(cp)
+        return ("poly", _lib.cpPolyShapeGetRadius(cp), tuple(verts), (c.x, c.y))
+    if isinstance(shape, pymunk.Segment):
+        a, b = _lib.cpSegmentShapeGetA(cp), _lib.cpSegmentShapeGetB(cp)
+        return ("segment", _lib.cpSegmentShapeGetRadius(cp), (a.x, a.y), (b.x, b.y))
+    return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _shape_points(
+    geometry: tuple[Any, ...], cog: tuple[float, float], margin: float
+) -> _ShapePoints:
+    """Sweep points, core radius and reach (from ``cog``) of one shape's geometry.
+
+    Cached: a wave of identical boxes shares one answer.
+    """
+    kind, skin = geometry[0], geometry[1]
+    points: list[tuple[float, float, float, bool]] = []
+    if kind == "circle":
+        r, ox, oy = skin, geometry[2], geometry[3]
+        points.append((ox, oy, max(r - margin, 0.5 * r), False))
+        points.append((ox, oy, 0.5 * r, True))
+        return tuple(points), r, math.dist((ox, oy), cog) + r
+    if kind == "poly":
+        verts: tuple[tuple[float, float], ...] = geometry[2]
+        cx, cy = geometry[3]
+        inradius = min(
+            abs((q[0] - p[0]) * (cy - p[1]) - (q[1] - p[1]) * (cx - p[0])) / math.dist(p, q)
+            for p, q in zip(verts, verts[1:] + verts[:1], strict=True)
+            if p != q
+        )
+        points.append((cx, cy, max(inradius + skin - margin, 0.5 * inradius), False))
+        points.append((cx, cy, 0.5 * inradius, True))
+        reach = 0.0
+        for vx, vy in verts:
+            d = math.hypot(cx - vx, cy - vy)
+            k = min(margin, 0.5 * d) / d if d > 0 else 0.0
+            points.append((vx + (cx - vx) * k, vy + (cy - vy) * k, 0.0, False))
+            reach = max(reach, math.dist((vx, vy), cog) + skin)
+        return tuple(points), inradius + skin, reach
+    (ax, ay), (bx, by) = geometry[2], geometry[3]
+    points.extend(
+        (x, y, 0.0, False) for x, y in ((ax, ay), ((ax + bx) / 2, (ay + by) / 2), (bx, by))
+    )
+    return tuple(points), max(skin, margin), max(math.dist((ax, ay), cog), math.dist((bx, by), cog))
+
+
+def _parts(
+    body: pymunk.Body, shapes: tuple[pymunk.Shape, ...], margin: float
+) -> tuple[list[_Part], float, float]:
     """Sweep points per shape, core radius (thinnest part) and reach (from the centre of gravity).
 
     Circles sweep their centre with the radius shrunk by ``margin``; polygons
@@ -164,49 +234,23 @@ def _parts(body: pymunk.Body, margin: float) -> tuple[list[_Part], float, float]
     segment of a chain, while it slides. Circles and polygons also get a guard:
     a circle of half their core radius at their centre.
     """
-    cog = body.center_of_gravity
+    g = _lib.cpBodyGetCenterOfGravity(body._body)
+    cog = (g.x, g.y)
     parts: list[_Part] = []
     core = math.inf
     reach = 0.0
-    for shape in body.shapes:
-        points: list[tuple[float, float, float, bool]] = []
-        if isinstance(shape, pymunk.Circle):
-            r = shape.radius
-            ox, oy = float(shape.offset[0]), float(shape.offset[1])
-            points.append((ox, oy, max(r - margin, 0.5 * r), False))
-            points.append((ox, oy, 0.5 * r, True))
-            core = min(core, r)
-            reach = max(reach, math.dist((ox, oy), cog) + r)
-        elif isinstance(shape, pymunk.Poly):
-            verts = [(float(v[0]), float(v[1])) for v in shape.get_vertices()]
-            cx, cy = (float(c) for c in shape.center_of_gravity)
-            inradius = min(
-                abs((q[0] - p[0]) * (cy - p[1]) - (q[1] - p[1]) * (cx - p[0])) / math.dist(p, q)
-                for p, q in zip(verts, verts[1:] + verts[:1], strict=True)
-                if p != q
-            )
-            skin = shape.radius
-            points.append((cx, cy, max(inradius + skin - margin, 0.5 * inradius), False))
-            points.append((cx, cy, 0.5 * inradius, True))
-            for vx, vy in verts:
-                d = math.hypot(cx - vx, cy - vy)
-                k = min(margin, 0.5 * d) / d if d > 0 else 0.0
-                points.append((vx + (cx - vx) * k, vy + (cy - vy) * k, 0.0, False))
-                reach = max(reach, math.dist((vx, vy), cog) + skin)
-            core = min(core, inradius + skin)
-        elif isinstance(shape, pymunk.Segment):
-            (ax, ay), (bx, by) = shape.a, shape.b
-            points.extend(
-                (x, y, 0.0, False) for x, y in ((ax, ay), ((ax + bx) / 2, (ay + by) / 2), (bx, by))
-            )
-            core = min(core, max(shape.radius, margin))
-            reach = max(reach, math.dist((ax, ay), cog), math.dist((bx, by), cog))
-        if points:
-            parts.append(_Part(shape, points))
+    for shape in shapes:
+        geometry = _geometry(shape)
+        if geometry is None:
+            continue
+        points, shape_core, shape_reach = _shape_points(geometry, cog, margin)
+        core = min(core, shape_core)
+        reach = max(reach, shape_reach)
+        parts.append(_Part(shape, points))
     return parts, (core if math.isfinite(core) else margin), reach
 
 
-def _extent(body: pymunk.Body, reach: float) -> float:
+def _extent(body: pymunk.Body, shapes: tuple[pymunk.Shape, ...], reach: float) -> float:
     """Radius about the body's origin that holds all its shapes' bounding boxes (skin included).
 
     With the positions read in bulk, ``position ± extent`` bounds the body in
@@ -215,7 +259,7 @@ def _extent(body: pymunk.Body, reach: float) -> float:
     :func:`_parts`) leaves out only a segment's radius.
     """
     pad = 0.0
-    for shape in body.shapes:
+    for shape in shapes:
         if isinstance(shape, pymunk.Segment):
             pad = max(pad, shape.radius)
         elif not isinstance(shape, (pymunk.Circle, pymunk.Poly)):
@@ -844,17 +888,19 @@ class ContinuousCollision:
                 f"ContinuousCollision.track: expected a pymunk.Body, got {type(body).__name__}"
             )
         bullet = boolean(bullet, "ContinuousCollision.track", "bullet")
-        self._bodies[body.id] = body
-        old = self._tracked.pop(body.id, None)
+        key = body.id
+        self._bodies[key] = body
+        old = self._tracked.pop(key, None)
         if old is not None and old.armed:
             self._disarm(self._armed.pop(id(old)))
         self._index = None
         self._obstacles.reclassify(body)  # its type may have changed in place
         if body.body_type != _DYNAMIC:
             return
-        parts, core, reach = _parts(body, self.margin)
-        self._tracked[body.id] = _Tracked(
-            self, body, bullet, parts, core, reach, tuple(body.shapes), _extent(body, reach)
+        shapes = tuple(body.shapes)  # pymunk builds a new set per read
+        parts, core, reach = _parts(body, shapes, self.margin)
+        self._tracked[key] = _Tracked(
+            self, body, bullet, parts, core, reach, shapes, _extent(body, shapes, reach)
         )
 
     def untrack(self, body: pymunk.Body) -> None:
@@ -891,12 +937,20 @@ class ContinuousCollision:
 
     # ----------------------------------------------------------------- per step
 
-    def before_step(self, step_dt: float, substeps: int = 1) -> int:
+    def before_step(
+        self,
+        step_dt: float,
+        substeps: int = 1,
+        read: tuple[np.ndarray, np.ndarray] | None = None,
+    ) -> int:
         """Clamp speeds and arm the sweep on fast tracked bodies; returns how many are armed.
 
         ``substeps``: how many ``space.step`` calls make up this fixed step. A
         body is armed when its motion per substep exceeds the threshold, so
         passing the real count skips bodies that are only fast per step.
+        ``read``: (ids, rows of x, y, angle, vx, vy, w) of every body, when the
+        caller already holds a bulk read that is still current (the physics
+        system's sync-out read, if nothing touched a body since); saves a read.
         """
         dt = positive(step_dt, "ContinuousCollision.before_step", "step_dt")
         n = integer(substeps, "ContinuousCollision.before_step", "substeps")
@@ -905,7 +959,11 @@ class ContinuousCollision:
                 f"ContinuousCollision.before_step: substeps must be >= 1, got {n}"
             )
         self.step_dt = dt
-        ids, pose, vel = self._read()
+        if read is None:
+            ids, pose, vel = self._read()
+        else:
+            ids, rows = read
+            pose, vel = rows[:, :3], rows[:, 3:]
         vel = self._clamp(ids, vel, dt)
         for info in self._boosted:
             info.boost = 0.0

@@ -16,7 +16,7 @@ collider).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Any, ClassVar
 
 Vec2 = tuple[float, float]
 
@@ -112,9 +112,14 @@ class PhysicsEvents:
         ("joint_destroyed", None),
     )
 
+    def _lists(self) -> tuple[list[Any], ...]:
+        # spelled out: this runs twice per fixed step, also in a world at rest
+        return (self.contact_begin, self.contact_end, self.sensor_begin, self.sensor_end,
+                self.hits, self.joint_broken, self.joint_destroyed)
+
     def clear(self) -> None:
-        for name, _ in self.CHANNELS:
-            getattr(self, name).clear()
+        for lst in self._lists():
+            lst.clear()
 
     def __len__(self) -> int:
-        return sum(len(getattr(self, name)) for name, _ in self.CHANNELS)
+        return sum(map(len, self._lists()))

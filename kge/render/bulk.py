@@ -42,8 +42,10 @@ class _Domain:
 
     Members are sorted by vertex start. When every member has the same vertex
     count (4 for sprites) and they sit back to back, the domain region is a
-    plain ``(members, count, components)`` view and each frame is a broadcast
-    per attribute; otherwise a per-vertex index is used.
+    plain run of ``members * count`` vertices, written with one ``np.repeat``
+    per attribute (or per component); otherwise a per-vertex index is used.
+    When the members' pose rows are consecutive too (sprites created in
+    entity order), their poses are a slice of the table, not a gathered copy.
     """
 
     __slots__ = (
@@ -54,6 +56,7 @@ class _Domain:
         "index",
         "members",
         "radius",
+        "row_slice",
         "rows",
         "scale",
         "span",
@@ -67,6 +70,7 @@ class _Domain:
         self.index: dict[Any, int] = {}  # key -> position in the sorted arrays
         self.dirty = True
         self.rows = np.zeros(0, np.intp)
+        self.row_slice: slice | None = None  # ``rows`` as a slice when consecutive
         self.scale = np.zeros((0, 2), np.float32)
         self.radius = np.zeros(0)
         self.vidx = np.zeros(0, np.intp)
@@ -84,6 +88,7 @@ class _Domain:
         self.rows = np.fromiter((m.row for m in ms), np.intp, len(ms))
         self.scale = np.array([m.scale for m in ms], np.float32).reshape(-1, 2)
         self.radius = np.fromiter((m.radius for m in ms), float, len(ms))
+        self.row_slice = _as_slice(self.rows)
         self.dirty = False
         if not len(ms):
             self.span, self.block, self.vidx = (0, 0), False, np.zeros(0, np.intp)
@@ -100,16 +105,41 @@ class _Domain:
         offs = np.arange(int(counts.sum())) - np.repeat(np.cumsum(counts) - counts, counts)
         self.vidx = np.repeat(starts, counts) + offs
 
+    def poses(self, table: np.ndarray) -> np.ndarray:
+        """The members' rows of ``table`` (a view when the rows are consecutive)."""
+        return table[self.rows] if self.row_slice is None else table[self.row_slice]
+
     def put(self, buffer: Any, values: np.ndarray, width: int) -> None:
-        """Write one value row per member into ``width`` components of every vertex."""
+        """Write one value row per member into ``width`` components of every vertex.
+
+        Values are cast to the buffer's type by the assignment itself. In a
+        block, each member's row is repeated over its vertices with
+        ``np.repeat`` into a contiguous temporary and copied in: numpy
+        broadcasting a ``(members, 1, width)`` array over ``(members, count,
+        width)`` runs an inner loop of ``width`` elements, several times slower.
+        """
         lo, hi = self.span
         arr = np.ctypeslib.as_array(buffer.data).reshape(-1, buffer.count)
-        if self.block:
-            view = arr[lo:hi].reshape(len(self.rows), self.count, buffer.count)
-            view[:, :, :width] = values.reshape(len(self.rows), 1, width)
-        else:
-            arr[self.vidx, :width] = values.reshape(-1, width)[self.vmember]
+        values = values.reshape(-1, width)
+        if not self.block:
+            arr[self.vidx, :width] = values[self.vmember]
+        elif width == buffer.count:  # whole vertices: one contiguous copy
+            arr[lo:hi] = np.repeat(values, self.count, axis=0)
+        else:  # some components of each vertex: one strided column at a time
+            region = arr[lo:hi]
+            for column in range(width):
+                region[:, column] = np.repeat(values[:, column], self.count)
         buffer.invalidate_region(lo, hi - lo)
+
+
+def _as_slice(rows: np.ndarray) -> slice | None:
+    """``rows`` as ``slice(first, last + 1)`` when they are consecutive, else None."""
+    if not len(rows):
+        return None
+    first = int(rows[0])
+    if np.array_equal(rows, np.arange(first, first + len(rows))):
+        return slice(first, first + len(rows))
+    return None
 
 
 class BulkPoser:
@@ -187,10 +217,10 @@ class BulkPoser:
                 d.rebuild()
             if not len(d.rows):
                 continue
-            p = poses[d.rows]
+            p = d.poses(poses)
             bufs = d.domain.attrib_name_buffers
-            d.put(bufs[self.translate], p[:, :2].astype(np.float32), 2)
-            d.put(bufs[self.rotation], to_pyglet_degrees(p[:, 2]).astype(np.float32), 1)
+            d.put(bufs[self.translate], p[:, :2], 2)
+            d.put(bufs[self.rotation], to_pyglet_degrees(p[:, 2]), 1)
             if self.scale_attr is not None:
                 if view is None:
                     scale = d.scale

@@ -45,6 +45,8 @@ class PhysicsSystem(System):
     order = 200
     sim: Simulation
     physics: Physics
+    #: the last step raised (a user hook failed) before its events were delivered
+    _undelivered = False
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -144,10 +146,19 @@ class PhysicsSystem(System):
             sim.dt = dt
             sim.joints.dt = dt
             sim.rb_dirty.update(e for e, r in sim.bodies.items() if not r.implicit)
-        self.events.clear()
+        if self._undelivered:
+            # the step that raised recorded real contacts; hooks and lists get them now,
+            # with this step's, so every begin still reaches them before its end
+            self._undelivered = False
+        else:
+            self.events.clear()
         self.physics._take_carried(self.events)  # ends recorded by syncs between steps
         self.world.flush()  # changes queued since the last flush take part in this step
-        sim.step()
+        try:
+            sim.step()
+        except Exception:
+            self._undelivered = True
+            raise
 
     def detach(self) -> None:
         self.sim.close()

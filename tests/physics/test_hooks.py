@@ -164,3 +164,28 @@ def test_locked_world_error_reaches_the_caller(sim: Sim) -> None:
     with pytest.raises(WorldLockedError):
         sim.step(2)
     assert len(sim.world.entities()) == n
+
+
+def test_events_of_a_step_whose_hook_raised_are_delivered_with_the_next(sim: Sim) -> None:
+    """A failing pre-solve hook must not lose the begin event recorded in that step."""
+    sim.ground()
+    sim.dynamic(Circle(0.5), 0.0, 0.52, contact_hooks=True)
+    seen: list[object] = []
+    sim.world.set_handler("contact_begin", seen.append)
+    calls = 0
+
+    def bad_once(c: PreSolve) -> None:
+        nonlocal calls
+        calls += 1
+        if calls == 1:
+            raise RuntimeError("boom")
+
+    sim.physics.on_pre_solve(bad_once)
+    with pytest.raises(RuntimeError, match="boom"):
+        for _ in range(30):
+            sim.step()
+    assert seen == []  # the failing step's delivery never ran
+    sim.step()
+    assert len(seen) == 1, "the begin of the failed step is delivered with the next one"
+    sim.step(3)
+    assert len(seen) == 1

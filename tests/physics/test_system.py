@@ -58,3 +58,16 @@ def test_hundreds_of_sleeping_bodies_write_nothing(sim: Sim) -> None:
     x = t.x
     sim.step(5)
     assert t.x == x
+
+
+def test_events_clear_and_len_cover_every_channel() -> None:
+    """``clear`` and ``len`` spell the lists out for speed; they must not miss one."""
+    from kge.physics.events import PhysicsEvents
+
+    events = PhysicsEvents()
+    for name, _ in PhysicsEvents.CHANNELS:
+        getattr(events, name).append(object())
+    assert len(events) == len(PhysicsEvents.CHANNELS)
+    events.clear()
+    assert len(events) == 0
+    assert all(not getattr(events, name) for name, _ in PhysicsEvents.CHANNELS)
