@@ -148,7 +148,7 @@ class Box:
         return _box_corners(self.half_width, self.half_height, self.center, self.angle)
 
 
-@lru_cache(maxsize=1024)
+@lru_cache(maxsize=256)
 def _box_corners(hw: float, hh: float, center: Vec2, angle: float) -> tuple[Vec2, ...]:
     """Box corners, cached: games spawn many boxes of a few sizes (the tuples are immutable)."""
     c, s = math.cos(angle), math.sin(angle)

@@ -10,14 +10,37 @@ Box2D rules implemented here, each kept off the hot path when unused:
 * gravity scale and damping (``v *= max(0, 1 - c*dt)`` per fixed step) live in a
   ``velocity_func`` installed only on bodies that need it, guarded so that it
   never touches a kinematic body;
-* every pymunk call that can abort the process is wrapped: :func:`sleep` checks
+* every pymunk call that can abort the process is wrapped: :func:`sleep_island` checks
   that sleeping is enabled, the body is dynamic and in the space (it is never
   called inside a step, because sync-in runs between steps).
+
+Chipmunk keeps a *contact graph* (arbiters and constraints threaded on their
+bodies, moved in and out of the space's active arrays when components sleep and
+wake). Two of its entry points corrupt that graph when used on a body that is in
+the space next to other bodies, and a corrupt graph later frees or dereferences
+dangling pointers (segfaults in ``cpSpaceRemoveShape``, ``free(): invalid
+pointer`` inside ``cpSpaceStep``); see docs/reliability.md section 2. kge never
+calls them in that state:
+
+* ``cpBodySetType`` changes the type in place: it writes the new mass fields
+  before waking the body, so a sleeping body made kinematic or static stays in
+  its sleeping component (waking it later aborts), and it does not wake bodies
+  sleeping on a static body that becomes dynamic, whose parked arbiters are then
+  never restored nor released and outlive the shapes they point to.
+  :func:`set_body_type` takes the body out of the space (after waking everything
+  around it), changes the type and puts it back, as Box2D's ``SetType`` destroys
+  the body's contacts and wakes it.
+* ``cpBodySleep`` only parks the arbiters and constraints the body owns (it is
+  body A of them, or body A is static), so sleeping a body next to an awake one
+  leaves half-parked pairs that are restored inconsistently on wake-up. :func:`sleep_island`
+  only sleeps a body whose non-static neighbours sleep with it or already sleep in
+  one component, which is the state Chipmunk's own sleeping produces.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import pymunk
 from pymunk._chipmunk import lib as _lib
@@ -44,6 +67,7 @@ class BodyRecord:
     def __init__(self, entity: int, body: pymunk.Body, implicit: bool) -> None:
         self.entity = entity
         self.body = body
+        vars(body)["kge_entity"] = entity  # islands of bodies map back to entities
         self.implicit = implicit
         self.colliders: set[int] = set()
         self.enabled = True
@@ -94,22 +118,64 @@ def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
 
 
 def set_body_type(body: pymunk.Body, body_type: int) -> None:
-    """Change a body's type between steps, even while it has joints.
+    """Change a body's type between steps, even while it has joints or sleeping neighbours.
 
-    pymunk's setter refuses to make a body non-dynamic while one of its
-    constraint objects (in the space or not) links it to another non-dynamic
-    body. Box2D allows such joints (they simply do nothing), so kge takes the
-    body's constraints out of the space first (the joint bridge keeps joints
-    between two non-dynamic bodies out of it) and calls Chipmunk's
-    ``cpBodySetType`` directly, which is what the setter does after its check.
+    Out of a space ``cpBodySetType`` only rewrites the mass fields. In a space it
+    would also move the body between arrays and spatial indexes in place, which
+    leaves the contact graph inconsistent (see the module docstring), so the body
+    leaves the space first (:func:`take_out`: its neighbours are woken, its
+    contacts end and its constraints come out) and returns with its shapes. The
+    caller puts back the constraints that still act (the joint bridge's
+    ``refresh_membership``). pymunk's own setter would also refuse a joint between
+    two non-dynamic bodies, which Box2D allows (such a joint simply does nothing).
     """
     space = body.space
-    if space is not None:
-        present = space.constraints
-        for c in list(body.constraints):
-            if c in present:
-                space.remove(c)
+    if space is None:
+        _lib.cpBodySetType(body._body, body_type)
+        return
+    shapes = take_out(space, body)
     _lib.cpBodySetType(body._body, body_type)
+    space.add(body, *shapes)
+
+
+def _constraint_in(space: pymunk.Space, c: pymunk.Constraint) -> bool:
+    """Is ``c`` in ``space`` (O(1); ``space.constraints`` builds a list)?"""
+    return bool(_lib.cpConstraintGetSpace(c._constraint) == space._space)
+
+
+def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
+    """Non-static bodies touching ``body`` (its arbiters) or jointed to it in ``space``."""
+    found: dict[pymunk.Body, None] = {}
+
+    def visit(arb: pymunk.Arbiter) -> None:
+        a, b = arb.bodies
+        other = b if a is body else a
+        if other.body_type != STATIC:
+            found[other] = None
+
+    body.each_arbiter(visit)
+    for c in list(body.constraints):
+        if _constraint_in(space, c):
+            other = c.b if c.a is body else c.a
+            if other.body_type != STATIC:
+                found[other] = None
+    found.pop(body, None)
+    return list(found)
+
+
+def take_out(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Shape]:
+    """Remove ``body``, its shapes and its constraints from ``space``; returns the shapes.
+
+    Everything around it is woken first: removing a shape only releases the
+    arbiters Chipmunk has cached, and a sleeping neighbour's arbiters are parked
+    outside the cache until it wakes, so they would outlive the shape.
+    """
+    wake_neighbours(body)
+    shapes = [s for s in body.shapes if s.space is space]
+    constraints = [c for c in list(body.constraints) if _constraint_in(space, c)]
+    space.remove(*shapes, *constraints)
+    space.remove(body)
+    return shapes
 
 
 def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float) -> None:
@@ -153,27 +219,83 @@ def can_sleep(space: pymunk.Space, body: pymunk.Body) -> bool:
     )
 
 
-def sleep(space: pymunk.Space, body: pymunk.Body) -> bool:
-    """Put ``body`` to sleep if that is safe; returns whether it sleeps now."""
-    if can_sleep(space, body):
-        body.sleep()
-        return True
-    return body.is_sleeping
+def sleep_island(
+    space: pymunk.Space, body: pymunk.Body, wants_sleep: Callable[[pymunk.Body], bool]
+) -> list[pymunk.Body]:
+    """Put ``body`` and the awake bodies connected to it to sleep, when that is safe.
+
+    The island is every awake body reachable from ``body`` through contacts and
+    joints (static bodies end a path). It sleeps only if every other awake member
+    ``wants_sleep``, no member touches or is jointed to a kinematic body, and the
+    sleeping bodies it touches form one component (which it joins): then the
+    parked arbiters and constraints are exactly those of Chipmunk's own sleeping.
+    Otherwise nothing sleeps (Box2D's island solver would wake the body again at
+    the next step) and ``[]`` is returned; else the bodies put to sleep.
+    """
+    if not can_sleep(space, body):
+        return []
+    island = [body]
+    seen = {body}
+    sleepers: list[pymunk.Body] = []
+    for member in island:  # grows while it is walked: a breadth-first search
+        for other in neighbours(space, member):
+            if other in seen:
+                continue
+            seen.add(other)
+            if other.body_type != DYNAMIC or other.space is not space:
+                return []
+            if other.is_sleeping:
+                sleepers.append(other)
+            elif wants_sleep(other) and can_sleep(space, other):
+                island.append(other)
+            else:
+                return []
+    if sleepers and not _one_component(space, sleepers):
+        return []
+    group = sleepers[0] if sleepers else None
+    for member in island:
+        member.velocity = (0.0, 0.0)
+        member.angular_velocity = 0.0
+        if group is None:
+            member.sleep()
+            group = member
+        else:
+            member.sleep_with_group(group)
+    return island
+
+
+def _one_component(space: pymunk.Space, sleepers: list[pymunk.Body]) -> bool:
+    """Do the sleeping ``sleepers`` belong to one sleeping component?
+
+    Chipmunk does not expose a component's root; but kge only ever makes
+    components that are connected through contacts and joints, as Chipmunk's
+    flood fill does, so connectivity over sleeping bodies decides it.
+    """
+    want = set(sleepers)
+    reached = {sleepers[0]}
+    todo = [sleepers[0]]
+    while todo and not want <= reached:
+        for other in neighbours(space, todo.pop()):
+            if other not in reached and other.is_sleeping:
+                reached.add(other)
+                todo.append(other)
+    return want <= reached
 
 
 def wake_neighbours(body: pymunk.Body) -> None:
-    """Wake every dynamic body touching ``body`` (before it leaves the space)."""
-    others: list[pymunk.Body] = []
+    """Wake ``body`` and every dynamic body touching or jointed to it.
 
-    def visit(arb: pymunk.Arbiter) -> None:
-        a, b = arb.bodies
-        other = b if a is body else a
+    Called before anything of ``body`` leaves the space or changes: see
+    :func:`take_out`.
+    """
+    space = body.space
+    if body.body_type == DYNAMIC:
+        body.activate()
+    if space is None:
+        return
+    for other in neighbours(space, body):
         if other.body_type == DYNAMIC:
-            others.append(other)
-
-    body.each_arbiter(visit)
-    for other in others:
-        other.activate()
+            other.activate()
 
 
 def set_mass(body: pymunk.Body, md: MassData) -> None:
@@ -183,6 +305,13 @@ def set_mass(body: pymunk.Body, md: MassData) -> None:
     inertia > 0 (inf for no rotation), the values pymunk's setters assert.
     """
     cp = body._body
+    cog = _lib.cpBodyGetCenterOfGravity(cp)
+    if (
+        _lib.cpBodyGetMass(cp) == md.mass
+        and _lib.cpBodyGetMoment(cp) == md.inertia
+        and (cog.x, cog.y) == (md.center[0], md.center[1])
+    ):
+        return  # unchanged: Chipmunk's setters would wake the body (and its island) for nothing
     _lib.cpBodySetMass(cp, md.mass)
     _lib.cpBodySetMoment(cp, md.inertia)
     _lib.cpBodySetCenterOfGravity(cp, md.center)

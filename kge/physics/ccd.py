@@ -183,7 +183,7 @@ def _geometry(shape: pymunk.Shape) -> tuple[Any, ...] | None:
     return None
 
 
-@functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=512)
 def _shape_points(
     geometry: tuple[Any, ...], cog: tuple[float, float], margin: float
 ) -> _ShapePoints:

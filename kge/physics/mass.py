@@ -71,7 +71,7 @@ def polygon_mass(vertices: Sequence[Vec2], density: float) -> MassData:
     return MassData(mass, i_centroid, (cx + ox, cy + oy))
 
 
-@lru_cache(maxsize=1024)
+@lru_cache(maxsize=256)
 def shape_mass(shape: Shape, density: float) -> MassData:
     """Mass data of one shape (centre in body-local coordinates).
 
@@ -95,7 +95,7 @@ def combine(parts: Iterable[MassData]) -> MassData:
     return _combine(tuple(parts))
 
 
-@lru_cache(maxsize=1024)
+@lru_cache(maxsize=256)
 def _combine(parts: tuple[MassData, ...]) -> MassData:
     items = [p for p in parts if p.mass > 0]
     mass = sum(p.mass for p in items)
@@ -109,7 +109,7 @@ def _combine(parts: tuple[MassData, ...]) -> MassData:
     return MassData(mass, inertia, (cx, cy))
 
 
-@lru_cache(maxsize=1024)
+@lru_cache(maxsize=256)
 def dynamic_mass(
     computed: MassData, override: float | None, fixed_rotation: bool
 ) -> MassData:

@@ -41,7 +41,8 @@ from kge.physics.bodies import (
     make_body,
     set_body_type,
     set_mass,
-    sleep,
+    sleep_island,
+    take_out,
     wake_neighbours,
 )
 from kge.physics.contacts import HOOKED, ContactRecorder
@@ -50,7 +51,7 @@ from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes
-from kge.physics.sync import PoseTable
+from kge.physics.sync import PoseTable, columns_differ, rows_differ
 from kge.world import World
 
 
@@ -99,6 +100,8 @@ class Simulation:
         self.all_asleep = False
         #: something outside the dirty sets (an impulse, a wake-up) touched a body
         self.touched = False
+        #: ``poses.prev`` equals the current poses (set by a quiet step)
+        self._prev_is_current = False
 
     @property
     def settings(self) -> PhysicsSettings:
@@ -313,9 +316,7 @@ class Simulation:
         rec = self.bodies.get(crec.owner)
         if rec is not None:
             if rec.in_space and crec.shapes:
-                wake_neighbours(rec.body)
-                if rec.body.body_type == DYNAMIC:
-                    rec.body.activate()
+                wake_neighbours(rec.body)  # the body and all it touches (see bodies.take_out)
             rec.colliders.discard(crec.entity)
             self.mass_dirty.add(crec.owner)
             self.ccd_dirty.add(crec.owner)
@@ -390,14 +391,15 @@ class Simulation:
         if rec is None or rec.implicit or rb is None:
             return
         body = rec.body
-        space = self.space
         ptype = PYMUNK_TYPE[rb.type]
         if body.body_type != ptype:
-            # joints come out of the space; the bridge puts back the ones that still act
+            # the body leaves the space and comes back with the new type (its contacts
+            # end, as Box2D's SetType destroys them); joints come out of the space and
+            # the bridge puts back the ones that still act
+            if self.ccd is not None:
+                self.ccd.untrack(body)
             set_body_type(body, ptype)  # safe: sync-in runs between steps
             self.joints.refresh_membership()
-            if ptype == STATIC and rec.in_space:
-                space.reindex_shapes_for_body(body)
             self.mass_dirty.add(e)
             self.poses_stale = True
         if rb.enabled != rec.enabled:
@@ -452,42 +454,76 @@ class Simulation:
             self.poses.asleep[i] = False
 
     def _put_to_sleep(self, rec: BodyRecord, rb: RigidBody) -> None:
+        """``RigidBody.awake = False``: Box2D's SetAwake(false), made safe for Chipmunk.
+
+        The velocities are zeroed either way. The body sleeps now together with
+        the awake bodies connected to it when all of those were asked to sleep too
+        (a whole stack put to sleep at once), or alone next to static bodies and
+        sleeping ones (:func:`~kge.physics.bodies.sleep_island`). Next to any
+        other awake body it stays awake, as Box2D's island solver would wake it at
+        the next step, and falls asleep by itself once at rest.
+        """
         body = rec.body
-        if self.mass_dirty:  # sleep with the final mass
-            e = rec.entity
-            if e in self.mass_dirty:
-                self.mass_dirty.discard(e)
-                self._update_mass(e)
         body.velocity = (0.0, 0.0)
         body.angular_velocity = 0.0
-        if sleep(self.space, body):
-            body.kge_awake = False
-            raw_set(rb, "velocity", (0.0, 0.0))
-            raw_set(rb, "angular_velocity", 0.0)
-            i = self.poses.slot.get(rec.entity)
-            if i is not None and not self.poses_stale:
-                self.poses.asleep[i] = True
-                self.poses.state[i, 3:] = 0.0
-        else:
+        raw_set(rb, "velocity", (0.0, 0.0))
+        raw_set(rb, "angular_velocity", 0.0)
+        self._flush_mass(rec.entity)  # sleep with the final mass
+        island = sleep_island(self.space, body, self._wants_sleep)
+        for member in island:
+            self._mark_asleep(member.kge_entity)
+        if not island:
             raw_set(rb, "awake", True)
             body.kge_awake = True
 
+    def _wants_sleep(self, body: pymunk.Body) -> bool:
+        """Has the user asked this (awake) body to sleep, and may it?
+
+        Its own ``_apply_rigidbody`` may not have run yet in this sync-in: the
+        request is the ``awake`` field differing from what kge last saw.
+        """
+        e: int | None = getattr(body, "kge_entity", None)
+        rec = None if e is None else self.bodies.get(e)
+        if e is None or rec is None or rec.body is not body:
+            return False
+        rb = self.world.try_get(e, RigidBody)
+        if rb is None:
+            return False
+        if rb.awake or not body.kge_awake or not rb.allow_sleep or not rec.in_space:
+            return False
+        self._flush_mass(e)  # it may sleep now: with its final mass (harmless if it does not)
+        return True
+
+    def _mark_asleep(self, e: int) -> None:
+        """Record that the body of ``e`` was put to sleep during sync-in."""
+        rec = self.bodies[e]
+        rec.body.kge_awake = False
+        rb = self.world.try_get(e, RigidBody)
+        if rb is not None:
+            raw_set(rb, "awake", False)
+            raw_set(rb, "velocity", (0.0, 0.0))
+            raw_set(rb, "angular_velocity", 0.0)
+        i = self.poses.slot.get(e)
+        if i is not None and not self.poses_stale:
+            self.poses.asleep[i] = True
+            self.poses.state[i, 3:] = 0.0
+
+    def _flush_mass(self, e: int) -> None:
+        """Apply a pending mass change now (it wakes the body, so before it sleeps)."""
+        if e in self.mass_dirty:
+            self.mass_dirty.discard(e)
+            self._update_mass(e)
+
     def _set_enabled(self, rec: BodyRecord, on: bool) -> None:
         space = self.space
-        shapes = [s for c in sorted(rec.colliders) for s in self.colliders[c].shapes]
         if on and not rec.in_space:
+            shapes = [s for c in sorted(rec.colliders) for s in self.colliders[c].shapes]
             space.add(rec.body, *shapes)
             rec.in_space = True
         elif not on and rec.in_space:
             if self.ccd is not None:
                 self.ccd.untrack(rec.body)
-            wake_neighbours(rec.body)
-            for s in shapes:
-                space.remove(s)
-            for c in list(rec.body.constraints):
-                if c in space.constraints:
-                    space.remove(c)
-            space.remove(rec.body)
+            take_out(space, rec.body)  # wakes its neighbours first (see bodies.take_out)
             rec.in_space = False
         rec.enabled = on
         self.poses_stale = True
@@ -562,9 +598,11 @@ class Simulation:
         almost nothing however many bodies it holds.
         """
         applied = self._applied
-        quiet = self.all_asleep and not self._busy() and not self.joints.handles
+        idle = not self._busy()
+        quiet = self.all_asleep and idle and not self.joints.handles
         self.sync_in()
-        quiet = quiet and self._applied is applied
+        unchanged = self._applied is applied
+        quiet = quiet and unchanged
         self.touched = False
         self.events_step_started()
         n = self.substeps
@@ -572,7 +610,9 @@ class Simulation:
         self.joints.before_step(self.dt)
         rec = self.recorder
         if self.ccd is not None and not quiet:
-            self.ccd.before_step(self.dt, n)
+            # nothing touched a body since the last sync-out: its bulk read is current
+            last = self.poses.raw if idle and unchanged else None
+            self.ccd.before_step(self.dt, n, last)
         forces = self.forces
         for i in range(n):
             rec.substep = i
@@ -584,8 +624,11 @@ class Simulation:
         self.steps += 1
         self.joints.after_step(self.dt)
         if quiet:
-            self.poses.prev[:] = self.poses.state[:, :3]  # at rest: no interpolation
+            if not self._prev_is_current:  # at rest: no interpolation (copied once)
+                self.poses.prev[:] = self.poses.state[:, :3]
+                self._prev_is_current = True
         else:
+            self._prev_is_current = False
             self.sync_out()
         rec.raise_pending()
         rec.deliver_post_solve()
@@ -631,11 +674,12 @@ class Simulation:
                     body.angular_velocity = float(rows[k, 5])
         poses.prev[:] = poses.state[:, :3]
         old = poses.state[slots]
-        changed = np.any(rows != old, axis=1)
+        changed = rows_differ(rows, old)
         poses.state[slots] = rows
-        moved = slots[changed]
-        if len(moved):
-            self._write_back(moved, rows[changed], old[changed])
+        if changed.all():  # everything moved (rain, a sparse field): no gathers
+            self._write_back(slots, rows, old)
+        elif changed.any():
+            self._write_back(slots[changed], rows[changed], old[changed])
         still = slots[~changed & ~poses.asleep[slots] & poses.dynamic[slots]]
         if len(still):
             for i in still.tolist():
@@ -660,17 +704,15 @@ class Simulation:
         poses = self.poses
         tfs, has_tf = self._tf_objects
         rbs, has_rb = self._rb_objects
-        sel = has_tf[moved] & np.any(new[:, :3] != old[:, :3], axis=1)
+        sel = has_tf[moved] & columns_differ(new, old, 0, 3)
         if sel.any():
-            objs = tfs[moved[sel]].tolist()
-            x, y, a = new[sel, :3].T.tolist()
+            objs, (x, y, a) = _pick(tfs, moved, new, sel, 0)
             _set_all(_SET_X, objs, x)
             _set_all(_SET_Y, objs, y)
             _set_all(_SET_ANGLE, objs, a)
-        sel = has_rb[moved] & np.any(new[:, 3:] != old[:, 3:], axis=1)
+        sel = has_rb[moved] & columns_differ(new, old, 3, 6)
         if sel.any():
-            objs = rbs[moved[sel]].tolist()
-            vx, vy, w = new[sel, 3:].T.tolist()
+            objs, (vx, vy, w) = _pick(rbs, moved, new, sel, 3)
             _set_all(_SET_VELOCITY, objs, zip(vx, vy, strict=True))
             _set_all(_SET_ANGULAR_VELOCITY, objs, w)
         for i in moved[has_rb[moved] & poses.asleep[moved]].tolist():
@@ -702,6 +744,21 @@ def _slot_setter(cls: type, name: str) -> Callable[[Any, Any], None]:
         if isinstance(d, types.MemberDescriptorType):
             return d.__set__
     return lambda obj, value: raw_set(obj, name, value)
+
+
+def _pick(
+    objects: np.ndarray, moved: np.ndarray, rows: np.ndarray, sel: np.ndarray, first: int
+) -> tuple[list[Any], list[list[float]]]:
+    """The selected components and their three columns from ``first`` on, as lists.
+
+    The boolean gathers are skipped when every row is selected (a moving crowd),
+    where they would cost as much as the writes.
+    """
+    if sel.all():
+        # ``moved`` is sorted and unique: all of them means every slot, in order
+        chosen = objects if len(moved) == len(objects) else objects[moved]
+        return chosen.tolist(), rows[:, first:first + 3].T.tolist()
+    return objects[moved[sel]].tolist(), rows[sel, first:first + 3].T.tolist()
 
 
 def _set_all(setter: Callable[[Any, Any], None], objs: list[Any], values: Any) -> None:
