@@ -34,12 +34,16 @@ from typing import Any, ClassVar, cast
 from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Shape
 from kge.components.tracked import Check, Tracked, fast_init
-from kge.errors import ComponentTypeError
+from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import FAST, at_most, boolean, non_negative
 
 #: Densest material accepted, kg/m^2 (osmium sheet 1 m thick is about 2e4): with
 #: shapes up to 1e6 m, mass and inertia stay finite.
 MAX_DENSITY = 1e12
+#: Lightest non-zero density accepted, kg/m^2. Below it a body's inverse mass and
+#: inertia reach 1e300 and joint solvers overflow to NaN (Box2D's float32 flushes such
+#: densities to 0, i.e. a massless body, which gets 1 kg); 0 stays allowed (massless).
+MIN_DENSITY = 1e-6
 
 
 def _shape(value: Any, owner: str, field: str) -> Shape:
@@ -64,7 +68,12 @@ def _entity_ref(value: Any, owner: str, field: str) -> int | None:
 
 
 def _density(value: Any, owner: str, field: str) -> float:
-    return at_most(non_negative(value, owner, field), MAX_DENSITY, owner, field, "kg/m^2")
+    v = at_most(non_negative(value, owner, field), MAX_DENSITY, owner, field, "kg/m^2")
+    if 0.0 < v < MIN_DENSITY:
+        raise ValidationError(
+            f"{owner}.{field} must be 0 (massless) or >= {MIN_DENSITY:g} kg/m^2, got {v!r}"
+        )
+    return v
 
 
 def _optional_speed(value: Any, owner: str, field: str) -> float | None:
@@ -73,7 +82,7 @@ def _optional_speed(value: Any, owner: str, field: str) -> float | None:
 
 _EXACT_SHAPES = frozenset(SHAPE_TYPES)
 FAST[_shape] = lambda v: type(v) in _EXACT_SHAPES
-FAST[_density] = lambda v: type(v) is float and 0.0 <= v <= MAX_DENSITY
+FAST[_density] = lambda v: type(v) is float and (v == 0.0 or MIN_DENSITY <= v <= MAX_DENSITY)
 FAST[_filter] = lambda v: type(v) is Filter
 FAST[_entity_ref] = lambda v: v is None or (type(v) is int and v >= 0)
 FAST[_optional_speed] = lambda v: v is None or (type(v) is float and v - v == 0.0 and v >= 0.0)

@@ -25,7 +25,7 @@ from enum import Enum
 from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked, fast_init
-from kge.errors import ComponentTypeError
+from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import FAST, Vec2, at_most, boolean, finite, non_negative, positive, vec2
 
 
@@ -52,16 +52,22 @@ def _body_type(value: Any, owner: str, field: str) -> BodyType:
 
 #: Heaviest mass override accepted, kg (about the Earth's mass): its inertia stays finite.
 MAX_MASS = 1e24
+#: Lightest mass override accepted, kg: lighter bodies' inverse masses overflow joint
+#: solvers (see ``kge.components.collider.MIN_DENSITY``).
+MIN_MASS = 1e-6
 
 
 def _optional_mass(value: Any, owner: str, field: str) -> float | None:
     if value is None:
         return None
-    return at_most(positive(value, owner, field), MAX_MASS, owner, field, "kg")
+    v = at_most(positive(value, owner, field), MAX_MASS, owner, field, "kg")
+    if v < MIN_MASS:
+        raise ValidationError(f"{owner}.{field} must be >= {MIN_MASS:g} kg, got {v!r}")
+    return v
 
 
 FAST[_body_type] = lambda v: type(v) is BodyType
-FAST[_optional_mass] = lambda v: v is None or (type(v) is float and 0.0 < v <= MAX_MASS)
+FAST[_optional_mass] = lambda v: v is None or (type(v) is float and MIN_MASS <= v <= MAX_MASS)
 
 
 @fast_init

@@ -183,7 +183,7 @@ def _geometry(shape: pymunk.Shape) -> tuple[Any, ...] | None:
     return None
 
 
-@functools.lru_cache(maxsize=512)
+@functools.lru_cache(maxsize=128)
 def _shape_points(
     geometry: tuple[Any, ...], cog: tuple[float, float], margin: float
 ) -> _ShapePoints:
@@ -595,7 +595,10 @@ class _Obstacles:
       shapes added since the last look are the tail of that view whose hashid
       exceeds the newest one seen;
     * **removed shapes**: rows whose shape left the space are dropped when a
-      query meets them, and swept out once removals outnumber the rows;
+      query meets them, and swept out once removals outnumber the rows; dropped
+      rows are reused by the next shapes, so the table never outgrows the most
+      static and kinematic shapes the space held at once (a game that keeps
+      spawning kinematic bodies must not grow it forever);
     * **moved bodies**: the owners' poses, read in bulk with the velocities,
       are compared with the last ones; the boxes of a body that moved (and of
       every moving kinematic body) are re-read, also on the next step, so a
@@ -614,6 +617,7 @@ class _Obstacles:
         self.box = np.full((16, 4), np.nan)  # left, bottom, right, top (nan: free row)
         self.kinematic = np.zeros(16, dtype=bool)
         self.live = 0
+        self._free: list[int] = []  # dropped rows, reused first
         self._count = 0  # len(space.shapes) at the last scan
         self._newest = -1  # largest hashid seen
         self._removed = 0  # removals seen since the last sweep of dead rows
@@ -722,6 +726,8 @@ class _Obstacles:
         self.kinematic[row] = body.body_type == _KINEMATIC
 
     def _free_row(self) -> int:
+        if self._free:
+            return self._free.pop()
         if len(self.shapes) == len(self.box):
             grow = len(self.box)
             self.box = np.concatenate([self.box, np.full((grow, 4), np.nan)])
@@ -736,6 +742,7 @@ class _Obstacles:
             return
         self.shapes[row] = None
         self.box[row] = np.nan
+        self._free.append(row)
         self.live -= 1
         key = self.owner_of[row]
         rows = self._owner_rows.get(key)
@@ -748,6 +755,7 @@ class _Obstacles:
         if self.live == 0:  # compact: nothing left to keep
             self.shapes.clear()
             self.owner_of.clear()
+            self._free.clear()
             self.box[:] = np.nan
             self._owner_rows.clear()
             self._owners.clear()

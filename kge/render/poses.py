@@ -88,7 +88,10 @@ class PoseTable:
         #: (marked through the Transforms' bindings, which hold this very set: it is
         #: only ever cleared in place; see the module docstring)
         self.written: set[int] = set()
-        self._lut = np.full(64, -1, np.intp)  # entity id -> row, for bulk adoption
+        #: (sorted entity ids, their rows) for bulk adoption; rebuilt after rows change.
+        #: Sorted arrays rather than a table indexed by entity id: ids are never reused,
+        #: so such a table grows with every entity a long game ever spawned.
+        self._index: tuple[np.ndarray, np.ndarray] | None = None
         #: rows drawn without a Transform of their own (at the origin)
         self._bare = np.zeros(capacity, bool)
         #: rows the last :meth:`record` read (the written ones)
@@ -125,11 +128,7 @@ class PoseTable:
                 self._bare = np.resize(self._bare, 2 * len(self._bare))
         self.row_of[entity] = row
         self._refs[entity] = 1
-        if entity >= len(self._lut):
-            grown = np.full(max(2 * len(self._lut), entity + 1), -1, np.intp)
-            grown[: len(self._lut)] = self._lut
-            self._lut = grown
-        self._lut[entity] = row
+        self._index = None
         self._watch(entity, t)
         self.cur[row] = self.prev[row] = _GET(t)
         return row
@@ -148,7 +147,7 @@ class PoseTable:
             self._transforms[row] = _IDENTITY
             self.cur[row] = self.prev[row] = 0.0
             self._free.append(row)
-            self._lut[entity] = -1
+            self._index = None
 
     def set_transform(self, entity: int, transform: Transform | None) -> None:
         """The entity gained or lost its Transform: read the new one, restart history."""
@@ -224,10 +223,7 @@ class PoseTable:
         """
         if len(entities) == 0:
             return
-        ids = np.asarray(entities, np.intp)
-        inside = (ids >= 0) & (ids < len(self._lut))
-        rows = np.full(len(ids), -1, np.intp)
-        rows[inside] = self._lut[ids[inside]]
+        rows = self._rows_of(np.asarray(entities, np.intp))
         ok = rows >= 0
         rows, cur = rows[ok], cur[ok]
         suspect = self._bare[rows]
@@ -238,6 +234,19 @@ class PoseTable:
         self.cur[rows] = cur
         if len(unseen):
             self._resync(unseen)
+
+    def _rows_of(self, entities: np.ndarray) -> np.ndarray:
+        """Row of each entity, -1 for entities without one (one sorted search)."""
+        if self._index is None:
+            ids = np.fromiter(self.row_of.keys(), np.intp, len(self.row_of))
+            rows = np.fromiter(self.row_of.values(), np.intp, len(self.row_of))
+            order = np.argsort(ids)
+            self._index = (ids[order], rows[order])
+        ids, rows = self._index
+        if not len(ids):
+            return np.full(len(entities), -1, np.intp)
+        pos = np.minimum(np.searchsorted(ids, entities), len(ids) - 1)
+        return np.where(ids[pos] == entities, rows[pos], -1)
 
     def blend(self, alpha: float) -> np.ndarray:
         """Poses to draw, (n, 3): ``lerp(previous, current, alpha)``; rows written since snap.

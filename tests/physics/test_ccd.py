@@ -616,3 +616,20 @@ def test_a_fast_body_arms_the_neighbour_it_may_launch_into_a_wall() -> None:
         sim.ccd.before_step(DT, 4)
         assert sim.ccd.is_armed(resting) == wall
         assert not sim.ccd.is_armed(fast)  # the wall is 3.3 m away: out of its own reach
+
+
+def test_the_obstacle_index_reuses_rows_of_removed_shapes() -> None:
+    """Kinematic bodies spawned and removed for ever must not grow the index for ever."""
+    sim = Sim()
+    sim.box(pymunk.Body.STATIC, (0.0, -1.0), (10.0, 1.0))  # a wall that always stays
+    ball = sim.ball((0.0, 5.0), 0.1)
+    ball.velocity = (0.0, -30.0)  # a fast body: the index is consulted every step
+    for k in range(300):
+        body = sim.box(pymunk.Body.KINEMATIC, (3.0 + k % 5, 2.0), (0.2, 0.2))
+        sim.step()
+        sim.space.remove(body, *body.shapes)
+        sim.ccd.untrack(body)
+        sim.step()
+    obstacles = sim.ccd._obstacles
+    assert obstacles.live == 1  # the wall
+    assert len(obstacles.shapes) <= 4, len(obstacles.shapes)

@@ -1,11 +1,14 @@
 """Random operation sequences against the physics world (hypothesis stateful testing).
 
 :class:`PhysicsMachine` spawns and despawns bodies, colliders (own, compound
-and static) and joints, changes body types, filters, sensors, enabled flags
+and static), resting stacks and joints, puts bodies to sleep (alone, in groups,
+or by stepping long enough), changes body types, filters, sensors, enabled flags
 and mass, teleports, applies forces and impulses, runs queries, removes and
 replaces components, and steps. After every step :func:`check_invariants`
 compares pymunk with the ECS (nothing leaked, nothing orphaned, counts equal,
-begin/end events balanced, no NaN). The only exceptions allowed are kge's
+begin/end events balanced, no NaN) and :func:`contact_graph_problems` reads
+Chipmunk's contact graph (no arbiter threaded twice or naming a dead shape,
+the damage that used to crash the interpreter later). The only exceptions allowed are kge's
 documented refusals, and only where the operation really is invalid (an op on
 a despawned entity must raise ``EntityNotFoundError``; a valid op must not raise).
 
@@ -21,7 +24,7 @@ from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
 from hypothesis.stateful import RuleBasedStateMachine, initialize, precondition, rule
 
-from kge.components.collider import Collider
+from kge.components.collider import MIN_DENSITY, Collider
 from kge.components.filter import Filter
 from kge.components.joints import (
     DistanceJoint,
@@ -37,7 +40,12 @@ from kge.components.shapes import Box, Circle, Edge, Polygon
 from kge.components.transform import Transform
 from kge.errors import EntityNotFoundError
 
-from .harness import PhysicsWorld, check_invariants, check_no_leftovers
+from .harness import (
+    PhysicsWorld,
+    check_invariants,
+    check_no_leftovers,
+    contact_graph_problems,
+)
 
 settings.register_profile(
     "ci",
@@ -97,7 +105,7 @@ class PhysicsMachine(RuleBasedStateMachine):
 
     # -- spawning -----------------------------------------------------------------------
     @rule(s=shape, x=coord, y=height, kind=body_type, sensor=st.booleans(),
-          density=st.floats(0.0, 5.0))
+          density=st.just(0.0) | st.floats(MIN_DENSITY, 5.0))
     def spawn_body(self, s: object, x: float, y: float, kind: BodyType, sensor: bool,
                    density: float) -> None:
         self.world.spawn(Transform(x, y), RigidBody(type=kind),
@@ -139,7 +147,22 @@ class PhysicsMachine(RuleBasedStateMachine):
         if ja is not None and jb is not None and ja != jb:
             self.world.spawn(GearJoint(ja, jb, ratio=ratio))
 
+    @rule(x=coord, n=st.integers(1, 4), base=body_type)
+    def build_stack(self, x: float, n: int, base: BodyType) -> None:
+        """A platform of any type with boxes resting on it: contacts that last and sleep."""
+        w = self.world
+        w.spawn(Transform(x, 0.5), RigidBody(type=base), Collider(Box(1.0, 0.5)))
+        for k in range(n):
+            w.spawn(Transform(x + 0.05 * k, 1.5 + 1.0 * k), RigidBody(), Collider(Box(0.45, 0.45)))
+
     # -- changing -----------------------------------------------------------------------
+    @rule(i=index, k=st.integers(1, 5))
+    def sleep_some(self, i: int, k: int) -> None:
+        """``awake = False`` on up to ``k`` bodies at once (a stack asked to sleep)."""
+        bodies = self._bodies()
+        for e in bodies[i % len(bodies):][:k] if bodies else []:
+            self.world.get(e, RigidBody).awake = False
+
     @rule(i=index, kind=body_type)
     def set_body_type(self, i: int, kind: BodyType) -> None:
         e = self._pick(self._bodies(), i)
@@ -257,6 +280,8 @@ class PhysicsMachine(RuleBasedStateMachine):
             self.pw.step()
             self.steps += 1
             check_invariants(self.pw)
+            problems = contact_graph_problems(self.pw.sim.space)
+            assert not problems, problems
 
     # stepping is what finds bugs: give it more of the rule draws
     @rule(n=st.integers(1, 3))
@@ -266,6 +291,11 @@ class PhysicsMachine(RuleBasedStateMachine):
     @rule()
     def step_once(self) -> None:
         self.step(1)
+
+    @rule(n=st.integers(25, 45))
+    def step_until_asleep(self, n: int) -> None:
+        """Long enough (0.5 s of rest) for bodies to fall asleep by themselves."""
+        self.step(n)
 
     def teardown(self) -> None:
         try:

@@ -10,8 +10,13 @@ appears. ``tools/soak.py`` uses the same checks.
 from __future__ import annotations
 
 import math
+import os
 import pickle
+import sys
 from typing import Any
+
+import pymunk
+from pymunk._chipmunk import ffi, lib
 
 from kge.components.collider import Collider
 from kge.components.joints import Joint
@@ -256,3 +261,48 @@ def check_no_leftovers(pw: PhysicsWorld | AppProbe) -> None:
             stale = [k for k in getattr(ccd, name) if k not in body_ids]
             assert not stale, f"CCD {name} keeps {len(stale)} removed bodies"
         assert len(ccd._movers) <= len(sim.bodies), "CCD keeps removed kinematic movers"
+
+
+# -- the contact graph, read through Chipmunk's C API ------------------------------------
+_seen: list[object] = []
+
+
+@ffi.callback("void(cpBody *, cpArbiter *, void *)")
+def _collect(body: object, arb: object, data: object) -> None:
+    _seen.append(arb)
+    if len(_seen) > 10_000:  # a list threaded into a cycle: iteration never ends
+        sys.stderr.write("contact graph: cyclic arbiter list\n")
+        sys.stderr.flush()
+        os._exit(99)
+
+
+def _addr(ptr: object) -> int:
+    return int(ffi.cast("uintptr_t", ptr))
+
+
+def contact_graph_problems(space: pymunk.Space) -> list[str]:
+    """Arbiters threaded on the space's bodies that are duplicated or name dead objects.
+
+    Only pointers are compared (never dereferenced through Python), so a dangling
+    arbiter is reported instead of crashing.
+    """
+    shapes = {_addr(s._shape) for s in space.shapes}
+    bodies = {_addr(b._body) for b in space.bodies} | {_addr(space.static_body._body)}
+    problems = []
+    pa, pb = ffi.new("cpShape **"), ffi.new("cpShape **")
+    ba, bb = ffi.new("cpBody **"), ffi.new("cpBody **")
+    for body in list(space.bodies):
+        _seen.clear()
+        lib.cpBodyEachArbiter(body._body, _collect, ffi.NULL)
+        arbs = list(_seen)
+        _seen.clear()
+        if len({_addr(a) for a in arbs}) != len(arbs):
+            problems.append(f"{body}: an arbiter is threaded twice")
+        for arb in arbs:
+            lib.cpArbiterGetShapes(arb, pa, pb)
+            lib.cpArbiterGetBodies(arb, ba, bb)
+            if _addr(pa[0]) not in shapes or _addr(pb[0]) not in shapes:
+                problems.append(f"{body}: an arbiter names a shape outside the space")
+            if _addr(ba[0]) not in bodies or _addr(bb[0]) not in bodies:
+                problems.append(f"{body}: an arbiter names a body outside the space")
+    return problems

@@ -305,3 +305,18 @@ def test_a_new_scene_tracks_its_own_transforms(make_app):
     t.x = -1.0
     old_t.x = 4.0
     assert _close(app, -1.0)
+
+
+def test_rows_are_found_by_entity_without_a_table_as_large_as_the_largest_id():
+    """Entity ids are never reused: a long game reaches large ids with few live rows."""
+    table = PoseTable()
+    big = 10**12  # a table indexed by id would need terabytes
+    t = Transform(0.0, 0.0)
+    row = table.acquire(big, t)
+    table.acquire(3, Transform(5.0, 5.0))
+    table.record()
+    table.adopt(np.array([big, 7]), np.array([[0.0, 0.0, 0.0]] * 2), np.array([[2.0, 0.0, 0.0]] * 2))
+    np.testing.assert_allclose(table.blend(1.0)[row], (2.0, 0.0, 0.0))
+    table.release(big)
+    table.adopt(np.array([big]), np.array([[0.0, 0.0, 0.0]]), np.array([[9.0, 0.0, 0.0]]))
+    assert len(table) == 2 and big not in table.row_of
