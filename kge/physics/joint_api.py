@@ -32,6 +32,11 @@ class JointContext(Protocol):
     space: pymunk.Space
     dt: float  # the fixed step (1/60 by default), for impulse -> force conversions
 
+    @property
+    def substep(self) -> float:
+        """The length of one pymunk step (``dt / substeps``): springs' stability limit."""
+        ...
+
     def body(self, entity: int) -> pymunk.Body:
         """The pymunk body of a body entity (a static placeholder for static ones)."""
         ...
@@ -51,6 +56,8 @@ class JointHandle(ABC):
     #: other joint entities this one depends on (a gear on its two joints): when one
     #: of them is destroyed, this joint is destroyed first.
     depends_on: tuple[int, ...] = ()
+    #: its last position pass moved its bodies a long way (set by the handle)
+    jolted: bool = False
 
     @abstractmethod
     def apply(self, component: Any) -> None:
@@ -72,6 +79,10 @@ class JointHandle(ABC):
             if (fx * fx + fy * fy) ** 0.5 > bf:
                 return True
         return bt is not None and abs(getattr(component, "reaction_torque", 0.0)) > bt
+
+    def forget_impulses(self) -> None:
+        """Start the next step with no warm-start impulse (after a big position jump)."""
+        self.jolted = False
 
     def remove(self, space: pymunk.Space) -> None:
         """Take every constraint of this joint out of ``space``."""

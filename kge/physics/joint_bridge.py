@@ -44,6 +44,16 @@ def body_fields(component: Any) -> tuple[int | None, int | None]:
     return getattr(component, "body_a", None), getattr(component, "body_b", None)
 
 
+def moved_ends(handle: joint_api.JointHandle, component: Any) -> bool:
+    """Whether ``component`` names other bodies than ``handle`` was built on.
+
+    (A handle stores the ground as -1. A gear writes its own ``body_a`` /
+    ``body_b``, so they agree with its handle unless the user overwrote them.)
+    """
+    a, b = body_fields(component)
+    return (-1 if a is None else a, -1 if b is None else b) != (handle.body_a, handle.body_b)
+
+
 class JointBridge:
     """Implements :class:`~kge.physics.joint_api.JointContext` for the builders."""
 
@@ -71,6 +81,10 @@ class JointBridge:
         self._batch_live = False
 
     # -- JointContext ----------------------------------------------------------------
+    @property
+    def substep(self) -> float:
+        return self.dt / max(1, self.sim.substeps)
+
     def body(self, entity: int) -> pymunk.Body:
         rec = self.sim.bodies.get(entity)
         if rec is None:
@@ -112,10 +126,14 @@ class JointBridge:
             for e in sorted(self.dirty):
                 h = self.handles.get(e)
                 comp = self.components.get(e)
-                if h is not None and comp is not None:
-                    h.apply(comp)
-                    if e in self._batched or self._batchable(e, h):
-                        self._batch_epoch = -1  # anchors, reference or motor changed
+                if h is None or comp is None:
+                    continue
+                if moved_ends(h, comp):
+                    self._rebuild(e)
+                    continue
+                h.apply(comp)
+                if e in self._batched or self._batchable(e, h):
+                    self._batch_epoch = -1  # anchors, reference or motor changed
             self.dirty.clear()
         if self.membership_dirty:
             self.refresh_membership()
@@ -139,6 +157,22 @@ class JointBridge:
         self.membership_dirty = True
         self.pending.discard(entity)
         self.dirty.discard(entity)
+
+    def _rebuild(self, entity: int) -> None:
+        """Build a joint anew on the bodies its component now names.
+
+        A handle is made for one pair of bodies, so a write of ``body_a`` or
+        ``body_b`` rebuilds it (anchors stay as resolved, in each body's frame). No
+        event, and gears on it are kept: they notice the new handle and rebuild
+        themselves. If a named body does not exist (yet), the joint waits for it,
+        as at spawn.
+        """
+        h = self.handles.pop(entity)
+        h.remove(self.space)
+        self._ordered = None
+        self._batch_epoch = -1
+        self.pending.add(entity)
+        self._try_build(entity)
 
     def refresh_membership(self) -> None:
         """Constraints are in the space exactly while both bodies are."""
@@ -234,15 +268,20 @@ class JointBridge:
         if live and state is None:  # cannot happen between before and after step
             live = False
             self._batch_epoch = -1
+        jolted: list[joint_api.JointHandle] = []
         if state is not None:
-            batch.project(state)
+            jolted += [batch.handles[k] for k in batch.project(state)]
         others = False
         for e, h in self._others if state is not None else ordered:
             comp = self.components.get(e)
             if comp is None:
                 continue
             h.read_back(comp, dt)
+            if h.jolted:
+                jolted.append(h)
             others = True
+        if jolted:
+            self.forget_impulses(jolted)
         if state is not None:
             if others:  # their position passes may have moved shared bodies
                 state = batch.read()
@@ -264,6 +303,21 @@ class JointBridge:
                 self._destroy(e, event=False)
                 if self.sim.world.exists(e):
                     self.sim.world.despawn(e)
+
+    def forget_impulses(self, jolted: list[joint_api.JointHandle]) -> None:
+        """Joints found far off their constraint start the next step from zero impulse.
+
+        So does every other joint on the same bodies: far-off joints are usually
+        fighting another joint about where a body belongs, and a warm start that
+        one of them forgot would leave the other's pushing alone (see
+        :class:`~kge.physics.joints.base.ForgetImpulse`).
+        """
+        moved = {e for h in jolted for e in (h.body_a, h.body_b) if e >= 0}
+        for h in jolted:
+            h.forget_impulses()
+        for h in self.handles.values():
+            if h.body_a in moved or h.body_b in moved:
+                h.forget_impulses()
 
     def body_removed(self, body_entity: int) -> None:
         """A body left: destroy every joint on it (and joints depending on those)."""

@@ -35,6 +35,10 @@ class Sim:
         self.steps = 0
 
     # -- JointContext -----------------------------------------------------------------
+    @property
+    def substep(self) -> float:
+        return self.dt / self.substeps
+
     def body(self, entity: int) -> pymunk.Body:
         return self.bodies[entity]
 

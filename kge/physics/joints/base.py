@@ -8,8 +8,8 @@ no equivalent, a custom velocity step. :class:`Composite` holds what they share:
   values back into the component so a rebuild never re-resolves them;
 * ``collide_bodies = collide_connected`` on every constraint (pymunk's default is
   True, Box2D's False);
-* staying inert, with no constraint at all, when neither body is dynamic: pymunk
-  refuses a constraint between two non-dynamic bodies (and suspending the
+* staying inert, with no constraint at all, when neither body is dynamic or both
+  ends are one body: pymunk refuses such constraints (and suspending the
   constraints when a body's type later makes both non-dynamic);
 * ``self.constraints`` listing exactly the switched-on constraints (a disabled
   limit is kept aside), which is what the physics system puts in the space;
@@ -36,6 +36,7 @@ import pymunk
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, JointHandle
 from kge.physics.joints.mechanics import is_dynamic
+from kge.physics.joints.positions import MAX_ANGULAR_CORRECTION, MAX_CORRECTION
 
 #: pymunk constraints acting on rotation only: with both bodies unable to rotate
 #: (infinite moments: static ground plus a fixed-rotation or massless body) their
@@ -63,6 +64,80 @@ RIGID_ERROR_BIAS = (1.0 - RIGID_CORRECTION) ** 60.0
 #: at 10 m/s with it; without it, it loses energy and settles into a sag.
 PROJECTED_ERROR_BIAS = 1.0
 
+
+def correction_speed(constraint: pymunk.Constraint, dt: float) -> float:
+    """``max_bias`` for a hard pymunk constraint: Box2D's correction limit per step.
+
+    pymunk corrects a constraint's position error with a velocity bias that the
+    bodies keep, proportional to the error and unbounded by default. A joint
+    built or driven far from its pose (anchors metres apart, a body teleported
+    away) then launches its bodies at hundreds of m/s, and a few steps of that
+    put them 10^7 m away. Box2D's position solver moves a joint by at most
+    ``b2_maxLinearCorrection`` (0.2 m) or ``b2_maxAngularCorrection`` (8°) per
+    step; as a speed over the step that is the cap here (12 m/s, 8.4 rad/s at
+    60 Hz). Everyday drift never reaches it: pymunk's bias is about 6 m/s per
+    metre of error.
+    """
+    limit = MAX_ANGULAR_CORRECTION if isinstance(constraint, ANGULAR) else MAX_CORRECTION
+    return limit / dt
+
+
+#: the largest ω·h a pymunk spring is given. pymunk applies a spring's force
+#: explicitly once per step (symplectic Euler), which diverges once ω·h exceeds 2:
+#: a 100 Hz distance joint to the ground turned its body into NaN within two seconds.
+#: Box2D's soft constraints are implicit and stable at any frequency; here a
+#: frequency above 1/(2π·h) (38 Hz at kge's 1/240 s substeps) acts as that.
+MAX_SPRING_OMEGA_H = 1.0
+
+
+#: a position pass that finds more than this fraction of its per-step limit to
+#: correct marks the joint ``jolted`` (see JointBridge.forget_impulses)
+JOLT = 0.5
+
+
+class ForgetImpulse:
+    """One-shot ``pre_solve``: start a pymunk constraint again from zero impulse.
+
+    pymunk warm-starts every constraint with the impulse it accumulated in the
+    last step, applied along the Jacobian of this one. When a position pass has
+    just moved its bodies a long way, that old impulse points the wrong way. Two
+    joints that disagree about a body's place (two hinges to the ground at
+    anchors that cannot both hold) then feed each other: their equal and opposite
+    impulses grew about 3x per step, from 0.01 to 10^17 N·s in 30 steps, until
+    they no longer cancelled and threw the body 10^11 m. Box2D's position solver
+    moves the body just as far; a constraint that starts from zero stays bounded.
+
+    pymunk has no way to clear the accumulated impulse, but it clamps it to
+    ``max_force·h`` in every iteration: with ``max_force`` 0 for one substep the
+    warm start is undone and the accumulator ends at zero. The next substep puts
+    ``max_force`` back and the constraint carries on from nothing.
+    """
+
+    def __init__(self) -> None:
+        self.saved: float | None = None
+
+    def __call__(self, constraint: pymunk.Constraint, space: pymunk.Space) -> None:
+        if self.saved is None:
+            self.saved = constraint.max_force
+            constraint.max_force = 0.0
+        else:
+            if constraint.max_force == 0.0:  # unless the joint set a new one meanwhile
+                constraint.max_force = self.saved
+            constraint.pre_solve = None
+
+
+def can_join(a: pymunk.Body, b: pymunk.Body) -> bool:
+    """Whether pymunk accepts a constraint between ``a`` and ``b``.
+
+    pymunk asserts (a bare ``AssertionError`` from ``Constraint._set_bodies``)
+    that the two bodies differ and that one of them is dynamic. kge refuses a
+    joint of a body to itself at spawn, but a later write of ``body_a`` /
+    ``body_b`` (or a gear whose joints end on one body) can still make them one;
+    such a joint, like one between two non-dynamic bodies, stays inert.
+    """
+    return a is not b and (is_dynamic(a) or is_dynamic(b))
+
+
 def body_of(ctx: JointContext, entity: int | None) -> pymunk.Body:
     """The pymunk body of ``entity``; None is the world's static ground."""
     return ctx.space.static_body if entity is None else ctx.body(entity)
@@ -87,8 +162,9 @@ class Composite(JointHandle):
         #: angular constraints switched off while neither body can rotate
         self.rotation_off: list[pymunk.Constraint] = []
         self.collide = bool(component.collide_connected)
-        #: False when neither body is dynamic: the joint exists but does nothing
-        self.active = is_dynamic(self.a) or is_dynamic(self.b)
+        #: False when neither body is dynamic, or both ends are one body: the joint
+        #: exists but does nothing (see can_join)
+        self.active = can_join(self.a, self.b)
         self._force = 0.0  # |reaction force| of the last step, N
         self._torque = 0.0  # |reaction torque| of the last step, N·m
         self._momentum: tuple[float, float, float] | None = None
@@ -96,6 +172,8 @@ class Composite(JointHandle):
         self._carrier: pymunk.Constraint | None = None
         #: constraints to the world (not between A and B) keep their own collide flag
         self.own_collide: set[pymunk.Constraint] = set()
+        #: the last position pass found the joint far off (see JOLT)
+        self.jolted = False
 
     # -- building ----------------------------------------------------------------------
     def add(
@@ -103,16 +181,23 @@ class Composite(JointHandle):
         *constraints: pymunk.Constraint,
         enabled: bool = True,
         error_bias: float = RIGID_ERROR_BIAS,
+        capped: bool = True,
     ) -> None:
         """Own ``constraints``; switch them on now unless ``enabled`` is False.
 
         ``self.constraints`` lists exactly the switched-on ones: the physics system
         keeps those in the space while both bodies are (a disabled body takes them
         out), so a switched-off limit or motor must not be listed there.
+
+        ``capped``: bound the velocity pymunk may add to correct a position error
+        (:func:`correction_speed`); a joint whose correction is its purpose (the
+        motor joint, bounded by its force) passes False.
         """
         for c in constraints:
             c.collide_bodies = self.collide
             c.error_bias = error_bias
+            if capped and math.isinf(c.max_bias):
+                c.max_bias = correction_speed(c, self.ctx.dt)
             self.parts.append(c)
             if enabled:
                 self.enable(c, True)
@@ -184,13 +269,21 @@ class Composite(JointHandle):
             raw_set(component, "reference_angle", float(self.b.angle - self.a.angle))
         return float(component.reference_angle)
 
+    def spring_omega(self, frequency_hz: float) -> float:
+        """ω = 2π·frequency_hz for a pymunk spring, capped where it stays stable."""
+        return min(2.0 * math.pi * frequency_hz, MAX_SPRING_OMEGA_H / self.ctx.substep)
+
     def world_anchors(self, la: Vec2, lb: Vec2) -> tuple[pymunk.Vec2d, pymunk.Vec2d]:
         return self.a.local_to_world(la), self.b.local_to_world(lb)
 
     # -- per step ------------------------------------------------------------------------
+    def can_act(self) -> bool:
+        """Whether the joint can have constraints now (see :func:`can_join`)."""
+        return can_join(self.a, self.b)
+
     def before_step(self, dt: float) -> None:
         """Suspend or resume with the bodies' types; remember B's momentum."""
-        if not self.active and not self.parts and (is_dynamic(self.a) or is_dynamic(self.b)):
+        if not self.active and not self.parts and self.can_act():
             # built while neither body was dynamic (pymunk refuses such constraints):
             # one is now, so build for real
             type(self).__init__(self, self.ctx, self.entity, self.component)
@@ -316,6 +409,18 @@ class Composite(JointHandle):
 
     def project(self) -> None:
         """Position pass after the step (none by default)."""
+
+    def jolt(self, error: float, limit: float) -> None:
+        """Note the error a position pass found; far beyond ``limit`` it marks a jolt."""
+        if error > JOLT * limit:
+            self.jolted = True
+
+    def forget_impulses(self) -> None:
+        """Let this joint's pymunk constraints start the next step from zero impulse."""
+        self.jolted = False
+        for c in self.constraints:
+            if c is not self._carrier and c.pre_solve is None:
+                c.pre_solve = ForgetImpulse()
 
     def read_live(self, component: Any, dt: float) -> None:  # pragma: no cover - abstract
         raise NotImplementedError

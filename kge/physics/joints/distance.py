@@ -20,7 +20,7 @@ from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.mechanics import point_mass
-from kge.physics.joints.positions import project_length
+from kge.physics.joints.positions import MAX_CORRECTION, project_length
 
 
 class Distance(Composite):
@@ -68,7 +68,7 @@ class Distance(Composite):
         u = d / n if n > 1e-9 else pymunk.Vec2d(1.0, 0.0)
         k = point_mass(self.a, pa, u) + point_mass(self.b, pb, u)
         m_eff = 1.0 / k if k > 0 else 0.0
-        omega = 2.0 * math.pi * self.freq
+        omega = self.spring_omega(self.freq)
         self.spring.stiffness = m_eff * omega * omega
         self.spring.damping = 2.0 * m_eff * self.zeta * omega
 
@@ -79,7 +79,10 @@ class Distance(Composite):
 
     def project(self) -> None:
         if self.pin is not None and self.is_on(self.pin):
-            project_length(self.a, self.b, self.pin.anchor_a, self.pin.anchor_b, self.pin.distance)
+            error = project_length(
+                self.a, self.b, self.pin.anchor_a, self.pin.anchor_b, self.pin.distance
+            )
+            self.jolt(error, MAX_CORRECTION)
 
     def read_live(self, j: Any, dt: float) -> None:
         assert self.spring is not None

@@ -26,7 +26,8 @@ class Motor(Composite):
             return
         self.linear = pymunk.PivotJoint(self.a, self.b, j.linear_offset, (0, 0))
         self.angular = pymunk.GearJoint(self.a, self.b, j.angular_offset, 1.0)
-        self.add(self.linear, self.angular)
+        # its correction is what it is for, bounded by max_force / max_torque
+        self.add(self.linear, self.angular, capped=False)
         self.configure(j)
 
     def configure(self, j: Any) -> None:

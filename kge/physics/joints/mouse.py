@@ -39,7 +39,7 @@ SPIN_DAMPING = 0.98
 class Mouse(Composite):
     def __init__(self, ctx: JointContext, entity: int, j: MouseJoint) -> None:
         super().__init__(ctx, entity, j)
-        self.active = is_dynamic(self.b)
+        self.active = self.can_act()
         lb = j.local_anchor_b
         if lb is None:
             grab = j.grab_point if j.grab_point is not None else j.target
@@ -56,6 +56,10 @@ class Mouse(Composite):
         if j.body_a is None and self._carrier is not None:
             self._carrier.collide_bodies = True
             self.own_collide.add(self._carrier)
+
+    def can_act(self) -> bool:
+        """Only the dragged body B must be dynamic (A is Box2D's dummy ground)."""
+        return self.a is not self.b and is_dynamic(self.b)
 
     def configure(self, j: Any) -> None:
         self.settings = j

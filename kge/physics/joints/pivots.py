@@ -43,6 +43,7 @@ import pymunk.batch as pb
 from pymunk._chipmunk import lib
 
 from kge.components.tracked import raw_set
+from kge.physics.joints.base import JOLT
 from kge.physics.joints.mechanics import inv_mass, is_dynamic
 from kge.physics.joints.positions import MAX_CORRECTION
 
@@ -198,7 +199,7 @@ class PivotBatch:
                 s = side[keep]
                 sides.append((keep, s, sgn * im[s], sgn * ii[s], cog[s]))
             self.passes.append((
-                a, b,
+                idx, a, b,
                 self.la[idx] - cog[a], self.lb[idx] - cog[b],  # anchors from the centres
                 cog[a], cog[b],
                 im[a] + im[b], ii[a], ii[b],
@@ -245,20 +246,25 @@ class PivotBatch:
         return True
 
     # -- position pass ------------------------------------------------------------------
-    def project(self, state: np.ndarray) -> None:
+    def project(self, state: np.ndarray) -> list[int]:
         """Box2D's point projection over every joint, colour by colour.
 
         Updates ``state``'s poses and writes the bodies that moved to pymunk.
+        Returns the joints (indices into ``handles``) found far apart (see ``JOLT``).
         """
         pos = state[:, 0] + 1j * state[:, 1]
         t = state[:, 2].copy()
         moved = np.zeros(len(self.bodies), dtype=bool)
-        for a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
+        jolted: list[int] = []
+        for jidx, a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
             ea, eb = np.exp(1j * t[a]), np.exp(1j * t[b])
             ra, rb = ea * da, eb * db  # lever arms from the centres of gravity
             ga, gb = pos[a] + ea * ca, pos[b] + eb * cb  # centres of gravity
             c = (gb + rb) - (ga + ra)
             n = np.abs(c)
+            far = n > JOLT * MAX_CORRECTION
+            if far.any():
+                jolted += jidx[far].tolist()
             c = np.where(n > MAX_CORRECTION, c * (MAX_CORRECTION / np.maximum(n, 1e-300)), c)
             rax, ray, rbx, rby = ra.real, ra.imag, rb.real, rb.imag
             k11 = msum + iia * ray * ray + iib * rby * rby
@@ -282,7 +288,7 @@ class PivotBatch:
                 moved[s[ok[keep]]] = True
         idx = np.flatnonzero(moved)
         if not len(idx):
-            return
+            return jolted
         state[:, 0], state[:, 1], state[:, 2] = pos.real, pos.imag, t
         cbodies = self.cbodies
         for k, x, y, a in zip(idx.tolist(), pos.real[idx].tolist(), pos.imag[idx].tolist(),
@@ -290,6 +296,7 @@ class PivotBatch:
             body = cbodies[k]
             _set_angle(body, a)
             _set_position(body, (x, y))
+        return jolted
 
     # -- read-back ------------------------------------------------------------------------
     def read_back(self, state: np.ndarray, dt: float, step_time: float, gravity: Any) -> None:

@@ -4,7 +4,7 @@ pymunk has no pulley. With ``u_a``, ``u_b`` the unit directions from the ground
 anchors to the body anchors, the rope length changes at
 ``rate = u_a·v_a + ratio·u_b·v_b`` (v at the anchors). Once per substep, from
 the carrier's ``pre_solve``, an impulse brings that rate to ``-β·C/h`` (C the
-length error, β = 0.2 like Box2D's Baumgarte), with this substep's gravity
+length error clamped to 0.2 m, β = 0.2 like Box2D's Baumgarte), with this substep's gravity
 predicted. Being solved once per substep rather than inside pymunk's
 iterations, it is softer than Box2D's under heavy contact load; the invariant
 still holds to millimetres in the reference scenarios. Optional maximum lengths
@@ -23,7 +23,8 @@ from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import Composite
 from kge.physics.joints.mechanics import cog_world, cross, is_dynamic
-from kge.physics.joints.rows import BAUMGARTE, Row, VelocityStep
+from kge.physics.joints.positions import MAX_CORRECTION
+from kge.physics.joints.rows import Row, VelocityStep, correction
 
 
 class Pulley(Composite):
@@ -99,7 +100,8 @@ class Pulley(Composite):
             self.side(self.a, self.ga, self.la, 1.0),
             self.side(self.b, self.gb, self.lb, self.ratio),
         ]
-        self.impulse = VelocityStep.solve(self.space, rows, -BAUMGARTE * error / h, h)
+        target = -correction(error, MAX_CORRECTION) / h
+        self.impulse = VelocityStep.solve(self.space, rows, target, h)
         self.h = h
 
     def read_live(self, j: Any, dt: float) -> None:

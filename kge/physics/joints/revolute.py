@@ -5,7 +5,7 @@ and the limit are not pymunk's ``SimpleMotor`` / ``RotaryLimitJoint``: those
 act on each body's own moment of inertia, which for a bob hung 2 m from its
 pivot is 800x too small, so they converge poorly (a brake slips, a limit throws
 the bob back). Instead they are solved once per substep on
-:func:`~kge.physics.joints.base.hinge_rows`, the hinge angle's Jacobian with
+:func:`~kge.physics.joints.rows.hinge_rows`, the hinge angle's Jacobian with
 the pivot folded in (Box2D's block solve), before pymunk's iterations:
 
 * motor: drives ``speed`` to ``motor_speed`` with an impulse capped at
@@ -25,7 +25,12 @@ from kge.components.joints import RevoluteJoint
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
-from kge.physics.joints.positions import project_point
+from kge.physics.joints.positions import (
+    MAX_ANGULAR_CORRECTION,
+    MAX_CORRECTION,
+    project_limit,
+    project_point,
+)
 from kge.physics.joints.rows import Row, hinge_rows, motor_and_limits
 
 
@@ -67,7 +72,7 @@ class Revolute(Composite):
         motor = (j.motor_speed, j.max_motor_torque) if j.enable_motor else None
         lo, hi = (j.lower_angle, j.upper_angle) if j.enable_limit else (None, None)
         self.motor_impulse, self.limit_impulse = motor_and_limits(
-            self.space, rows, self.coordinate(), h, motor, lo, hi
+            self.space, rows, self.coordinate(), h, motor, lo, hi, MAX_ANGULAR_CORRECTION
         )
         self.h = h
 
@@ -80,8 +85,15 @@ class Revolute(Composite):
         return [(self.b, 0.0, 0.0, scale), (self.a, 0.0, 0.0, -scale)]
 
     def project(self) -> None:
-        if self.pivot is not None:
-            project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
+        """Box2D's position pass: the limit (8° per step at most), then the point."""
+        if self.pivot is None:
+            return
+        j = self.settings
+        if j.enable_limit:
+            project_limit(self.rows(1.0), self.coordinate(), j.lower_angle, j.upper_angle,
+                          MAX_ANGULAR_CORRECTION)
+        gap = project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
+        self.jolt(gap, MAX_CORRECTION)
 
     def read_live(self, j: Any, dt: float) -> None:
         raw_set(j, "angle", self.coordinate())

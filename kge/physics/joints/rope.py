@@ -18,7 +18,8 @@ from kge.components.joints import RopeJoint
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import RIGID_CORRECTION, Composite
-from kge.physics.joints.rows import VelocityStep, line_rows
+from kge.physics.joints.positions import MAX_CORRECTION
+from kge.physics.joints.rows import VelocityStep, correction, line_rows
 
 
 class Rope(Composite):
@@ -46,7 +47,7 @@ class Rope(Composite):
         pa, pb = self.world_anchors(self.la, self.lb)
         rows, length = line_rows(self.a, self.b, pa, pb)
         c = length - self.max_length
-        target = -c / h if c <= 0 else -RIGID_CORRECTION * c / h
+        target = -c / h if c <= 0 else -correction(c, MAX_CORRECTION, RIGID_CORRECTION) / h
         self.pull = -VelocityStep.solve(self.space, rows, target, h, hi=0.0) / h
 
     def configure(self, j: Any) -> None:

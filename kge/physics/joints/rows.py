@@ -14,12 +14,25 @@ from collections.abc import Iterable
 
 import pymunk
 
-from kge.physics.joints.mechanics import cog_world, cross, inv_mass, is_dynamic
+from kge.physics.joints.mechanics import cog_world, cross, inv_mass
 
 #: one Jacobian row: (body, jx, jy, jw)
 Row = tuple[pymunk.Body, float, float, float]
 #: Box2D's Baumgarte factor, used by the custom position corrections
 BAUMGARTE = 0.2
+
+
+def correction(error: float, max_correction: float, factor: float = BAUMGARTE) -> float:
+    """The part of a position ``error`` a velocity step may remove in one (sub)step.
+
+    Box2D's position solver clamps every correction (``b2_maxLinearCorrection``
+    0.2 m, ``b2_maxAngularCorrection`` 8°) and never turns it into velocity. Here
+    the correction is a velocity bias (``-correction / h``), which the body keeps:
+    unclamped, a joint whose error is metres (a limit far past its bound, a body
+    teleported away from its gear partner) would throw its bodies at hundreds of
+    metres per second. Clamped, the push is bounded whatever the error.
+    """
+    return factor * max(-max_correction, min(max_correction, error))
 
 
 def line_rows(
@@ -70,8 +83,8 @@ def fold(main: list[Row], keep: list[list[Row]]) -> list[Row]:
         p = [-c[0] / k[0][0]] if abs(k[0][0]) > 1e-12 else [0.0]
     else:  # n == 2
         det = k[0][0] * k[1][1] - k[0][1] * k[1][0]
-        if abs(det) < 1e-12:
-            return main
+        if abs(det) <= DEGENERATE * k[0][0] * k[1][1]:
+            return main  # the kept rows are (nearly) dependent: nothing sound to fold
         p = [
             -(k[1][1] * c[0] - k[0][1] * c[1]) / det,
             -(-k[1][0] * c[0] + k[0][0] * c[1]) / det,
@@ -103,6 +116,10 @@ def hinge_rows(a: pymunk.Body, b: pymunk.Body, pa: pymunk.Vec2d, pb: pymunk.Vec2
     return fold(spin_rows(a, b), point_rows(a, b, pa, pb))
 
 
+#: a constraint whose effective mass is below this fraction of its rows' own is
+#: treated as degenerate (no impulse), like Box2D's ``k == 0`` guard
+DEGENERATE = 1e-9
+
 #: passes over a joint's motor and limit per substep when both are on, so a motor
 #: pushing into its limit ends at its full force as in Box2D's iterations
 MOTOR_LIMIT_PASSES = 4
@@ -116,12 +133,14 @@ def motor_and_limits(
     motor: tuple[float, float] | None,
     lower: float | None,
     upper: float | None,
+    max_correction: float,
 ) -> tuple[float, float]:
     """Motor ``(speed, max force or torque)`` and limits on a joint coordinate.
 
     The limits are speculative, like Box2D's rope and contacts: while inside the
     range the approach speed is capped so the coordinate reaches the bound
-    exactly at the next step; past it, Baumgarte pushes back. Impulses are
+    exactly at the next step; past it, Baumgarte pushes back on at most
+    ``max_correction`` of the overshoot (see :func:`correction`). Impulses are
     accumulated and clamped over a few passes as in a sequential-impulse solver.
     Returns the (motor, limit) impulses.
     """
@@ -134,13 +153,44 @@ def motor_and_limits(
             m_acc += VelocityStep.solve(space, rows, motor[0], h, -cap - m_acc, cap - m_acc)
         if lower is not None:
             c = value - lower
-            target = -c / h if c >= 0 else -BAUMGARTE * c / h
+            target = -c / h if c >= 0 else -correction(c, max_correction) / h
             lo_acc += VelocityStep.solve(space, rows, target, h, lo=-lo_acc)
         if upper is not None:
             c = upper - value
-            target = c / h if c >= 0 else BAUMGARTE * c / h
+            target = c / h if c >= 0 else correction(c, max_correction) / h
             hi_acc += VelocityStep.solve(space, rows, target, h, hi=-hi_acc)
     return m_acc, lo_acc + hi_acc
+
+
+#: one body's summed Jacobian row with its inverse mass and inertia: (body, jx, jy, jw, 1/m, 1/I)
+Merged = tuple[pymunk.Body, float, float, float, float, float]
+
+
+def merge(rows: Iterable[Row]) -> tuple[list[Merged], float]:
+    """The rows summed per body, and the constraint's inverse effective mass ``k``.
+
+    ``k`` is 0 when the constraint is degenerate. Box2D skips a row whose
+    effective mass is zero; rows that cancel (a gear of two joints on the same
+    bodies with ratio -1) leave rounding noise instead of an exact 0, and 1/noise
+    would be an enormous impulse, so ``k`` below ``DEGENERATE`` times the rows'
+    own (taken one by one) counts as zero too.
+    """
+    acc: dict[pymunk.Body, list[float]] = {}
+    for body, jx, jy, jw in rows:
+        a = acc.setdefault(body, [0.0, 0.0, 0.0, 0.0, 0.0])
+        a[0] += jx
+        a[1] += jy
+        a[2] += jw
+        a[3] += jx * jx + jy * jy
+        a[4] += jw * jw
+    merged: list[Merged] = []
+    k = scale = 0.0
+    for body, (jx, jy, jw, lin2, ang2) in acc.items():
+        im, ii = inv_mass(body)
+        k += im * (jx * jx + jy * jy) + ii * jw * jw
+        scale += im * lin2 + ii * ang2
+        merged.append((body, jx, jy, jw, im, ii))
+    return merged, (k if k > DEGENERATE * scale else 0.0)
 
 
 class VelocityStep:
@@ -160,30 +210,21 @@ class VelocityStep:
         lo: float = -math.inf,
         hi: float = math.inf,
     ) -> float:
-        merged: dict[pymunk.Body, list[float]] = {}
-        for body, jx, jy, jw in rows:
-            acc = merged.setdefault(body, [0.0, 0.0, 0.0])
-            acc[0] += jx
-            acc[1] += jy
-            acc[2] += jw
+        merged, k = merge(rows)
+        if k == 0.0:
+            return 0.0
         gx, gy = space.gravity
         rate = 0.0
-        k = 0.0
-        for body, (jx, jy, jw) in merged.items():
+        for body, jx, jy, jw, im, _ in merged:
             vx, vy = body.velocity
-            if is_dynamic(body):
+            if im:  # a dynamic body: this substep's gravity is still to come
                 vx += gx * h
                 vy += gy * h
-                im, ii = inv_mass(body)
-                k += im * (jx * jx + jy * jy) + ii * jw * jw
             rate += jx * vx + jy * vy + jw * body.angular_velocity
-        if k <= 0.0:
-            return 0.0
         impulse = min(max((target - rate) / k, lo), hi)
         if impulse != 0.0:
-            for body, (jx, jy, jw) in merged.items():
-                if is_dynamic(body):
-                    im, ii = inv_mass(body)
+            for body, jx, jy, jw, im, ii in merged:
+                if im or ii:
                     vx, vy = body.velocity
                     body.velocity = (vx + im * impulse * jx, vy + im * impulse * jy)
                     body.angular_velocity = body.angular_velocity + ii * impulse * jw

@@ -2,7 +2,7 @@
 
 Rigid: the relative angle is held at the reference angle by a custom velocity
 step on the hinge Jacobian with the pivot folded in
-(:func:`~kge.physics.joints.base.hinge_rows`), removing the whole angle error
+(:func:`~kge.physics.joints.rows.hinge_rows`), removing the whole angle error
 each substep (the speculative "be there next step" target ``-C/h``). pymunk's
 ``GearJoint`` would act on each body's own small moment of inertia instead: an
 8-box welded cantilever then flails metres up and down; with the folded lock its
@@ -15,7 +15,6 @@ Soft: ``DampedRotarySpring.rest_angle`` is expressed as ``θa - θb``, so it is
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import pymunk
@@ -25,8 +24,8 @@ from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.mechanics import inv_mass
-from kge.physics.joints.positions import project_point
-from kge.physics.joints.rows import VelocityStep, hinge_rows
+from kge.physics.joints.positions import MAX_ANGULAR_CORRECTION, MAX_CORRECTION, project_point
+from kge.physics.joints.rows import VelocityStep, correction, hinge_rows
 
 
 class Weld(Composite):
@@ -57,7 +56,7 @@ class Weld(Composite):
         if not self.rigid:
             inv_i = inv_mass(self.a)[1] + inv_mass(self.b)[1]
             i_eff = 1.0 / inv_i if inv_i > 0 else 0.0
-            omega = 2.0 * math.pi * j.frequency_hz
+            omega = self.spring_omega(j.frequency_hz)
             self.spring.stiffness = i_eff * omega * omega
             self.spring.damping = 2.0 * i_eff * j.damping_ratio * omega
             self.lock_impulse = 0.0
@@ -67,14 +66,18 @@ class Weld(Composite):
         if not self.rigid or self.pivot is None:
             return
         pa, pb = self.world_anchors(self.pivot.anchor_a, self.pivot.anchor_b)
-        error = self.b.angle - self.a.angle - self.ref
+        # the whole error each substep, but at most 8° of it: a weld made with a
+        # reference angle far from the pose turns its bodies round over a few
+        # substeps instead of spinning them at (error / h) for one
+        error = correction(self.b.angle - self.a.angle - self.ref, MAX_ANGULAR_CORRECTION, 1.0)
         rows = hinge_rows(self.a, self.b, pa, pb)
         self.lock_impulse = VelocityStep.solve(self.space, rows, -error / h, h)
         self.h = h
 
     def project(self) -> None:
         if self.pivot is not None:
-            project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
+            gap = project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
+            self.jolt(gap, MAX_CORRECTION)
 
     def read_live(self, j: Any, dt: float) -> None:
         if self.is_on(self.spring):
