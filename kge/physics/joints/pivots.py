@@ -46,17 +46,11 @@ from kge.components.tracked import raw_set
 from kge.physics.joints.base import JOLT
 from kge.physics.joints.mechanics import inv_mass, is_dynamic
 from kge.physics.joints.positions import MAX_CORRECTION
+from kge.physics.sync import FIELDS  # the same columns sync-out reads
 
 if TYPE_CHECKING:
     from kge.physics.joints.revolute import Revolute
 
-FIELDS = (
-    pb.BodyFields.BODY_ID
-    | pb.BodyFields.POSITION
-    | pb.BodyFields.ANGLE
-    | pb.BodyFields.VELOCITY
-    | pb.BodyFields.ANGULAR_VELOCITY
-)
 
 #: Gauss-Seidel sweeps of the position pass per step. One, like the per-joint
 #: pass. Two halve a chain's anchor gap (the colour order propagates a correction
