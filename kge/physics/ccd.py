@@ -82,6 +82,7 @@ from pymunk._chipmunk import lib as _lib
 
 from kge.components.filter import Filter
 from kge.errors import ComponentTypeError, ValidationError
+from kge.physics.speed_cap import clamp_one
 from kge.validate import boolean, integer, non_negative, positive
 
 Vec2 = tuple[float, float]
@@ -104,43 +105,6 @@ _FIELDS = (
     | pymunk.batch.BodyFields.VELOCITY
     | pymunk.batch.BodyFields.ANGULAR_VELOCITY
 )
-
-
-def clamp_velocity(
-    body: pymunk.Body,
-    step_dt: float,
-    max_translation: float = 2.0,
-    max_rotation: float = 0.5 * math.pi,
-) -> bool:
-    """Clamp one body to Box2D's per-step caps; True if its velocity changed.
-
-    ``step_dt`` is the fixed step (not a substep): the caps are per step.
-
-    >>> import pymunk
-    >>> b = pymunk.Body(1, 1)
-    >>> b.velocity, b.angular_velocity = (500, 0), 200
-    >>> clamp_velocity(b, 1 / 60), b.velocity.x, round(b.angular_velocity, 3)
-    (True, 120.0, 94.248)
-    """
-    vx, vy = body.velocity
-    w = body.angular_velocity
-    nv, nw = _clamped(vx, vy, w, max_translation / step_dt, max_rotation / step_dt)
-    if nv is None and nw is None:
-        return False
-    if nv is not None:
-        body.velocity = nv
-    if nw is not None:
-        body.angular_velocity = nw
-    return True
-
-
-def _clamped(
-    vx: float, vy: float, w: float, max_v: float, max_w: float
-) -> tuple[Vec2 | None, float | None]:
-    speed = math.hypot(vx, vy)
-    nv = (vx * max_v / speed, vy * max_v / speed) if speed > max_v else None
-    nw = math.copysign(max_w, w) if abs(w) > max_w else None
-    return nv, nw
 
 
 # --------------------------------------------------------------------------- per-body data
@@ -306,7 +270,7 @@ class _Tracked:
         w = body.angular_velocity
         # Box2D caps the speed after every solve; collisions inside a step can
         # exceed it, so an armed body is capped again before each substep.
-        nv, nw = _clamped(
+        nv, nw = clamp_one(
             vx, vy, w, owner.max_translation / owner.step_dt, owner.max_rotation / owner.step_dt
         )
         if nv is not None:
@@ -1164,7 +1128,7 @@ class ContinuousCollision:
             if body is None:
                 continue
             vx, vy, w = (float(x) for x in vel[row])
-            nv, nw = _clamped(vx, vy, w, max_v, max_w)
+            nv, nw = clamp_one(vx, vy, w, max_v, max_w)
             if nv is not None:
                 body.velocity = nv
                 vel[row, :2] = nv

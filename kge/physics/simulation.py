@@ -51,6 +51,7 @@ from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes
+from kge.physics.speed_cap import SpeedCap, clamp, clamp_one
 from kge.physics.sync import PoseTable, columns_differ, rows_differ
 from kge.world import World
 
@@ -96,6 +97,7 @@ class Simulation:
         self.forces: dict[int, list[float]] = {}
         self.ccd = _make_ccd(self.space)
         self.ccd_dirty: set[int] = set()
+        self._speed_cap = SpeedCap()
         #: every tracked body was asleep after the last step (and none is kinematic)
         self.all_asleep = False
         #: something outside the dirty sets (an impulse, a wake-up) touched a body
@@ -410,16 +412,14 @@ class Simulation:
                 raw_set(rb, "angular_velocity", 0.0)
         else:
             s = self.settings
-            vx, vy = rb.velocity
-            vmax = s.max_translation / self.dt
-            speed = math.hypot(vx, vy)
-            if speed > vmax:
-                vx, vy = vx * vmax / speed, vy * vmax / speed
-                raw_set(rb, "velocity", (vx, vy))
-            wmax = s.max_rotation / self.dt
-            w = max(-wmax, min(wmax, rb.angular_velocity))
-            if w != rb.angular_velocity:
-                raw_set(rb, "angular_velocity", w)
+            (vx, vy), w = rb.velocity, rb.angular_velocity
+            nv, nw = clamp_one(vx, vy, w, s.max_translation / self.dt, s.max_rotation / self.dt)
+            if nv is not None:
+                vx, vy = nv
+                raw_set(rb, "velocity", nv)
+            if nw is not None:
+                w = nw
+                raw_set(rb, "angular_velocity", nw)
             if ptype == DYNAMIC and rb.fixed_rotation:
                 w = 0.0
                 raw_set(rb, "angular_velocity", 0.0)
@@ -614,8 +614,16 @@ class Simulation:
             last = self.poses.raw if idle and unchanged else None
             self.ccd.before_step(self.dt, n, last)
         forces = self.forces
+        # Box2D's speed caps before every substep (see kge.physics.speed_cap); the
+        # first one's velocities were capped by sync-in, sync-out and the CCD's read
+        cap = None if quiet else self._speed_cap
+        s = self.settings
+        vmax, wmax = s.max_translation / self.dt, s.max_rotation / self.dt
+        known = (self.poses.ids, self.poses.bodies)
         for i in range(n):
             rec.substep = i
+            if cap is not None and i:
+                cap.before_substep(self.space, known, vmax, wmax)
             if forces:
                 self._apply_forces()
             self.space.step(h)
@@ -658,20 +666,11 @@ class Simulation:
         s = self.settings
         vmax = s.max_translation / self.dt
         wmax = s.max_rotation / self.dt
-        speed2 = rows[:, 3] ** 2 + rows[:, 4] ** 2
-        over = (speed2 > vmax * vmax) | (np.abs(rows[:, 5]) > wmax)
-        if over.any():
-            rows = rows.copy()
-            for k in np.flatnonzero(over).tolist():
-                body = poses.bodies[int(slots[k])]
-                sp = math.sqrt(speed2[k])
-                if sp > vmax:
-                    rows[k, 3] *= vmax / sp
-                    rows[k, 4] *= vmax / sp
-                    body.velocity = (float(rows[k, 3]), float(rows[k, 4]))
-                if abs(rows[k, 5]) > wmax:
-                    rows[k, 5] = math.copysign(wmax, rows[k, 5])
-                    body.angular_velocity = float(rows[k, 5])
+        for k in clamp(rows[:, 3:6], vmax, wmax).tolist():  # ``rows`` is a gathered copy
+            body = poses.bodies[int(slots[k])]
+            vx, vy, w = rows[k, 3:6].tolist()
+            body.velocity = (vx, vy)
+            body.angular_velocity = w
         poses.prev[:] = poses.state[:, :3]
         old = poses.state[slots]
         changed = rows_differ(rows, old)

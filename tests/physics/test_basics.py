@@ -121,6 +121,44 @@ def test_max_rotation_per_step(zero_g: Sim, w0: float, expected: float) -> None:
     assert zero_g.rb(ball).angular_velocity == pytest.approx(expected, abs=1e-3)
 
 
+def test_speed_is_capped_between_substeps(zero_g: Sim) -> None:
+    """A velocity made inside a step (here by a force) never moves a body faster than the cap.
+
+    Chipmunk moves bodies with the velocity the previous substep ended with, so
+    capping after every substep caps every move, as Box2D's integration does. At
+    1e6 m/s^2 and 4 substeps of 1/240 s the first substep ends at 4,167 m/s;
+    capped, the step moves 3 x 0.5 m instead of the 104 m it would uncapped.
+    """
+    ball = zero_g.dynamic(Circle(0.1), body=RigidBody(allow_sleep=False))
+    mass = zero_g.physics.mass_data(ball).mass
+    zero_g.physics.apply_force(ball, (1e6 * mass, 0.0))
+    zero_g.step()
+    assert zero_g.rb(ball).velocity[0] == pytest.approx(120.0, abs=1e-6)
+    assert zero_g.t(ball).x == pytest.approx(1.5, abs=1e-9)
+    zero_g.step()  # the force is gone: a whole step at the cap
+    assert zero_g.t(ball).x == pytest.approx(3.5, abs=1e-9)
+
+
+def test_an_impulse_moves_a_body_at_most_the_cap_in_the_next_step(zero_g: Sim) -> None:
+    """Box2D caps an impulse's velocity as it integrates: 500 m/s moves 2 m, not 3.6."""
+    ball = zero_g.dynamic(Circle(0.1), body=RigidBody(allow_sleep=False))
+    mass = zero_g.physics.mass_data(ball).mass
+    zero_g.physics.apply_linear_impulse(ball, (500.0 * mass, 0.0))
+    zero_g.step()
+    assert zero_g.t(ball).x == pytest.approx(2.0, abs=1e-9)
+    assert zero_g.rb(ball).velocity[0] == pytest.approx(120.0, abs=1e-6)
+
+
+def test_spin_is_capped_between_substeps(zero_g: Sim) -> None:
+    ball = zero_g.dynamic(Circle(0.1), body=RigidBody(allow_sleep=False))
+    inertia = zero_g.physics.mass_data(ball).inertia
+    zero_g.physics.apply_torque(ball, 1e5 * inertia)
+    zero_g.step()
+    wmax = 0.5 * math.pi * 60.0
+    assert zero_g.rb(ball).angular_velocity == pytest.approx(wmax, abs=1e-6)
+    assert zero_g.t(ball).angle == pytest.approx(0.75 * 0.5 * math.pi, abs=1e-9)
+
+
 def test_free_fall_saturates_at_120(sim: Sim) -> None:
     ball = sim.dynamic(Circle(0.1), body=RigidBody(allow_sleep=False))
     saturated = None

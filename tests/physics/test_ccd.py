@@ -17,8 +17,9 @@ import pytest
 
 from kge.components.filter import Filter
 from kge.errors import ComponentTypeError, ValidationError
-from kge.physics.ccd import ContinuousCollision, clamp_velocity
+from kge.physics.ccd import ContinuousCollision
 from kge.physics.filtering import to_pymunk
+from kge.physics.speed_cap import clamp_velocity
 
 DT = 1 / 60
 SKIN = 0.01
