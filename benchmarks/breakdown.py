@@ -44,7 +44,6 @@ class PhaseTimer:
         self._wrap(sim, "sync_in", "sync-in")
         self._wrap(sim, "sync_out", "sync-out")
         self._wrap(sim, "step", "physics")
-        self._wrap(sim.recorder, "raise_pending", "recorded-events")
         self._wrap(sim.recorder, "deliver_post_solve", "recorded-events")
         delivery = world.get_system(PhysicsEventDelivery)
         if delivery is not None:

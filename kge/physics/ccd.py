@@ -82,6 +82,7 @@ from pymunk._chipmunk import lib as _lib
 
 from kge.components.filter import Filter
 from kge.errors import ComponentTypeError, ValidationError
+from kge.physics.callback_errors import CallbackErrors
 from kge.physics.speed_cap import clamp_one
 from kge.validate import boolean, integer, non_negative, positive
 
@@ -263,6 +264,12 @@ class _Tracked:
         return (getattr, (pymunk.Body, "update_position"))
 
     def __call__(self, body: pymunk.Body, dt: float) -> None:
+        try:
+            self._move(body, dt)
+        except Exception as exc:  # pymunk called this from C: kept for after the step
+            self.owner.errors.keep(exc)
+
+    def _move(self, body: pymunk.Body, dt: float) -> None:
         owner = self.owner
         known = self.contacts if self.fresh else None  # valid for this substep only
         self.fresh = False
@@ -475,7 +482,11 @@ class _Tracked:
             a, b = arb.shapes
             found.add(b if a.body is body else a)
 
-        body.each_arbiter(visit)
+        try:
+            body.each_arbiter(visit)
+        except Exception as exc:  # called from C, like __call__
+            self.owner.errors.keep(exc)
+            return
         self.contacts = frozenset(found)
         self.fresh = True
 
@@ -820,6 +831,7 @@ class ContinuousCollision:
         threshold: float = 0.5,
         margin: float = 0.01,
         pair_filter: PairFilter | None = None,
+        errors: CallbackErrors | None = None,
     ) -> None:
         if not isinstance(space, pymunk.Space):
             raise ComponentTypeError(
@@ -833,6 +845,10 @@ class ContinuousCollision:
         self.threshold = positive(threshold, "ContinuousCollision", "threshold")
         self.margin = non_negative(margin, "ContinuousCollision", "margin")
         self.pair_filter = pair_filter
+        #: where an exception raised inside the sweeps (called from C) is kept; without
+        #: an owner's (a Simulation's), :meth:`after_step` raises it
+        self.errors = errors if errors is not None else CallbackErrors()
+        self._raises = errors is None
         #: the fixed step of the current step (set by before_step)
         self.step_dt = 1.0 / 60.0
         self._tracked: dict[int, _Tracked] = {}
@@ -966,6 +982,8 @@ class ContinuousCollision:
     def after_step(self, step_dt: float) -> None:
         """Clamp speeds again, so the velocity read back is the capped one (Box2D keeps it)."""
         dt = positive(step_dt, "ContinuousCollision.after_step", "step_dt")
+        if self._raises:
+            self.errors.raise_pending()
         ids, _, vel = self._read()
         self._clamp(ids, vel, dt)
 

@@ -33,6 +33,7 @@ import pymunk
 from pymunk._chipmunk import ffi as _ffi
 from pymunk._chipmunk import lib as _lib
 
+from kge.physics.callback_errors import CallbackErrors
 from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
 
 if TYPE_CHECKING:
@@ -125,7 +126,9 @@ def _approach(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2, point: Vec2) -> 
 class ContactRecorder:
     """Owns the collision handlers of one space and records events into ``events``."""
 
-    def __init__(self, world: World, space: pymunk.Space, events: PhysicsEvents) -> None:
+    def __init__(
+        self, world: World, space: pymunk.Space, events: PhysicsEvents, errors: CallbackErrors
+    ) -> None:
         self.world = world
         self.space = space
         self.events = events
@@ -138,40 +141,13 @@ class ContactRecorder:
         self.substep = 0
         self._pre_cache: dict[tuple[int, int], PreSolve] = {}
         self._post_acc: dict[tuple[int, int], list[Any]] = {}
-        #: first exception raised inside a callback this step (re-raised after the step)
-        self.error: BaseException | None = None
         self._shape_ptrs = (_ffi.new("cpShape *[1]"), _ffi.new("cpShape *[1]"))
+        # an exception in a handler (a WorldLockedError from a hook) is raised after the step
+        guard = errors.guard
+        space.on_collision(None, None, begin=guard(self._begin), separate=guard(self._separate))
         space.on_collision(
-            None, None, begin=self._guarded(self._begin), separate=self._guarded(self._separate)
+            HOOKED, None, pre_solve=guard(self._pre_solve), post_solve=guard(self._post_solve)
         )
-        space.on_collision(
-            HOOKED,
-            None,
-            pre_solve=self._guarded(self._pre_solve),
-            post_solve=self._guarded(self._post_solve),
-        )
-
-    def _guarded(self, fn: Callable[..., None]) -> Callable[..., None]:
-        """Keep an exception raised inside a pymunk callback for after the step.
-
-        cffi would print and swallow it; kge re-raises it from the step instead
-        (:meth:`raise_pending`), so a WorldLockedError or a bug in a hook is seen.
-        """
-
-        def call(arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-            try:
-                fn(arb, space, data)
-            except Exception as exc:
-                if self.error is None:
-                    self.error = exc
-
-        return call
-
-    def raise_pending(self) -> None:
-        """Re-raise the first callback exception of the step, if any."""
-        err, self.error = self.error, None
-        if err is not None:
-            raise err
 
     # -- begin / separate (once per contact) ------------------------------------------
     def _shapes(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape]:

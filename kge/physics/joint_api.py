@@ -23,6 +23,8 @@ from typing import Any, Protocol
 
 import pymunk
 
+from kge.physics.callback_errors import CallbackErrors
+
 Vec2 = tuple[float, float]
 
 
@@ -31,6 +33,9 @@ class JointContext(Protocol):
 
     space: pymunk.Space
     dt: float  # the fixed step (1/60 by default), for impulse -> force conversions
+    #: where an exception raised by a joint's own solver (run from pymunk's
+    #: ``pre_solve``, inside the step) is kept until the step is over
+    errors: CallbackErrors
 
     @property
     def substep(self) -> float:

@@ -64,6 +64,7 @@ class JointBridge:
         self.sim = sim
         self.space: pymunk.Space = sim.space
         self.dt = sim.dt
+        self.errors = sim.errors
         self.handles: dict[int, joint_api.JointHandle] = {}
         self.components: dict[int, Any] = {}
         self.pending: set[int] = set()

@@ -45,6 +45,7 @@ from kge.physics.bodies import (
     take_out,
     wake_neighbours,
 )
+from kge.physics.callback_errors import CallbackErrors
 from kge.physics.contacts import HOOKED, ContactRecorder
 from kge.physics.events import PhysicsEvents
 from kge.physics.joint_bridge import JointBridge
@@ -71,7 +72,9 @@ class Simulation:
         self.events = events
         self.dt = dt
         self.space = pymunk.Space()
-        self.recorder = ContactRecorder(world, self.space, events)
+        #: exceptions raised inside pymunk callbacks during a step, raised after it
+        self.errors = CallbackErrors()
+        self.recorder = ContactRecorder(world, self.space, events, self.errors)
         self.bodies: dict[int, BodyRecord] = {}
         self.colliders: dict[int, ColliderRecord] = {}
         self.pending: set[int] = set()  # colliders waiting for their body
@@ -95,7 +98,7 @@ class Simulation:
         self.steps = 0
         #: body entity -> [fx, fy, torque about the centre of mass] for this step
         self.forces: dict[int, list[float]] = {}
-        self.ccd = _make_ccd(self.space)
+        self.ccd = _make_ccd(self.space, self.errors)
         self.ccd_dirty: set[int] = set()
         self._speed_cap = SpeedCap()
         #: every tracked body was asleep after the last step (and none is kinematic)
@@ -638,7 +641,7 @@ class Simulation:
         else:
             self._prev_is_current = False
             self.sync_out()
-        rec.raise_pending()
+        self.errors.raise_pending()
         rec.deliver_post_solve()
 
     def _apply_forces(self) -> None:
@@ -771,10 +774,10 @@ _SET_VELOCITY = _slot_setter(RigidBody, "velocity")
 _SET_ANGULAR_VELOCITY = _slot_setter(RigidBody, "angular_velocity")
 
 
-def _make_ccd(space: pymunk.Space) -> Any:
+def _make_ccd(space: pymunk.Space, errors: CallbackErrors) -> Any:
     """Continuous collision (kge.physics.ccd) when available; None otherwise."""
     try:
         from kge.physics.ccd import ContinuousCollision
     except ImportError:  # pragma: no cover - the module ships with kge
         return None
-    return ContinuousCollision(space)
+    return ContinuousCollision(space, errors=errors)

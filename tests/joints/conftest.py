@@ -16,6 +16,7 @@ import pymunk
 import pytest
 
 import kge.physics.joints  # noqa: F401 - registers the builders
+from kge.physics.callback_errors import CallbackErrors
 from kge.physics.joint_api import BUILDERS, JointHandle
 
 
@@ -33,6 +34,7 @@ class Sim:
         self.broken: list[int] = []
         self._next = 1
         self.steps = 0
+        self.errors = CallbackErrors()
 
     # -- JointContext -----------------------------------------------------------------
     @property
@@ -99,6 +101,7 @@ class Sim:
                 h.before_step(self.dt)
             for _ in range(self.substeps):
                 self.space.step(self.dt / self.substeps)
+            self.errors.raise_pending()
             for e, h in list(self.handles.items()):
                 h.read_back(self.joints[e], self.dt)
                 if h.exceeds_break_limits(self.joints[e]):

@@ -245,8 +245,11 @@ class Composite(JointHandle):
     def _run_pre(self, constraint: pymunk.Constraint, space: pymunk.Space) -> None:
         h = space.current_time_step
         if h > 0:
-            for fn in self._pre:
-                fn(h)
+            try:
+                for fn in self._pre:
+                    fn(h)
+            except Exception as exc:  # pymunk called this from C: raised after the step
+                self.ctx.errors.keep(exc)
 
     def local_anchors(self, component: Any, world_field: str = "anchor") -> None:
         """Resolve a world ``anchor`` into both local anchors (and forget the world one)."""
