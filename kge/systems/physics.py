@@ -124,20 +124,32 @@ class PhysicsSystem(System):
             self._check_gear(entity, joint)
 
     def _check_gear(self, entity: int | None, gear: GearJoint) -> None:
-        """A gear must name two live revolute/prismatic joints (else every step would fail)."""
+        """A gear must name two live revolute/prismatic joints (else every step would fail)
+        that move two different bodies: a gear's bodies are its joints' ``body_b``, as
+        in Box2D, which asserts that a joint's two bodies differ."""
         world = self.world
+        moved: list[int | None] = []
         for field in ("joint_a", "joint_b"):
             ref = getattr(gear, field)
             if not world.exists(ref):
                 raise ValidationError(
                     f"{_where(entity, f'GearJoint.{field}')}: joint entity {ref} does not exist"
                 )
-            if not (world.has(ref, RevoluteJoint) or world.has(ref, PrismaticJoint)):
+            joint = world.try_get(ref, RevoluteJoint) or world.try_get(ref, PrismaticJoint)
+            if joint is None:
                 held = ", ".join(type(c).__name__ for c in world.components(ref)) or "nothing"
                 raise ValidationError(
                     f"{_where(entity, f'GearJoint.{field}')}: entity {ref} must hold a "
                     f"RevoluteJoint or PrismaticJoint (it holds {held})"
                 )
+            moved.append(joint.body_b)
+        if moved[0] == moved[1]:
+            body = "the ground (None)" if moved[0] is None else f"entity {moved[0]}"
+            raise ValidationError(
+                f"{_where(entity, 'GearJoint.joint_b')}: joints {gear.joint_a} and "
+                f"{gear.joint_b} both move {body} (their body_b); a gear needs two "
+                "different bodies"
+            )
 
     # -- running -------------------------------------------------------------------------------
     def process(self, dt: float) -> None:

@@ -144,7 +144,11 @@ class PhysicsMachine(RuleBasedStateMachine):
     def spawn_gear(self, i: int, k: int, ratio: float) -> None:
         joints = self._live(RevoluteJoint) + self._live(PrismaticJoint)
         ja, jb = self._pick(joints, i), self._pick(joints, k)
-        if ja is not None and jb is not None and ja != jb:
+        if ja is None or jb is None or ja == jb:
+            return
+        w = self.world
+        moved = [(w.try_get(j, RevoluteJoint) or w.get(j, PrismaticJoint)).body_b for j in (ja, jb)]
+        if moved[0] != moved[1]:  # a gear of two joints that move one body is refused
             self.world.spawn(GearJoint(ja, jb, ratio=ratio))
 
     @rule(x=coord, n=st.integers(1, 4), base=body_type)
