@@ -34,6 +34,7 @@ False
 from __future__ import annotations
 
 import itertools
+import weakref
 from collections import defaultdict
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -76,12 +77,25 @@ def _check_component(component: object, entity: int | None = None) -> None:
         )
 
 
+def _forget_esper_world(name: str) -> None:
+    """Delete esper's tables of a closed or collected world (run once, by ``finalize``)."""
+    if esper.current_world == name:
+        esper.switch_world("default")
+    if name in esper.list_worlds():
+        esper.delete_world(name)
+
+
 class World:
     """One isolated ECS world. See the module docstring for the change rules."""
 
     def __init__(self, name: str | None = None) -> None:
-        self.name = name or f"kge-world-{next(_world_ids)}"
-        self._esper_name = f"{self.name}#{id(self)}"
+        serial = next(_world_ids)
+        self.name = name or f"kge-world-{serial}"
+        # never reused in the process (``id(self)`` is, once a world is collected, and a
+        # new world would then have found the entities of an unclosed one of the same name)
+        self._esper_name = f"{self.name}#{serial}"
+        # an unclosed world's esper tables go with it instead of living on in esper's globals
+        self._forget = weakref.finalize(self, _forget_esper_world, self._esper_name)
         self._resources: dict[type, Any] = {}
         self._events: dict[type, list[Any]] = defaultdict(list)
         self._handlers: dict[str, list[Callable[..., Any]]] = defaultdict(list)
@@ -477,11 +491,7 @@ class World:
         for entity in self.entities() + sorted(self._dying):
             self._apply_despawn(entity)
         self._closed = True
-        name = self._esper_name
-        if esper.current_world == name:
-            esper.switch_world("default")
-        if name in esper.list_worlds():
-            esper.delete_world(name)
+        self._forget()
 
     def __repr__(self) -> str:
         return f"World({self.name!r})"

@@ -116,6 +116,28 @@ def test_two_worlds_are_isolated() -> None:
         b.close()
 
 
+def test_a_new_world_never_sees_an_unclosed_one_of_the_same_name() -> None:
+    """Worlds named alike (every App of a function scene is "function") never share data.
+
+    The esper tables were named after ``id(world)``, which CPython hands out again
+    once a world is collected: a new world then found the entities of an unclosed
+    one that had the same name (a flaky render test showed it). The tables of an
+    unclosed world now go with it, and names are never reused.
+    """
+    import gc
+
+    import esper
+
+    before = set(esper.list_worlds())
+    for k in range(50):
+        w = World(name="scene")
+        assert w.query(Tag) == []
+        w.spawn(Tag(f"world {k}"))
+        del w
+        gc.collect()
+    assert set(esper.list_worlds()) - before <= {esper.current_world}
+
+
 def test_deferred_changes_apply_at_flush_in_sorted_entity_order(world: World) -> None:
     order: list[tuple[str, int]] = []
     world.on_add(Tag, lambda e, c: order.append(("add", e)))
