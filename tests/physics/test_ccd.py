@@ -578,16 +578,16 @@ def test_fast_bodies_far_from_static_geometry_cost_no_shape_walks(
     # A non-bullet can only be stopped by static or kinematic shapes: a swarm of fast
     # thin bodies (a swinging chain) with the only wall 50 m away must be screened in
     # bulk, never by testing the dynamic shapes around each of them.
-    from kge.physics import ccd as ccd_module
+    from kge.physics.ccd import sweep as ccd_module
 
     tested = []
-    original = ccd_module._Tracked._is_obstacle
+    original = ccd_module.Tracked._is_obstacle
 
     def counting(self, shape, joint_free):  # type: ignore[no-untyped-def]
         tested.append(shape)
         return original(self, shape, joint_free)
 
-    monkeypatch.setattr(ccd_module._Tracked, "_is_obstacle", counting)
+    monkeypatch.setattr(ccd_module.Tracked, "_is_obstacle", counting)
     sim = Sim()
     _own_static_wall(sim, 50.0)
     _spinning_cluster(sim, 150)

@@ -22,8 +22,7 @@ from kge.components.joints import MouseJoint
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle
 from kge.components.transform import Transform
-from kge.physics import ccd as ccd_module
-from kge.physics.ccd import ContinuousCollision
+from kge.physics.ccd import ContinuousCollision, sweep
 from kge.physics.contacts import ContactRecorder
 from kge.physics.simulation import Simulation
 from tests.physics.conftest import Sim
@@ -83,7 +82,7 @@ def test_a_failing_sweep_raises_from_the_step(
     def failing(self: Any, body: pymunk.Body, dt: float) -> None:
         raise Boom("sweep")
 
-    monkeypatch.setattr(ccd_module._Tracked, "_move", failing)
+    monkeypatch.setattr(sweep.Tracked, "_move", failing)
     with pytest.raises(Boom, match="sweep"):
         for _ in range(5):  # armed once the ball is fast and near the ground
             sim.step()
@@ -127,7 +126,7 @@ def test_standalone_ccd_raises_from_after_step(
     def failing(self: Any, body: pymunk.Body, dt: float) -> None:
         raise Boom("standalone")
 
-    monkeypatch.setattr(ccd_module._Tracked, "_move", failing)
+    monkeypatch.setattr(sweep.Tracked, "_move", failing)
     with pytest.raises(Boom, match="standalone"):
         for _ in range(5):
             ccd.before_step(1 / 60)

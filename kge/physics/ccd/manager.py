@@ -1,0 +1,445 @@
+"""ContinuousCollision: one bulk read per step, speed caps, and arming the fast bodies.
+
+:class:`ContinuousCollision` owns the per-body :class:`~kge.physics.ccd.sweep.Tracked`
+records and the :class:`~kge.physics.ccd.obstacles.Obstacles` index of one space.
+Before each step it reads every body with ``pymunk.batch``, caps speeds, and arms
+the swept integrator only on the tracked bodies that are fast and have something
+within reach; after the step it caps again and disarms.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pymunk
+import pymunk.batch
+
+from kge.errors import ComponentTypeError, ValidationError
+from kge.physics.callback_errors import CallbackErrors
+from kge.physics.ccd.obstacles import Obstacles
+from kge.physics.ccd.parts import extent_of, parts_of
+from kge.physics.ccd.sweep import Tracked, grown
+from kge.physics.speed_cap import clamp_one
+from kge.validate import boolean, integer, non_negative, positive
+
+#: ``pair_filter(moving_shape, other_shape) -> bool``: False = they never touch.
+PairFilter = Callable[[pymunk.Shape, pymunk.Shape], bool]
+_ALL = pymunk.ShapeFilter()
+_DYNAMIC = pymunk.Body.DYNAMIC
+_KINEMATIC = pymunk.Body.KINEMATIC
+_FIELDS = (
+    pymunk.batch.BodyFields.BODY_ID
+    | pymunk.batch.BodyFields.POSITION
+    | pymunk.batch.BodyFields.ANGLE
+    | pymunk.batch.BodyFields.VELOCITY
+    | pymunk.batch.BodyFields.ANGULAR_VELOCITY
+)
+
+
+class Index:
+    """The tracked bodies sorted by id, with their radii as arrays (rebuilt on track/untrack)."""
+
+    __slots__ = ("bullets", "core", "extent", "ids", "infos", "max_extent", "reach")
+
+    def __init__(self, infos: list[Tracked]) -> None:
+        self.infos = infos
+        self.ids = np.array([t.body.id for t in infos], dtype=np.int64)
+        self.core = np.array([t.core for t in infos], dtype=np.float64)
+        self.reach = np.array([t.reach for t in infos], dtype=np.float64)
+        self.extent = np.array([t.extent for t in infos], dtype=np.float64)
+        self.max_extent = float(self.extent.max()) if infos else 0.0
+        self.bullets = any(t.bullet for t in infos)
+
+
+class ContinuousCollision:
+    """Speed caps for every body of ``space`` and sweeps for tracked dynamic bodies.
+
+    Call :meth:`track` for each dynamic body (``bullet=True`` for bullets)
+    once its shapes are in the space, and again when its shapes, joints or
+    bullet flag change; :meth:`untrack` before removing it. Each fixed step:
+    :meth:`before_step` after writing user velocities and before the
+    substeps, :meth:`after_step` after them and before reading velocities back.
+
+    ``threshold``: a body is swept when it moves more than this fraction of its
+    core radius (circle radius, polygon inradius + skin) in a step; below it
+    the contact solver cannot be fooled (the body's centre stays on the near
+    side of anything it penetrates). ``margin``: how far the swept outline is
+    shrunk, i.e. the overlap a body is left with at the impact (Box2D's target
+    is about one linear slop).
+    """
+
+    def __init__(
+        self,
+        space: pymunk.Space,
+        *,
+        max_translation: float = 2.0,
+        max_rotation: float = 0.5 * math.pi,
+        threshold: float = 0.5,
+        margin: float = 0.01,
+        pair_filter: PairFilter | None = None,
+        errors: CallbackErrors | None = None,
+    ) -> None:
+        if not isinstance(space, pymunk.Space):
+            raise ComponentTypeError(
+                f"ContinuousCollision: expected a pymunk.Space, got {type(space).__name__}"
+            )
+        if pair_filter is not None and not callable(pair_filter):
+            raise ComponentTypeError("ContinuousCollision.pair_filter must be callable or None")
+        self.space = space
+        self.max_translation = positive(max_translation, "ContinuousCollision", "max_translation")
+        self.max_rotation = positive(max_rotation, "ContinuousCollision", "max_rotation")
+        self.threshold = positive(threshold, "ContinuousCollision", "threshold")
+        self.margin = non_negative(margin, "ContinuousCollision", "margin")
+        self.pair_filter = pair_filter
+        #: where an exception raised inside the sweeps (called from C) is kept; without
+        #: an owner's (a Simulation's), :meth:`after_step` raises it
+        self.errors = errors if errors is not None else CallbackErrors()
+        self._raises = errors is None
+        #: the fixed step of the current step (set by before_step)
+        self.step_dt = 1.0 / 60.0
+        self._tracked: dict[int, Tracked] = {}
+        self._bodies: dict[int, pymunk.Body] = {}  # every tracked body, for clamping by id
+        self._movers: dict[int, pymunk.Body] = {}  # moving untracked (kinematic) bodies seen
+        self._boosted: list[Tracked] = []
+        self._armed: dict[int, Tracked] = {}  # id(info) -> info
+        self._buffer = pymunk.batch.Buffer()
+        self._index: Index | None = None
+        #: the last bulk read's body ids and their rows in the index (reused while unchanged)
+        self._rows: (
+            tuple[np.ndarray, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
+        ) = None
+        self._generation = 0  # bumped whenever _rows is recomputed
+        self._obstacles = Obstacles(space)
+        #: this step's answers of near_obstacles(cap) for neighbours of fast bodies
+        self._near_memo: dict[int, bool] = {}
+
+    # ----------------------------------------------------------------- bookkeeping
+
+    def track(self, body: pymunk.Body, *, bullet: bool = False) -> None:
+        """Start (or refresh) CCD for ``body``; non-dynamic bodies are only speed-capped."""
+        if not isinstance(body, pymunk.Body):
+            raise ComponentTypeError(
+                f"ContinuousCollision.track: expected a pymunk.Body, got {type(body).__name__}"
+            )
+        bullet = boolean(bullet, "ContinuousCollision.track", "bullet")
+        key = body.id
+        self._bodies[key] = body
+        old = self._tracked.pop(key, None)
+        if old is not None and old.armed:
+            self._disarm(self._armed.pop(id(old)))
+        self._index = None
+        self._obstacles.reclassify(body)  # its type may have changed in place
+        if body.body_type != _DYNAMIC:
+            return
+        shapes = tuple(body.shapes)  # pymunk builds a new set per read
+        parts, core, reach = parts_of(body, shapes, self.margin)
+        self._tracked[key] = Tracked(
+            self, body, bullet, parts, core, reach, shapes, extent_of(body, shapes, reach)
+        )
+
+    def untrack(self, body: pymunk.Body) -> None:
+        """Forget ``body`` (restores its plain integrator); unknown bodies are ignored."""
+        self._bodies.pop(body.id, None)
+        self._movers.pop(body.id, None)  # else a removed kinematic body stays referenced
+        self._obstacles.reclassify(body)  # it may have become static or kinematic
+        info = self._tracked.pop(body.id, None)
+        if info is not None:
+            self._index = None
+            if info.armed:
+                self._disarm(self._armed.pop(id(info)))
+
+    def _is_bullet(self, body: pymunk.Body) -> bool:
+        info = self._tracked.get(body.id)
+        return info is not None and info.bullet
+
+    def is_armed(self, body: pymunk.Body) -> bool:
+        """True when ``body`` carries the swept integrator for the current step."""
+        info = self._tracked.get(body.id)
+        return info is not None and info.armed
+
+    @property
+    def armed_count(self) -> int:
+        """How many bodies carry the swept integrator for the current step."""
+        return len(self._armed)
+
+    def stats(self) -> tuple[int, int]:
+        """(sweeps run, sweeps that found an impact) since the bodies were tracked."""
+        return (
+            sum(t.sweeps for t in self._tracked.values()),
+            sum(t.impacts for t in self._tracked.values()),
+        )
+
+    # ----------------------------------------------------------------- per step
+
+    def before_step(
+        self,
+        step_dt: float,
+        substeps: int = 1,
+        read: tuple[np.ndarray, np.ndarray] | None = None,
+    ) -> int:
+        """Clamp speeds and arm the sweep on fast tracked bodies; returns how many are armed.
+
+        ``substeps``: how many ``space.step`` calls make up this fixed step. A
+        body is armed when its motion per substep exceeds the threshold, so
+        passing the real count skips bodies that are only fast per step.
+        ``read``: (ids, rows of x, y, angle, vx, vy, w) of every body, when the
+        caller already holds a bulk read that is still current (the physics
+        system's sync-out read, if nothing touched a body since); saves a read.
+        """
+        dt = positive(step_dt, "ContinuousCollision.before_step", "step_dt")
+        n = integer(substeps, "ContinuousCollision.before_step", "substeps")
+        if n < 1:
+            raise ValidationError(
+                f"ContinuousCollision.before_step: substeps must be >= 1, got {n}"
+            )
+        self.step_dt = dt
+        if read is None:
+            ids, pose, vel = self._read()
+        else:
+            ids, rows = read
+            pose, vel = rows[:, :3], rows[:, 3:]
+        vel = self._clamp(ids, vel, dt)
+        for info in self._boosted:
+            info.boost = 0.0
+        self._boosted.clear()
+        self._near_memo.clear()
+        if not self._tracked:
+            return 0
+        pos, known, core, reach = self._rows_of(ids)
+        speed = np.hypot(vel[:, 0], vel[:, 1])
+        motion = (speed + np.abs(vel[:, 2]) * reach) * dt
+        fast = np.flatnonzero(known & (motion > self.threshold * n * core))
+        want: dict[int, Tracked] = {}
+        if len(fast):
+            self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
+        moving = ~known & ((speed > 0.0) | (vel[:, 2] != 0.0))
+        if moving.any() or self._movers:
+            self._boost_near_movers(ids, moving, vel, dt, n, want)
+        for key in [k for k in self._armed if k not in want]:
+            self._disarm(self._armed.pop(key))
+        for key, info in want.items():
+            if key not in self._armed:
+                info.saved = info.body.position_func
+                info.body.position_func = info
+                info.armed = True
+                self._armed[key] = info
+        return len(want)
+
+    def after_step(self, step_dt: float) -> None:
+        """Clamp speeds again, so the velocity read back is the capped one (Box2D keeps it)."""
+        dt = positive(step_dt, "ContinuousCollision.after_step", "step_dt")
+        if self._raises:
+            self.errors.raise_pending()
+        ids, _, vel = self._read()
+        self._clamp(ids, vel, dt)
+
+    # ----------------------------------------------------------------- internals
+
+    def _arm_fast(
+        self,
+        rows: np.ndarray,
+        slots: np.ndarray,
+        ids: np.ndarray,
+        pose: np.ndarray,
+        vel: np.ndarray,
+        motion: np.ndarray,
+        want: dict[int, Tracked],
+    ) -> None:
+        """Arm the fast tracked bodies (bulk-read ``rows``) that have something in reach.
+
+        The obstacle index screens them all in one vectorised pass (a square of
+        ``extent`` plus the reach around each position), so only bodies near a
+        static or kinematic shape - and bullets - are examined one by one.
+        """
+        index = self._lookup_index()
+        obstacles = self._obstacles
+        obstacles.refresh(ids, pose, vel, self._generation)
+        x, y = pose[rows, 0], pose[rows, 1]
+        reach = index.extent[slots] + motion + self.max_translation
+        # what a neighbour launched by the body could hit (see _arm_neighbours)
+        wide = reach + 2.0 * self.max_translation + 2.0 * index.max_extent
+        close = obstacles.near_any(x, y, wide)
+        near = close.copy()
+        if close.any():
+            near[close] = obstacles.near_any(x[close], y[close], reach[close])
+        # with no bullet anywhere, a body with nothing close needs no look at all
+        todo = np.arange(len(slots)) if index.bullets else np.flatnonzero(close)
+        fast = []
+        for k, slot in zip(todo.tolist(), slots[todo].tolist(), strict=True):
+            info = index.infos[slot]
+            m = float(motion[k])
+            if (info.bullet or near[k]) and info.near_obstacles(m):
+                want[id(info)] = info
+            fast.append((info, m, bool(close[k])))
+        self._arm_neighbours(fast, want, index.bullets)
+
+    def _arm_neighbours(
+        self, fast: list[tuple[Tracked, float, bool]], want: dict[int, Tracked], bullets: bool
+    ) -> None:
+        """Arm the bodies a fast body may hit this step.
+
+        A collision inside the step can launch a slow body at up to the speed cap
+        (Box2D computes impacts after the solve, with the new velocities), so a
+        neighbour within a fast body's reach is armed when something it could
+        then hit is within twice the speed cap of it; its integrator stays cheap
+        until it is actually fast. A bullet neighbour is also boosted, so it
+        sweeps against the fast body even while it is itself at rest.
+
+        ``fast`` holds (body, step motion, close): ``close`` is False when no
+        static or kinematic shape lies within what any neighbour could reach,
+        so only bullet neighbours matter (none when ``bullets`` is False).
+        """
+        # a light body hit by a heavy one leaves at up to (1 + e) times its speed,
+        # and only armed bodies are capped within the step
+        cap = 2.0 * self.max_translation
+        for info, motion, close in fast:
+            if not (close or bullets):
+                continue
+            box = info._bounds()
+            if box is None:
+                continue
+            for shape in self.space.bb_query(grown(box, motion), _ALL):
+                other = shape.body
+                near = self._tracked.get(other.id) if other is not None else None
+                if near is None or near is info:
+                    continue
+                if near.bullet and motion > near.boost:
+                    # Box2D sweeps every pair with a bullet in it: a slow bullet must
+                    # see the fast body coming, in that body's frame
+                    if near.boost == 0.0:
+                        self._boosted.append(near)
+                    near.boost = motion
+                    want[id(near)] = near
+                elif (
+                    id(near) not in want and (close or near.bullet) and self._near_within(near, cap)
+                ):
+                    want[id(near)] = near
+
+    def _near_within(self, info: Tracked, reach: float) -> bool:
+        """``info.near_obstacles(reach)``, asked at most once per body and step."""
+        key = id(info)
+        hit = self._near_memo.get(key)
+        if hit is None:
+            hit = self._near_memo[key] = info.near_obstacles(reach)
+        return hit
+
+    def _boost_near_movers(
+        self,
+        ids: np.ndarray,
+        moving: np.ndarray,
+        vel: np.ndarray,
+        dt: float,
+        substeps: int,
+        want: dict[int, Tracked],
+    ) -> None:
+        """Arm slow dynamic bodies that a fast kinematic body could sweep over this step.
+
+        Box2D computes the time of impact from both bodies' motion; here each
+        dynamic body near a moving kinematic one gets that body's step motion
+        as a ``boost`` and, when the sum could tunnel, the swept integrator,
+        which then sweeps in the kinematic body's frame.
+        """
+        alive = set(ids[moving].tolist())
+        self._movers = {k: b for k, b in self._movers.items() if k in alive}
+        for row in np.flatnonzero(moving).tolist():
+            key = int(ids[row])
+            body = self._movers.get(key) or self._bodies.get(key) or self._obstacles.body(key)
+            if body is None:
+                body = next((b for b in self.space.bodies if b.id == key), None)
+                if body is None:
+                    continue
+                self._movers[key] = body
+            if body.body_type != _KINEMATIC or not body.shapes:
+                continue
+            box: pymunk.BB | None = None
+            for shape in body.shapes:
+                box = shape.bb if box is None else box.merge(shape.bb)
+            assert box is not None
+            radius = math.dist((box.left, box.bottom), (box.right, box.top))
+            step = (math.hypot(vel[row, 0], vel[row, 1]) + abs(vel[row, 2]) * radius) * dt
+            # a dynamic body closes in by up to the speed cap itself
+            region = grown(box, step + self.max_translation)
+            for shape in self.space.bb_query(region, _ALL):
+                other = shape.body
+                info = self._tracked.get(other.id) if other is not None else None
+                if info is None or step <= info.boost:
+                    continue
+                if info.boost == 0.0:
+                    self._boosted.append(info)
+                info.boost = step
+                if step > self.threshold * info.core * substeps:
+                    want[id(info)] = info
+
+    def _read(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every body's id, pose (x, y, angle) and velocity (vx, vy, w), in one bulk read."""
+        buf = self._buffer
+        buf.clear()
+        pymunk.batch.get_space_bodies(self.space, _FIELDS, buf)
+        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
+        data = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        return ids, data[:, :3], data[:, 3:]
+
+    def _clamp(self, ids: np.ndarray, vel: np.ndarray, dt: float) -> np.ndarray:
+        max_v = self.max_translation / dt
+        max_w = self.max_rotation / dt
+        speed2 = vel[:, 0] ** 2 + vel[:, 1] ** 2
+        over = (speed2 > max_v * max_v) | (np.abs(vel[:, 2]) > max_w)
+        if not over.any():
+            return vel
+        vel = vel.copy()
+        for row in np.flatnonzero(over):
+            body = self._body(int(ids[row]))
+            if body is None:
+                continue
+            vx, vy, w = (float(x) for x in vel[row])
+            nv, nw = clamp_one(vx, vy, w, max_v, max_w)
+            if nv is not None:
+                body.velocity = nv
+                vel[row, :2] = nv
+            if nw is not None:
+                body.angular_velocity = nw
+                vel[row, 2] = nw
+        return vel
+
+    def _body(self, body_id: int) -> pymunk.Body | None:
+        body = self._bodies.get(body_id) or self._movers.get(body_id)
+        body = body or self._obstacles.body(body_id)
+        if body is None:  # untracked (e.g. a user-made pymunk body): rare, so a plain scan
+            body = next((b for b in self.space.bodies if b.id == body_id), None)
+        return body
+
+    def _lookup_index(self) -> Index:
+        if self._index is None:
+            self._index = Index(sorted(self._tracked.values(), key=lambda t: t.body.id))
+        return self._index
+
+    def _rows_of(self, ids: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Per bulk-read row: its slot in the index, whether tracked, core radius and reach.
+
+        Recomputed only when the read's body order or the tracked set changed
+        (bodies added, removed, falling asleep or waking), else reused.
+        """
+        index = self._lookup_index()
+        cached = self._rows
+        if cached is not None and cached[1] is index and np.array_equal(cached[0], ids):
+            return cached[2:]
+        pos = np.minimum(np.searchsorted(index.ids, ids), len(index.ids) - 1)
+        self._rows = (
+            ids.copy(),
+            index,
+            pos,
+            index.ids[pos] == ids,
+            index.core[pos],
+            index.reach[pos],
+        )
+        self._generation += 1
+        return self._rows[2:]
+
+    @staticmethod
+    def _disarm(info: Tracked) -> None:
+        restore = info.saved if info.saved is not None else pymunk.Body.update_position
+        info.body.position_func = restore
+        info.saved = None
+        info.armed = False

@@ -1,0 +1,253 @@
+"""The static and kinematic shapes as numpy bounding boxes, screened in bulk.
+
+A non-bullet body is only ever stopped by static or kinematic shapes, so the
+question "could this fast body hit anything this step?" is answered for all
+fast bodies at once against this index, without walking the dynamic shapes
+around each of them.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pymunk
+
+_DYNAMIC = pymunk.Body.DYNAMIC
+_KINEMATIC = pymunk.Body.KINEMATIC
+
+
+#: rows x fast bodies compared at once by Obstacles.near_any (bounds temporary memory)
+_CHUNK = 1 << 16
+
+
+class Obstacles:
+    """Bounding boxes of the space's static and kinematic shapes, in numpy.
+
+    A non-bullet body can only be stopped by static or kinematic geometry, so
+    "is anything within reach?" must not walk the (often many) dynamic shapes
+    around it, as ``space.bb_query`` would. This index holds one row per
+    static or kinematic shape: its cached bounding box and whether its body
+    moves (kinematic). It is kept current at a cost proportional to what
+    changed, never to the size of the space:
+
+    * **new shapes**: Chipmunk gives every shape added to a space the next
+      ``hashid``, and pymunk keeps ``space.shapes`` in insertion order, so the
+      shapes added since the last look are the tail of that view whose hashid
+      exceeds the newest one seen;
+    * **removed shapes**: rows whose shape left the space are dropped when a
+      query meets them, and swept out once removals outnumber the rows; dropped
+      rows are reused by the next shapes, so the table never outgrows the most
+      static and kinematic shapes the space held at once (a game that keeps
+      spawning kinematic bodies must not grow it forever);
+    * **moved bodies**: the owners' poses, read in bulk with the velocities,
+      are compared with the last ones; the boxes of a body that moved (and of
+      every moving kinematic body) are re-read, also on the next step, so a
+      ``reindex`` that lags a move by one step is still seen;
+    * **type changes**: :meth:`reclassify`, called by ``track``/``untrack``
+      (the physics system calls one of them after every type change).
+
+    Rows are candidates only: every hit is re-checked on the live shape.
+    """
+
+    def __init__(self, space: pymunk.Space) -> None:
+        self.space = space
+        self.shapes: list[pymunk.Shape | None] = []
+        self.owner_of: list[int] = []  # row -> owner body id
+        self.row_of: dict[pymunk.Shape, int] = {}
+        self.box = np.full((16, 4), np.nan)  # left, bottom, right, top (nan: free row)
+        self.kinematic = np.zeros(16, dtype=bool)
+        self.live = 0
+        self._free: list[int] = []  # dropped rows, reused first
+        self._count = 0  # len(space.shapes) at the last scan
+        self._newest = -1  # largest hashid seen
+        self._removed = 0  # removals seen since the last sweep of dead rows
+        self._owners: dict[int, pymunk.Body] = {}  # body id -> body owning rows
+        self._owner_rows: dict[int, list[int]] = {}
+        self._owners_dirty = True
+        self._oids = np.empty(0, dtype=np.int64)  # sorted owner ids
+        self._opose = np.empty((0, 3))
+        self._orow = np.empty(0, dtype=np.intp)  # owner -> row in the bulk read (-1: none)
+        self._recent = np.empty(0, dtype=bool)
+        self._order = -1  # the bulk-read order _orow was computed for
+
+    # ----------------------------------------------------------------- upkeep
+
+    def refresh(self, ids: np.ndarray, pose: np.ndarray, vel: np.ndarray, order: int) -> None:
+        """Bring the rows up to date from this step's bulk read.
+
+        ``order`` changes whenever the read's body order may have changed.
+        """
+        self._scan()
+        fresh = order != self._order
+        self._order = order
+        if self._owners_dirty:
+            self._oids = np.array(sorted(self._owners), dtype=np.int64)
+            self._opose = np.full((len(self._oids), 3), np.nan)
+            self._recent = np.zeros(len(self._oids), dtype=bool)
+            self._owners_dirty = False
+            fresh = True
+        k = len(self._oids)
+        if k == 0:
+            return
+        if fresh:
+            at = np.minimum(np.searchsorted(self._oids, ids), k - 1)
+            hit = self._oids[at] == ids
+            self._orow = np.full(k, -1, dtype=np.intp)
+            self._orow[at[hit]] = np.flatnonzero(hit)
+        present = self._orow >= 0
+        rows = np.where(present, self._orow, 0)
+        cur = np.where(present[:, None], pose[rows], np.nan)
+        moved = ~(cur == self._opose).all(axis=1)  # nan (absent) counts as moved
+        spinning = present & (vel[rows] != 0.0).any(axis=1)
+        update = moved | spinning | self._recent
+        self._recent = moved
+        self._opose = cur
+        if update.any():
+            for j in np.flatnonzero(update).tolist():
+                self._update_owner(int(self._oids[j]))
+
+    def _scan(self) -> None:
+        """Index the shapes added since the last scan (see the class docstring)."""
+        shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
+        n = len(shapes)
+        if n == self._count and (n == 0 or next(reversed(shapes))._hashid == self._newest):
+            return
+        added = 0
+        newest = self._newest
+        for shape in reversed(shapes):
+            h = shape._hashid
+            if h <= self._newest:
+                break
+            added += 1
+            newest = max(newest, h)
+            body = shape.body
+            if shape in self.row_of or (body is not None and body.body_type != _DYNAMIC):
+                self._classify(shape)
+        self._newest = newest
+        self._removed += max(0, self._count + added - n)
+        self._count = n
+        if self._removed > max(32, self.live):
+            self._removed = 0
+            for shape in [s for s in self.shapes if s is not None]:
+                if shape.space is not self.space:
+                    self._drop(shape)
+
+    def reclassify(self, body: pymunk.Body) -> None:
+        """Re-read ``body``'s shapes after its type (or shape set) may have changed."""
+        if body.body_type == _DYNAMIC and body.id not in self._owner_rows:
+            return  # the common case (a dynamic body tracked): nothing of it is indexed
+        own = set(body.shapes)
+        for shape in own:
+            self._classify(shape)
+        for row in list(self._owner_rows.get(body.id, ())):
+            gone = self.shapes[row]
+            if gone is not None and gone not in own:
+                self._classify(gone)
+
+    def _classify(self, shape: pymunk.Shape) -> None:
+        body = shape.body
+        if body is None or shape.space is not self.space or body.body_type == _DYNAMIC:
+            self._drop(shape)
+            return
+        row = self.row_of.get(shape)
+        if row is None:
+            row = self._free_row()
+            self.row_of[shape] = row
+            self.shapes[row] = shape
+            self.owner_of[row] = body.id
+            self.live += 1
+            rows = self._owner_rows.setdefault(body.id, [])
+            if not rows:
+                self._owners[body.id] = body
+                self._owners_dirty = True
+            rows.append(row)
+        bb = shape.bb
+        self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
+        self.kinematic[row] = body.body_type == _KINEMATIC
+
+    def _free_row(self) -> int:
+        if self._free:
+            return self._free.pop()
+        if len(self.shapes) == len(self.box):
+            grow = len(self.box)
+            self.box = np.concatenate([self.box, np.full((grow, 4), np.nan)])
+            self.kinematic = np.concatenate([self.kinematic, np.zeros(grow, dtype=bool)])
+        self.shapes.append(None)
+        self.owner_of.append(0)
+        return len(self.shapes) - 1
+
+    def _drop(self, shape: pymunk.Shape) -> None:
+        row = self.row_of.pop(shape, None)
+        if row is None:
+            return
+        self.shapes[row] = None
+        self.box[row] = np.nan
+        self._free.append(row)
+        self.live -= 1
+        key = self.owner_of[row]
+        rows = self._owner_rows.get(key)
+        if rows is not None and row in rows:
+            rows.remove(row)
+            if not rows:
+                del self._owner_rows[key]
+                self._owners.pop(key, None)
+                self._owners_dirty = True
+        if self.live == 0:  # compact: nothing left to keep
+            self.shapes.clear()
+            self.owner_of.clear()
+            self._free.clear()
+            self.box[:] = np.nan
+            self._owner_rows.clear()
+            self._owners.clear()
+            self._owners_dirty = True
+
+    def _update_owner(self, body_id: int) -> None:
+        for row in list(self._owner_rows.get(body_id, ())):
+            shape = self.shapes[row]
+            if shape is not None:
+                self._classify(shape)
+
+    def body(self, body_id: int) -> pymunk.Body | None:
+        """A static or kinematic body that owns indexed shapes, by id."""
+        return self._owners.get(body_id)
+
+    # ----------------------------------------------------------------- queries
+
+    def near_any(self, x: np.ndarray, y: np.ndarray, r: np.ndarray) -> np.ndarray:
+        """For each square ``(x, y) ± r``: does it overlap any row's box?"""
+        out = np.zeros(len(x), dtype=bool)
+        m = len(self.shapes)
+        if self.live == 0 or m == 0:
+            return out
+        left, bottom, right, top = (self.box[:m, i] for i in range(4))
+        step = max(1, _CHUNK // m)
+        for i in range(0, len(x), step):
+            xs, ys, rs = x[i : i + step, None], y[i : i + step, None], r[i : i + step, None]
+            hit = (left <= xs + rs) & (right >= xs - rs) & (bottom <= ys + rs) & (top >= ys - rs)
+            out[i : i + step] = hit.any(axis=1)
+        return out
+
+    def candidates(self, box: pymunk.BB, still: float, moving: float) -> list[pymunk.Shape]:
+        """Shapes whose cached box overlaps ``box`` grown by ``still`` (static) or ``moving``."""
+        m = len(self.shapes)
+        if self.live == 0 or m == 0:
+            return []
+        g = np.where(self.kinematic[:m], moving, still)
+        b = self.box[:m]
+        hit = (
+            (b[:, 0] <= box.right + g)
+            & (b[:, 2] >= box.left - g)
+            & (b[:, 1] <= box.top + g)
+            & (b[:, 3] >= box.bottom - g)
+        )
+        out = []
+        for row in np.flatnonzero(hit).tolist():
+            shape = self.shapes[row]
+            if shape is None:
+                continue
+            if shape.space is not self.space:
+                self._drop(shape)
+                continue
+            out.append(shape)
+        return out
