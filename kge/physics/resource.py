@@ -55,11 +55,6 @@ class Physics:
         return self._world.resource(PhysicsSettings)
 
     @property
-    def space(self) -> pymunk.Space:
-        """The pymunk Space (read-only use: queries, debug drawing, benchmarks)."""
-        return self._sim.space
-
-    @property
     def step_count(self) -> int:
         return self._sim.steps
 
@@ -105,10 +100,6 @@ class Physics:
                 f"physics.{op}(): entity {entity} has no body (add a RigidBody or a Collider)"
             )
         return rec
-
-    def body(self, entity: int) -> pymunk.Body:
-        """The pymunk Body behind ``entity`` (for advanced read-only use)."""
-        return self._record(entity, "body").body
 
     # -- forces --------------------------------------------------------------------------------
     def _force_target(self, entity: int, op: str, wake: bool) -> BodyRecord | None:
