@@ -91,7 +91,9 @@ def test_source_edits_reach_the_player(store: Assets):
     src = AudioSource("beep.wav", play_on_start=True, loop=True)
     e = app.world.spawn(src)
     app.step(1)
-    player = audio_of(app).source_handle(e).player
+    handle = audio_of(app).source_handle(e)
+    assert handle is not None
+    player = handle.player
     src.volume = 0.3
     src.pitch = 2.0
     src.loop = False
@@ -145,7 +147,8 @@ def test_reloading_a_scene_keeps_one_music_player(store: Assets, monkeypatch: py
     assert music.finished
     assert [h.name for h in mixer.handles if h.bus == "music"] == ["other.wav"]
     audio_of(app).music_volume = 0.5
-    assert audio_of(app).music.player.volume == pytest.approx(0.5)
+    current = audio_of(app).music
+    assert current is not None and current.player.volume == pytest.approx(0.5)
     audio_of(app).stop_music()
     assert audio_of(app).music is None
 
@@ -176,6 +179,7 @@ def _pan_of(store: Assets, x: float, listener: tuple[float, float] | None = None
     app = make_app(with_store(store, setup))
     app.step(1)
     handle = audio_of(app).source_handle(ids["e"])
+    assert handle is not None
     return handle.pan, handle.gain, handle.player.position, app, ids["e"]
 
 
@@ -199,6 +203,7 @@ def test_positional_source_is_repanned_and_attenuated_as_it_moves(store: Assets)
     t.x = 12.0
     app.step(1)
     handle = audio_of(app).source_handle(e)
+    assert handle is not None
     assert handle.pan == 1.0  # beyond the pan width: fully right
     assert handle.gain < gain_near
     assert handle.player.volume == pytest.approx(handle.gain)
@@ -221,6 +226,7 @@ def test_camera_is_the_default_listener(store: Assets):
     app = make_app(with_store(store, setup), size=(960, 540))
     app.step(1)
     handle = audio_of(app).source_handle(ids["e"])
+    assert handle is not None
     # half the view is 960 / 2 / 64 = 7.5 m: 3 m left of the camera centre pans -0.4
     assert handle.pan == pytest.approx(-3.0 / 7.5)
 

@@ -14,9 +14,10 @@ from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle
 from kge.physics.joint_bridge import JointBridge
 from kge.physics.resource import Physics
+from kge.world import World
 
 
-def _chain(world) -> None:  # type: ignore[no-untyped-def]
+def _chain(world: World) -> None:
     prev = None
     for i in range(6):
         # off-centre discs: the centre of gravity is not the origin
@@ -34,14 +35,19 @@ def _run(batch: bool, steps: int = 90) -> tuple[list[tuple[float, ...]], list[tu
     try:
         app = App(_chain, headless=True)
         app.step(steps)
-        poses = [(t.x, t.y, t.angle) for _, (t,) in sorted(app.world.query(Transform))]
-        joints = [(j.angle, j.speed, *j.reaction_force)
-                  for _, (j,) in sorted(app.world.query(RevoluteJoint))]
+        poses: list[tuple[float, ...]] = [
+            (t.x, t.y, t.angle) for _, (t,) in sorted(app.world.query(Transform))
+        ]
+        joints: list[tuple[float, ...]] = [
+            (j.angle, j.speed, *j.reaction_force)
+            for _, (j,) in sorted(app.world.query(RevoluteJoint))
+        ]
         gaps = []
         physics = app.world.resource(Physics)
         for _, (j,) in app.world.query(RevoluteJoint):
             pa = j.local_anchor_a if j.body_a is None else physics.world_point(
                 j.body_a, j.local_anchor_a)
+            assert j.body_b is not None  # every joint of the chain hangs a body
             pb = physics.world_point(j.body_b, j.local_anchor_b)
             gaps.append(math.dist(pa, pb))
         assert max(gaps) < 0.05  # the testbed chains' band
@@ -71,7 +77,7 @@ def test_bulk_path_matches_the_per_joint_path() -> None:
 def test_one_joint_is_the_per_joint_path_to_rounding() -> None:
     """With one joint per body pair there is no order to differ: same numbers."""
 
-    def pendulum(world) -> None:  # type: ignore[no-untyped-def]
+    def pendulum(world: World) -> None:
         bob = world.spawn(Transform(2.0, 8.0, 0.3), RigidBody(),
                           Collider(Circle(0.3, (0.4, 0.1)), density=10.0))
         world.spawn(RevoluteJoint(None, bob, anchor=(1.6, 8.0)))
@@ -98,6 +104,7 @@ def test_bulk_read_back_agrees_with_the_poses() -> None:
     app.step(30)
     for _, (j,) in app.world.query(RevoluteJoint):
         ta = 0.0 if j.body_a is None else app.world.get(j.body_a, Transform).angle
+        assert j.body_b is not None and j.reference_angle is not None  # resolved when built
         tb = app.world.get(j.body_b, Transform).angle
         assert j.angle == pytest.approx(tb - ta - j.reference_angle, abs=1e-9)
         assert j.motor_torque == 0.0 and j.reaction_torque == 0.0

@@ -12,7 +12,7 @@ import math
 import pytest
 
 from kge import App, Box, Collider, PrismaticJoint, RevoluteJoint, RigidBody, Transform, World
-from kge.components.joints import WeldJoint
+from kge.components.joints import Joint, WeldJoint
 
 
 def _finite(t: Transform) -> bool:
@@ -30,6 +30,7 @@ def test_joint_to_the_ground_of_a_body_that_cannot_rotate(make_body: str, joint:
         density = 0.0 if make_body == "massless" else 1.0
         body = world.spawn(Transform(0, 2), rb, Collider(Box(0.5, 0.5), density=density))
         ids["body"] = body
+        j: Joint
         if joint == "prismatic":
             j = PrismaticJoint(body, None, anchor=(0, 2), local_axis_a=(1, 0),
                                enable_limit=True, lower_translation=-1, upper_translation=1)

@@ -27,7 +27,8 @@ class Sim:
         self.world = World()
         if settings is not None:
             self.world.insert_resource(settings)
-        self.system = self.world.add_system(PhysicsSystem())
+        self.system = PhysicsSystem()
+        self.world.add_system(self.system)
         self.physics = self.world.resource(Physics)
         self.events = self.world.resource(PhysicsEvents)
         self.steps = 0

@@ -580,10 +580,12 @@ def test_fast_bodies_far_from_static_geometry_cost_no_shape_walks(
     # bulk, never by testing the dynamic shapes around each of them.
     from kge.physics.ccd import sweep as ccd_module
 
-    tested = []
+    tested: list[pymunk.Shape] = []
     original = ccd_module.Tracked._is_obstacle
 
-    def counting(self, shape, joint_free):  # type: ignore[no-untyped-def]
+    def counting(
+        self: ccd_module.Tracked, shape: pymunk.Shape, joint_free: set[pymunk.Body]
+    ) -> bool:
         tested.append(shape)
         return original(self, shape, joint_free)
 

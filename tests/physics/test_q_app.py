@@ -85,7 +85,12 @@ def test_aabb_point_and_shape_queries_through_the_resource(app: kge.App) -> None
         sensor,
     ]
     calls: list[QueryHit] = []
-    physics.query_aabb((-10, -10), (20, 20), lambda h: calls.append(h) or False)
+
+    def stop(hit: QueryHit) -> bool:
+        calls.append(hit)
+        return False
+
+    physics.query_aabb((-10, -10), (20, 20), stop)
     assert len(calls) == 1
     assert [h.collider for h in physics.query_point((0.5, 0.0))] == [box0]
     assert physics.query_point((0.505, 0.0)) == []

@@ -133,11 +133,21 @@ def test_callback_protocol_clip_continue_stop_ignore(
     assert calls[-1].fraction == pytest.approx(0.10714, abs=1e-4)
 
     seen: list[int] = []
-    raycast(sc.space, (-2, 0), (12, 0), lambda h: seen.append(h.collider) or 1.0)
+
+    def continue_(hit: RayHit) -> float:
+        seen.append(hit.collider)
+        return 1.0
+
+    raycast(sc.space, (-2, 0), (12, 0), continue_)
     assert sorted(seen) == sorted([ids["box0"], ids["box3"], ids["box6"], ids["circle"]])
 
     stopped: list[int] = []
-    raycast(sc.space, (-2, 0), (12, 0), lambda h: stopped.append(h.collider) or 0.0)
+
+    def stop(hit: RayHit) -> float:
+        stopped.append(hit.collider)
+        return 0.0
+
+    raycast(sc.space, (-2, 0), (12, 0), stop)
     assert len(stopped) == 1
 
     closest: list[RayHit] = []
@@ -209,7 +219,12 @@ def test_sensors_reported_unless_filtered(reference_scene: tuple[Scene, dict[str
 def test_miss_makes_no_callback(reference_scene: tuple[Scene, dict[str, int]]) -> None:
     sc, _ = reference_scene
     calls: list[RayHit] = []
-    raycast(sc.space, (-2, -3), (12, -3), lambda h: calls.append(h) or 1.0)
+
+    def record(hit: RayHit) -> float:
+        calls.append(hit)
+        return 1.0
+
+    raycast(sc.space, (-2, -3), (12, -3), record)
     assert calls == []
 
 
@@ -337,7 +352,12 @@ def test_query_aabb_callback_stops_on_false(
 ) -> None:
     sc, _ = reference_scene
     calls: list[QueryHit] = []
-    out = query_aabb(sc.space, (-10, -10), (20, 20), lambda h: calls.append(h) or False)
+
+    def stop(hit: QueryHit) -> bool:
+        calls.append(hit)
+        return False
+
+    out = query_aabb(sc.space, (-10, -10), (20, 20), stop)
     assert len(calls) == 1 and out == calls
     calls.clear()
     query_aabb(sc.space, (-10, -10), (20, 20), lambda h: calls.append(h))  # None continues
@@ -433,10 +453,10 @@ def test_query_shape_accepts_duck_typed_shapes(
         (lambda s: raycast(s, (math.nan, 0), (1, 1)), ValidationError, "p1"),
         (lambda s: raycast(s, (0, 0), (1, math.inf)), ValidationError, "p2"),
         (lambda s: raycast(s, (0, 0), "ab"), ComponentTypeError, "p2"),
-        (lambda s: raycast(s, (0, 0), (1, 0), mode="nearest"), ValidationError, "mode"),
-        (lambda s: raycast(s, (0, 0), (1, 0), callback=3), ComponentTypeError, "callback"),
-        (lambda s: raycast(s, (0, 0), (1, 0), filter=0x2), ComponentTypeError, "filter"),
-        (lambda s: raycast(object(), (0, 0), (1, 0)), ComponentTypeError, "pymunk.Space"),
+        (lambda s: raycast(s, (0, 0), (1, 0), mode="nearest"), ValidationError, "mode"),  # type: ignore[arg-type]
+        (lambda s: raycast(s, (0, 0), (1, 0), callback=3), ComponentTypeError, "callback"),  # type: ignore[arg-type]
+        (lambda s: raycast(s, (0, 0), (1, 0), filter=0x2), ComponentTypeError, "filter"),  # type: ignore[arg-type]
+        (lambda s: raycast(object(), (0, 0), (1, 0)), ComponentTypeError, "pymunk.Space"),  # type: ignore[arg-type]
         (lambda s: query_aabb(s, (1, 0), (0, 1)), ValidationError, "lower"),
         (lambda s: query_aabb(s, (0, 0), (1, math.nan)), ValidationError, "upper"),
         (lambda s: query_point(s, (None, 0)), ComponentTypeError, "p"),

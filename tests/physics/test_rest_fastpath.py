@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle
+from kge.physics.simulation import Simulation
 
 from .conftest import Sim
 
@@ -16,7 +17,7 @@ def _resting_row(sim: Sim, n: int = 5) -> list[int]:
     return boxes
 
 
-def _sim(sim: Sim):  # type: ignore[no-untyped-def]
+def _sim(sim: Sim) -> Simulation:
     return sim.physics._sim
 
 

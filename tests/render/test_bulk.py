@@ -52,18 +52,24 @@ def _poses(n: int) -> np.ndarray:
     return np.column_stack([rng.uniform(-5, 5, n), rng.uniform(-5, 5, n), rng.uniform(-3, 3, n)])
 
 
-def _check(domain: _Domain, lists: list[_VertexList], rows: list[int], poses: np.ndarray, scales):
+def _check(
+    domain: _Domain,
+    lists: list[_VertexList],
+    rows: list[int],
+    poses: np.ndarray,
+    scales: list[tuple[float, float]],
+) -> None:
     bufs = domain.attrib_name_buffers
     for vl, row, scale in zip(lists, rows, scales, strict=True):
         span = slice(vl.start, vl.start + vl.count)
         x, y, angle = poses[row]
         np.testing.assert_array_equal(
-            bufs["translate"].rows()[span], np.float32([[x, y, Z]] * vl.count)
+            bufs["translate"].rows()[span], np.array([[x, y, Z]] * vl.count, dtype=np.float32)
         )
         np.testing.assert_array_equal(
-            bufs["rotation"].rows()[span, 0], np.float32([-math.degrees(angle)] * vl.count)
+            bufs["rotation"].rows()[span, 0], np.array([-math.degrees(angle)] * vl.count, dtype=np.float32)
         )
-        np.testing.assert_array_equal(bufs["scale"].rows()[span], np.float32([scale] * vl.count))
+        np.testing.assert_array_equal(bufs["scale"].rows()[span], np.array([scale] * vl.count, dtype=np.float32))
 
 
 @pytest.mark.parametrize("rows", [[0, 1, 2, 3], [3, 0, 2, 1]], ids=["slice", "gather"])

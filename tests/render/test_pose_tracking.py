@@ -64,7 +64,7 @@ def test_a_transform_bound_by_two_systems_marks_both_in_either_order():
         t.x = 1.0
         assert sets == [{5}, {5}]
         bind(t, 5, sets[0])  # binding the same set again adds nothing
-        assert len(t._binding.sets) == 2
+        assert t._binding is not None and len(t._binding.sets) == 2
         unbind(t, sets[1])
         for s in sets:
             s.clear()
@@ -78,7 +78,8 @@ def test_a_transform_bound_by_two_systems_marks_both_in_either_order():
 
 def test_binding_a_component_to_another_entity_replaces_the_old_binding():
     t = Transform()
-    old, new = set(), set()
+    old: set[int] = set()
+    new: set[int] = set()
     bind(t, 1, old)
     bind(t, 2, new)
     t.x = 1.0

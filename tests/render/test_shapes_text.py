@@ -9,6 +9,7 @@ import pytest
 
 from kge import Transform
 from kge.components.camera import Camera
+from kge.components.color import RGB, RGBA
 from kge.components.drawables import Circle, Line, Polygon, Rect, Triangle
 from kge.components.text import Text
 from kge.errors import ValidationError
@@ -25,15 +26,20 @@ RED, GREEN, BLUE, YELLOW, WHITE = (
 )
 
 
+def opaque(rgb: RGB) -> RGBA:
+    """``rgb`` as the drawables' RGBA (an RGB colour means alpha 255)."""
+    return (*rgb, 255)
+
+
 def test_filled_shapes_in_world_units(make_app):
     def scene(world):
         world.insert_resource(Camera(pixels_per_meter=20))
-        world.spawn(Transform(-2.5, 1.5), Rect(2.0, 1.0, color=RED))
-        world.spawn(Transform(2.5, 1.5), Circle(1.0, color=GREEN))
-        world.spawn(Transform(-2.5, -2.0), Triangle((-1, -1), (1, -1), (0, 1), color=BLUE))
+        world.spawn(Transform(-2.5, 1.5), Rect(2.0, 1.0, color=opaque(RED)))
+        world.spawn(Transform(2.5, 1.5), Circle(1.0, color=opaque(GREEN)))
+        world.spawn(Transform(-2.5, -2.0), Triangle((-1, -1), (1, -1), (0, 1), color=opaque(BLUE)))
         world.spawn(
             Transform(2.5, -2.0),
-            Polygon(((0, 0), (2, 0), (2, 2), (1, 1), (0, 2)), color=YELLOW, offset=(-1, -1)),
+            Polygon(((0, 0), (2, 0), (2, 2), (1, 1), (0, 2)), color=opaque(YELLOW), offset=(-1, -1)),
         )
 
     px = pixels(make_app(scene))
@@ -53,8 +59,8 @@ def test_filled_shapes_in_world_units(make_app):
 def test_outline_leaves_the_inside_empty_and_line_has_thickness(make_app):
     def scene(world):
         world.insert_resource(Camera(pixels_per_meter=20))
-        world.spawn(Transform(-2, 0), Rect(3.0, 3.0, color=RED, filled=False, thickness=0.2))
-        world.spawn(Transform(2, 0, math.pi / 2), Line((-1, 0), (1, 0), color=GREEN, thickness=0.5))
+        world.spawn(Transform(-2, 0), Rect(3.0, 3.0, color=opaque(RED), filled=False, thickness=0.2))
+        world.spawn(Transform(2, 0, math.pi / 2), Line((-1, 0), (1, 0), color=opaque(GREEN), thickness=0.5))
 
     px = pixels(make_app(scene))
     cx, cy = SIZE[0] // 2, SIZE[1] // 2
@@ -66,7 +72,7 @@ def test_outline_leaves_the_inside_empty_and_line_has_thickness(make_app):
 
 def test_shape_changes_apply_and_hidden_shapes_vanish(make_app):
     def scene(world):
-        world.spawn(Transform(), Rect(1.0, 1.0, color=RED))
+        world.spawn(Transform(), Rect(1.0, 1.0, color=opaque(RED)))
 
     app = make_app(scene)
     ((_, (rect,)),) = app.world.query(Rect)
@@ -80,7 +86,7 @@ def test_shape_changes_apply_and_hidden_shapes_vanish(make_app):
 def test_world_text_renders_inside_its_box(make_app):
     def scene(world):
         world.insert_resource(Camera(pixels_per_meter=20))
-        world.spawn(Transform(0.0, 1.0), Text("KGE", size=24, color=WHITE))
+        world.spawn(Transform(0.0, 1.0), Text("KGE", size=24, color=opaque(WHITE)))
 
     px = pixels(make_app(scene))
     lit = ~mask(px, BG, tol=30)
@@ -123,7 +129,7 @@ def test_drawables_refuse_bad_values():
     with pytest.raises(ValidationError, match="no area"):
         Polygon(((0, 0), (1, 1), (2, 2)))
     with pytest.raises(ValidationError, match="Rect.color"):
-        Rect(1, 1, color=(0, 0, 256))
+        Rect(1, 1, color=(0, 0, 256, 255))
     r = Rect(1, 1)
     with pytest.raises(ValidationError, match="Rect.width"):
         r.width = np.nan
