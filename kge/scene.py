@@ -40,7 +40,12 @@ class Scene:
 
     name: str = ""
 
-    def setup(self, world: World, **kwargs: Any) -> None:  # pragma: no cover - abstract
+    def setup(self, world: World, *args: Any, **kwargs: Any) -> None:  # pragma: no cover
+        """Build the scene into ``world``; ``kwargs`` come from ``App(scene, **kwargs)``.
+
+        Declared with ``*args, **kwargs`` so that an override naming its own
+        parameters (``def setup(self, world, level: int = 1)``) type-checks.
+        """
         raise NotImplementedError(f"{type(self).__name__}.setup(world) is not implemented")
 
     def on_pause(self, world: World) -> None:

@@ -22,12 +22,15 @@ each system, so every system sees the changes of the ones before it.
 from __future__ import annotations
 
 from enum import IntEnum
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, ClassVar, TypeVar
 
 import esper
 
 if TYPE_CHECKING:
     from kge.world import World
+
+#: a System subclass: ``add`` and ``get`` give back the type they were given
+S = TypeVar("S", bound="System")
 
 
 class Stage(IntEnum):
@@ -64,7 +67,7 @@ class Schedule:
         self._systems: list[System] = []
         self._by_stage: dict[Stage, list[System]] = {s: [] for s in Stage}
 
-    def add(self, system: System) -> System:
+    def add(self, system: S) -> S:
         if not isinstance(system, System):
             raise TypeError(f"expected a kge.System instance, got {type(system).__name__}")
         self._systems.append(system)
@@ -79,7 +82,7 @@ class Schedule:
             raise
         return system
 
-    def get(self, system_type: type[System]) -> System | None:
+    def get(self, system_type: type[S]) -> S | None:
         for s in self._systems:
             if isinstance(s, system_type):
                 return s

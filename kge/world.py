@@ -468,13 +468,13 @@ class World:
         return restore(data)
 
     # -- systems -----------------------------------------------------------------------
-    def add_system(self, system: System) -> System:
-        """Add ``system`` to this world's schedule (see :mod:`kge.schedule`)."""
+    def add_system(self, system: S) -> S:
+        """Add ``system`` to this world's schedule (see :mod:`kge.schedule`); returns it."""
         self._use()
         return self.schedule.add(system)
 
     def get_system(self, system_type: type[S]) -> S | None:
-        return self.schedule.get(system_type)  # type: ignore[return-value]
+        return self.schedule.get(system_type)
 
     @property
     def closed(self) -> bool:

@@ -20,6 +20,8 @@ from kge.errors import ComponentTypeError, ValidationError
 
 RGB = tuple[int, int, int]
 RGBA = tuple[int, int, int, int]
+#: what a ``color`` field accepts; it always holds the RGBA form (alpha 255 added)
+Color = RGB | RGBA
 
 
 def _channel(value: Any, owner: str, field: str) -> int:

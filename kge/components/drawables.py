@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from dataclasses import KW_ONLY, dataclass
 from typing import Any, ClassVar
 
-from kge.components.color import RGBA, rgba
+from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import Vec2, boolean, integer, positive, vec2
@@ -73,7 +73,7 @@ class _Drawn(Tracked):
     """Style every drawable shares; keyword-only, after each shape's own geometry."""
 
     _: KW_ONLY
-    color: RGBA = _WHITE
+    color: Color = _WHITE
     thickness: float = 0.05
     offset: Vec2 = (0.0, 0.0)
     layer: int = 0

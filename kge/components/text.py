@@ -22,7 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.components.color import RGBA, rgba
+from kge.components.color import Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError
 from kge.validate import Vec2, boolean, integer, positive, vec2
@@ -64,7 +64,7 @@ class Text(Tracked):
 
     value: str
     size: float = 16.0
-    color: RGBA = (255, 255, 255, 255)
+    color: Color = (255, 255, 255, 255)
     anchor: Vec2 = (0.5, 0.5)
     screen_space: bool = False
     bold: bool = False

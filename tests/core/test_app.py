@@ -1,7 +1,6 @@
 """App: scenes (setup functions and classes), the stack, kwargs, frame order."""
 
 from dataclasses import dataclass
-from typing import Any
 
 import pytest
 
@@ -42,8 +41,7 @@ class Menu(Scene):
     def __init__(self) -> None:
         self.log: list[str] = []
 
-    # **kwargs: Scene.setup takes any keyword, so an override must too (for mypy)
-    def setup(self, world: World, heading: str = "menu", **kwargs: Any) -> None:
+    def setup(self, world: World, heading: str = "menu") -> None:
         world.spawn(Level(0))
         self.log.append(f"setup {heading}")
 
@@ -75,7 +73,7 @@ def test_scene_stack_push_pop_with_hooks() -> None:
 
 def test_scene_class_is_instantiated() -> None:
     class Lvl(Scene):
-        def setup(self, world: World, number: int = 2, **kwargs: Any) -> None:
+        def setup(self, world: World, number: int = 2) -> None:
             world.spawn(Level(number))
 
     app = App(Lvl, headless=True, number=5)
