@@ -120,11 +120,11 @@ class SpeedCap:
     ) -> int:
         """Clamp every body of ``space``; returns how many were over the limit.
 
-        ``known`` is (sorted pymunk ids, their bodies): the pose table's. Only the
-        bodies over the limit are written, through Chipmunk's setters: a bulk
-        write would touch every body and reset each one's time towards sleep. A
-        body not in ``known`` (one added by this step's sync-in, before the
-        table's rebuild) is left to sync-out's limit.
+        ``known`` is (sorted pymunk ids, their bodies): the pose table's, which
+        sync-in has brought up to date before the substeps. Only the bodies over
+        the limit are written, through Chipmunk's setters: a bulk write would
+        touch every body and reset each one's time towards sleep. A body missing
+        from ``known`` (none in practice) would be left to sync-out's limit.
 
         Runs every substep, so the common case is kept to a bulk read of the
         velocities alone (ids are read only when a body is over) and one
