@@ -47,6 +47,7 @@ from pymunk._chipmunk import lib as _lib
 
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.physics.mass import ZERO, MassData
+from kge.physics.tiny import flush
 
 DYNAMIC = pymunk.Body.DYNAMIC
 KINEMATIC = pymunk.Body.KINEMATIC
@@ -106,8 +107,8 @@ def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
     else:
         body = pymunk.Body(body_type=PYMUNK_TYPE[kind])
     cp = body._body
-    _lib.cpBodySetPosition(cp, (x, y))
-    _lib.cpBodySetAngle(cp, angle)
+    _lib.cpBodySetPosition(cp, (flush(x), flush(y)))
+    _lib.cpBodySetAngle(cp, flush(angle))
     vars(body).update(
         kge_bullet=False,
         # what kge last saw; a different RigidBody.awake is a user request

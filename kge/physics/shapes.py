@@ -27,6 +27,7 @@ import pymunk
 from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
+from kge.physics.tiny import flush_point, flush_points
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
 RANK_EDGE, RANK_POLYGON, RANK_CIRCLE = 0, 1, 2
@@ -43,20 +44,21 @@ def build_shapes(
     geom = collider.shape
     shapes: list[pymunk.Shape] = []
     rank = RANK_POLYGON
+    # coordinates below 1e-100 m are zero to Chipmunk (see kge.physics.tiny)
     if isinstance(geom, Circle):
-        shapes.append(pymunk.Circle(body, geom.radius, geom.center))
+        shapes.append(pymunk.Circle(body, geom.radius, flush_point(geom.center)))
         rank = RANK_CIRCLE
     elif isinstance(geom, Box):
-        shapes.append(pymunk.Poly(body, geom.vertices(), radius=skin))
+        shapes.append(pymunk.Poly(body, flush_points(geom.vertices()), radius=skin))
     elif isinstance(geom, Polygon):
-        shapes.append(pymunk.Poly(body, geom.vertices, radius=skin))
+        shapes.append(pymunk.Poly(body, flush_points(geom.vertices), radius=skin))
     elif isinstance(geom, Edge):
-        shapes.append(pymunk.Segment(body, geom.v1, geom.v2, skin))
+        shapes.append(pymunk.Segment(body, flush_point(geom.v1), flush_point(geom.v2), skin))
         rank = RANK_EDGE
     elif isinstance(geom, Chain):
         rank = RANK_EDGE
-        pts = geom.vertices
-        segs = geom.segments()
+        pts = flush_points(geom.vertices)
+        segs = [(flush_point(a), flush_point(b)) for a, b in geom.segments()]
         n = len(pts)
         for i, (a, b) in enumerate(segs):
             seg = pymunk.Segment(body, a, b, skin)

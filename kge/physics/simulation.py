@@ -52,6 +52,7 @@ from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one
 from kge.physics.sync import PoseTable, rows_differ
+from kge.physics.tiny import flush
 from kge.physics.writeback import component_array, write_rows
 from kge.world import World
 
@@ -425,6 +426,7 @@ class Simulation:
             if ptype == DYNAMIC and rb.fixed_rotation:
                 w = 0.0
                 raw_set(rb, "angular_velocity", 0.0)
+            vx, vy, w = flush(vx), flush(vy), flush(w)
             v = body.velocity
             if (v.x, v.y) != (vx, vy):
                 body.velocity = (vx, vy)
@@ -538,10 +540,11 @@ class Simulation:
             return
         body = rec.body
         p = body.position
-        if (p.x, p.y, body.angle) == (t.x, t.y, t.angle):
+        x, y, angle = flush(t.x), flush(t.y), flush(t.angle)
+        if (p.x, p.y, body.angle) == (x, y, angle):
             return
-        body.position = (t.x, t.y)
-        body.angle = t.angle
+        body.position = (x, y)
+        body.angle = angle
         if body.body_type == STATIC and rec.in_space:
             self.space.reindex_shapes_for_body(body)
         self.poses.teleported(e, t.x, t.y, t.angle)
