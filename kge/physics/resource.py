@@ -31,6 +31,7 @@ from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
 from kge.physics.settings import PhysicsSettings
+from kge.physics.tiny import flush
 from kge.validate import finite, vec2
 
 if TYPE_CHECKING:
@@ -169,8 +170,8 @@ class Physics:
         _finite_result(owner, "the resulting velocity", (*new_v, w))
         if self._force_target(entity, "apply_linear_impulse", wake) is None:
             return
-        body.velocity = new_v
-        body.angular_velocity = w
+        body.velocity = (flush(new_v[0]), flush(new_v[1]))  # see kge.physics.tiny
+        body.angular_velocity = flush(w)
         self._velocity_changed(entity, body)
 
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
@@ -184,7 +185,7 @@ class Physics:
         _finite_result(owner, "the resulting angular velocity", (w,))
         if self._force_target(entity, "apply_angular_impulse", wake) is None:
             return
-        body.angular_velocity = w
+        body.angular_velocity = flush(w)
         self._velocity_changed(entity, body)
 
     def _velocity_changed(self, entity: int, body: pymunk.Body) -> None:

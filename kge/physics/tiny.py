@@ -10,7 +10,8 @@ zero vector below ``b2_epsilon`` instead; pymunk gives no such hook.
 
 Two features can only be that close if their coordinates are themselves
 below about 1e-138 m (a float's spacing is 2.2e-16 of its size), so kge
-flushes every coordinate, angle and velocity it hands to Chipmunk below
+flushes every coordinate, angle and velocity it hands to Chipmunk (poses,
+shapes, velocities written to components or made by impulses) below
 :data:`TINY` (1e-100, some 65 orders of magnitude below the Planck length) to
 exactly zero. Components keep the values the user wrote; only the pymunk side
 sees the zero.

@@ -16,6 +16,7 @@ from kge.components.collider import Collider
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle, Polygon, Shape
 from kge.components.transform import Transform
+from kge.physics.resource import Physics
 from kge.world import World
 from tests.reliability.harness import PhysicsWorld, check_invariants
 
@@ -65,3 +66,13 @@ def test_a_feature_a_hair_from_another_never_makes_nan(pw: PhysicsWorld, case: s
     for _ in range(30):
         pw.step()
         check_invariants(pw)  # no NaN anywhere, pymunk and the ECS agree
+
+
+def test_a_tiny_impulse_never_makes_nan(pw: PhysicsWorld) -> None:
+    """A body exactly at a static circle's centre, nudged by 1e-200 N s: zero to Chipmunk."""
+    pw.world.spawn(Transform(0.0, 0.0), Collider(Circle(1.0)))
+    tri = _dynamic(pw.world, 0.0, Polygon(TRIANGLE))
+    pw.world.resource(Physics).apply_linear_impulse(tri, (1e-200, 0.0))
+    for _ in range(10):
+        pw.step()
+        check_invariants(pw)
