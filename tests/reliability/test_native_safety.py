@@ -27,6 +27,8 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
+import pytest
+
 from kge.components.collider import Collider
 from kge.components.joints import RevoluteJoint
 from kge.components.rigidbody import BodyType, RigidBody
@@ -290,29 +292,6 @@ def _in_child(name: str) -> None:
     )
 
 
-def test_type_change_under_a_sleeping_stack() -> None:
-    _in_child("type_change_under_a_sleeping_stack")
-
-
-def test_type_change_of_a_sleeping_body() -> None:
-    _in_child("type_change_of_a_sleeping_body")
-
-
-def test_manual_sleep_next_to_an_awake_body() -> None:
-    _in_child("manual_sleep_next_to_an_awake_body")
-
-
-def test_manual_sleep_of_jointed_bodies() -> None:
-    _in_child("manual_sleep_of_jointed_bodies")
-
-
-def test_manual_sleep_next_to_a_kinematic_body() -> None:
-    _in_child("manual_sleep_next_to_a_kinematic_body")
-
-
-def test_enable_detach_and_despawn_around_sleepers() -> None:
-    _in_child("enable_detach_and_despawn_around_sleepers")
-
-
-def test_fixed_crash_sequence() -> None:
-    _in_child("fixed_crash_sequence")
+@pytest.mark.parametrize("scenario", list(SCENARIOS))
+def test_scenario_runs_clean_in_a_child_process(scenario: str) -> None:
+    _in_child(scenario)
