@@ -2,12 +2,15 @@
 semantics, pyglet rendering and audio).
 
 ``import kge`` is headless: it never imports pyglet's window, GL or media
-modules; rendering and audio load them when an App first needs them.
+modules. The names of the audio, asset and image modules are loaded on first use
+(``kge.Audio``, ``kge.Assets``, ``kge.solid``...), so a physics-only App never
+imports them; rendering and audio load pyglet when an App first needs them.
 """
 
-from kge.app import App, has_display, run
-from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets, SoundData
-from kge.audio import Audio, SoundHandle
+from importlib import import_module
+from typing import TYPE_CHECKING, Any
+
+from kge.app import App, run
 from kge.components import (
     Behaviour,
     BodyType,
@@ -70,11 +73,48 @@ from kge.physics.mass import MassData
 from kge.physics.queries import QueryHit, RayHit
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
-from kge.render.images import PixelImage, checker, from_array, solid
+from kge.platform import has_display
+from kge.plugin import FunctionPlugin, Plugin, PluginError
+from kge.plugins import default_plugins
 from kge.scene import Scene, Time
 from kge.schedule import Stage, System
+from kge.sound import SoundData
+from kge.systems.behaviour import BehaviourPlugin
+from kge.systems.physics import PhysicsPlugin
 from kge.timestep import FixedTimestep
 from kge.world import World
+
+if TYPE_CHECKING:
+    from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
+    from kge.audio import Audio, SoundHandle
+    from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.systems.audio import AudioPlugin
+    from kge.systems.render import RenderPlugin
+
+#: names whose modules load pyglet or the asset store: imported on first use
+_LAZY = {
+    "AssetDecodeError": "kge.assets",
+    "AssetError": "kge.assets",
+    "AssetNotFoundError": "kge.assets",
+    "Assets": "kge.assets",
+    "Audio": "kge.audio",
+    "SoundHandle": "kge.audio",
+    "PixelImage": "kge.render.images",
+    "checker": "kge.render.images",
+    "from_array": "kge.render.images",
+    "solid": "kge.render.images",
+    "AudioPlugin": "kge.systems.audio",
+    "RenderPlugin": "kge.systems.render",
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'kge' has no attribute {name!r}")
+    value = getattr(import_module(module), name)
+    globals()[name] = value  # later lookups skip this function
+    return value
 
 __version__ = "0.1.0"
 
@@ -86,8 +126,10 @@ __all__ = [
     "Assets",
     "Audio",
     "AudioListener",
+    "AudioPlugin",
     "AudioSource",
     "Behaviour",
+    "BehaviourPlugin",
     "BodyType",
     "Box",
     "Camera",
@@ -105,6 +147,7 @@ __all__ = [
     "Filter",
     "FixedTimestep",
     "FrictionJoint",
+    "FunctionPlugin",
     "GearJoint",
     "Hit",
     "HookSignatureError",
@@ -128,8 +171,11 @@ __all__ = [
     "OneWayPlatform",
     "Physics",
     "PhysicsEvents",
+    "PhysicsPlugin",
     "PhysicsSettings",
     "PixelImage",
+    "Plugin",
+    "PluginError",
     "Polygon",
     "PostSolve",
     "PreSolve",
@@ -137,6 +183,7 @@ __all__ = [
     "PulleyJoint",
     "QueryHit",
     "RayHit",
+    "RenderPlugin",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
@@ -160,6 +207,7 @@ __all__ = [
     "World",
     "WorldLockedError",
     "checker",
+    "default_plugins",
     "draw",
     "from_array",
     "has_display",

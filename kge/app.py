@@ -26,61 +26,30 @@ from __future__ import annotations
 
 import functools
 import os
-import sys
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Iterable
+from typing import Any
 
+from kge.components.camera import Camera, active_camera
+from kge.host import Frontend, Host
 from kge.input import Input
+from kge.platform import has_display
+from kge.plugin import Plugin, PluginError, PluginLike, resolve
+from kge.plugins import default_plugins
 from kge.scene import Scene, SceneLike, Time, as_scene
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
 from kge.world import World
 
-if TYPE_CHECKING:
-    from kge.components.camera import Camera
-
 SystemFactory = Callable[[], System]
 
 
-def has_display() -> bool:
-    """True when a window can be opened (a desktop, or X11/Wayland on Linux)."""
-    if os.environ.get("PYGLET_HEADLESS") or os.environ.get("KGE_HEADLESS"):
-        return False
-    if sys.platform.startswith("linux") or "bsd" in sys.platform:
-        return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
-    return True
+class App(Host):
+    """Runs scenes. ``App(scene, headless=True)`` needs no window.
 
-
-def default_systems() -> list[SystemFactory]:
-    """The systems every scene world gets, in schedule order."""
-    from kge.systems.behaviour import (
-        FixedBehaviours,
-        InputBehaviours,
-        LateBehaviours,
-        UpdateBehaviours,
-    )
-
-    factories: list[SystemFactory] = [
-        InputBehaviours,
-        FixedBehaviours,
-        UpdateBehaviours,
-        LateBehaviours,
-    ]
-    try:
-        from kge.systems.physics import PhysicsSystem
-    except ImportError:  # physics is optional only while it is being built
-        pass
-    else:
-        factories.append(PhysicsSystem)
-    from kge.systems.audio import AudioSystem  # no pyglet import until the first sound
-    from kge.systems.render import CameraFollow  # camera follow + mouse_world, headless too
-
-    factories += [AudioSystem, CameraFollow]
-    return factories
-
-
-class App:
-    """Runs scenes. ``App(scene, headless=True)`` needs no window."""
+    ``plugins`` chooses the subsystems every scene world gets (default:
+    :func:`kge.default_plugins`, everything); ``App(scene, plugins=[PhysicsPlugin()])``
+    is a physics-only App that never imports rendering or audio.
+    """
 
     def __init__(
         self,
@@ -94,7 +63,7 @@ class App:
         max_frame_dt: float = 0.25,
         time_scale: float = 1.0,
         background: tuple[int, int, int] = (24, 26, 33),
-        systems: list[SystemFactory] | None = None,
+        plugins: Iterable[PluginLike] | None = None,
         **scene_kwargs: Any,
     ) -> None:
         self.headless = (not has_display()) if headless is None else bool(headless)
@@ -109,15 +78,15 @@ class App:
         )
         self.input = Input()
         self.input.screen_to_world = self.screen_to_world
-        self.system_factories: list[SystemFactory] = (
-            default_systems() if systems is None else list(systems)
-        )
+        self.frontend: Frontend | None = None
         self.extra_systems: list[SystemFactory] = []
         self._stack: list[tuple[Scene, World]] = []
+        self._plugins: list[Plugin] = []
         self._scene_ops: list[Callable[[], None]] = []
         self._in_frame = False
         self._running = False
         self.frame_count = 0
+        self.add_plugins(*(default_plugins() if plugins is None else plugins))
         if scene is not None:
             self.push_scene(scene, **scene_kwargs)
 
@@ -166,8 +135,6 @@ class App:
 
     def _camera(self) -> Camera:
         """The active camera of the current scene, or a default one (shared, never written)."""
-        from kge.systems.render import active_camera
-
         cam = active_camera(self.world) if self._stack else None
         return cam if cam is not None else _default_camera()
 
@@ -244,7 +211,9 @@ class App:
         world.insert_resource(self.input)
         world.insert_resource(Time(self.fixed_dt))
         world.insert_resource(self)
-        for factory in self.system_factories + self.extra_systems:
+        world.insert_resource(self, as_type=Host)
+        world.add_plugins(*self._plugins)
+        for factory in self.extra_systems:
             world.add_system(factory())
         return world
 
@@ -264,6 +233,24 @@ class App:
             restore_into(world, data)
 
         self._schedule(op)
+
+    # -- plugins ----------------------------------------------------------------------------
+    def add_plugins(self, *plugins: PluginLike) -> None:
+        """Add plugins to the App: built into every current and future scene world.
+
+        A plugin already present, or one whose requirement is missing, raises
+        :class:`~kge.plugin.PluginError` naming both, and nothing is built.
+        """
+        for plugin in resolve(self._plugins, plugins, "this App"):
+            plugin.build_app(self)
+            self._plugins.append(plugin)
+            for _, world in self._stack:
+                world.add_plugins(plugin)
+
+    @property
+    def plugins(self) -> tuple[Plugin, ...]:
+        """The App's plugins, in build order."""
+        return tuple(self._plugins)
 
     def add_system_to_all(self, factory: SystemFactory) -> None:
         """Add a system to every current and future scene world (render, audio...)."""
@@ -322,19 +309,22 @@ class App:
         for op in ops:
             op()
 
+    def _frontend(self, what: str) -> Frontend:
+        if self.frontend is None:
+            names = ", ".join(p.name for p in self._plugins) or "none"
+            raise PluginError(
+                f"App.{what} needs the RenderPlugin, and this App's plugins are: {names} "
+                "(add kge.RenderPlugin() to plugins=, or leave plugins= out for all of them)"
+            )
+        return self.frontend
+
     def render(self) -> None:
         """Draw one frame of the current scene (offscreen when headless)."""
-        from kge.render.setup import ensure_renderer
-
-        ensure_renderer(self)
-        world = self.world
-        world.schedule.run(Stage.RENDER, self.timestep.alpha)
+        self._frontend("render()").render(self)
 
     def screenshot(self, path: str | os.PathLike[str]) -> None:
         """Render the current frame and save it as a PNG."""
-        from kge.render.setup import screenshot
-
-        screenshot(self, os.fspath(path))
+        self._frontend("screenshot()").screenshot(self, os.fspath(path))
 
     def quit(self) -> None:
         """Stop :meth:`run` after the current frame."""
@@ -345,14 +335,10 @@ class App:
 
         ``screenshot`` saves the last frame as a PNG (smoke tests, docs).
         """
-        if not self.headless:
-            try:
-                from kge.render.window import run_windowed
-            except ImportError:
-                self.headless = True
-            else:
-                run_windowed(self, frames, screenshot)
+        if not self.headless and self.frontend is not None:
+            if self.frontend.run_window(self, frames, screenshot):
                 return
+            self.headless = True
         self._running = True
         count = 0
         while self._running and self._stack and (frames is None or count < frames):
@@ -363,12 +349,12 @@ class App:
             self.screenshot(screenshot)
 
     def close(self) -> None:
-        """Close every scene (despawning all entities) and stop the App's music."""
+        """Close every scene (despawning all entities), then let each plugin clean up
+        (the audio plugin stops the App's music)."""
         while self._stack:
             self._close_top()
-        from kge.systems.audio import close_app_audio
-
-        close_app_audio(self)
+        for plugin in reversed(self._plugins):
+            plugin.cleanup(self)
 
 
 def run(
@@ -383,6 +369,4 @@ def run(
 @functools.cache
 def _default_camera() -> Camera:
     """The camera used when a scene has none (built once: the mouse is mapped every frame)."""
-    from kge.components.camera import Camera
-
     return Camera()

@@ -24,7 +24,7 @@ as with any pickle.
 >>> from kge.world import World
 >>> w = World()
 >>> e = w.spawn(Transform(1.0, 2.0))
->>> copy = restore(snapshot(w))
+>>> copy = World.restore(snapshot(w))
 >>> copy.get(e, Transform)
 Transform(x=1.0, y=2.0, angle=0.0)
 """
@@ -35,12 +35,14 @@ import copy
 import itertools
 import os
 import pickle
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import esper
 
 from kge.errors import KgeError
-from kge.world import World
+
+if TYPE_CHECKING:
+    from kge.world import World
 
 FORMAT = 1
 
@@ -49,16 +51,20 @@ class SnapshotError(KgeError, ValueError):
     """The data is not a kge snapshot, or one of an unsupported format."""
 
 
+#: resource types that are simulation state, kept in snapshots (registered by their
+#: modules, e.g. ``PhysicsSettings``); other resources belong to the running systems
+_KEPT: list[type] = []
+
+
+def keep_resource(resource_type: type) -> type:
+    """Keep resources of ``resource_type`` in snapshots (usable as a class decorator)."""
+    if resource_type not in _KEPT:
+        _KEPT.append(resource_type)
+    return resource_type
+
+
 def _state_resources(world: World) -> list[Any]:
-    kept: list[Any] = []
-    try:
-        from kge.physics.settings import PhysicsSettings
-    except ImportError:  # pragma: no cover
-        return kept
-    settings = world.try_resource(PhysicsSettings)
-    if settings is not None:
-        kept.append(settings)
-    return kept
+    return [r for t in _KEPT if (r := world.try_resource(t)) is not None]
 
 
 def _next_id(world: World) -> int:
@@ -120,10 +126,10 @@ def restore_into(world: World, data: bytes) -> World:
     return world
 
 
-def restore(data: bytes) -> World:
-    """A new :class:`World` equal to the one the snapshot was taken from (no systems)."""
-    loaded = _load(data)
-    return restore_into(World(name=loaded["name"]), data)
+def world_name(data: bytes) -> str:
+    """The name of the world a snapshot was taken from (``World.restore`` reuses it)."""
+    name: str = _load(data)["name"]
+    return name
 
 
 def save(world: World, path: str | os.PathLike[str]) -> None:

@@ -49,6 +49,7 @@ from kge.errors import (
     MissingResourceError,
     WorldLockedError,
 )
+from kge.plugin import Plugin, PluginLike, resolve
 from kge.schedule import Schedule, System
 
 T = TypeVar("T")
@@ -109,6 +110,7 @@ class World:
         self._defer_depth = 0
         self._lock_depth = 0
         self._closed = False
+        self._plugins: list[Plugin] = []
         self.schedule = Schedule(self)
         self._use()
 
@@ -390,10 +392,14 @@ class World:
         self._validators[component_type].append(check)
 
     # -- resources -------------------------------------------------------------------
-    def insert_resource(self, resource: Any) -> Any:
-        """Store a singleton, keyed by its type; returns it."""
+    def insert_resource(self, resource: Any, *, as_type: type | None = None) -> Any:
+        """Store a singleton, keyed by its type (or ``as_type``, a base it is an instance of)."""
         _check_component(resource)
-        self._resources[type(resource)] = resource
+        if as_type is not None and not isinstance(resource, as_type):
+            raise ComponentTypeError(
+                f"insert_resource: {type(resource).__name__} is not a {as_type.__name__}"
+            )
+        self._resources[as_type or type(resource)] = resource
         return resource
 
     def resource(self, resource_type: type[T]) -> T:
@@ -463,9 +469,29 @@ class World:
     @classmethod
     def restore(cls, data: bytes) -> World:
         """A new World equal to the snapshotted one (no systems; App.restore adds them)."""
-        from kge.snapshot import restore
+        from kge.snapshot import restore_into, world_name
 
-        return restore(data)
+        return restore_into(cls(name=world_name(data)), data)
+
+    # -- plugins ---------------------------------------------------------------------------
+    def add_plugins(self, *plugins: PluginLike) -> None:
+        """Build ``plugins`` into this world (requirements first; see :mod:`kge.plugin`).
+
+        A duplicate or a missing requirement raises :class:`~kge.plugin.PluginError`
+        before any plugin is built.
+        """
+        for plugin in resolve(self._plugins, plugins, f"world {self.name!r}"):
+            plugin.build(self)
+            self._plugins.append(plugin)
+
+    @property
+    def plugins(self) -> tuple[Plugin, ...]:
+        """The plugins built into this world, in build order."""
+        return tuple(self._plugins)
+
+    def has_plugin(self, plugin: PluginLike) -> bool:
+        """True when ``plugin`` (a Plugin class or a function plugin) is built in."""
+        return any(p.key is plugin or p.key is type(plugin) for p in self._plugins)
 
     # -- systems -----------------------------------------------------------------------
     def add_system(self, system: S) -> S:

@@ -4,7 +4,7 @@
     python tools/make_assets.py --out DIR
 
 Every file is a pure function of this script: PNGs come from a tiny zlib PNG
-writer below (no pyglet, no PIL), WAVs from :mod:`kge.assets.synth` through the
+writer below (no pyglet, no PIL), WAVs from :mod:`kge.sound` through the
 ``wave`` module. Output is deterministic (seeded noise, no timestamps), so
 re-running it leaves the committed files byte-identical.
 
@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run from a checkout without installing kge
     sys.path.insert(0, str(ROOT))
 
-from kge.assets.synth import SoundData, melody, mix, silence, tone  # noqa: E402
+from kge.sound import SoundData, melody, mix, silence, tone  # noqa: E402
 
 RGBA = tuple[int, int, int, int]
 Pixel = Callable[[float, float], RGBA]

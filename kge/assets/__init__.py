@@ -2,7 +2,7 @@
 
 Importing this package does not import pyglet; decoding does, on first use.
 See :mod:`kge.assets.store` for how names are resolved and how a world finds
-its store, and :mod:`kge.assets.synth` for sounds generated in code.
+its store, and :mod:`kge.sound` for sounds generated in code.
 """
 
 from kge.assets.errors import AssetDecodeError, AssetError, AssetNotFoundError, DecoderMissingError
@@ -15,7 +15,7 @@ from kge.assets.store import (
     default_assets,
     set_default_assets,
 )
-from kge.assets.synth import SoundData, SoundRef, melody, mix, silence, tone
+from kge.sound import SoundData, SoundRef, melody, mix, silence, tone
 
 __all__ = [
     "AssetDecodeError",

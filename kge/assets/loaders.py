@@ -22,7 +22,7 @@ from typing import Any
 
 from kge.assets.errors import AssetDecodeError, DecoderMissingError
 from kge.assets.locate import Found
-from kge.assets.synth import SoundData
+from kge.sound import SoundData
 
 IMAGE_SUFFIXES = frozenset({".png", ".jpg", ".jpeg", ".bmp", ".gif", ".dds", ".tga"})
 SOUND_SUFFIXES = frozenset({".wav", ".wave", ".ogg", ".oga", ".mp3", ".flac", ".opus", ".m4a"})
@@ -46,7 +46,7 @@ def pyglet_module(name: str) -> ModuleType:
     if "pyglet.gl" not in sys.modules:
         import pyglet
 
-        from kge.app import has_display
+        from kge.platform import has_display
 
         if not has_display():
             pyglet.options["headless"] = True

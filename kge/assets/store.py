@@ -61,8 +61,8 @@ from kge.assets.locate import (
     normalize_name,
     split_package_name,
 )
-from kge.assets.synth import SoundData, SoundRef, tone  # noqa: F401  (tone: doctest)
 from kge.errors import ValidationError
+from kge.sound import SoundData, SoundRef, tone  # noqa: F401  (tone: doctest)
 
 if TYPE_CHECKING:
     from kge.world import World

@@ -26,13 +26,13 @@ from collections.abc import Hashable
 from typing import TYPE_CHECKING, Any
 
 from kge.assets.store import assets_for
-from kge.assets.synth import SoundData, SoundRef
 from kge.audio.handle import SoundHandle
 from kge.audio.mixer import Mixer
 from kge.audio.spatial import pan_and_gain
 from kge.components.audio import AudioListener, AudioSource, sound_ref
 from kge.components.transform import Transform
 from kge.errors import where
+from kge.sound import SoundData, SoundRef
 from kge.validate import in_range, positive, vec2
 
 if TYPE_CHECKING:
@@ -267,9 +267,9 @@ class Audio:
             return DEFAULT_PAN_WIDTH
         cam = camera[1]
         try:
-            from kge.app import App
+            from kge.host import Host
 
-            app = self.world.try_resource(App)
+            app = self.world.try_resource(Host)
             width_px = app.size[0] if app is not None else None
             ppm = float(getattr(cam, "pixels_per_meter", 64.0)) * float(getattr(cam, "zoom", 1.0))
         except (TypeError, ValueError):

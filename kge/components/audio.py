@@ -29,9 +29,9 @@ import os
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.assets.synth import SoundData, SoundRef
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
+from kge.sound import SoundData, SoundRef
 from kge.validate import boolean, in_range, non_negative, positive
 
 

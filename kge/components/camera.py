@@ -148,3 +148,14 @@ class Camera(Tracked):
         cx, cy = self.center
         new = (cx + (target[0] - cx) * k, cy + (target[1] - cy) * k)
         self.center = self.clamped(new, viewport)
+
+
+def active_camera(world: Any) -> Camera | None:
+    """The camera a world is seen through: the lowest entity id with a Camera, else the
+    Camera resource, else None (the App then uses a default camera)."""
+    cams = world.query(Camera)
+    if cams:
+        cam: Camera = min(cams, key=lambda item: item[0])[1][0]
+        return cam
+    found: Camera | None = world.try_resource(Camera)
+    return found

@@ -26,9 +26,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from kge.errors import ValidationError
+from kge.snapshot import keep_resource
 from kge.validate import Vec2, boolean, integer, non_negative, positive, vec2
 
 
+@keep_resource  # simulation state: snapshots carry it
 @dataclass(slots=True)
 class PhysicsSettings:
     """Global physics parameters (read by the physics system every step)."""

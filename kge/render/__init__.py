@@ -32,7 +32,7 @@ def _select_backend() -> None:
     """
     if "pyglet.window" in _sys.modules:
         return
-    from kge.app import has_display
+    from kge.platform import has_display
 
     if not has_display():
         import pyglet

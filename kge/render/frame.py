@@ -22,6 +22,7 @@ from kge.components.sprite import Sprite
 from kge.components.text import Text
 from kge.components.tracked import bind, unbind
 from kge.components.transform import Transform
+from kge.host import Host
 from kge.physics.events import PhysicsEvents
 from kge.physics.resource import Physics
 from kge.render.debugdraw import DebugDrawer
@@ -29,6 +30,7 @@ from kge.render.geometry import drawable_triangles
 from kge.render.groups import TEXT, WORLD, Groups, ViewState
 from kge.render.labels import LabelStore
 from kge.render.meshes import MeshStore
+from kge.render.passes import Frame, RenderPasses
 from kge.render.poses import PoseTable
 from kge.render.projection import scaled, view_matrix
 from kge.render.setup import Renderer, ensure_renderer
@@ -43,10 +45,8 @@ class WorldView:
     """The pyglet mirror of one world."""
 
     def __init__(self, world: Any) -> None:
-        from kge.app import App
-
         self.world = world
-        self.app = world.resource(App)
+        self.app = world.resource(Host)
         self.renderer: Renderer = ensure_renderer(self.app)
         self.batch = pyglet.graphics.Batch()
         self.state = ViewState(self.renderer.window)
@@ -95,7 +95,7 @@ class WorldView:
     # -- camera ----------------------------------------------------------------------------
     def camera(self) -> Camera:
         """The active camera: lowest entity id with a Camera, else the Camera resource."""
-        from kge.systems.render import active_camera
+        from kge.components.camera import active_camera
 
         cam = active_camera(self.world)
         if cam is None:
@@ -176,7 +176,19 @@ class WorldView:
         self.stats.update(
             shown, viewport[1], self.stat_values() if shown else {}, throttle=not self.app.headless
         )
-        self.batch.draw()
+        passes = self.world.try_resource(RenderPasses)
+        if passes is None:
+            self.batch.draw()
+        else:
+            frame = Frame(
+                alpha, cam, center, cam.scale, viewport, view, world_view, self._game_time(),
+                self.batch, self.groups, poses, self.poses.row_of,
+            )  # fmt: skip
+            for before in passes.before():
+                before(frame)
+            self.batch.draw()
+            for after in passes.after():
+                after(frame)
         r.clock.frame()
 
     def _game_time(self) -> float:

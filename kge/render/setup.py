@@ -1,13 +1,13 @@
 """Create the window (or the offscreen one) once per App and hook rendering in.
 
-``App.render()`` calls :func:`ensure_renderer` on first use. Headless Apps get
-an EGL pbuffer window (``PYGLET_HEADLESS=1``, Mesa llvmpipe on a bare
-machine); these are pooled by size and reused by later Apps in the same
-process, so a test session opens one GL context, not one per test. The
-render systems are added to every current and future scene world of the App.
+The render plugin's frontend calls :func:`ensure_renderer` on the first
+``App.render()`` and adds the drawing systems to every current and future scene
+world of the App. Headless Apps get an EGL pbuffer window (``PYGLET_HEADLESS=1``,
+Mesa llvmpipe on a bare machine); these are pooled by size and reused by later
+Apps in the same process, so a test session opens one GL context, not one per test.
 
 :func:`frame_pixels` reads the last frame back as a numpy array (tests),
-:func:`screenshot` saves it as a PNG (no PIL needed).
+:func:`save_color_buffer` saves it as a PNG (no PIL needed).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ import numpy as np
 from kge.render.stats import FrameClock
 
 if TYPE_CHECKING:
-    from kge.app import App
+    from kge.host import Host
 
 _renderers: weakref.WeakKeyDictionary[Any, Renderer] = weakref.WeakKeyDictionary()
 _offscreen: dict[tuple[int, int], Any] = {}
@@ -40,7 +40,7 @@ def configure_headless(headless: bool) -> None:
 class Renderer:
     """The window of one App, and its frame timing."""
 
-    def __init__(self, app: App, window: Any, owns_window: bool) -> None:
+    def __init__(self, app: Host, window: Any, owns_window: bool) -> None:
         self.app_ref = weakref.ref(app)
         self.window = window
         self.owns_window = owns_window
@@ -82,7 +82,7 @@ def create_window(width: int, height: int, **kwargs: Any) -> Any:
         window_cls._enable_event_queue = queued
 
 
-def _new_window(app: App) -> tuple[Any, bool]:
+def _new_window(app: Host) -> tuple[Any, bool]:
     configure_headless(app.headless)
     import pyglet
 
@@ -95,12 +95,15 @@ def _new_window(app: App) -> tuple[Any, bool]:
     return create_window(size[0], size[1], caption=app.title, visible=False), True
 
 
-def renderer_for(app: App) -> Renderer | None:
+def renderer_for(app: Host) -> Renderer | None:
     return _renderers.get(app)
 
 
-def ensure_renderer(app: App, window: Any = None) -> Renderer:
-    """The App's Renderer, created (window + systems in every world) on first call."""
+def ensure_renderer(app: Host, window: Any = None) -> Renderer:
+    """The App's Renderer (its window), created on first call.
+
+    The drawing systems are added by the render plugin's frontend, which calls this.
+    """
     r = _renderers.get(app)
     if r is not None:
         return r
@@ -109,17 +112,10 @@ def ensure_renderer(app: App, window: Any = None) -> Renderer:
     else:
         owns = True
     r = _renderers[app] = Renderer(app, window, owns)
-    from kge.systems.render import CameraFollow, RenderStepClock, RenderStepRecorder, RenderSystem
-
-    app.add_system_to_all(RenderStepClock)
-    app.add_system_to_all(RenderStepRecorder)
-    if CameraFollow not in app.system_factories and CameraFollow not in app.extra_systems:
-        app.add_system_to_all(CameraFollow)
-    app.add_system_to_all(RenderSystem)
     return r
 
 
-def frame_pixels(app: App) -> np.ndarray:
+def frame_pixels(app: Host) -> np.ndarray:
     """The current frame as an (height, width, 4) uint8 array, row 0 at the **bottom**.
 
     Indexing is ``pixels[y, x]`` in window pixels, the same coordinates as
@@ -134,11 +130,10 @@ def frame_pixels(app: App) -> np.ndarray:
     return np.frombuffer(raw, np.uint8).reshape(data.height, data.width, 4)
 
 
-def screenshot(app: App, path: str) -> None:
-    """Render the current frame and save it as a PNG at ``path``."""
+def save_color_buffer(app: Host, path: str) -> None:
+    """Save what the App's window shows now as a PNG (``app.screenshot`` renders first)."""
     import pyglet
 
-    app.render()
     r = ensure_renderer(app)
     r.window.switch_to()
     directory = os.path.dirname(os.path.abspath(path))
@@ -146,7 +141,7 @@ def screenshot(app: App, path: str) -> None:
     pyglet.image.get_buffer_manager().get_color_buffer().save(path)
 
 
-def release(app: App) -> None:
+def release(app: Host) -> None:
     """Forget the App's renderer (closing a window it owns; pooled offscreen ones stay)."""
     r = _renderers.pop(app, None)
     if r is not None and r.owns_window:

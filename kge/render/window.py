@@ -14,6 +14,7 @@ Losing focus releases every held key, so nothing stays stuck.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from kge.components.debug import DebugDraw
@@ -103,7 +104,12 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
         app.quit()
 
 
-def run_windowed(app: App, frames: int | None = None, screenshot: str | None = None) -> None:
+def run_windowed(
+    app: App,
+    frames: int | None = None,
+    screenshot: str | None = None,
+    prepare: Callable[[App, Any], None] | None = None,
+) -> None:
     """Open a window of ``app.size`` and run until it closes, ``app.quit()`` or ``frames``.
 
     ``screenshot`` saves the last frame as a PNG while the window still exists.
@@ -114,7 +120,10 @@ def run_windowed(app: App, frames: int | None = None, screenshot: str | None = N
 
     configure_headless(app.headless)
     window = create_window(app.size[0], app.size[1], caption=app.title, resizable=True, vsync=True)
-    ensure_renderer(app, window)
+    if prepare is not None:
+        prepare(app, window)  # the render plugin: renderer + drawing systems
+    else:
+        ensure_renderer(app, window)
     connect(app, window, frames)
     app._running = True
     queued = pyglet.window.Window._enable_event_queue
@@ -122,9 +131,7 @@ def run_windowed(app: App, frames: int | None = None, screenshot: str | None = N
         pyglet.app.run(1 / 60)
     finally:
         if screenshot:
-            from kge.render.setup import screenshot as save
-
-            save(app, screenshot)
+            app.screenshot(screenshot)
         pyglet.clock.unschedule(pyglet.app.event_loop._redraw_windows)
         pyglet.window.Window._enable_event_queue = queued  # see setup.create_window
         app._running = False

@@ -35,14 +35,16 @@ import esper
 
 from kge.assets.errors import AssetError
 from kge.assets.store import Assets, assets_for, default_assets
-from kge.assets.synth import SoundData
 from kge.audio.mixer import Mixer
 from kge.audio.resource import Audio
 from kge.components.audio import AudioSource, ImpactSound
 from kge.components.tracked import bind, unbind
 from kge.components.transform import Transform
 from kge.errors import where
+from kge.host import Host
+from kge.plugin import Plugin
 from kge.schedule import Stage, System
+from kge.sound import SoundData
 from kge.world import World
 
 __all__ = ["Audio", "AudioSystem", "mixer_for"]
@@ -68,9 +70,7 @@ def mixer_for(world: World) -> tuple[Mixer, bool]:
 
     Returns ``(mixer, owned)``; an owned mixer is closed with the world.
     """
-    from kge.app import App
-
-    app = world.try_resource(App)
+    app = world.try_resource(Host)
     if app is None:
         return Mixer(), True
     mixer = _app_mixers.get(app)
@@ -241,3 +241,15 @@ class AudioSystem(System):
         self.audio.stop_all()
         if self._owns_mixer:
             self.mixer.close()
+
+
+class AudioPlugin(Plugin):
+    """Sounds: :class:`AudioSystem` in every world (the ``Audio`` resource, AudioSource,
+    ImpactSound), one mixer per App whose music survives scene changes and stops
+    when the App closes."""
+
+    def build(self, world: World) -> None:
+        world.add_system(AudioSystem())
+
+    def cleanup(self, app: Host) -> None:
+        close_app_audio(app)

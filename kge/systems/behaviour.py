@@ -19,6 +19,7 @@ from typing import Any
 from kge.components.behaviour import Behaviour
 from kge.coroutines import Coroutine
 from kge.input import Input, KeyEvent, MouseEvent
+from kge.plugin import Plugin
 from kge.schedule import Stage, System
 from kge.world import World
 
@@ -197,3 +198,13 @@ class LateBehaviours(_BehaviourStage):
 
     def process(self, dt: float) -> None:
         self.runner.call("on_late_update", dt)
+
+
+class BehaviourPlugin(Plugin):
+    """Runs :class:`~kge.components.behaviour.Behaviour` scripts: input hooks (INPUT),
+    ``on_fixed_update`` (FIXED), ``on_update`` and coroutines (UPDATE), ``on_late_update``
+    (LATE)."""
+
+    def build(self, world: World) -> None:
+        for stage in (InputBehaviours, FixedBehaviours, UpdateBehaviours, LateBehaviours):
+            world.add_system(stage())

@@ -30,6 +30,7 @@ from kge.physics.joint_bridge import body_fields, load_joint_modules
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.physics.simulation import Simulation
+from kge.plugin import Plugin
 from kge.schedule import Stage, System
 from kge.world import World
 
@@ -214,3 +215,12 @@ class PhysicsEventDelivery(System):
                     if ent is not None and ent not in seen:
                         seen.append(ent)
                         run.call_one(ent, hook, ev)
+
+
+class PhysicsPlugin(Plugin):
+    """Box2D-style physics: :class:`PhysicsSystem` (FIXED stage) and, through it, the
+    ``Physics``, ``PhysicsSettings`` and ``PhysicsEvents`` resources and the contact
+    event delivery to behaviours."""
+
+    def build(self, world: World) -> None:
+        world.add_system(PhysicsSystem())

@@ -20,7 +20,10 @@ from typing import Any
 
 from kge.components.camera import Camera
 from kge.components.transform import Transform
+from kge.host import Host
+from kge.plugin import Plugin
 from kge.schedule import Stage, System
+from kge.world import World
 
 
 class RenderSystem(System):
@@ -69,16 +72,6 @@ class RenderStepRecorder(System):
         renderer.view.after_step(spent)
 
 
-def active_camera(world: Any) -> Camera | None:
-    """Lowest entity id with a Camera, else the Camera resource, else None."""
-    cams = world.query(Camera)
-    if cams:
-        cam: Camera = min(cams, key=lambda item: item[0])[1][0]
-        return cam
-    found: Camera | None = world.try_resource(Camera)
-    return found
-
-
 class CameraFollow(System):
     """Moves every camera with ``follow`` set towards its target (LATE stage)."""
 
@@ -91,18 +84,64 @@ class CameraFollow(System):
         res = world.try_resource(Camera)
         if res is not None:
             cams.append(res)
-        viewport = None
-        try:
-            from kge.app import App
-
-            app = world.try_resource(App)
-            if app is not None:
-                viewport = app.size
-        except ImportError:  # pragma: no cover
-            pass
+        host = world.try_resource(Host)
+        viewport = host.size if host is not None else None
         for cam in cams:
             if cam.follow is None:
                 continue
             t = world.try_get(cam.follow, Transform)
             if t is not None:
                 cam.track((t.x, t.y), dt, viewport)
+
+
+class PygletFrontend:
+    """How an App draws, saves screenshots and opens its window (``app.frontend``).
+
+    The App calls it without knowing pyglet exists; each method imports pyglet's GL
+    side (through :mod:`kge.render`) only when it runs.
+    """
+
+    def _ensure(self, host: Host, window: Any = None) -> None:
+        """Create the App's renderer and add the drawing systems to all its worlds, once."""
+        from kge.render.setup import ensure_renderer, renderer_for
+
+        if renderer_for(host) is None:
+            ensure_renderer(host, window)
+            for factory in (RenderStepClock, RenderStepRecorder, RenderSystem):
+                host.add_system_to_all(factory)
+
+    def render(self, host: Host) -> None:
+        self._ensure(host)
+        alpha: float = getattr(host, "alpha", 1.0)
+        host.world.schedule.run(Stage.RENDER, alpha)
+
+    def screenshot(self, host: Host, path: str) -> None:
+        from kge.render.setup import save_color_buffer
+
+        self.render(host)
+        save_color_buffer(host, path)
+
+    def run_window(self, host: Host, frames: int | None, screenshot: str | None) -> bool:
+        try:
+            from kge.render.window import run_windowed
+        except ImportError:
+            return False
+        app: Any = host  # the window drives the whole App (its loop and scene stack)
+        run_windowed(app, frames, screenshot, prepare=self._ensure)
+        return True
+
+
+class RenderPlugin(Plugin):
+    """Drawing: the App's window (or EGL pbuffer) and the render systems.
+
+    Every world gets :class:`CameraFollow` at once (pure, so mouse picking through a
+    following camera works headless). The window and the drawing systems are
+    created on the first ``app.render()`` (or ``app.run()`` with a display), so a
+    headless App that never draws never loads pyglet's GL.
+    """
+
+    def build_app(self, app: Host) -> None:
+        app.frontend = PygletFrontend()
+
+    def build(self, world: World) -> None:
+        world.add_system(CameraFollow())

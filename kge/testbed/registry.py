@@ -10,6 +10,10 @@ The testbed lists samples by category, the test suite runs every one of them
 headless (and asserts the physical claim a sample declares with ``@s.claim``),
 and the benchmarks build the same geometry at larger sizes through the keyword
 arguments. Keeping one definition is what stops the three from drifting apart.
+
+The registry knows no sample by name: the sample modules fill it when they are
+imported, and importing :mod:`kge.testbed` imports them all (``kge.testbed.samples``).
+A game can register its own samples the same way.
 """
 
 from __future__ import annotations
@@ -77,19 +81,13 @@ def sample(
     return register
 
 
-def _load() -> None:
-    import kge.testbed.samples  # noqa: F401  (registers every sample on import)
-
-
 def all_samples() -> list[Sample]:
-    """Every sample, ordered by category then name."""
-    _load()
+    """Every registered sample, ordered by category then name."""
     return sorted(_SAMPLES.values(), key=lambda s: (s.category, s.name))
 
 
 def get_sample(name: str) -> Sample:
-    """A sample by slug or by name (case-insensitive)."""
-    _load()
+    """A registered sample by slug or by name (case-insensitive)."""
     key = name.lower().replace(" ", "-")
     if key in _SAMPLES:
         return _SAMPLES[key]

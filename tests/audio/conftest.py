@@ -18,23 +18,14 @@ from typing import Any
 import pytest
 
 from kge import App, World
-from kge.app import default_systems
 from kge.assets import Assets, tone
-from kge.systems.audio import AudioSystem
 
 BEEP_SECONDS = 0.25
 
 
-def audio_systems() -> list[Callable[[], Any]]:
-    """The default systems plus AudioSystem (once the lead adds it, it is already there)."""
-    factories = list(default_systems())
-    if AudioSystem not in factories:
-        factories.append(AudioSystem)
-    return factories
-
-
 def make_app(scene: Callable[..., Any], **kwargs: Any) -> App:
-    return App(scene, headless=True, systems=audio_systems(), **kwargs)
+    """A headless App with the default plugins (the audio plugin among them)."""
+    return App(scene, headless=True, **kwargs)
 
 
 @pytest.fixture

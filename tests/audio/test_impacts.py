@@ -9,7 +9,7 @@ from kge.assets import AssetNotFoundError, Assets
 from kge.audio.mixer import Mixer
 from kge.components.audio import ImpactSound
 from kge.physics.events import ContactBegin
-from tests.audio.conftest import audio_systems, make_app, with_store
+from tests.audio.conftest import make_app, with_store
 
 
 def record_plays(monkeypatch: pytest.MonkeyPatch) -> list[tuple[str, float]]:
@@ -118,9 +118,8 @@ def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.
             Transform(0.0, 5.0), RigidBody(), Collider(Circle(0.25), restitution=0.6), impact
         )
 
-    systems = audio_systems()
-    assert physics.PhysicsSystem in systems  # it brings PhysicsEventDelivery along
-    app = App(with_store(store, setup), headless=True, systems=systems)
+    app = App(with_store(store, setup), headless=True)
+    assert app.world.get_system(physics.PhysicsEventDelivery) is not None
     qualifying: list[float] = []
     for _ in range(240):
         app.step(1)

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import pytest
 
 from kge import App, Behaviour, Script, Transform, World
-from kge.snapshot import SnapshotError, load, restore, save, snapshot
+from kge.snapshot import SnapshotError, load, save, snapshot
 
 
 @dataclass(slots=True)
@@ -28,7 +28,7 @@ def test_roundtrip_keeps_ids_components_and_the_id_counter() -> None:
     b = w.spawn(Transform(-1, 0))
     w.despawn(gone)
     w.flush()
-    copy = restore(snapshot(w))
+    copy = World.restore(snapshot(w))
     assert copy.entities() == [a, b]
     assert copy.get(a, Transform) == Transform(1, 2, 0.5)
     assert copy.get(a, Health).hp == 3
@@ -45,7 +45,7 @@ def test_tracked_components_are_saved_without_their_binding() -> None:
     t = Transform(3, 4)
     e = w.spawn(t)
     bind(t, e, set())
-    copy = restore(snapshot(w))
+    copy = World.restore(snapshot(w))
     assert copy.get(e, Transform)._binding is None
     assert copy.get(e, Transform).x == 3
 
@@ -69,7 +69,7 @@ def test_app_restore_continues_scripts(tmp_path) -> None:
 
 def test_garbage_is_a_clear_error() -> None:
     with pytest.raises(SnapshotError, match="not a kge snapshot"):
-        restore(b"hello")
+        World.restore(b"hello")
 
 
 def test_unpicklable_component_is_reported() -> None:

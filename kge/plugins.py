@@ -1,0 +1,28 @@
+"""The default plugin set: what ``App(scene)`` is made of when ``plugins=`` is left out.
+
+=====================  =================================================================
+``BehaviourPlugin``    Behaviour scripts: input hooks, fixed/update/late hooks, coroutines
+``PhysicsPlugin``      Box2D-style physics on pymunk, contact events, joints, queries
+``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
+``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
+=====================  =================================================================
+
+Each plugin lives beside the systems it installs (``kge/systems/``); this module
+only lists them, and imports each when the list is asked for, so an App built from
+a chosen list never imports the others. Game-layer plugins join this list as they
+land.
+"""
+
+from __future__ import annotations
+
+from kge.plugin import Plugin
+
+
+def default_plugins() -> list[Plugin]:
+    """A fresh instance of every default plugin, in build order."""
+    from kge.systems.audio import AudioPlugin
+    from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.physics import PhysicsPlugin
+    from kge.systems.render import RenderPlugin
+
+    return [BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin()]

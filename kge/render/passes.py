@@ -1,0 +1,108 @@
+"""Render passes: how a plugin draws with the world's camera, before or after the batch.
+
+Every world that draws has one pyglet batch (sprites, shapes, text, debug draw) and
+one camera. A game-layer plugin that draws something of its own (particles, a
+light map, UI, tile chunks) registers a *pass* in the world's :class:`RenderPasses`
+resource, from its ``build(world)``, without touching GL:
+
+* ``phase="before"`` passes run once the frame's camera and blended poses are known
+  and before the batch is drawn: upload vertex data in bulk into vertex lists that
+  live in ``frame.batch`` (in ``frame.groups.get(layer, WORLD)`` so they sort with
+  sprites of the same layer);
+* ``phase="after"`` passes run after the batch, in ``order``: full-screen effects
+  (a light map multiplied over the scene), overlays drawn in window pixels (UI).
+
+A pass receives a :class:`Frame` and imports pyglet's GL only when it runs, so a
+headless App that never renders never loads it.
+
+>>> from kge.world import World
+>>> passes = passes_for(World())
+>>> calls = []
+>>> passes.add(lambda frame: calls.append("ui"), phase="after", order=1000)
+>>> passes.add(lambda frame: calls.append("lights"), phase="after", order=100)
+>>> for p in passes.after(): p(None)
+>>> calls
+['lights', 'ui']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Literal
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from kge.components.camera import Camera
+    from kge.world import World
+
+Pass = Callable[["Frame"], None]
+Phase = Literal["before", "after"]
+
+
+@dataclass(slots=True)
+class Frame:
+    """What a pass knows of the frame being drawn (pixels only here, in rendering)."""
+
+    alpha: float  #: interpolation between the last two fixed steps
+    camera: Camera
+    center: tuple[float, float]  #: the camera centre drawn this frame (metres)
+    scale: float  #: window pixels per metre (pixels_per_meter * zoom)
+    viewport: tuple[int, int]  #: window size in pixels
+    view: tuple[float, float, float, float]  #: visible world rect (left, bottom, right, top)
+    world_matrix: Any  #: pyglet Mat4: world metres -> window pixels (the WORLD groups' view)
+    time: float  #: game time of the last fixed step (seconds)
+    batch: Any  #: the world's pyglet Batch (drawn between the two phases)
+    groups: Any  #: :class:`kge.render.groups.Groups`: ``groups.get(layer, space, order)``
+    poses: np.ndarray  #: blended (x, y, angle) rows of drawn entities
+    rows: dict[int, int]  #: entity -> row of ``poses``
+
+    def pose(self, entity: int) -> tuple[float, float, float] | None:
+        """The blended pose of a drawn entity this frame, or None."""
+        row = self.rows.get(entity)
+        if row is None:
+            return None
+        x, y, a = self.poses[row, :3]
+        return (float(x), float(y), float(a))
+
+    def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
+        """World metres to window pixels with this frame's camera."""
+        return (
+            (point[0] - self.center[0]) * self.scale + self.viewport[0] / 2,
+            (point[1] - self.center[1]) * self.scale + self.viewport[1] / 2,
+        )
+
+
+class RenderPasses:
+    """The passes of one world (a resource; see the module docstring)."""
+
+    def __init__(self) -> None:
+        self._passes: list[tuple[Phase, int, int, Pass]] = []
+        self._serial = 0
+
+    def add(self, fn: Pass, *, phase: Phase = "before", order: int = 0) -> Pass:
+        """Register ``fn``; within a phase lower ``order`` runs first (ties: added first)."""
+        if phase not in ("before", "after"):
+            raise ValueError(f"RenderPasses.add: phase must be 'before' or 'after', got {phase!r}")
+        self._serial += 1
+        self._passes.append((phase, int(order), self._serial, fn))
+        self._passes.sort(key=lambda p: (p[1], p[2]))
+        return fn
+
+    def remove(self, fn: Pass) -> None:
+        self._passes = [p for p in self._passes if p[3] is not fn]
+
+    def before(self) -> list[Pass]:
+        return [p[3] for p in self._passes if p[0] == "before"]
+
+    def after(self) -> list[Pass]:
+        return [p[3] for p in self._passes if p[0] == "after"]
+
+
+def passes_for(world: World) -> RenderPasses:
+    """The world's :class:`RenderPasses`, created on first use."""
+    found = world.try_resource(RenderPasses)
+    if found is None:
+        found = world.insert_resource(RenderPasses())
+    return found
