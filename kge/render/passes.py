@@ -18,8 +18,8 @@ headless App that never renders never loads it.
 >>> from kge.world import World
 >>> passes = passes_for(World())
 >>> calls = []
->>> passes.add(lambda frame: calls.append("ui"), phase="after", order=1000)
->>> passes.add(lambda frame: calls.append("lights"), phase="after", order=100)
+>>> _ = passes.add(lambda frame: calls.append("ui"), phase="after", order=1000)
+>>> _ = passes.add(lambda frame: calls.append("lights"), phase="after", order=100)
 >>> for p in passes.after(): p(None)
 >>> calls
 ['lights', 'ui']
