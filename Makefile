@@ -1,6 +1,6 @@
 # The two commands of the README. Each bootstraps .venv (and headless GL
 # libraries on Debian when run as root) before it runs.
-.PHONY: demo test lint bench fuzz soak
+.PHONY: demo test lint bench
 
 PY := .venv/bin/python
 
@@ -22,3 +22,4 @@ lint:
 	@tools/bootstrap.sh
 	$(PY) -m ruff check kge tests examples benchmarks
 	$(PY) -m mypy
+	.venv/bin/lint-imports

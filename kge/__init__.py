@@ -116,7 +116,7 @@ def __getattr__(name: str) -> Any:
     globals()[name] = value  # later lookups skip this function
     return value
 
-__version__ = "0.1.0"
+__version__ = "2.0.0a1"
 
 __all__ = [
     "App",
