@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
 from collections.abc import Callable, Iterable
 from typing import Any
 
@@ -42,6 +43,9 @@ from kge.world import World
 
 SystemFactory = Callable[[], System]
 
+#: ``App()`` with no scene (push one later); distinct from ``App(None)``, which is refused
+NO_SCENE: Any = type("NoScene", (), {"__repr__": lambda self: "NO_SCENE"})()
+
 
 class App(Host):
     """Runs scenes. ``App(scene, headless=True)`` needs no window.
@@ -53,7 +57,7 @@ class App(Host):
 
     def __init__(
         self,
-        scene: SceneLike | None = None,
+        scene: SceneLike = NO_SCENE,
         *,
         headless: bool | None = None,
         size: tuple[int, int] = (960, 540),
@@ -67,6 +71,12 @@ class App(Host):
         **scene_kwargs: Any,
     ) -> None:
         self.headless = (not has_display()) if headless is None else bool(headless)
+        #: why a window cannot open, told once by run() (None: a window can, or headless=True)
+        self.no_window_reason: str | None = (
+            "no display (DISPLAY and WAYLAND_DISPLAY are unset, or PYGLET_HEADLESS is set)"
+            if headless is None and self.headless
+            else None
+        )
         self.size = (int(size[0]), int(size[1]))
         self.title = title
         self.background = background
@@ -87,7 +97,7 @@ class App(Host):
         self._running = False
         self.frame_count = 0
         self.add_plugins(*(default_plugins() if plugins is None else plugins))
-        if scene is not None:
+        if scene is not NO_SCENE:  # App(None) is refused: usually App(level(world)) by mistake
             self.push_scene(scene, **scene_kwargs)
 
     # -- clock controls -------------------------------------------------------------
@@ -339,6 +349,13 @@ class App(Host):
             if self.frontend.run_window(self, frames, screenshot):
                 return
             self.headless = True
+            self.no_window_reason = "pyglet's window module cannot be imported here"
+        if self.no_window_reason and frames is None:
+            print(
+                f"kge: {self.no_window_reason}: App.run() runs headless until app.quit(); "
+                "set DISPLAY for a window, or pass frames=N",
+                file=sys.stderr,
+            )
         self._running = True
         count = 0
         while self._running and self._stack and (frames is None or count < frames):

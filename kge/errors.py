@@ -55,3 +55,7 @@ def where(entity: int | None, component: str, field: str | None = None) -> str:
     """Format the "entity 7, Collider.density" prefix used by every validation message."""
     target = component if field is None else f"{component}.{field}"
     return target if entity is None else f"entity {entity}, {target}"
+
+
+class DisplayError(KgeError, RuntimeError):
+    """A window was asked for and the display cannot give one (a stale ``DISPLAY``...)."""

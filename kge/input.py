@@ -22,9 +22,19 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from kge.errors import ValidationError
 from kge.keys import Mouse
 
 Vec2 = tuple[float, float]
+
+
+def _check_code(code: object, call: str, what: str, example: str) -> None:
+    """Key and button codes are ints (``kge.Key.A``); a name such as ``"space"`` is a typo
+    that would otherwise be held forever and match nothing."""
+    if isinstance(code, bool) or not isinstance(code, int):
+        raise ValidationError(
+            f"Input.{call}: {what} must be a kge code such as kge.{example}, got {code!r}"
+        )
 
 
 @dataclass(slots=True, frozen=True)
@@ -97,6 +107,7 @@ class Input:
     # -- feeding (window events or tests) -------------------------------------------
     def press(self, key: int, modifiers: int = 0) -> None:
         """A key goes down (a repeat while held is not a new press)."""
+        _check_code(key, "press", "key", "Key.SPACE")
         self.modifiers = modifiers
         if key not in self._held:
             self._held.add(key)
@@ -104,6 +115,7 @@ class Input:
             self.events.append(KeyEvent(key, True, modifiers))
 
     def release(self, key: int, modifiers: int = 0) -> None:
+        _check_code(key, "release", "key", "Key.SPACE")
         self.modifiers = modifiers
         if key in self._held:
             self._held.discard(key)
@@ -130,6 +142,7 @@ class Input:
         self._button("up", button, at, modifiers)
 
     def _button(self, kind: str, button: int, at: Vec2 | None, modifiers: int) -> None:
+        _check_code(button, f"mouse_{kind}", "button", "Mouse.LEFT")
         self.modifiers = modifiers
         if at is not None:
             self.mouse_screen = (float(at[0]), float(at[1]))

@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from kge.errors import ComponentTypeError
 from kge.world import World
 
 
@@ -83,6 +84,13 @@ def as_scene(scene: SceneLike) -> Scene:
         return scene()
     if callable(scene):
         return FunctionScene(scene)
-    raise TypeError(
-        f"a scene must be a Scene, a Scene subclass or a setup(world) function, got {scene!r}"
+    hint = ""
+    if scene is None:
+        hint = (
+            " (pass the setup function itself, App(level), not what calling it returned, "
+            "App(level(world)))"
+        )
+    raise ComponentTypeError(
+        f"a scene must be a Scene, a Scene subclass or a setup(world) function, "
+        f"got {scene!r}{hint}"
     )

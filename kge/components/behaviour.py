@@ -36,6 +36,7 @@ kge.errors.HookSignatureError: Broken.on_update(self) takes 0 arguments; kge cal
 
 from __future__ import annotations
 
+import difflib
 import inspect
 from collections.abc import Callable, Generator
 from dataclasses import dataclass, field
@@ -85,12 +86,26 @@ def _accepts(fn: Callable[..., Any], n: int) -> bool:
     return True
 
 
+def _check_spelling(cls: type) -> None:
+    """Refuse a method one typo away from a hook (``on_udpate``): kge would never call it."""
+    for name in dir(cls):
+        if not name.startswith("on_") or name in HOOKS:
+            continue
+        close = difflib.get_close_matches(name, HOOKS, n=1, cutoff=0.85)
+        if close:
+            raise HookSignatureError(
+                f"{cls.__name__}.{name} is not a kge hook and would never be called; "
+                f"did you mean {close[0]}? (kge calls {HOOKS[close[0]][1]})"
+            )
+
+
 def script_hooks(script: object) -> tuple[str, ...]:
-    """The hook names ``script`` defines, after checking their signatures."""
+    """The hook names ``script`` defines, after checking their signatures and spelling."""
     cls = type(script)
     cached = _hook_cache.get(cls)
     if cached is not None:
         return cached
+    _check_spelling(cls)
     found = []
     for name, (nargs, call) in HOOKS.items():
         fn = getattr(script, name, None)

@@ -49,7 +49,15 @@ MIN_DENSITY = 1e-6
 def _shape(value: Any, owner: str, field: str) -> Shape:
     if not isinstance(value, SHAPE_TYPES):
         names = ", ".join(t.__name__ for t in SHAPE_TYPES)
-        raise ComponentTypeError(f"{owner}.{field} must be one of {names}, got {value!r}")
+        hint = ""
+        if type(value).__module__ == "kge.components.drawables":
+            kind = type(value).__name__
+            physics = {"Rect": "Box", "Triangle": "Polygon", "Line": "Edge"}.get(kind, kind)
+            hint = (
+                f" (that is kge.draw.{kind}, a drawable; a collider takes the physics shape "
+                f"kge.{physics}: from kge import {physics})"
+            )
+        raise ComponentTypeError(f"{owner}.{field} must be one of {names}, got {value!r}{hint}")
     return cast(Shape, value)
 
 

@@ -22,6 +22,7 @@ from kge.components.collider import Collider
 from kge.components.joints import GearJoint, PrismaticJoint, RevoluteJoint
 from kge.components.platform import OneWayPlatform
 from kge.components.rigidbody import RigidBody
+from kge.components.shapes import SHAPE_TYPES
 from kge.components.transform import Transform
 from kge.errors import ValidationError
 from kge.physics import joint_api
@@ -224,3 +225,16 @@ class PhysicsPlugin(Plugin):
 
     def build(self, world: World) -> None:
         world.add_system(PhysicsSystem())
+        for shape_type in SHAPE_TYPES:
+            world.validator(shape_type, _shape_is_not_a_component)
+
+
+def _shape_is_not_a_component(entity: int | None, shape: Any) -> None:
+    """``world.spawn(Transform(), Circle(1))`` draws nothing and collides with nothing."""
+    name = type(shape).__name__
+    drawable = {"Box": "Rect", "Edge": "Line"}.get(name, name)
+    drawable_hint = f" or, to draw one, kge.draw.{drawable}(...)" if name != "Chain" else ""
+    raise ValidationError(
+        f"{_where(entity, name)}: kge.{name} is a physics shape, not a component: "
+        f"put it in a Collider (Collider({name}(...))){drawable_hint}"
+    )

@@ -15,11 +15,15 @@
 
 from __future__ import annotations
 
+import functools
+import os
 import time
 from typing import Any
 
 from kge.components.camera import Camera
+from kge.components.sprite import Sprite
 from kge.components.transform import Transform
+from kge.errors import DisplayError, where
 from kge.host import Host
 from kge.plugin import Plugin
 from kge.schedule import Stage, System
@@ -127,7 +131,16 @@ class PygletFrontend:
         except ImportError:
             return False
         app: Any = host  # the window drives the whole App (its loop and scene stack)
-        run_windowed(app, frames, screenshot, prepare=self._ensure)
+        try:
+            run_windowed(app, frames, screenshot, prepare=self._ensure)
+        except Exception as err:
+            if type(err).__name__ != "NoSuchDisplayException":
+                raise
+            display = os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+            raise DisplayError(
+                f"cannot open a window: the display {display!r} does not answer; start it, "
+                "or unset DISPLAY (or pass headless=True) to run without a window"
+            ) from None
         return True
 
 
@@ -145,3 +158,17 @@ class RenderPlugin(Plugin):
 
     def build(self, world: World) -> None:
         world.add_system(CameraFollow())
+        world.validator(Sprite, functools.partial(_check_sprite_image, world))
+
+
+def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:
+    """A sprite whose image file is missing is refused at spawn, not at the first frame.
+
+    Only the file is looked up (the asset store's search, listing every place tried);
+    decoding waits for the first draw, so a headless App never loads an image.
+    """
+    image = sprite.image
+    if isinstance(image, (str, os.PathLike)):
+        from kge.assets.store import assets_for
+
+        assets_for(world).resolve(image, owner=where(entity, "Sprite", "image"))

@@ -150,13 +150,18 @@ def test_tint_and_opacity(make_app):
     assert 110 <= r <= 145 and g < 10 and b < 10  # half red over black
 
 
-def test_unknown_image_names_the_entity(make_app, tmp_path):
-    def scene(world):
-        world.spawn(Transform(), Sprite(str(tmp_path / "missing.png")))
+def test_unknown_image_is_refused_at_spawn_not_at_the_first_frame(make_app, tmp_path):
+    from kge.assets import AssetNotFoundError
 
-    app = make_app(scene)
-    with pytest.raises(Exception, match="missing.png"):
-        app.render()
+    app = make_app(lambda world: None)
+    world = app.world
+    with pytest.raises(AssetNotFoundError, match=r"Sprite.image: asset .*missing.png' not found"):
+        world.spawn(Transform(), Sprite(str(tmp_path / "missing.png")))
+    assert world.entities() == []  # nothing half-spawned
+    e = world.spawn(Transform())
+    with pytest.raises(AssetNotFoundError, match=f"entity {e}, Sprite.image"):
+        world.add(e, Sprite(str(tmp_path / "missing.png")))
+    assert not world.has(e, Sprite)
 
 
 def test_bad_values_are_refused_at_the_write():
@@ -255,6 +260,7 @@ def test_a_new_scene_draws_its_own_world(make_app):
 
 def test_a_bad_image_does_not_lose_other_sprites(make_app, tmp_path):
     state = {}
+    (tmp_path / "nope.png").write_bytes(b"not a png")  # found at spawn, undecodable at draw
 
     def scene(world):
         state["bad"] = world.spawn(Transform(), Sprite(str(tmp_path / "nope.png")))
