@@ -1,4 +1,5 @@
-"""Command line: ``kge demo`` (the README's demo command), ``kge testbed``, ``kge bench``.
+"""Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
+command), ``kge testbed``, ``kge bench``.
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -46,7 +47,14 @@ def _bench(args: list[str]) -> int:
     return int(bench_main(args) or 0)
 
 
+def _new(args: list[str]) -> int:
+    from kge.scaffold import main as new_main
+
+    return new_main(args)
+
+
 COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
+    "new": (_new, "create a small game project with a test: kge new NAME"),
     "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
     "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
@@ -56,7 +64,7 @@ COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     if not args or args[0] not in COMMANDS:
-        print("usage: kge {demo,testbed,bench} [options]\n")
+        print("usage: kge {new,demo,testbed,bench} [options]\n")
         for name, (_, text) in COMMANDS.items():
             print(f"  {name:<8} {text}")
         return 0 if args[:1] in ([], ["-h"], ["--help"]) else 2
