@@ -7,20 +7,10 @@ modules. The names of the audio, asset and image modules are loaded on first use
 imports them; rendering and audio load pyglet when an App first needs them.
 """
 
-import sys as _sys
 from importlib import import_module
-from importlib.util import find_spec as _find_spec
 from typing import TYPE_CHECKING, Any
 
-for _dependency in ("esper", "numpy", "pymunk", "pyglet"):
-    if _find_spec(_dependency) is None:  # the system Python, not the project's .venv
-        raise ModuleNotFoundError(
-            f"kge needs {_dependency}, which this Python ({_sys.executable}) does not have: "
-            "use the virtual environment `make test` made (.venv/bin/python, or "
-            "`. .venv/bin/activate`), or `pip install -e path/to/kge`",
-            name=_dependency,
-        )
-
+import kge.dependencies  # noqa: F401  (first: a missing dependency is named, with the venv to use)
 from kge.app import App, run
 from kge.components import (
     Behaviour,
