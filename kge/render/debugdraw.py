@@ -51,6 +51,12 @@ def _to_local(pose: Any, p: tuple[float, float]) -> tuple[float, float]:
     return (c * dx + s * dy, -s * dx + c * dy)
 
 
+def _fill_color(outline: tuple[int, ...]) -> tuple[int, int, int, int]:
+    """The translucent fill under an outline of that colour (Box2D v3 samples' look)."""
+    r, g, b = outline[:3]
+    return (r // 2, g // 2, b // 2, int(outline[3] * 0.5) if len(outline) > 3 else 128)
+
+
 class DebugDrawer:
     """Keeps the debug meshes of one world in step with its physics components."""
 
@@ -59,6 +65,7 @@ class DebugDrawer:
         self.meshes = MeshStore(batch, poses)
         self.poses = poses
         self.parent = groups.get(OVERLAY_LAYER, WORLD, 0)
+        self.fill_parent = groups.get(OVERLAY_LAYER, WORLD, -1)  # fills under outlines
         self._shape_of: dict[int, Any] = {}  # collider entity -> (shape, pose entity)
         self._color_of: dict[Any, tuple[int, ...]] = {}
         # (joint, field) -> (world point, local anchor): world anchors resolved at first
@@ -114,7 +121,7 @@ class DebugDrawer:
 
     def _colliders(self, settings: DebugDraw) -> None:
         if not settings.shapes:
-            for key in [k for k in self.meshes.lists if k[0] == "shape"]:
+            for key in [k for k in self.meshes.lists if k[0] in ("shape", "fill")]:
                 self.meshes.remove(key)
             self._shape_of.clear()
             return
@@ -124,8 +131,18 @@ class DebugDrawer:
             body = self._pose_entity(entity, col)
             key = ("shape", entity)
             color = self._body_color(settings, body)
+            fill_key = ("fill", entity)
+            fill_color = _fill_color(color)
             if self._shape_of.get(entity) != (col.shape, body):
                 self._shape_of[entity] = (col.shape, body)
+                tris = geometry.shape_fill(col.shape)
+                if tris is None:
+                    self.meshes.remove(fill_key)
+                else:
+                    self.meshes.put(
+                        fill_key, body, self._transform(body), tris, fill_color, self.fill_parent
+                    )
+                    self._color_of[fill_key] = fill_color
                 self.meshes.put(
                     key,
                     body,
@@ -138,11 +155,15 @@ class DebugDrawer:
                 self._color_of[key] = color
             elif self._color_of.get(key) != color:
                 self.meshes.recolor(key, color)
+                if fill_key in self.meshes.lists:
+                    self.meshes.recolor(fill_key, fill_color)
+                    self._color_of[fill_key] = fill_color
                 self._color_of[key] = color
         for entity in [e for e in self._shape_of if e not in seen]:
             del self._shape_of[entity]
-            self.meshes.remove(("shape", entity))
-            self._color_of.pop(("shape", entity), None)
+            for kind in ("shape", "fill"):
+                self.meshes.remove((kind, entity))
+                self._color_of.pop((kind, entity), None)
 
     def _pose_of(self, entity: int | None, poses: np.ndarray) -> tuple[float, float, float]:
         if entity is None:

@@ -193,3 +193,18 @@ def shape_polyline(shape: Any) -> tuple[np.ndarray, bool]:
         cx, cy = getattr(shape, "center", (0.0, 0.0))
         return circle_points(shape.radius, circle_segments(shape.radius), (cx, cy)), True
     raise TypeError(f"unknown shape type {kind}")
+
+
+def shape_fill(shape: Any) -> np.ndarray | None:
+    """Triangles filling a physics shape in the body frame (None for edges and chains,
+    which have no inside). Box2D v3's samples fill shapes translucently under their
+    outlines; this is that fill."""
+    kind = type(shape).__name__
+    if kind == "Circle":
+        cx, cy = getattr(shape, "center", (0.0, 0.0))
+        ring = circle_points(shape.radius, circle_segments(shape.radius), (float(cx), float(cy)))
+        return triangulate(ring)
+    if kind in ("Box", "Polygon"):
+        pts, _ = shape_polyline(shape)
+        return triangulate(pts)
+    return None

@@ -6,8 +6,9 @@ each ``on_draw`` runs one game frame with the real time since the previous one
 renders it. Window events feed the :class:`~kge.input.Input` resource. kge key and button codes are
 pyglet's, so events pass through untranslated.
 
-Keys the window itself handles: F11 toggles fullscreen, F1 toggles the physics
-debug view (:class:`~kge.components.debug.DebugDraw`), F2 the stats overlay.
+Keys the window itself handles: F11 toggles fullscreen. F1 (the physics debug view)
+and F2 (the stats overlay) are ordinary input, handled by the render plugin's
+:class:`~kge.systems.render.DebugKeys` system, so one path serves windows and tests.
 Losing focus releases every held key, so nothing stays stuck.
 """
 
@@ -17,19 +18,10 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from kge.components.debug import DebugDraw
 from kge.keys import Key
 
 if TYPE_CHECKING:
     from kge.app import App
-
-
-def _toggle_debug(app: App, field: str) -> None:
-    world = app.world
-    settings = world.try_resource(DebugDraw)
-    if settings is None:
-        settings = world.insert_resource(DebugDraw(enabled=False))
-    setattr(settings, field, not getattr(settings, field))
 
 
 def connect(app: App, window: Any, frames: int | None = None) -> None:
@@ -60,11 +52,7 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
         if symbol == Key.F11:
             window.set_fullscreen(not window.fullscreen)
             return True
-        if symbol == Key.F1:
-            _toggle_debug(app, "enabled")
-        elif symbol == Key.F2:
-            _toggle_debug(app, "stats")
-        inp.press(symbol, modifiers)
+        inp.press(symbol, modifiers)  # F1 / F2: the render plugin's DebugKeys system
         return True  # keep pyglet's default Escape-closes-window out of the game's way
 
     @window.event

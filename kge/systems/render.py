@@ -21,10 +21,13 @@ import time
 from typing import Any
 
 from kge.components.camera import Camera
+from kge.components.debug import DebugDraw
 from kge.components.sprite import Sprite
 from kge.components.transform import Transform
 from kge.errors import DisplayError, where
 from kge.host import Host
+from kge.input import Input
+from kge.keys import Key
 from kge.plugin import Plugin
 from kge.schedule import Stage, System
 from kge.world import World
@@ -98,6 +101,28 @@ class CameraFollow(System):
                 cam.track((t.x, t.y), dt, viewport)
 
 
+class DebugKeys(System):
+    """F1 toggles the physics debug view, F2 the stats overlay (INPUT stage).
+
+    An ordinary system reading the Input resource, so a real window and a headless
+    test (``app.input.press(Key.F1)``) take the same path, once.
+    """
+
+    stage = Stage.INPUT
+    order = 50
+
+    def process(self, dt: float) -> None:
+        keys = self.world.try_resource(Input)
+        if keys is None:
+            return
+        for key, field in ((Key.F1, "enabled"), (Key.F2, "stats")):
+            if keys.pressed(key):
+                settings = self.world.try_resource(DebugDraw)
+                if settings is None:  # first press: the view appears
+                    settings = self.world.insert_resource(DebugDraw(enabled=False))
+                setattr(settings, field, not getattr(settings, field))
+
+
 class PygletFrontend:
     """How an App draws, saves screenshots and opens its window (``app.frontend``).
 
@@ -158,6 +183,7 @@ class RenderPlugin(Plugin):
 
     def build(self, world: World) -> None:
         world.add_system(CameraFollow())
+        world.add_system(DebugKeys())
         world.validator(Sprite, functools.partial(_check_sprite_image, world))
 
 

@@ -8,14 +8,19 @@ the same code runs in a window and in headless tests (driven by ``app.input``).
 
 =====================  ==========================================================
 PageUp / PageDown      previous / next sample (or click a name in the list)
+Tab                    hide / show the sample list
 R                      restart the sample
 P / O                  pause / single step
 arrows, right-drag     pan the camera; mouse wheel zooms
 left-drag              grab a dynamic body (a MouseJoint)
 shift + left-drag      aim and launch a bomb
 1 2 3 4 5              toggle shapes, joints, AABBs, centres of mass, contacts
-F1                     toggle all debug drawing
+F1 / F2                toggle all debug drawing / the stats overlay
+Esc                    quit
 =====================  ==========================================================
+
+The list shows every category, with the current one opened, so it stays short as
+samples are added; each sample is framed in the area the list and help leave free.
 """
 
 from __future__ import annotations
@@ -36,12 +41,19 @@ from kge.input import Input, MouseEvent
 from kge.keys import Key, Mod, Mouse
 from kge.physics.resource import Physics
 from kge.scene import Scene
+from kge.testbed.framing import sample_camera
 from kge.testbed.registry import Sample, all_samples, get_sample
 from kge.world import World
 
 LIST_TOP = 36.0  # pixels from the top of the window to the first list line (below the stats)
 LINE = 15.0  # pixels per list line
 LIST_WIDTH = 190.0  # clickable width of the sample list
+HELP_HEIGHT = 110.0  # pixels the help text takes at the top of the window
+HELP_KEYS = (
+    "PgUp/PgDn samples  Tab list  R restart  P pause  O step  Esc quit",
+    "drag: grab  shift-drag: bomb  arrows/right-drag: pan  wheel: zoom",
+    "1-5: shapes joints AABBs centres contacts  F1: debug  F2: stats",
+)
 PAN_SPEED = 0.6  # screen widths per second with the arrow keys
 DEBUG_KEYS = {Key._1: "shapes", Key._2: "joints", Key._3: "aabbs", Key._4: "centers_of_mass",
               Key._5: "contacts"}
@@ -59,26 +71,47 @@ class TestbedScene(Scene):
     def setup(self, world: World, **kwargs: Any) -> None:
         self.sample.setup(world, **kwargs)
         app = world.resource(App)
-        cx, cy, zoom = self.sample.camera
+        w, h = app.size
         if not world.has_resource(Camera):
-            world.insert_resource(Camera(center=(cx, cy), zoom=zoom * app.size[0] / 960.0))
+            free = (LIST_WIDTH, 0.0, float(w), h - HELP_HEIGHT)
+            world.insert_resource(sample_camera(world, self.sample, app.size, free))
         if not world.has_resource(DebugDraw):
             world.insert_resource(DebugDraw(stats=True))
         world.spawn(Behaviour(TestbedController(self.sample)), Name("testbed"))
         _overlay(world, self.sample, app.size)
 
 
+def list_rows(current: Sample) -> list[tuple[str, Sample]]:
+    """The sample list as shown: one line per category, the current one opened.
+
+    Each row is (text, the sample a click opens): a category line opens its first
+    sample. Keeping closed categories to one line keeps the list off the scene.
+    """
+    rows: list[tuple[str, Sample]] = []
+    by_category: dict[str, list[Sample]] = {}
+    for s in all_samples():
+        by_category.setdefault(s.category, []).append(s)
+    for category, members in by_category.items():
+        if category == current.category:
+            rows.append((f"- {category}", members[0]))
+            for s in members:
+                rows.append((f"{'>' if s.slug == current.slug else ' '}   {s.name}", s))
+        else:
+            rows.append((f"+ {category} ({len(members)})", members[0]))
+    return rows
+
+
 def _overlay(world: World, current: Sample, size: tuple[int, int]) -> None:
     """Sample list (left), help and keys (right), as screen-space text."""
     w, h = size
-    for i, s in enumerate(all_samples()):
-        mark = "> " if s.slug == current.slug else "  "
-        color = (255, 220, 90, 255) if s.slug == current.slug else (200, 200, 210, 255)
-        world.spawn(Text(f"{mark}{s.category}: {s.name}", size=9, color=color, screen_space=True,
+    for i, (text, s) in enumerate(list_rows(current)):
+        color = (255, 220, 90, 255) if s.slug == current.slug and text.startswith(">") else (
+            (200, 200, 210, 255) if text.startswith(" ") else (150, 190, 255, 255))
+        world.spawn(Text(text, size=9, color=color, screen_space=True,
                          anchor=(0.0, 1.0), offset=(6.0, h - LIST_TOP - i * LINE), layer=200),
                     Name("sample-list"))
     lines = [current.name, current.help] + [f"{k}: {v}" for k, v in current.keys.items()]
-    lines.append("PgUp/PgDn samples  R restart  P pause  O step  drag: grab  shift-drag: bomb")
+    lines += HELP_KEYS
     for i, line in enumerate(lines):
         world.spawn(Text(line, size=10 if i else 13, color=(235, 235, 235, 255),
                          screen_space=True, anchor=(1.0, 1.0), offset=(w - 8.0, h - 10.0 - i * 17),
@@ -127,9 +160,12 @@ class TestbedController(Script):
             debug = self.world.resource(DebugDraw)
             name = DEBUG_KEYS[key]
             setattr(debug, name, not getattr(debug, name))
-        elif key == Key.F1:
-            debug = self.world.resource(DebugDraw)
-            debug.enabled = not debug.enabled
+        elif key == Key.ESCAPE:
+            app.quit()
+        elif key == Key.TAB:
+            for _, (label, tag) in self.world.query(Text, Name):
+                if tag.value == "sample-list":
+                    label.visible = not label.visible
 
     def on_update(self, dt: float) -> None:
         keys = self.world.resource(Input)
@@ -180,10 +216,13 @@ class TestbedController(Script):
         cam.zoom = min(10.0, max(0.1, cam.zoom * 1.1 ** event.scroll[1]))
 
     def _click_list(self, screen: tuple[float, float]) -> bool:
+        shown = any(
+            t.visible for _, (t, n) in self.world.query(Text, Name) if n.value == "sample-list"
+        )
         row = int((self.app.size[1] - LIST_TOP - screen[1]) // LINE)
-        samples = all_samples()
-        if 0 <= row < len(samples):
-            self.app.replace_scene(TestbedScene(samples[row]))
+        rows = list_rows(self.sample)
+        if shown and 0 <= row < len(rows):
+            self.app.replace_scene(TestbedScene(rows[row][1]))
             return True
         return False
 

@@ -37,8 +37,11 @@ class Sample:
     setup: Setup
     help: str = ""
     keys: dict[str, str] = field(default_factory=dict)
-    camera: tuple[float, float, float] = (0.0, 10.0, 1.0)  # centre x, y, zoom
+    #: centre x, y and zoom; None: the testbed fits the camera to what the sample built
+    camera: tuple[float, float, float] | None = None
     claims: list[Claim] = field(default_factory=list)
+    #: the Name of an entity the testbed camera follows (a car, a walker)
+    follow: str | None = None
 
     @property
     def slug(self) -> str:
@@ -63,12 +66,13 @@ def sample(
     *,
     help: str = "",
     keys: dict[str, str] | None = None,
-    camera: tuple[float, float, float] = (0.0, 10.0, 1.0),
+    camera: tuple[float, float, float] | None = None,
+    follow: str | None = None,
 ) -> Callable[[Setup], Sample]:
     """Decorator registering ``setup`` as a sample; returns the :class:`Sample`."""
 
     def register(setup: Setup) -> Sample:
-        s = Sample(category, name, setup, help, dict(keys or {}), camera)
+        s = Sample(category, name, setup, help, dict(keys or {}), camera, follow=follow)
         old = _SAMPLES.get(s.slug)
         # The same function registered again (its module run with ``python -m`` after
         # the package imported it) replaces itself; two different samples may not

@@ -14,19 +14,17 @@ from kge.app import App
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 from kge.components.text import Text
+from kge.testbed.framing import sample_camera
 from kge.testbed.png import write
 from kge.testbed.registry import Sample
-
-#: The window size the samples' camera zooms were chosen for.
-REFERENCE_WIDTH = 960.0
 
 
 def frame_sample(app: App, s: Sample, label: bool = True) -> None:
     """Point a camera at the sample, turn on debug drawing and add its name."""
     world = app.world
-    cx, cy, zoom = s.camera
     if not world.has_resource(Camera):
-        world.insert_resource(Camera(center=(cx, cy), zoom=zoom * app.size[0] / REFERENCE_WIDTH))
+        w, h = app.size
+        world.insert_resource(sample_camera(world, s, app.size, (0.0, 0.0, w, h - 24.0)))
     if not world.has_resource(DebugDraw):
         world.insert_resource(DebugDraw())
     if label:

@@ -145,3 +145,26 @@ def test_joint_layouts_and_edge_chain_outlines(make_app):
         assert (
             near(static, (1.5, -1.8)) and near(static, (-2.3, 0.5)) and near(static, (-2.05, 1.7))
         )
+
+
+def test_shapes_are_filled_translucently_under_their_outlines(make_app):
+    """Box2D v3's samples' look: a translucent fill in the body-state colour, outlined."""
+
+    def one_box(world):
+        world.insert_resource(Camera(pixels_per_meter=PPM))
+        world.insert_resource(DebugDraw(contacts=False))
+        world.spawn(Transform(0.0, 0.0), Collider(Box(1.0, 1.0)))  # static: 80 x 80 px
+        world.spawn(Transform(0.0, 1.6), Collider(Circle(0.4)))  # a circle is filled too
+
+    app = make_app(one_box)
+    px = pixels(app)
+    cx, cy = SIZE[0] // 2, SIZE[1] // 2
+    inside = px[cy - 10 : cy + 10, cx - 10 : cx + 10, :3].astype(int)
+    outline = np.array(D.static_color[:3])
+    assert np.ptp(inside.reshape(-1, 3), axis=0).max() == 0  # one even fill
+    fill = inside[0, 0]
+    # translucent: well above the black background, well below the outline, same hue
+    assert np.all(fill < 0.6 * outline) and fill.max() > 0.15 * outline.max(), fill
+    assert int(np.argmax(fill)) == int(np.argmax(outline))
+    assert mask(px, D.static_color[:3], 12)[cy - 40 : cy + 41, cx - 41 : cx - 38].any()  # outline
+    assert np.all(np.abs(px[cy + 64, cx, :3].astype(int) - fill) <= 2)  # the circle too

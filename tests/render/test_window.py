@@ -47,8 +47,11 @@ def test_window_events_feed_input_and_debug_toggles(make_app):
         send("on_mouse_scroll", 0, 0, 0.0, 2.0)
         assert app.input.scroll == (0.0, 2.0)
         send("on_key_press", Key.F1, 0)
+        app.advance(1 / 60)  # the press reaches the game in the frame's input stage
         assert app.world.resource(DebugDraw).enabled
+        send("on_key_release", Key.F1, 0)
         send("on_key_press", Key.F1, 0)
+        app.advance(1 / 60)
         assert not app.world.resource(DebugDraw).enabled
         send("on_deactivate")
         assert not app.input.held(Key.SPACE)

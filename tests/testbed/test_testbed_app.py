@@ -1,6 +1,6 @@
 """The interactive testbed's controls, driven headless through app.input."""
 
-from kge import App, Key, Mod, Mouse, Name, Transform
+from kge import App, Key, Mod, Mouse, Text, Transform
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 from kge.components.joints import MouseJoint
@@ -97,12 +97,49 @@ def test_camera_zoom_pan_and_debug_toggles() -> None:
     assert debug.shapes is not shapes and debug.aabbs
 
 
-def test_clicking_the_list_switches_sample() -> None:
-    app = open_testbed("hello-world")
-    list_names = [app.world.get(e, Name) for e in named(app.world, "sample-list")]
-    assert len(list_names) >= 25
-    app.input.click(Mouse.LEFT, at=(20.0, app.size[1] - LIST_TOP - LINE * 3 - 5.0))
-    app.step()
+def row_at(app: App, row: int) -> tuple[float, float]:
+    return (20.0, app.size[1] - LIST_TOP - LINE * row - 5.0)
+
+
+def test_the_list_opens_only_the_current_category() -> None:
     from kge.testbed import all_samples
 
-    assert app.scene.name == all_samples()[3].name
+    app = open_testbed("hello-world")
+    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    categories = sorted({s.category for s in all_samples()})
+    basics = [s.name for s in all_samples() if s.category == "Basics"]
+    assert len(texts) == len(categories) + len(basics)  # one line per closed category
+    assert texts[0] == "- Basics" and texts[1].startswith(">") and "Hello World" in texts[1]
+    assert any(t.startswith("+ Joints (") for t in texts)
+    # the list ends well above the bottom of a 540-pixel window
+    assert LIST_TOP + LINE * len(texts) < app.size[1] - 100
+
+
+def test_clicking_the_list_switches_sample_and_category() -> None:
+    app = open_testbed("hello-world")
+    app.input.click(Mouse.LEFT, at=row_at(app, 2))  # "- Basics", "> Hello World", "  Tumbler"
+    app.step()
+    assert app.scene.name == "Tumbler"
+    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    joints = next(i for i, t in enumerate(texts) if t.startswith("+ Joints"))
+    app.input.click(Mouse.LEFT, at=row_at(app, joints))
+    app.step()
+    assert app.scene.name == "Apply Force"  # the first Joints sample by name
+
+
+def test_tab_hides_the_list_and_clicks_then_reach_the_scene() -> None:
+    app = open_testbed("hello-world")
+    app.input.press(Key.TAB)
+    app.step()
+    assert not any(app.world.get(e, Text).visible for e in named(app.world, "sample-list"))
+    app.input.click(Mouse.LEFT, at=row_at(app, 2))
+    app.step()
+    assert app.scene.name == "Hello World"
+
+
+def test_escape_quits() -> None:
+    app = open_testbed("hello-world")
+    app._running = True
+    app.input.press(Key.ESCAPE)
+    app.step()
+    assert not app._running

@@ -13,8 +13,7 @@ from kge.testbed.samples.build import box, named, static_box
 from kge.world import World
 
 
-@sample("Basics", "Hello World", help="The manual's first program: a box falls onto the ground.",
-        camera=(0.0, 2.0, 2.0))
+@sample("Basics", "Hello World", help="The manual's first program: a box falls onto the ground.")
 def hello_world(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     box(world, 0.0, 4.0, 1.0, 1.0, density=1.0, friction=0.3, name="box")
@@ -38,8 +37,7 @@ class _Feeder(Script):
             box(self.world, 0.0, 10.0, 0.125, 0.125, density=1.0, name="tumbled")
 
 
-@sample("Basics", "Tumbler", help="A motorised box slowly turning, filling with small boxes.",
-        camera=(0.0, 10.0, 0.38))
+@sample("Basics", "Tumbler", help="A motorised box slowly turning, filling with small boxes.")
 def tumbler(world: World, count: int = 200, speed: float = 0.05 * math.pi) -> None:
     drum = world.spawn(
         Transform(0.0, 10.0),

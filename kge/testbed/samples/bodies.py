@@ -35,8 +35,7 @@ class _Shuttle(Script):
 
 @sample("Bodies", "Body Types",
         help="A platform that is kinematic (moving), static or dynamic; a box rides on it.",
-        keys={"D": "dynamic platform", "S": "static platform", "K": "kinematic platform"},
-        camera=(0.0, 4.0, 0.6))
+        keys={"D": "dynamic platform", "S": "static platform", "K": "kinematic platform"})
 def body_types(world: World) -> None:
     ground(world)
     platform = box(world, 0.0, 3.0, 4.0, 0.25, body=BodyType.KINEMATIC, friction=0.6,
@@ -54,8 +53,7 @@ def _rider_stays_on_platform(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Bodies", "Bullet",
-        help="Fast projectiles against a thin static wall and a dynamic plank (bullet=True).",
-        camera=(5.0, 3.0, 0.8))
+        help="Fast projectiles against a thin static wall and a dynamic plank (bullet=True).")
 def bullet(world: World, speed: float = 500.0) -> None:
     ground(world)
     static_box(world, 10.0, 2.0, 0.05, 2.0, name="wall")

@@ -30,8 +30,7 @@ class SensorCounter(Script):
 
 
 @sample("Collision", "Sensors",
-        help="Balls fall through a sensor ring; it counts every begin and end.",
-        camera=(0.0, 6.0, 0.6))
+        help="Balls fall through a sensor ring; it counts every begin and end.")
 def sensors(world: World, count: int = 7) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     world.spawn(
@@ -60,7 +59,7 @@ SMALL, LARGE, GROUND = 0x0002, 0x0004, 0x0001
 
 @sample("Collision", "Collision Filtering",
         help="Same positive group always collides; same negative group never; masks decide "
-             "the rest.", camera=(0.0, 4.0, 1.0))
+             "the rest.")
 def collision_filtering(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     # Positive group: the masks reject each other, the group forces a collision (they stack).
@@ -114,8 +113,7 @@ class _Destroyer(Script):
 
 
 @sample("Collision", "Collision Processing",
-        help="Bodies of many sizes fall together; on contact the lighter one is destroyed.",
-        camera=(0.0, 8.0, 0.6))
+        help="Bodies of many sizes fall together; on contact the lighter one is destroyed.")
 def collision_processing(world: World, count: int = 18) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for i in range(count):
@@ -134,8 +132,7 @@ def _lighter_bodies_were_destroyed(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Collision", "One-Sided Platform",
-        help="A ball shot up through a platform lands on top of it (OneWayPlatform).",
-        camera=(0.0, 8.0, 0.6))
+        help="A ball shot up through a platform lands on top of it (OneWayPlatform).")
 def one_sided_platform(world: World) -> None:
     from kge.components.platform import OneWayPlatform
 
@@ -151,8 +148,7 @@ def _ball_lands_on_top(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Collision", "Conveyor Belt",
-        help="A pre-solve hook sets the belt's tangent speed; boxes ride along it.",
-        camera=(0.0, 6.0, 0.6))
+        help="A pre-solve hook sets the belt's tangent speed; boxes ride along it.")
 def conveyor_belt(world: World, speed: float = 5.0) -> None:
     from kge.physics.resource import Physics
 
@@ -178,8 +174,7 @@ def _parcels_carried_off(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Collision", "Breakable",
-        help="Two halves welded with a break force: a hard landing snaps them apart.",
-        camera=(0.0, 4.0, 0.8))
+        help="Two halves welded with a break force: a hard landing snaps them apart.")
 def breakable(world: World, break_force: float = 300.0) -> None:
     from kge.components.joints import WeldJoint
 
@@ -199,8 +194,7 @@ def _it_broke(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Collision", "Character",
-        help="A box slides across a chain and across separate edges without bumps.",
-        camera=(0.0, 2.0, 0.6))
+        help="A box slides across a chain and across separate edges without bumps.")
 def character(world: World, speed: float = 5.0) -> None:
     from kge.components.shapes import Chain, Edge
 

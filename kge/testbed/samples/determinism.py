@@ -40,7 +40,6 @@ LOWER, UPPER = -0.1 * math.pi, 0.2 * math.pi
     "Falling Hinges",
     help="4 x 30 boxes hinged in pairs with limited revolute joints fall in a heap "
     "(Box2D's determinism test); the pose hash after 500 steps is pinned by the tests.",
-    camera=(0.0, 5.0, 0.6),
 )
 def falling_hinges(world: World, columns: int = 4, rows: int = 30) -> None:
     world.spawn(Transform(0.0, -1.0), Collider(Box(20.0, 1.0), friction=0.6), Name("ground"))

@@ -31,8 +31,7 @@ from kge.testbed.samples.build import ball, box, ground, named
 from kge.world import World
 
 
-@sample("Joints", "Bridge", help="Thirty planks pinned end to end by revolute joints.",
-        camera=(0.0, 5.0, 0.5))
+@sample("Joints", "Bridge", help="Thirty planks pinned end to end by revolute joints.")
 def bridge(world: World, planks: int = 30) -> None:
     ground(world)
     prev: int | None = None
@@ -52,7 +51,7 @@ def _bridge_holds(app) -> None:  # type: ignore[no-untyped-def]
     assert 2.0 < y < 5.0, f"the bridge's middle plank is at y={y:.2f}"
 
 
-@sample("Joints", "Chain", help="A hanging chain of thirty links.", camera=(10.0, 15.0, 0.45))
+@sample("Joints", "Chain", help="A hanging chain of thirty links.")
 def chain_sample(world: World, links: int = 30) -> None:
     ground(world)
     prev: int | None = None
@@ -78,8 +77,7 @@ def _chain_hangs_connected(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Joints", "Cantilever",
-        help="Welded planks: rigid, and soft (5 Hz). The rigid one must not sag much.",
-        camera=(0.0, 6.0, 0.5))
+        help="Welded planks: rigid, and soft (5 Hz). The rigid one must not sag much.")
 def cantilever(world: World, count: int = 8) -> None:
     ground(world)
     for y, hz in ((8.0, 0.0), (3.0, 5.0)):
@@ -114,7 +112,7 @@ class _Driver(Script):
 
 
 @sample("Joints", "Car", help="A car on wheel joints (spring suspension and a motor) over hills.",
-        keys={"A/D": "drive left / right", "S": "brake"}, camera=(10.0, 3.0, 0.5))
+        keys={"A/D": "drive left / right", "S": "brake"}, follow="chassis")
 def car(world: World, motor_speed: float = -20.0) -> None:
     hills = [(-20.0, 0.0), (20.0, 0.0)]
     for i in range(1, 11):
@@ -171,8 +169,7 @@ def _ragdoll(world: World, x: float, y: float, group: int) -> None:
                                   enable_limit=True, lower_angle=-1.5, upper_angle=0.0))
 
 
-@sample("Joints", "Ragdoll", help="Ragdolls with limited revolute joints tumbling down.",
-        camera=(0.0, 5.0, 0.6))
+@sample("Joints", "Ragdoll", help="Ragdolls with limited revolute joints tumbling down.")
 def ragdoll(world: World, count: int = 4) -> None:
     ground(world)
     for i in range(count):
@@ -190,8 +187,7 @@ def _ragdolls_stay_assembled(app) -> None:  # type: ignore[no-untyped-def]
         assert j.lower_angle - slack <= j.angle <= j.upper_angle + slack, j
 
 
-@sample("Joints", "Web", help="Four boxes held by soft distance joints (2 Hz).",
-        camera=(0.0, 10.0, 0.6))
+@sample("Joints", "Web", help="Four boxes held by soft distance joints (2 Hz).")
 def web(world: World) -> None:
     ground(world)
     corners = [(-5.0, 5.0), (5.0, 5.0), (5.0, 15.0), (-5.0, 15.0)]
@@ -207,8 +203,7 @@ def web(world: World) -> None:
 
 
 @sample("Joints", "Pulleys",
-        help="Two boxes on a pulley (ratio 1.5): length_a + 1.5 length_b holds.",
-        camera=(0.0, 12.0, 0.6))
+        help="Two boxes on a pulley (ratio 1.5): length_a + 1.5 length_b holds.")
 def pulleys(world: World, ratio: float = 1.5) -> None:
     ground(world)
     a = box(world, -10.0, 10.0, 2.0, 0.5, density=5.0, name="left")
@@ -233,8 +228,7 @@ class _GearProbe(Script):
         self.small, self.big = small, big
 
 
-@sample("Joints", "Gears", help="A motor disc geared to a bigger disc (ratio 2) and to a rack.",
-        camera=(0.0, 8.0, 0.6))
+@sample("Joints", "Gears", help="A motor disc geared to a bigger disc (ratio 2) and to a rack.")
 def gears(world: World) -> None:
     ground(world)
     small = ball(world, -3.0, 10.0, 1.0, density=5.0, name="small")
@@ -261,8 +255,7 @@ def _gear_ratio(app) -> None:  # type: ignore[no-untyped-def]
     assert abs(w1 - 2.0) < 0.02 and abs(w2 + w1 / 2.0) < 0.02, (w1, w2)
 
 
-@sample("Joints", "Prismatic", help="A box on a slanted prismatic axis with limits and a motor.",
-        camera=(0.0, 8.0, 0.6))
+@sample("Joints", "Prismatic", help="A box on a slanted prismatic axis with limits and a motor.")
 def prismatic(world: World) -> None:
     ground(world)
     body = box(world, 0.0, 10.0, 2.0, 0.5, density=5.0, angle=0.5 * math.pi, name="slider")
@@ -280,7 +273,7 @@ def _stays_in_limits(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Joints", "Revolute", help="A motorised wheel and a pendulum swinging into a limit.",
-        keys={"L": "toggle the limit", "M": "toggle the motor"}, camera=(0.0, 8.0, 0.6))
+        keys={"L": "toggle the limit", "M": "toggle the motor"})
 def revolute(world: World) -> None:
     ground(world)
     wheel = ball(world, -5.0, 10.0, 0.5, density=5.0, name="wheel")
@@ -308,8 +301,7 @@ def _limit_holds(app) -> None:  # type: ignore[no-untyped-def]
     assert -0.25 * math.pi - math.radians(2.5) <= j.angle <= 0.5 * math.pi + math.radians(2.5)
 
 
-@sample("Joints", "Rope", help="A chain whose end is held by a rope joint: never farther than max.",
-        camera=(0.0, 12.0, 0.5))
+@sample("Joints", "Rope", help="A chain whose end is held by a rope joint: never farther than max.")
 def rope(world: World, links: int = 12) -> None:
     ground(world)
     y = 20.0
@@ -334,8 +326,7 @@ def _rope_holds(app) -> None:  # type: ignore[no-untyped-def]
     assert math.dist((0.0, 20.0), (w.x, w.y)) <= (j.max_length or 0.0) + 0.05
 
 
-@sample("Joints", "Mobile", help="A balanced mobile: a tree of weighted bars on revolute joints.",
-        camera=(0.0, 15.0, 0.5))
+@sample("Joints", "Mobile", help="A balanced mobile: a tree of weighted bars on revolute joints.")
 def mobile(world: World, depth: int = 4) -> None:
     ground(world)
     a = 0.5
@@ -368,7 +359,7 @@ def _mobile_hangs_together(app) -> None:  # type: ignore[no-untyped-def]
 
 
 @sample("Joints", "Theo Jansen", help="Theo Jansen's walker: a motor crank drives linkage legs.",
-        keys={"A/D": "walk left / right", "S": "stop"}, camera=(0.0, 4.0, 0.6))
+        keys={"A/D": "walk left / right", "S": "stop"})
 def theo_jansen(world: World, motor_speed: float = 2.0) -> None:
     ground(world, half_width=60.0)
     offset = (0.0, 8.0)
@@ -449,7 +440,7 @@ def _walker_moves(app) -> None:  # type: ignore[no-untyped-def]
 
 @sample("Joints", "Apply Force",
         help="Top-down: W thrusts, A/D turn; friction joints to the ground slow everything.",
-        keys={"W": "thrust", "A/D": "turn"}, camera=(0.0, 0.0, 0.5))
+        keys={"W": "thrust", "A/D": "turn"})
 def apply_force(world: World) -> None:
     world.insert_resource(PhysicsSettings(gravity=(0.0, 0.0)))
     for x, y, hw, hh in ((0.0, 20.0, 20.0, 0.5), (0.0, -20.0, 20.0, 0.5),

@@ -14,8 +14,7 @@ RESTITUTIONS = (0.0, 0.1, 0.3, 0.5, 0.75, 0.9, 1.0)
 
 
 @sample("Materials", "Restitution",
-        help="Balls with restitution 0 to 1 dropped from the same height.",
-        camera=(0.0, 5.0, 0.6))
+        help="Balls with restitution 0 to 1 dropped from the same height.")
 def restitution(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for i, e in enumerate(RESTITUTIONS):
@@ -37,8 +36,7 @@ FRICTIONS = (0.0, 0.3, 0.5, 0.6, 1.0)
 
 
 @sample("Materials", "Varying Friction",
-        help="Boxes on 30-degree slopes: friction >= tan(30) = 0.577 sticks, less slides.",
-        camera=(0.0, 5.0, 0.6))
+        help="Boxes on 30-degree slopes: friction >= tan(30) = 0.577 sticks, less slides.")
 def varying_friction(world: World) -> None:
     slope = math.radians(30.0)
     c, s = math.cos(slope), math.sin(slope)

@@ -69,7 +69,7 @@ class RaySweeper(Script):
 
 
 @sample("Queries", "Ray Cast", help="A ray sweeps around; M cycles closest / any / all.",
-        keys={"M": "cycle the ray cast mode"}, camera=(0.0, 5.0, 1.0))
+        keys={"M": "cycle the ray cast mode"})
 def ray_cast(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for i in range(6):
@@ -113,8 +113,7 @@ class BoxProbe(Script):
         t.x, t.y = self.center
 
 
-@sample("Queries", "AABB Query", help="A box-shaped query sweeps over scattered bodies.",
-        camera=(0.0, 3.0, 1.0))
+@sample("Queries", "AABB Query", help="A box-shaped query sweeps over scattered bodies.")
 def aabb_query(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for i in range(8):

@@ -8,8 +8,7 @@ from kge.testbed.samples.build import ball, box, ground, named, static_box
 from kge.world import World
 
 
-@sample("Stacking", "Vertical Stack", help="Ten boxes with 2 cm gaps; they must not drift.",
-        camera=(0.0, 5.0, 1.0))
+@sample("Stacking", "Vertical Stack", help="Ten boxes with 2 cm gaps; they must not drift.")
 def vertical_stack(world: World, count: int = 10, columns: int = 1) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for c in range(columns):
@@ -24,8 +23,7 @@ def _stack_stands(app) -> None:  # type: ignore[no-untyped-def]
     assert max(abs(x) for x in xs) < 0.01, f"stack drifted: {xs}"
 
 
-@sample("Stacking", "Pyramid", help="A pyramid of boxes (10 rows by default) that must stand.",
-        camera=(0.0, 5.0, 0.7))
+@sample("Stacking", "Pyramid", help="A pyramid of boxes (10 rows by default) that must stand.")
 def pyramid(world: World, rows: int = 10, density: float = 5.0, friction: float = 0.2) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     x0, y0 = -0.5625 * (rows - 1), 0.75
@@ -42,8 +40,7 @@ def _pyramid_stands(app) -> None:  # type: ignore[no-untyped-def]
     assert abs(t.x) < 0.05 and 9.45 < t.y < 9.75, f"top box at {t}"
 
 
-@sample("Stacking", "Mass Ratio", help="Heavy boxes (10x and 100x) on light ones: no sinking.",
-        camera=(0.0, 4.0, 1.2))
+@sample("Stacking", "Mass Ratio", help="Heavy boxes (10x and 100x) on light ones: no sinking.")
 def mass_ratio(world: World) -> None:
     static_box(world, 0.0, -10.0, 50.0, 10.0, name="ground")
     for x, heavy in ((-3.0, 10.0), (0.0, 100.0)):
@@ -61,8 +58,7 @@ def _no_sinking(app) -> None:  # type: ignore[no-untyped-def]
         assert app.world.get(e, Transform).y > 1.5 - 0.04
 
 
-@sample("Stacking", "Dominoes", help="A row of thin dominoes knocked over by a ball.",
-        camera=(0.0, 3.0, 1.0))
+@sample("Stacking", "Dominoes", help="A row of thin dominoes knocked over by a ball.")
 def dominoes(world: World, count: int = 12) -> None:
     ground(world)
     for i in range(count):
@@ -76,8 +72,7 @@ def _dominoes_fall(app) -> None:  # type: ignore[no-untyped-def]
     assert abs(app.world.get(last, Transform).angle) > 0.5, "the last domino is still standing"
 
 
-@sample("Stacking", "Confined", help="Circles packed in a closed box, settling without escaping.",
-        camera=(0.0, 10.0, 0.35))
+@sample("Stacking", "Confined", help="Circles packed in a closed box, settling without escaping.")
 def confined(world: World, columns: int = 10, rows: int = 10) -> None:
     static_box(world, 0.0, -0.5, 10.5, 0.5, name="wall")
     static_box(world, 0.0, 20.5, 10.5, 0.5, name="wall")

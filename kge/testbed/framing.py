@@ -1,0 +1,103 @@
+"""Frame a sample: fit the camera to what the sample built, beside the testbed's text.
+
+Each sample gets its own camera: after its setup, the world AABB of its colliders is
+fitted into the part of the window the sample list and the help text leave free.
+Static colliders much larger than the rest (a 200 m floor) are left out of the fit,
+so the view shows the action rather than the whole ground.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from kge.components.camera import Camera
+from kge.components.collider import Collider
+from kge.components.rigidbody import RigidBody
+from kge.components.shapes import Circle
+from kge.components.transform import Transform
+from kge.render.geometry import circle_points, shape_polyline
+from kge.testbed.registry import Sample
+from kge.world import World
+
+Rect = tuple[float, float, float, float]  # left, bottom, right, top
+
+#: a static collider wider or taller than this is "the ground", left out of the fit
+HUGE = 80.0
+
+
+def collider_bounds(world: World, entity: int, col: Collider) -> Rect | None:
+    """The world AABB of one collider (at its body's current pose), or None."""
+    body = col.body if col.body is not None else entity
+    t = world.try_get(body, Transform)
+    if t is None:
+        return None
+    shape = col.shape
+    if isinstance(shape, Circle):
+        cx, cy = shape.center
+        pts = circle_points(shape.radius, 16, (float(cx), float(cy)))
+    else:
+        pts, _ = shape_polyline(shape)
+    c, s = math.cos(t.angle), math.sin(t.angle)
+    w = np.asarray(pts, float) @ np.array([[c, s], [-s, c]]) + (t.x, t.y)
+    lo, hi = w.min(axis=0), w.max(axis=0)
+    return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+
+
+def scene_bounds(world: World) -> Rect | None:
+    """The AABB of everything but huge static colliders (of everything, if that is all)."""
+    kept: list[Rect] = []
+    huge: list[Rect] = []
+    for entity, (col,) in world.query(Collider):
+        r = collider_bounds(world, entity, col)
+        if r is None:
+            continue
+        body = col.body if col.body is not None else entity
+        static = world.try_get(body, RigidBody) is None
+        big = r[2] - r[0] > HUGE or r[3] - r[1] > HUGE
+        (huge if static and big else kept).append(r)
+    rects = kept or huge
+    if not rects:
+        return None
+    a = np.array(rects)
+    return (float(a[:, 0].min()), float(a[:, 1].min()), float(a[:, 2].max()), float(a[:, 3].max()))
+
+
+def fit_camera(bounds: Rect, size: tuple[int, int], free: Rect, margin: float = 0.08) -> Camera:
+    """A camera showing ``bounds`` (metres) inside ``free`` (window pixels: left, bottom,
+    right, top), with ``margin`` of the free area left around it."""
+    bw = max(bounds[2] - bounds[0], 1.0)
+    bh = max(bounds[3] - bounds[1], 1.0)
+    fw, fh = (free[2] - free[0]) * (1 - 2 * margin), (free[3] - free[1]) * (1 - 2 * margin)
+    scale = min(fw / bw, fh / bh)
+    # the bounds' centre goes to the free area's centre
+    fcx, fcy = (free[0] + free[2]) / 2, (free[1] + free[3]) / 2
+    bcx, bcy = (bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2
+    cx = bcx - (fcx - size[0] / 2) / scale
+    cy = bcy - (fcy - size[1] / 2) / scale
+    cam = Camera(center=(cx, cy))
+    cam.zoom = scale / cam.pixels_per_meter
+    return cam
+
+
+#: the window width the explicit ``camera=`` zooms of samples were chosen for
+REFERENCE_WIDTH = 960.0
+
+
+def sample_camera(world: World, sample: Sample, size: tuple[int, int], free: Rect) -> Camera:
+    """The camera a sample is shown through: its own ``camera=`` if it has one, else a
+    fit of what it built into ``free``; following ``sample.follow`` when it names one."""
+    if sample.camera is not None:
+        cx, cy, zoom = sample.camera
+        cam = Camera(center=(cx, cy), zoom=zoom * size[0] / REFERENCE_WIDTH)
+    else:
+        bounds = scene_bounds(world) or (-10.0, -1.0, 10.0, 19.0)
+        cam = fit_camera(bounds, size, free)
+    if sample.follow is not None:
+        from kge.testbed.samples.build import named
+
+        found = named(world, sample.follow)
+        if found:
+            cam.follow = found[0]
+    return cam
