@@ -25,9 +25,14 @@ if TYPE_CHECKING:
 
 
 def connect(app: App, window: Any, frames: int | None = None) -> None:
-    """Wire ``window`` events to ``app`` (separate from the loop so it can be tested)."""
+    """Wire ``window`` events to ``app`` (separate from the loop so it can be tested).
+
+    The handlers go on a frame of their own on the window's handler stack, which
+    :func:`disconnect` pops.
+    """
     import pyglet
 
+    window.push_handlers()  # a fresh frame: @window.event below fills it
     inp = app.input
     state = {"count": 0, "last": time.perf_counter()}
 
@@ -90,6 +95,12 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
     @window.event
     def on_close() -> None:
         app.quit()
+
+
+def disconnect(window: Any) -> None:
+    """Take :func:`connect`'s handlers off ``window`` (a pooled window outlives its App:
+    a handler left on it would still drive a closed App in the next event loop)."""
+    window.pop_handlers()
 
 
 def run_windowed(

@@ -9,7 +9,7 @@ from kge.components.debug import DebugDraw
 from kge.components.sprite import Sprite
 from kge.keys import Key, Mouse
 from kge.render.images import solid
-from kge.render.window import connect, run_windowed
+from kge.render.window import connect, disconnect, run_windowed
 
 from .conftest import SIZE
 
@@ -56,17 +56,4 @@ def test_window_events_feed_input_and_debug_toggles(make_app):
         send("on_deactivate")
         assert not app.input.held(Key.SPACE)
     finally:
-        for name in (
-            "on_draw",
-            "on_key_press",
-            "on_key_release",
-            "on_mouse_press",
-            "on_mouse_release",
-            "on_mouse_motion",
-            "on_mouse_drag",
-            "on_mouse_scroll",
-            "on_deactivate",
-            "on_resize",
-            "on_close",
-        ):
-            window.remove_handlers(name)
+        disconnect(window)

@@ -47,7 +47,7 @@ def test_the_car_camera_follows_the_car() -> None:
 
 def test_f1_from_a_real_window_toggles_debug_drawing_once() -> None:
     from kge.render.setup import ensure_renderer
-    from kge.render.window import connect
+    from kge.render.window import connect, disconnect
 
     app = App(TestbedScene(get_sample("hello-world")), headless=True, size=SIZE)
     app.render()
@@ -65,4 +65,5 @@ def test_f1_from_a_real_window_toggles_debug_drawing_once() -> None:
         app.advance(1 / 60)
         assert app.world.resource(DebugDraw).enabled
     finally:
+        disconnect(window)
         app.close()
