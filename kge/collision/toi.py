@@ -19,8 +19,10 @@ included). It alternates two steps:
    separation reaches the target, which becomes the new t1, and the
    axis is rebuilt there.
 
-The result is a state and a time: ``touching`` at ``t`` (a safe time at
-which the shapes are ``linear_slop``-close but not overlapping),
+The result is a state and a time: ``touching`` at ``t`` (the time at which
+the cores' gap is the *target*, the sum of radii less 3 * linear slop: the
+rounded shapes then overlap by about 0.015 m, Box2D's choice so that the
+manifold finds the contact and the solver keeps it),
 ``separated`` (no impact before ``t_max``; ``t`` = ``t_max``), ``overlapped``
 (already overlapping at t = 0) or ``failed`` (did not converge; ``t`` is the
 last safe time). Rotation can make the answer miss a brief, grazing contact,
@@ -54,6 +56,9 @@ State = Literal["failed", "overlapped", "touching", "separated"]
 MAX_ITERATIONS = 20
 MAX_ROOT_ITERATIONS = 50
 MAX_PUSH_BACKS = 16
+#: a core gap this small is an overlap: GJK ending on an edge through the origin
+#: leaves float64 rounding (~1e-17 m) where Box2D's float32 usually gives exactly 0
+OVERLAP_GAP = 1e-12
 
 
 @dataclass(slots=True, frozen=True)
@@ -203,7 +208,7 @@ def _toi(a: Convex, sa: Sweep, b: Convex, sb: Sweep, t_max: float) -> TOIOutput:
     for _ in range(MAX_ITERATIONS):
         pa, pb, _iters = gjk(a, sa.transform(t1), b, sb.transform(t1), cache)
         gap = math.hypot(pb[0] - pa[0], pb[1] - pa[1])
-        if gap <= 0.0:
+        if gap <= OVERLAP_GAP:
             return TOIOutput("overlapped", 0.0)
         if gap < target + tolerance:
             return TOIOutput("touching", t1)
