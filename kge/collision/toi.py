@@ -99,6 +99,20 @@ class Sweep:
         lx, ly = self.local_center
         return Pose(cx - (c * lx - s * ly), cy - (s * lx + c * ly), angle, c, s)
 
+    def advance(self, alpha: float) -> Sweep:
+        """The sweep restarted at time ``alpha`` (b2Sweep::Advance): c0, a0 move there.
+
+        ``alpha0`` is the time the sweep starts at, within the step; times of impact
+        are fractions of what remains after it.
+        """
+        a = finite(alpha, "Sweep.advance", "alpha")
+        if not self.alpha0 <= a < 1.0:
+            raise ValidationError(f"Sweep.advance alpha must be in [alpha0, 1), got {a!r}")
+        beta = (a - self.alpha0) / (1.0 - self.alpha0)
+        c0 = (self.c0[0] + beta * (self.c[0] - self.c0[0]),
+              self.c0[1] + beta * (self.c[1] - self.c0[1]))
+        return Sweep(self.local_center, c0, self.c, self.a0 + beta * (self.a - self.a0), self.a, a)
+
     def normalized(self) -> Sweep:
         """The same sweep with ``a0`` wrapped into [0, 2 pi) (b2Sweep::Normalize)."""
         d = 2.0 * math.pi * math.floor(self.a0 / (2.0 * math.pi))

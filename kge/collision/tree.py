@@ -18,7 +18,8 @@ AVL rotations so the height stays about log2(n).
 The protocols are Box2D's:
 
 * :meth:`DynamicTree.query` calls ``callback(proxy_id)`` for each overlapping
-  leaf; return False to stop early. Without a callback it returns the list;
+  leaf; return ``False`` to stop early (any other value, None included,
+  continues, as in kge's physics queries). It returns the proxies visited;
 * :meth:`DynamicTree.ray_cast` calls ``callback(p1, p2, max_fraction,
   proxy_id)`` for each leaf the (clipped) ray's fat-box test passes. The
   callback returns ``0`` to stop, a positive fraction to clip the ray there
@@ -153,8 +154,8 @@ class DynamicTree:
     def query(self, box: Any, callback: Callable[[int], Any] | None = None) -> list[int]:
         """Proxies whose fat box overlaps ``box`` (touching counts), in tree order.
 
-        With ``callback(proxy_id)``, each is passed to it as found; a falsy
-        return stops the query. The returned list holds those visited.
+        With ``callback(proxy_id)``, each is passed to it as found; returning
+        ``False`` stops the query. The returned list holds those visited.
         """
         q = _box(box, "box")
         qlx, qly, qux, quy = q.lower[0], q.lower[1], q.upper[0], q.upper[1]
@@ -170,7 +171,7 @@ class DynamicTree:
                 continue
             if height[node] == 0:
                 found.append(node)
-                if callback is not None and not callback(node):
+                if callback is not None and callback(node) is False:
                     break
             else:
                 stack.append(c1[node])

@@ -9,6 +9,7 @@ import pytest
 
 from kge.collision import Sweep, distance, time_of_impact
 from kge.components.shapes import LINEAR_SLOP, Box, Circle, Edge, Polygon
+from kge.errors import ValidationError
 from tests.collision.reference import data, shapes, sweep
 
 #: time tolerance (a fraction of the sweep): both stop within 0.25 * linear slop of the
@@ -67,6 +68,20 @@ def test_separated_and_overlapped_states() -> None:
     over = time_of_impact(Edge((-1, 0), (1, 0)), still, Box(0.5, 0.5),
                           Sweep.between((0.0, 2.0, 0.0), (0.0, -2.0, 0.0)))
     assert over.state == "touching" and 0.3 < over.t < 0.4
+
+
+def test_advance_restarts_the_sweep_where_it_was() -> None:
+    s = Sweep((0.5, 0.0), (0.0, 0.0), (4.0, 2.0), 0.0, 1.0)
+    later = s.advance(0.25)
+    assert later.alpha0 == 0.25 and later.c0 == pytest.approx((1.0, 0.5))
+    assert later.a0 == pytest.approx(0.25)
+    # the pose at the restart is the pose the old sweep had there
+    old, new = s.transform(0.25), later.transform(0.0)
+    assert (new.x, new.y, new.angle) == pytest.approx((old.x, old.y, old.angle))
+    again = later.advance(0.625)  # halfway through what remained
+    assert again.c0 == pytest.approx((2.5, 1.25))
+    with pytest.raises(ValidationError, match="alpha must be in"):
+        later.advance(0.1)
 
 
 def test_sweep_transform_places_the_local_centre_on_the_path() -> None:

@@ -139,6 +139,7 @@ def test_query_callback_can_stop_early_and_ray_callback_protocol() -> None:
 
     tree.query(((-1.0, -1.0), (20.0, 2.0)), three)
     assert len(seen) == 3
+    assert len(tree.query(((-1.0, -1.0), (20.0, 2.0)), lambda p: None)) == 10  # None goes on
     calls: list[int] = []
 
     def answering(value: float):
