@@ -82,30 +82,33 @@ def collide_polygon_circle(a: Convex, xa: Pose, b: Convex, xb: Pose) -> LocalMan
     return LocalManifold("face_a", normals[index], mid, point)
 
 
-def _edge_separation(p1: Convex, x1: Pose, edge: int, p2: Convex, x2: Pose) -> float:
-    """Separation of p2 from face ``edge`` of p1: its deepest vertex against that face."""
-    n_world = x1.rotate(p1.normals[edge])
-    nx, ny = x2.unrotate(n_world)
-    index = min(range(len(p2.vertices)),
-                key=lambda i: (p2.vertices[i][0] * nx + p2.vertices[i][1] * ny, i))
-    v1, v2 = x1.apply(p1.vertices[edge]), x2.apply(p2.vertices[index])
-    return (v2[0] - v1[0]) * n_world[0] + (v2[1] - v1[1]) * n_world[1]
-
-
 def max_separation(p1: Convex, x1: Pose, p2: Convex, x2: Pose) -> tuple[int, float]:
     """The face of p1 that best separates p2, and by how much (cores only).
 
     Box2D 2.3's search: start at the face whose normal points most towards
     p2's centroid, then climb to a neighbouring face while the separation grows.
+    A face's separation is that of p2's deepest vertex against it; p2 is moved
+    into p1's frame once for all faces.
     """
-    count = len(p1.vertices)
-    c2, c1 = x2.apply(p2.centroid), x1.apply(p1.centroid)
-    dx, dy = x1.unrotate((c2[0] - c1[0], c2[1] - c1[1]))
-    edge = max(range(count), key=lambda i: (p1.normals[i][0] * dx + p1.normals[i][1] * dy, -i))
-    s = _edge_separation(p1, x1, edge, p2, x2)
+    rel = Pose.of(*x1.inverse(x2.position), x2.angle - x1.angle)
+    others = [rel.apply(v) for v in p2.vertices]
+    verts, normals = p1.vertices, p1.normals
+    count = len(verts)
+
+    def separation(i: int) -> float:
+        (vx, vy), (nx, ny) = verts[i], normals[i]
+        return min(nx * (wx - vx) + ny * (wy - vy) for wx, wy in others)
+
+    cx, cy = rel.apply(p2.centroid)
+    dx, dy = cx - p1.centroid[0], cy - p1.centroid[1]
+    edge, best_dot = 0, -math.inf
+    for i, (nx, ny) in enumerate(normals):
+        d = nx * dx + ny * dy
+        if d > best_dot:
+            edge, best_dot = i, d
+    s = separation(edge)
     prev_edge, next_edge = (edge - 1) % count, (edge + 1) % count
-    s_prev = _edge_separation(p1, x1, prev_edge, p2, x2)
-    s_next = _edge_separation(p1, x1, next_edge, p2, x2)
+    s_prev, s_next = separation(prev_edge), separation(next_edge)
     if s_prev > s and s_prev > s_next:
         step, best, best_sep = -1, prev_edge, s_prev
     elif s_next > s:
@@ -114,7 +117,7 @@ def max_separation(p1: Convex, x1: Pose, p2: Convex, x2: Pose) -> tuple[int, flo
         return edge, s
     while True:
         edge = (best + step) % count
-        s = _edge_separation(p1, x1, edge, p2, x2)
+        s = separation(edge)
         if s <= best_sep:
             return best, best_sep
         best, best_sep = edge, s
