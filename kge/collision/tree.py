@@ -71,18 +71,34 @@ def _box(value: Any, field: str) -> AABB:
     return aabb_of(value[0], value[1], field)
 
 
-def _union(a: AABB, b: AABB) -> AABB:
-    return a.union(b)
+Box4 = tuple[float, float, float, float]  # (lower x, lower y, upper x, upper y)
+
+
+def _union(a: Box4, b: Box4) -> Box4:
+    return (min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3]))
+
+
+def _perimeter(b: Box4) -> float:
+    return 2.0 * ((b[2] - b[0]) + (b[3] - b[1]))
+
+
+def _contains(outer: Box4, inner: Box4) -> bool:
+    return (outer[0] <= inner[0] and outer[1] <= inner[1]
+            and inner[2] <= outer[2] and inner[3] <= outer[3])
 
 
 class DynamicTree:
-    """Fat AABBs with user data in a balanced binary tree; ids are small ints, reused."""
+    """Fat AABBs with user data in a balanced binary tree; ids are small ints, reused.
+
+    Nodes live in flat lists indexed by id (boxes as 4-tuples), which keeps a
+    query's inner loop to a few list reads per node.
+    """
 
     __slots__ = ("_aabb", "_child1", "_child2", "_data", "_free", "_height", "_parent",
                  "_proxies", "_root")
 
     def __init__(self) -> None:
-        self._aabb: list[AABB] = []
+        self._aabb: list[Box4] = []
         self._parent: list[int] = []
         self._child1: list[int] = []
         self._child2: list[int] = []
@@ -103,7 +119,7 @@ class DynamicTree:
         b = _box(box, "box")
         node = self._allocate()
         e = AABB_EXTENSION
-        self._aabb[node] = AABB((b.lower[0] - e, b.lower[1] - e), (b.upper[0] + e, b.upper[1] + e))
+        self._aabb[node] = (b.lower[0] - e, b.lower[1] - e, b.upper[0] + e, b.upper[1] + e)
         self._data[node] = user_data
         self._height[node] = 0
         self._insert_leaf(node)
@@ -127,7 +143,7 @@ class DynamicTree:
         node = self._leaf(proxy_id)
         b = _box(box, "box")
         dx, dy = point(displacement, "displacement")
-        if self._aabb[node].contains(b):
+        if _contains(self._aabb[node], (b.lower[0], b.lower[1], b.upper[0], b.upper[1])):
             return False
         self._remove_leaf(node)
         e = AABB_EXTENSION
@@ -141,12 +157,13 @@ class DynamicTree:
             ly += dy
         else:
             uy += dy
-        self._aabb[node] = AABB((lx, ly), (ux, uy))
+        self._aabb[node] = (lx, ly, ux, uy)
         self._insert_leaf(node)
         return True
 
     def fat_aabb(self, proxy_id: Any) -> AABB:
-        return self._aabb[self._leaf(proxy_id)]
+        lx, ly, ux, uy = self._aabb[self._leaf(proxy_id)]
+        return AABB((lx, ly), (ux, uy))
 
     def user_data(self, proxy_id: Any) -> Any:
         return self._data[self._leaf(proxy_id)]
@@ -166,8 +183,8 @@ class DynamicTree:
             node = stack.pop()
             if node == NULL:
                 continue
-            b = aabbs[node]
-            if qlx > b.upper[0] or qly > b.upper[1] or b.lower[0] > qux or b.lower[1] > quy:
+            lx, ly, ux, uy = aabbs[node]
+            if qlx > ux or qly > uy or lx > qux or ly > quy:
                 continue
             if height[node] == 0:
                 found.append(node)
@@ -200,11 +217,11 @@ class DynamicTree:
             node = stack.pop()
             if node == NULL:
                 continue
-            box = self._aabb[node]
-            if not box.overlaps(seg):
+            lx, ly, ux, uy = self._aabb[node]
+            if seg[0] > ux or seg[1] > uy or lx > seg[2] or ly > seg[3]:
                 continue
-            cx, cy = 0.5 * (box.lower[0] + box.upper[0]), 0.5 * (box.lower[1] + box.upper[1])
-            hx, hy = 0.5 * (box.upper[0] - box.lower[0]), 0.5 * (box.upper[1] - box.lower[1])
+            cx, cy = 0.5 * (lx + ux), 0.5 * (ly + uy)
+            hx, hy = 0.5 * (ux - lx), 0.5 * (uy - ly)
             if abs(vx * (a[0] - cx) + vy * (a[1] - cy)) - (avx * hx + avy * hy) > 0.0:
                 continue  # the ray's line misses the box
             if self._height[node] == 0:
@@ -238,8 +255,8 @@ class DynamicTree:
         """Sum of all node perimeters over the root's (Box2D's tree quality measure)."""
         if self._root == NULL:
             return 0.0
-        total = sum(self._aabb[i].perimeter for i, h in enumerate(self._height) if h >= 0)
-        return total / self._aabb[self._root].perimeter
+        total = sum(_perimeter(self._aabb[i]) for i, h in enumerate(self._height) if h >= 0)
+        return total / _perimeter(self._aabb[self._root])
 
     def validate(self) -> None:
         """Check the structure (parents, heights, enclosing boxes); raises AssertionError."""
@@ -252,9 +269,9 @@ class DynamicTree:
     # ---------------------------------------------------------------------------- private
 
     @staticmethod
-    def _segment_box(a: Vec2, dx: float, dy: float, t: float) -> AABB:
+    def _segment_box(a: Vec2, dx: float, dy: float, t: float) -> Box4:
         bx, by = a[0] + t * dx, a[1] + t * dy
-        return AABB((min(a[0], bx), min(a[1], by)), (max(a[0], bx), max(a[1], by)))
+        return (min(a[0], bx), min(a[1], by), max(a[0], bx), max(a[1], by))
 
     def _validate(self, node: int) -> None:
         if self._height[node] == 0:
@@ -262,8 +279,8 @@ class DynamicTree:
         c1, c2 = self._child1[node], self._child2[node]
         assert self._parent[c1] == node and self._parent[c2] == node
         assert self._height[node] == 1 + max(self._height[c1], self._height[c2])
-        assert self._aabb[node].contains(self._aabb[c1])
-        assert self._aabb[node].contains(self._aabb[c2])
+        assert _contains(self._aabb[node], self._aabb[c1])
+        assert _contains(self._aabb[node], self._aabb[c2])
         self._validate(c1)
         self._validate(c2)
 
@@ -279,7 +296,7 @@ class DynamicTree:
             node = self._free.pop()
         else:
             node = len(self._height)
-            self._aabb.append(AABB((0.0, 0.0), (0.0, 0.0)))
+            self._aabb.append((0.0, 0.0, 0.0, 0.0))
             self._parent.append(NULL)
             self._child1.append(NULL)
             self._child2.append(NULL)
@@ -303,15 +320,15 @@ class DynamicTree:
         box = self._aabb[leaf]
         index = self._root
         while self._height[index] > 0:  # descend to the cheapest sibling
-            area = self._aabb[index].perimeter
-            combined = _union(self._aabb[index], box).perimeter
+            area = _perimeter(self._aabb[index])
+            combined = _perimeter(_union(self._aabb[index], box))
             cost = 2.0 * combined
             inheritance = 2.0 * (combined - area)
             costs = []
             for child in (self._child1[index], self._child2[index]):
-                grown = _union(box, self._aabb[child]).perimeter
+                grown = _perimeter(_union(box, self._aabb[child]))
                 if self._height[child] > 0:
-                    grown -= self._aabb[child].perimeter
+                    grown -= _perimeter(self._aabb[child])
                 costs.append(grown + inheritance)
             if cost < costs[0] and cost < costs[1]:
                 break
