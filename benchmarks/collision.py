@@ -175,7 +175,7 @@ def tree_row(n: int, queries: int, blocks: int) -> dict[str, Any]:
 
 def measure(quick: bool = False) -> list[dict[str, Any]]:
     """All rows; ``quick`` uses small sizes and few blocks (for tests)."""
-    blocks = 2 if quick else 7
+    blocks = 2 if quick else 15
     pairs = 50 if quick else 400
     rows = [distance_row(pairs, blocks), collide_row(pairs, blocks)]
     for n in ((200,) if quick else (1000, 10000)):
