@@ -32,6 +32,11 @@ from kge.validate import finite, vec2
 
 Vec2 = tuple[float, float]
 
+#: Largest world coordinate accepted, in metres. Far beyond any game world; past it
+#: float64's spacing (0.1 mm at 1e12 m) approaches Box2D's tolerances, and sums of
+#: coordinates near float64's limit overflow to infinity and NaN answers.
+MAX_COORDINATE = 1e12
+
 
 @dataclass(slots=True, frozen=True)
 class Pose:
@@ -95,12 +100,19 @@ def pose(value: Any, field: str = "pose") -> Pose:
         )
     if len(value) != 3:
         raise ValidationError(f"{field} must be an (x, y, angle) triple, got {value!r}")
-    x = finite(value[0], field, "x")
-    y = finite(value[1], field, "y")
+    x = _coordinate(finite(value[0], field, "x"), f"{field}.x")
+    y = _coordinate(finite(value[1], field, "y"), f"{field}.y")
     a = finite(value[2], field, "angle")
     return Pose.of(x, y, a)
 
 
 def point(value: Any, field: str) -> Vec2:
-    """A finite (x, y) argument, named ``field`` in errors."""
-    return vec2(value, "", field)
+    """A finite (x, y) argument within :data:`MAX_COORDINATE`, named ``field`` in errors."""
+    x, y = vec2(value, "", field)
+    return (_coordinate(x, f"{field}[0]"), _coordinate(y, f"{field}[1]"))
+
+
+def _coordinate(v: float, label: str) -> float:
+    if -MAX_COORDINATE <= v <= MAX_COORDINATE:
+        return v
+    raise ValidationError(f"{label} must be within {MAX_COORDINATE:g} m of the origin, got {v!r}")

@@ -38,6 +38,7 @@ def test_non_finite_poses_are_refused(call) -> None:
     for bad, match in [((NAN, 0.0, 0.0), r"\.x must be finite"),
                        ((0.0, math.inf, 0.0), r"\.y must be finite"),
                        ((0.0, 0.0, NAN), r"\.angle must be finite"),
+                       ((1e300, 0.0, 0.0), r"\.x must be within 1e\+12 m"),
                        ((0.0, 0.0), "triple")]:
         with pytest.raises(ValidationError, match=match):
             call(bad)
@@ -45,6 +46,16 @@ def test_non_finite_poses_are_refused(call) -> None:
         call("origin")
     with pytest.raises(ComponentTypeError, match="must be a number"):
         call(("0", 0.0, 0.0))
+
+
+def test_far_points_are_refused_rather_than_overflowing() -> None:
+    with pytest.raises(ValidationError, match=r"p1\[0\] must be within"):
+        ray_cast(BOX, (0, 0, 0), (-1.7e308, 0.0), (1.7e308, 0.0))
+    with pytest.raises(ValidationError, match=r"Sweep.c\[1\] must be within"):
+        Sweep((0.0, 0.0), (0.0, 0.0), (0.0, 1e13), 0.0, 0.0)
+    # the limit itself is fine and answers stay finite
+    out = distance(BOX, (1e12, 0, 0), BOX, (-1e12, 0, 0))
+    assert math.isfinite(out.distance) and out.distance > 1.9e12
 
 
 def test_the_argument_is_named_in_the_message() -> None:
