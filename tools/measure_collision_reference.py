@@ -253,6 +253,49 @@ def measure_manifolds(rng: random.Random, shapes: list[dict[str, Any]]) -> list[
     return out
 
 
+def measure_overlap(rng: random.Random, shapes: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    out = []
+    for _ in range(300):
+        a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
+        ca, cb = rng.randrange(children(shapes[a])), rng.randrange(children(shapes[b]))
+        pa, pb = random_pose(rng, 1.5), random_pose(rng, 1.5)
+        hit = B.b2TestOverlap(b2_shape(shapes[a]), ca, b2_shape(shapes[b]), cb, xf(pa), xf(pb))
+        out.append({"a": a, "child_a": ca, "pose_a": pa, "b": b, "child_b": cb, "pose_b": pb,
+                    "overlap": bool(hit)})
+    return out
+
+
+STATES = {0: "null", 1: "add", 2: "persist", 3: "remove"}
+
+
+def measure_point_states(rng: random.Random, shapes: list[dict[str, Any]]
+                         ) -> list[dict[str, Any]]:
+    """b2GetPointStates between the manifolds of one pair at two nearby poses of B."""
+    out: list[dict[str, Any]] = []
+    while len(out) < 150:
+        a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
+        fn = COLLIDERS.get((KINDS[shapes[a]["type"]], KINDS[shapes[b]["type"]]))
+        if fn is None:
+            continue
+        ca = rng.randrange(children(shapes[a]))
+        pa, pb1 = random_pose(rng, 0.5), random_pose(rng, 0.8)
+        pb2 = [pb1[0] + rng.uniform(-0.3, 0.3), pb1[1] + rng.uniform(-0.3, 0.3),
+               pb1[2] + rng.uniform(-0.5, 0.5)]
+        sa, sb = b2_shape(shapes[a]), b2_shape(shapes[b])
+        if shapes[a]["type"] == "chain":
+            sa = child_edge(sa, ca)
+        m1, m2 = B.b2Manifold(), B.b2Manifold()
+        fn(m1, sa, xf(pa), sb, xf(pb1))
+        fn(m2, sa, xf(pa), sb, xf(pb2))
+        if not (m1.pointCount or m2.pointCount):
+            continue
+        s1, s2 = B.b2GetPointStates(m1, m2)
+        out.append({"a": a, "child_a": ca, "pose_a": pa, "b": b, "pose_b1": pb1, "pose_b2": pb2,
+                    "states1": [STATES[x] for x in s1[:m1.pointCount]],
+                    "states2": [STATES[x] for x in s2[:m2.pointCount]]})
+    return out
+
+
 def fat_aabb(world: Any, proxy_id: int) -> Any:
     """The tree's fat AABB of a proxy (fixture.GetAABB gives the tight one).
 
@@ -374,6 +417,8 @@ def main() -> int:
     data["toi"] = measure_toi(rng, shapes)
     data["manifold"] = measure_manifolds(rng, shapes)
     data["tree"] = measure_tree(rng)
+    data["overlap"] = measure_overlap(rng, shapes)
+    data["point_states"] = measure_point_states(rng, shapes)
     OUT.write_text(json.dumps(_rounded(data), separators=(",", ":")) + "\n")
     print(f"wrote {OUT} ({OUT.stat().st_size // 1024} KiB)", file=sys.stderr)
     return 0

@@ -11,11 +11,13 @@ coordinates plus a *pose* ``(x, y, angle)`` (or a :class:`Pose` or a
 * where does a ray hit? :func:`ray_cast` -> :class:`RayCastOutput` (``RayCast``)
 * its bounding box: :func:`aabb` -> :class:`AABB` (``ComputeAABB``)
 * mass, inertia, centre: :func:`mass_data` (``ComputeMass``)
-* closest points: :func:`distance` -> :class:`DistanceOutput` (``b2Distance``, GJK)
+* closest points: :func:`distance` -> :class:`DistanceOutput` (``b2Distance``, GJK);
+  do they touch at all: :func:`overlap` (``b2TestOverlap``)
 * first contact of two motions: :func:`time_of_impact` with :class:`Sweep`
   (``b2TimeOfImpact``)
 * how two shapes touch: :func:`collide` -> :class:`Manifold` (``b2Collide*`` and
-  ``b2WorldManifold``)
+  ``b2WorldManifold``); which points are new, kept or gone: :func:`point_states`
+  (``b2GetPointStates``)
 * many boxes at once: :class:`DynamicTree` (``b2DynamicTree``)
 
 Each module explains its algorithm; ``docs/collision.md`` has the guide, the
@@ -31,9 +33,9 @@ True
 """
 
 from kge.collision.collide import collide
-from kge.collision.distance import DistanceOutput, SimplexCache, distance
+from kge.collision.distance import DistanceOutput, SimplexCache, distance, overlap
 from kge.collision.geometry import POLYGON_RADIUS, child_count
-from kge.collision.manifold import ContactId, Manifold, ManifoldPoint
+from kge.collision.manifold import ContactId, Manifold, ManifoldPoint, point_states
 from kge.collision.pose import Pose
 from kge.collision.shape_queries import AABB, RayCastOutput, aabb, mass_data, ray_cast, test_point
 from kge.collision.toi import Sweep, TOIOutput, time_of_impact
@@ -59,6 +61,8 @@ __all__ = [
     "collide",
     "distance",
     "mass_data",
+    "overlap",
+    "point_states",
     "ray_cast",
     "test_point",
     "time_of_impact",

@@ -236,6 +236,25 @@ def distance(
     return finish(pa, pb, a.radius if radii else 0.0, b.radius if radii else 0.0, iterations)
 
 
+#: Box2D's b2TestOverlap threshold: 10 float32 epsilons (rounded shapes this close overlap)
+OVERLAP_DISTANCE = 10.0 * 1.1920929e-07
+
+
+def overlap(
+    shape_a: Any, pose_a: Any, shape_b: Any, pose_b: Any, *, child_a: Any = 0, child_b: Any = 0
+) -> bool:
+    """True when the two rounded shapes touch or overlap (b2TestOverlap).
+
+    The polygon skin counts, as in Box2D: two boxes whose cores are 0.015 m apart
+    overlap. For "do they collide" with normals and depths, use
+    :func:`kge.collision.collide`.
+    """
+    a, b = convex(shape_a, child_a, "shape_a"), convex(shape_b, child_b, "shape_b")
+    xa, xb = pose(pose_a, "pose_a"), pose(pose_b, "pose_b")
+    pa, pb, iterations = gjk(a, xa, b, xb)
+    return finish(pa, pb, a.radius, b.radius, iterations).distance < OVERLAP_DISTANCE
+
+
 def finish(pa: Vec2, pb: Vec2, ra: float, rb: float, iterations: int) -> DistanceOutput:
     """Move core witness points out by the radii (or to their midpoint if the shapes touch)."""
     d = math.hypot(pb[0] - pa[0], pb[1] - pa[1])

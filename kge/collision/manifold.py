@@ -149,6 +149,30 @@ def world_form(m: LocalManifold, xa: Pose, ra: float, xb: Pose, rb: float) -> Ma
                     (normal[0] + 0.0, normal[1] + 0.0), tuple(pts), tuple(seps))
 
 
+PointState = Literal["add", "persist", "remove"]
+
+
+def point_states(
+    old: Manifold | LocalManifold, new: Manifold | LocalManifold
+) -> tuple[tuple[PointState, ...], tuple[PointState, ...]]:
+    """How contact points changed between two manifolds of a pair (b2GetPointStates).
+
+    Points are matched by :class:`ContactId` (the features they come from).
+    Each of ``old``'s points is ``"persist"`` or ``"remove"``, each of ``new``'s
+    ``"add"`` or ``"persist"``; the tuples have one state per point (Box2D pads
+    its two-slot arrays with ``b2_nullState``).
+    """
+    old_pts = old.local_points if isinstance(old, Manifold) else old.points
+    new_pts = new.local_points if isinstance(new, Manifold) else new.points
+    old_ids = {p.id for p in old_pts}
+    new_ids = {p.id for p in new_pts}
+    before: tuple[PointState, ...] = tuple(
+        "persist" if p.id in new_ids else "remove" for p in old_pts)
+    after: tuple[PointState, ...] = tuple(
+        "persist" if p.id in old_ids else "add" for p in new_pts)
+    return before, after
+
+
 @dataclass(slots=True, frozen=True)
 class ClipVertex:
     """A point of an incident edge being clipped, and the features it comes from."""

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from kge.collision import SimplexCache, distance
+from kge.collision import SimplexCache, distance, overlap
 from kge.collision.distance import gjk
 from kge.collision.geometry import convex
 from kge.collision.pose import pose
@@ -58,3 +58,19 @@ def test_a_warm_cache_converges_at_once() -> None:
     _pa, _pb, cold = gjk(a, pose((0, 0, 0)), b, pose((3.0, 0.5, 0.2)), cache)
     _pa, _pb, warm = gjk(a, pose((0, 0, 0)), b, pose((3.01, 0.5, 0.2)), cache)
     assert cold >= 2 and warm <= 1
+
+
+def test_overlap_matches_box2d_test_overlap() -> None:
+    cases = data()["overlap"]
+    for c in cases:
+        got = overlap(shapes()[c["a"]], c["pose_a"], shapes()[c["b"]], c["pose_b"],
+                      child_a=c["child_a"], child_b=c["child_b"])
+        assert got == c["overlap"], c
+    assert 30 < sum(c["overlap"] for c in cases) < len(cases) - 30
+
+
+def test_overlap_counts_the_skin() -> None:
+    box = Box(0.5, 0.5)
+    assert overlap(box, (0, 0, 0), box, (1.015, 0.0, 0.0))  # cores 1.5 cm apart, skins touch
+    assert not overlap(box, (0, 0, 0), box, (1.03, 0.0, 0.0))
+    assert overlap(Circle(1.0), (0, 0, 0), Edge((-1, 1), (1, 1)), (0, 0, 0))

@@ -7,7 +7,7 @@ from collections import Counter
 
 import pytest
 
-from kge.collision import collide
+from kge.collision import collide, point_states
 from kge.collision.geometry import convex
 from kge.collision.pose import pose
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
@@ -129,3 +129,25 @@ def test_separated_shapes_have_empty_manifolds() -> None:
     assert not collide(tri, (0, 0, 0), tri, (3.0, 0.0, 0.0))
     assert not collide(tri, (0, 0, 0), Circle(0.5), (0.0, 3.0, 0.0))
     assert collide(tri, (0, 0, 0), Circle(0.5), (0.0, 1.4, 0.0))
+
+
+def test_point_states_match_box2d_get_point_states() -> None:
+    kinds: Counter[str] = Counter()
+    for c in data()["point_states"]:
+        a, b = shapes()[c["a"]], shapes()[c["b"]]
+        m1 = collide(a, c["pose_a"], b, c["pose_b1"], child_a=c["child_a"])
+        m2 = collide(a, c["pose_a"], b, c["pose_b2"], child_a=c["child_a"])
+        before, after = point_states(m1, m2)
+        assert list(before) == c["states1"] and list(after) == c["states2"], c
+        kinds.update(before + after)
+    assert kinds["persist"] > 50 and kinds["add"] > 10 and kinds["remove"] > 10
+
+
+def test_point_states_of_a_box_rocking_on_a_box() -> None:
+    ground = Box(2.0, 0.5)
+    flat = collide(ground, (0, 0, 0), Box(0.5, 0.5), (0.0, 0.99, 0.0))
+    tipped = collide(ground, (0, 0, 0), Box(0.5, 0.5), (0.0, 1.1, 0.3))  # one corner down
+    assert flat.point_count == 2 and tipped.point_count == 1
+    before, after = point_states(flat, tipped)
+    assert sorted(before) == ["persist", "remove"] and after == ("persist",)
+    assert point_states(flat, flat) == (("persist", "persist"), ("persist", "persist"))
