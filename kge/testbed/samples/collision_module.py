@@ -60,8 +60,8 @@ class DistanceProbe(Script):
         self.line = 0
 
     def on_start(self) -> None:
-        self.line = self.world.spawn(Transform(), Line((0, 0), (0, 0), color=YELLOW, layer=3),
-                                     Name("closest"))
+        self.line = self.world.spawn(Transform(), Line((0, 0), (0, 0), color=YELLOW, layer=3,
+                                                             thickness=0.06), Name("closest"))
 
     def on_fixed_update(self, dt: float) -> None:
         self.t += dt
@@ -95,6 +95,13 @@ def distance_test(world: World) -> None:
 def _closest_points_span_the_gap(app: Any) -> None:
     world = app.world
     probe = world.get(named(world, "plank")[0], Behaviour).script
+    x = world.get(named(world, "plank")[0], Transform).x
+    app.input.press(Key.RIGHT)  # steering moves the plank by 0.2 m
+    app.step()
+    assert probe.steer[0] == 0.2
+    assert math.isclose(world.get(named(world, "plank")[0], Transform).x - x,
+                        0.2 + 3.0 * (math.cos(0.4 * probe.t) - math.cos(0.4 * (probe.t - 1 / 60))),
+                        abs_tol=1e-6)
     out = probe.result
     assert out is not None and out.distance > 0.0
     line = world.get(named(world, "closest")[0], Line)
@@ -165,7 +172,8 @@ class ManifoldProbe(Script):
             self.dots.append(self.world.spawn(Transform(), Dot(0.1, color=RED, layer=3,
                                                                visible=False)))
         self.normal = self.world.spawn(Transform(), Line((0, 0), (0, 0), color=YELLOW, layer=3,
-                                                         visible=False), Name("normal"))
+                                                         thickness=0.06, visible=False),
+                                       Name("normal"))
 
     def on_fixed_update(self, dt: float) -> None:
         self.t += dt
@@ -243,7 +251,7 @@ class TreeProbe(Script):
             w, h = 2.0 * self.half[i]
             self.entities.append(self.world.spawn(
                 Transform(*map(float, self.pos[i])),
-                Rect(float(w), float(h), color=GREY, filled=False, thickness=0.03)))
+                Rect(float(w), float(h), color=GREY)))
 
     def on_fixed_update(self, dt: float) -> None:
         self.t += dt
