@@ -195,6 +195,26 @@ class DynamicTree:
                 stack.append(c2[node])
         return found
 
+    def pairs(self, proxies: Any = None) -> list[tuple[int, int]]:
+        """Pairs of proxies whose fat boxes overlap, each once as (smaller id, larger id).
+
+        This is Box2D's broad phase (``b2BroadPhase::UpdatePairs``): pass the
+        proxies that moved since the last call (``move`` returned True for them,
+        or they are new) to get only the pairs involving them, the candidates
+        for exact tests; None checks every proxy. Sorted.
+        """
+        if proxies is None:
+            movers = [i for i, h in enumerate(self._height) if h == 0]
+        else:
+            movers = [self._leaf(p) for p in proxies]
+        found: set[tuple[int, int]] = set()
+        for a in movers:
+            lx, ly, ux, uy = self._aabb[a]
+            for b in self.query(AABB((lx, ly), (ux, uy))):
+                if b != a:
+                    found.add((a, b) if a < b else (b, a))
+        return sorted(found)
+
     def ray_cast(self, p1: Any, p2: Any, callback: RayCallback, max_fraction: Any = 1.0) -> None:
         """Walk the leaves a ray may hit, clipping it by the callback's answers (b2 RayCast).
 

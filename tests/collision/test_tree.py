@@ -175,3 +175,18 @@ def test_bad_proxy_ids_and_boxes_are_refused() -> None:
     with pytest.raises(ValidationError, match="zero-length"):
         tree.ray_cast((0.0, 0.0), (0.0, 0.0), lambda *a: 1.0)
     assert len(tree) == 0
+
+
+def test_pairs_are_the_overlapping_fat_boxes() -> None:
+    rng = random.Random(11)
+    tree = DynamicTree()
+    leaves = []
+    for i in range(300):
+        x, y = rng.uniform(0, 30), rng.uniform(0, 30)
+        leaves.append(tree.insert(((x, y), (x + rng.uniform(0.2, 2), y + rng.uniform(0.2, 2))), i))
+    leaves.sort()
+    brute = sorted((a, b) for i, a in enumerate(leaves) for b in leaves[i + 1:]
+                   if tree.fat_aabb(a).overlaps(tree.fat_aabb(b)))
+    assert tree.pairs() == brute and len(brute) > 50
+    movers = leaves[:10]
+    assert tree.pairs(movers) == [p for p in brute if p[0] in movers or p[1] in movers]
