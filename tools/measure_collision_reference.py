@@ -164,11 +164,16 @@ def measure_shape_queries(rng: random.Random, shapes: list[dict[str, Any]]) -> d
     return {"test_point": points, "ray_cast": rays, "aabb": boxes, "mass": masses}
 
 
+def random_pair(rng: random.Random, shapes: list[dict[str, Any]]) -> tuple[int, int, int, int]:
+    """Two shape indices and a child index of each."""
+    a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
+    return a, b, rng.randrange(children(shapes[a])), rng.randrange(children(shapes[b]))
+
+
 def measure_distance(rng: random.Random, shapes: list[dict[str, Any]]) -> list[dict[str, Any]]:
     out = []
     for _ in range(300):
-        a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
-        ca, cb = rng.randrange(children(shapes[a])), rng.randrange(children(shapes[b]))
+        a, b, ca, cb = random_pair(rng, shapes)
         pa, pb = random_pose(rng, 2.5), random_pose(rng, 2.5)
         use_radii = rng.random() < 0.7
         r = B.b2Distance(shapeA=b2_shape(shapes[a]), idxA=ca, shapeB=b2_shape(shapes[b]),
@@ -199,8 +204,7 @@ def b2_sweep(s: dict[str, Any]) -> Any:
 def measure_toi(rng: random.Random, shapes: list[dict[str, Any]]) -> list[dict[str, Any]]:
     out = []
     for _ in range(200):
-        a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
-        ca, cb = rng.randrange(children(shapes[a])), rng.randrange(children(shapes[b]))
+        a, b, ca, cb = random_pair(rng, shapes)
         sa, sb = random_sweep(rng, 4.0), random_sweep(rng, 4.0)
         t_max = rng.choice([1.0, 1.0, 0.7])
         state, t = B.b2TimeOfImpact(shapeA=b2_shape(shapes[a]), idxA=ca,
@@ -256,8 +260,7 @@ def measure_manifolds(rng: random.Random, shapes: list[dict[str, Any]]) -> list[
 def measure_overlap(rng: random.Random, shapes: list[dict[str, Any]]) -> list[dict[str, Any]]:
     out = []
     for _ in range(300):
-        a, b = rng.randrange(len(shapes)), rng.randrange(len(shapes))
-        ca, cb = rng.randrange(children(shapes[a])), rng.randrange(children(shapes[b]))
+        a, b, ca, cb = random_pair(rng, shapes)
         pa, pb = random_pose(rng, 1.5), random_pose(rng, 1.5)
         hit = B.b2TestOverlap(b2_shape(shapes[a]), ca, b2_shape(shapes[b]), cb, xf(pa), xf(pb))
         out.append({"a": a, "child_a": ca, "pose_a": pa, "b": b, "child_b": cb, "pose_b": pb,

@@ -11,6 +11,7 @@ samples are deterministic headless.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -47,6 +48,20 @@ def _outline(shape: Any, color: tuple[int, int, int, int], layer: int = 1) -> Ou
 def _pose(world: World, entity: int) -> tuple[float, float, float]:
     t = world.get(entity, Transform)
     return (t.x, t.y, t.angle)
+
+
+def _probe(world: World, name: str) -> Any:
+    """The script of the Behaviour on the entity called ``name``."""
+    return world.get(named(world, name)[0], Behaviour).script
+
+
+def _pair(world: World, hexagon_angle: float, plank_at: tuple[float, float],
+          probe: Callable[[int], Script]) -> None:
+    """A hexagon at (0, 5) and a plank driven by ``probe(hexagon_entity)``."""
+    a = world.spawn(Transform(0.0, 5.0, hexagon_angle), _outline(HEXAGON, SHAPE_A),
+                    Name("hexagon"))
+    world.spawn(Transform(*plank_at), _outline(PLANK, SHAPE_B), Name("plank"),
+                Behaviour(probe(a)))
 
 
 class DistanceProbe(Script):
@@ -86,15 +101,13 @@ class DistanceProbe(Script):
         help="GJK closest points between a hexagon and a plank (no physics).",
         keys={"arrows": "move the plank", "Q/E": "turn the plank"}, camera=(0.0, 5.0, 1.0))
 def distance_test(world: World) -> None:
-    a = world.spawn(Transform(0.0, 5.0, 0.2), _outline(HEXAGON, SHAPE_A), Name("hexagon"))
-    world.spawn(Transform(3.0, 5.0), _outline(PLANK, SHAPE_B), Name("plank"),
-                Behaviour(DistanceProbe(a)))
+    _pair(world, 0.2, (3.0, 5.0), DistanceProbe)
 
 
 @distance_test.claim
 def _closest_points_span_the_gap(app: Any) -> None:
     world = app.world
-    probe = world.get(named(world, "plank")[0], Behaviour).script
+    probe = _probe(world, "plank")
     x = world.get(named(world, "plank")[0], Transform).x
     app.input.press(Key.RIGHT)  # steering moves the plank by 0.2 m
     app.step()
@@ -148,7 +161,7 @@ def time_of_impact(world: World) -> None:
 @time_of_impact.claim
 def _impact_pose_touches(app: Any) -> None:
     world = app.world
-    probe = world.get(named(world, "start")[0], Behaviour).script
+    probe = _probe(world, "start")
     assert probe.result is not None and probe.result.state == "touching"
     hexagon = _pose(world, named(world, "hexagon")[0])
     at = _pose(world, named(world, "impact")[0])
@@ -197,15 +210,13 @@ class ManifoldProbe(Script):
         help="Contact manifold (points and normal) of a plank sliding over a hexagon.",
         camera=(0.0, 5.0, 1.0))
 def polygon_collision(world: World) -> None:
-    a = world.spawn(Transform(0.0, 5.0, 0.0), _outline(HEXAGON, SHAPE_A), Name("hexagon"))
-    world.spawn(Transform(0.0, 6.0), _outline(PLANK, SHAPE_B), Name("plank"),
-                Behaviour(ManifoldProbe(a)))
+    _pair(world, 0.0, (0.0, 6.0), ManifoldProbe)
 
 
 @polygon_collision.claim
 def _manifold_points_are_in_both_shapes(app: Any) -> None:
     world = app.world
-    probe = world.get(named(world, "plank")[0], Behaviour).script
+    probe = _probe(world, "plank")
     touching = 0
     for _ in range(60):
         app.step()
@@ -283,7 +294,7 @@ def dynamic_tree(world: World, count: int = 150) -> None:
 @dynamic_tree.claim
 def _tree_finds_every_overlap(app: Any) -> None:
     world = app.world
-    probe = world.get(named(world, "query")[0], Behaviour).script
+    probe = _probe(world, "query")
     probe.tree.validate()
     (qx0, qy0), (qx1, qy1) = probe.query
     lo, hi = probe.pos - probe.half, probe.pos + probe.half
