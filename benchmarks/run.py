@@ -266,6 +266,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         for r in report["breakdown"]:
             out.append(f"| {r['scene']} | {r['size']} | "
                        + " | ".join(f"{r[p]:.2f}" for p in (*PHASES, "total")) + " |")
+    if report.get("collision"):
+        from benchmarks.collision import markdown as collision_markdown
+
+        out += collision_markdown(report["collision"])
     out += ["", "Targets:", "", "| target | measured | goal | |", "|---|---:|---:|---|"]
     for t in report["targets"]:
         out.append("| " + " | ".join(_fmt_target(t)) + " |")
@@ -321,6 +325,15 @@ def main(argv: list[str] | None = None) -> int:
         rows = run_breakdown(chosen, progress, args.quick)
         print("\nkge frame breakdown, median ms per phase:")
         print(breakdown_table(rows))
+    collision: list[dict[str, Any]] = []
+    if not args.scene:  # kge.collision queries beside pybox2d and brute force
+        from benchmarks.collision import measure as collision_measure
+        from benchmarks.collision import table as collision_table
+
+        progress("kge.collision queries")
+        collision = collision_measure(args.quick)
+        print("\nkge.collision, queries per second:")
+        print(collision_table(collision))
     goals = targets(results, fitting, render)
     print("\ntargets:")
     for t in goals:
@@ -337,6 +350,7 @@ def main(argv: list[str] | None = None) -> int:
         "largest_fitting": fitting,
         "render": {str(n): r for n, r in render.items()},
         "breakdown": rows,
+        "collision": collision,
         "targets": goals,
         "skipped": skipped,
     }

@@ -11,6 +11,7 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 import kge.dependencies  # noqa: F401  (first: a missing dependency is named, with the venv to use)
+from kge import collision as collision  # Box2D's collision module, no World needed
 from kge.app import App, run
 from kge.components import (
     Behaviour,

@@ -51,7 +51,7 @@ from __future__ import annotations
 
 import heapq
 import math
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -172,8 +172,10 @@ def _world_point(shape: pymunk.Shape, local: Any) -> Vec2:
     return (float(p[0]), float(p[1]))
 
 
-def _ray_circle(c: Vec2, r: float, p1: Vec2, d: Vec2) -> tuple[float, Vec2] | None:
-    """Box2D b2CircleShape::RayCast (fraction in [0, 1], start inside = miss)."""
+def _ray_circle(
+    c: Vec2, r: float, p1: Vec2, d: Vec2, max_fraction: float = 1.0
+) -> tuple[float, Vec2] | None:
+    """Box2D b2CircleShape::RayCast (fraction in [0, max_fraction], start inside = miss)."""
     sx, sy = p1[0] - c[0], p1[1] - c[1]
     b = sx * sx + sy * sy - r * r
     cc = sx * d[0] + sy * d[1]
@@ -182,7 +184,7 @@ def _ray_circle(c: Vec2, r: float, p1: Vec2, d: Vec2) -> tuple[float, Vec2] | No
     if sigma < 0.0 or rr < 1e-30:
         return None
     a = -(cc + math.sqrt(sigma))
-    if not 0.0 <= a <= rr:
+    if not 0.0 <= a <= max_fraction * rr:
         return None
     t = a / rr
     nx, ny = sx + t * d[0], sy + t * d[1]
@@ -190,9 +192,11 @@ def _ray_circle(c: Vec2, r: float, p1: Vec2, d: Vec2) -> tuple[float, Vec2] | No
     return t, ((nx / n, ny / n) if n > 0 else (0.0, 0.0))
 
 
-def _ray_polygon(verts: list[Vec2], p1: Vec2, d: Vec2) -> tuple[float, Vec2] | None:
+def _ray_polygon(
+    verts: Sequence[Vec2], p1: Vec2, d: Vec2, max_fraction: float = 1.0
+) -> tuple[float, Vec2] | None:
     """Box2D b2PolygonShape::RayCast on the core polygon (start inside = miss)."""
-    lower, upper, index = 0.0, 1.0, -1
+    lower, upper, index = 0.0, max_fraction, -1
     normal = (0.0, 0.0)
     n = len(verts)
     for i in range(n):
@@ -216,7 +220,9 @@ def _ray_polygon(verts: list[Vec2], p1: Vec2, d: Vec2) -> tuple[float, Vec2] | N
     return (lower, normal) if index >= 0 else None
 
 
-def _ray_edge(v1: Vec2, v2: Vec2, p1: Vec2, d: Vec2) -> tuple[float, Vec2] | None:
+def _ray_edge(
+    v1: Vec2, v2: Vec2, p1: Vec2, d: Vec2, max_fraction: float = 1.0
+) -> tuple[float, Vec2] | None:
     """Box2D b2EdgeShape::RayCast: two-sided, normal facing the ray."""
     ex, ey = v2[0] - v1[0], v2[1] - v1[1]
     rr = ex * ex + ey * ey
@@ -229,7 +235,7 @@ def _ray_edge(v1: Vec2, v2: Vec2, p1: Vec2, d: Vec2) -> tuple[float, Vec2] | Non
     if denominator == 0.0:
         return None
     t = numerator / denominator
-    if not 0.0 <= t <= 1.0:
+    if not 0.0 <= t <= max_fraction:
         return None
     qx, qy = p1[0] + t * d[0], p1[1] + t * d[1]
     s = ((qx - v1[0]) * ex + (qy - v1[1]) * ey) / rr

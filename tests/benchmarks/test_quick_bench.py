@@ -63,6 +63,7 @@ def test_report_has_breakdown_targets_chart_and_markdown(report: dict) -> None:
     assert report["_png"][:8] == b"\x89PNG\r\n\x1a\n"
     assert "| scene | size |" in report["_md"] and report["machine"] in report["_md"]
     assert report["render"] or any("render" in s for s in report["skipped"])
+    assert {r["row"] for r in report["collision"]} == {"distance", "collide", "tree query"}
 
 
 def test_ground_pinned_chain_mirrors_on_raw_pymunk() -> None:

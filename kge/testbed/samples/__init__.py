@@ -4,6 +4,7 @@ from kge.testbed.samples import (  # noqa: F401
     basics,
     bodies,
     collision,
+    collision_module,
     determinism,
     joints,
     large,
