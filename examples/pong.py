@@ -17,6 +17,7 @@ self-played match and a summary).
 
 from __future__ import annotations
 
+import math
 import random
 
 import kge
@@ -53,6 +54,8 @@ BALL_RADIUS = 1 / 6
 MAX_BALL_SPEED = 20.0
 SERVE_DELAY = 1.0
 WINNING_SCORE = 5
+#: a ball meeting a paddle's very edge leaves with vy = 0.75 of its speed (the centre: 0)
+MAX_ENGLISH = 0.75
 UP_KEYS = (Key.W, Key.Z, Key.UP)
 DOWN_KEYS = (Key.S, Key.DOWN)
 
@@ -73,7 +76,8 @@ class PlayerPaddle(Script):
     """Moves with the keys at 7 m/s, clamped to the court (a kinematic body)."""
 
     def on_fixed_update(self, dt: float) -> None:
-        direction = self.world.resource(Input).axis(DOWN_KEYS, UP_KEYS)
+        over = self.world.has_resource(MatchOver)
+        direction = 0.0 if over else self.world.resource(Input).axis(DOWN_KEYS, UP_KEYS)
         move(self, direction * PADDLE_SPEED, PLAYER_LIMIT, dt)
 
 
@@ -83,7 +87,7 @@ class AIPaddle(Script):
     def on_fixed_update(self, dt: float) -> None:
         balls = self.world.query(Ball.Tag, Transform)
         ball_y = balls[0][1][1].y if balls else None
-        if ball_y is None or abs(ball_y) >= AI_STOP:
+        if ball_y is None or abs(ball_y) >= AI_STOP or self.world.has_resource(MatchOver):
             move(self, 0.0, AI_LIMIT, dt)
         else:
             move(self, (ball_y - self.transform.y) / dt, AI_LIMIT, dt)
@@ -123,8 +127,22 @@ class Ball(Script):
     def on_contact_begin(self, event) -> None:  # type: ignore[no-untyped-def]
         other = event.collider_b if event.collider_a == self.entity else event.collider_a
         name = self.world.try_get(other, Name)
-        sound = "paddle_hit.wav" if name and name.value.startswith("paddle") else "wall_hit.wav"
+        paddle = name is not None and name.value.startswith("paddle")
+        if paddle:
+            self.english(other)
+        sound = "paddle_hit.wav" if paddle else "wall_hit.wav"
         self.world.resource(Audio).play(sound, volume=0.5)
+
+    def english(self, paddle: int) -> None:
+        """Aim: where the ball meets the paddle sets its angle (the edges send it steep),
+        at the same speed, always away from that paddle."""
+        rb = self.get(RigidBody)
+        speed = math.hypot(*rb.velocity)
+        p = self.world.get(paddle, Transform)
+        offset = max(-1.0, min(1.0, (self.transform.y - p.y) / PADDLE_HALF[1]))
+        vy = offset * MAX_ENGLISH * speed
+        vx = math.copysign(math.sqrt(max(speed * speed - vy * vy, 0.0)), -p.x)
+        rb.velocity = (vx, vy)
 
 
 def spawn_ball(world: World, velocity: tuple[float, float]) -> int:
@@ -162,7 +180,12 @@ class Goal(Script):
         spawn_ball(self.world, (10.0 * self.direction, vy))
 
 
+class MatchOver:
+    """A resource: the match is decided; the paddles stop until R or Esc."""
+
+
 def game_over(world: World, message: str) -> None:
+    world.insert_resource(MatchOver())
     for text, y, size in ((message, 0.5, 36), ("R: play again    Esc: menu", -0.5, 16)):
         label = Text(text, size=size, bold=True, layer=10)
         world.spawn(Transform(0.0, y), label, Name("game-over"))
@@ -213,9 +236,13 @@ def pong(world: World, seed: int | None = None) -> None:
 
 
 class MenuKeys(Script):
+    """Space or Enter plays; Esc quits."""
+
     def on_key_down(self, key: int) -> None:
         if key in (Key.SPACE, Key.ENTER, Key.RETURN):
             self.world.resource(App).replace_scene(pong)
+        elif key == Key.ESCAPE:
+            self.world.resource(App).quit()
 
 
 def menu(world: World) -> None:
@@ -226,6 +253,8 @@ def menu(world: World) -> None:
     world.spawn(Transform(0.0, -0.5), Text("Press Space to play", size=20))
     world.spawn(Transform(0.0, -1.5), Text("W/S or the arrows move your paddle. First to 5.",
                                            size=14, color=(180, 180, 180, 255)))
+    world.spawn(Transform(0.0, -2.3), Text("Aim with where the ball meets your paddle.  Esc: quit",
+                                           size=12, color=(140, 140, 140, 255)))
     world.spawn(Behaviour(MenuKeys()))
 
 

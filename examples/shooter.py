@@ -86,10 +86,10 @@ class Ship(Script):
         nx, ny = -math.sin(angle), math.cos(angle)
         t = self.transform
         shot = self.world.spawn(
-            Transform(t.x + 0.5 * nx, t.y + 0.5 * ny),
+            Transform(t.x + 0.5 * nx, t.y + 0.5 * ny, angle),  # the bolt points where it flies
             RigidBody(gravity_scale=0.0, velocity=(SHOT_SPEED * nx, SHOT_SPEED * ny), bullet=True),
             Collider(Circle(SHOT_RADIUS), sensor=True),
-            draw.Circle(SHOT_RADIUS * 2, color=(255, 230, 0, 125), layer=2),
+            Sprite("laser.png", size=(SHOT_RADIUS * 2, SHOT_RADIUS * 6), layer=2),
             Name("shot"),
         )
         self.world.resource(Audio).play("laser.wav", volume=0.15)

@@ -128,7 +128,7 @@ def background(size: int) -> Pixel:
 
 def images() -> dict[str, bytes]:
     ship = [(32, 6), (58, 56), (32, 46), (6, 56)]
-    enemy = [(24, 44), (4, 10), (24, 18), (44, 10)]
+    enemy = [(24, 4), (44, 38), (24, 30), (4, 38)]  # nose up (image y is down), like the ship
     return {
         "pad_left.png": png_bytes(24, 116, glow((230, 40, 40), rounded_bar(24, 116, 5), 5)),
         "pad_right.png": png_bytes(24, 116, glow((50, 110, 255), rounded_bar(24, 116, 5), 5)),

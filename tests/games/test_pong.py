@@ -69,3 +69,53 @@ def test_restart_resets_the_score_and_music_never_stacks() -> None:
     audio = app.world.resource(Audio)
     assert audio.music is not None and audio.music.playing
     app.close()
+
+
+def serve_at(app: App, y: float) -> tuple[int, int]:
+    """Put the ball on a course to meet the player's paddle ``y`` metres off its centre."""
+    ball = named(app.world, "ball")[0]
+    paddle = named(app.world, "paddle-left")[0]
+    t = app.world.get(ball, Transform)
+    t.x, t.y = -5.0, app.world.get(paddle, Transform).y + y
+    app.world.get(ball, pong.RigidBody).velocity = (-10.0, 0.0)
+    return ball, paddle
+
+
+def test_where_the_ball_meets_the_paddle_aims_it() -> None:
+    angles = {}
+    for offset in (0.0, 0.6, -0.6):
+        app = start()
+        ball, _ = serve_at(app, offset)
+        for _ in range(60):
+            app.step()
+            vx, vy = app.world.get(ball, pong.RigidBody).velocity
+            if vx > 0:
+                break
+        assert vx > 0, "the ball came back off the paddle"
+        assert abs((vx**2 + vy**2) ** 0.5 - 10.0) < 0.1  # same speed, new angle
+        angles[offset] = vy
+        app.close()
+    assert abs(angles[0.0]) < 0.5
+    assert angles[0.6] > 3.0 and angles[-0.6] < -3.0  # the top edge sends it up, and so on
+
+
+def test_esc_on_the_menu_quits() -> None:
+    app = App(pong.menu, headless=True, size=pong.SIZE)
+    app._running = True
+    app.input.press(Key.ESCAPE)
+    app.step()
+    assert not app._running
+
+
+def test_paddles_stop_when_the_match_is_over() -> None:
+    app = start()
+    pong.game_over(app.world, "You win!")
+    paddle = named(app.world, "paddle-left")[0]
+    y = app.world.get(paddle, Transform).y
+    app.input.press(Key.W)
+    app.step(30)
+    assert app.world.get(paddle, Transform).y == y
+    ai = named(app.world, "paddle-right")[0]
+    y_ai = app.world.get(ai, Transform).y
+    app.step(30)
+    assert app.world.get(ai, Transform).y == y_ai

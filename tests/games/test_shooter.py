@@ -1,10 +1,13 @@
 """The defend-the-centre shooter played headless with scripted input."""
 
 import math
+from pathlib import Path
 
+import numpy as np
+import pytest
 import shooter  # examples/shooter.py
 
-from kge import App, Key, Mouse, Text, Transform
+from kge import App, Behaviour, Key, Mouse, Sprite, Text, Transform
 from kge.components.camera import Camera
 from kge.testbed.samples.build import named
 
@@ -89,3 +92,28 @@ def test_shots_leaving_the_frame_are_removed() -> None:
     app.step(60 * 4 + 30)  # 3 m/s: past the 11 m frame after about 3.5 s
     for e in named(app.world, "shot"):
         assert abs(app.world.get(e, Transform).y) < shooter.FRAME_HALF + 0.2
+
+
+def test_enemies_fly_nose_first_and_shots_are_laser_bolts() -> None:
+    from kge.testing import read_png
+
+    # the art: the enemy's nose is at the top of its image (local +y, where it flies)
+    alpha = read_png(Path(shooter.__file__).parent / "assets" / "enemy.png")[..., 3] > 0
+    widths = alpha.sum(axis=1)
+    rows = np.nonzero(widths)[0]
+    mass_row = float((widths * np.arange(len(widths))).sum() / widths.sum())
+    # an arrowhead's area sits towards its tail: nose at the top means the mass is low
+    assert (mass_row - rows[0]) / (rows[-1] - rows[0]) > 0.5
+    assert alpha[rows[0], 20:28].any()  # and the tip is centred
+    # the game: an enemy's local +y points at the ship; a shot carries the laser sprite
+    app = start()
+    app.step(90)
+    for e in named(app.world, "enemy"):
+        t = app.world.get(e, Transform)
+        nose = (-math.sin(t.angle), math.cos(t.angle))
+        to_ship = (-t.x, -t.y)
+        assert nose[0] * to_ship[0] + nose[1] * to_ship[1] > 0
+    ship_script = app.world.get(named(app.world, "ship")[0], Behaviour).script
+    shot = ship_script.fire(0.3)
+    assert app.world.get(shot, Sprite).image == "laser.png"
+    assert app.world.get(shot, Transform).angle == pytest.approx(0.3)
