@@ -10,6 +10,8 @@ Run it: ``python examples/hello_world.py`` (or ``make demo`` before the testbed)
 
 from __future__ import annotations
 
+import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
+
 import kge
 from kge import App, BodyType, Box, Collider, Name, RigidBody, Transform, World
 

@@ -20,6 +20,8 @@ from __future__ import annotations
 import math
 import random
 
+import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
+
 import kge
 from kge import (
     App,

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -108,3 +109,21 @@ def test_run_without_a_display_says_so_instead_of_running_silently() -> None:
     assert told.returncode == 0, told.stderr
     assert told.stderr.count("\n") == 1
     assert "kge: no display" in told.stderr and "set DISPLAY for a window" in told.stderr
+
+
+def test_a_python_without_kge_is_told_which_python_to_use(tmp_path: Path) -> None:
+    root = Path(__file__).resolve().parents[2]
+    # -S: no site-packages, as the system Python in a fresh checkout
+    example = subprocess.run(
+        [sys.executable, "-S", str(root / "examples" / "pong.py")],
+        cwd=tmp_path, capture_output=True, text=True, timeout=60,
+    )  # fmt: skip
+    assert example.returncode == 1
+    assert "has no kge" in example.stderr and ".venv/bin/python" in example.stderr
+    package = subprocess.run(
+        [sys.executable, "-S", "-m", "kge", "testbed", "--list"],
+        cwd=root, capture_output=True, text=True, timeout=60,
+    )  # fmt: skip
+    assert package.returncode == 1
+    last = package.stderr.strip().splitlines()[-1]
+    assert "kge needs" in last and "use the virtual environment" in last
