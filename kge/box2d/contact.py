@@ -1,0 +1,144 @@
+"""Contacts: ``b2Contact`` with its ``manifold`` / ``worldManifold``, and ``b2ContactImpulse``.
+
+kge records a contact's geometry when it begins (normal from fixture A to B,
+world points, separation), and, for listeners that override ``PreSolve`` or
+``PostSolve``, at every step through kge's pre-solve hook. One ``b2Contact``
+object lives as long as its two fixtures touch, so a program that keeps it
+sees the same object in ``BeginContact``, ``PreSolve`` and ``EndContact``.
+
+Box2D's contact list also holds pairs whose bounding boxes merely overlap
+(``touching`` False); kge's holds the touching ones only.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from kge.box2d.vec import b2Vec2
+
+if TYPE_CHECKING:
+    from kge.box2d.fixture import b2Fixture
+
+Vec2 = tuple[float, float]
+
+
+class b2ManifoldPoint:  # noqa: N801
+    """One contact point: where (in fixture B's body frame) and the solver's impulses."""
+
+    def __init__(self, localPoint: b2Vec2, normalImpulse: float = 0.0,  # noqa: N803
+                 tangentImpulse: float = 0.0) -> None:  # noqa: N803
+        self.localPoint = localPoint
+        self.normalImpulse = normalImpulse
+        self.tangentImpulse = tangentImpulse
+        self.id = 0
+
+
+class b2Manifold:  # noqa: N801
+    """Contact points in local coordinates (Box2D's b2Manifold, face-A form)."""
+
+    e_circles, e_faceA, e_faceB = 0, 1, 2
+
+    def __init__(self, points: list[b2ManifoldPoint], localNormal: b2Vec2,  # noqa: N803
+                 localPoint: b2Vec2) -> None:  # noqa: N803
+        self.points = points
+        self.localNormal = localNormal
+        self.localPoint = localPoint
+        self.type = self.e_faceA
+
+    @property
+    def pointCount(self) -> int:  # noqa: N802
+        return len(self.points)
+
+
+class b2WorldManifold:  # noqa: N801
+    """World normal (from A to B), world points and separations."""
+
+    def __init__(self, normal: b2Vec2, points: list[b2Vec2], separations: list[float]) -> None:
+        self.normal = normal
+        self.points = points
+        self.separations = separations
+
+
+class b2ContactImpulse:  # noqa: N801
+    """Impulses of one contact over the last step, per manifold point (N s)."""
+
+    def __init__(self, normalImpulses: tuple[float, ...], tangentImpulses: tuple[float, ...],  # noqa: N803
+                 count: int) -> None:
+        self.normalImpulses = normalImpulses
+        self.tangentImpulses = tangentImpulses
+        self.count = count
+
+
+class b2Contact:  # noqa: N801
+    """Two touching fixtures (A before B as Box2D orders them) and their contact data."""
+
+    def __init__(self, fixtureA: b2Fixture, fixtureB: b2Fixture) -> None:  # noqa: N803
+        self._fixtureA = fixtureA
+        self._fixtureB = fixtureB
+        self.touching = True
+        self.enabled = True
+        self.tangentSpeed = 0.0
+        self._friction: float | None = None
+        self._restitution: float | None = None
+        self._normal: Vec2 = (0.0, 0.0)
+        self._points: tuple[Vec2, ...] = ()
+        self._separation = 0.0
+
+    fixtureA = property(lambda self: self._fixtureA)
+    fixtureB = property(lambda self: self._fixtureB)
+    childIndexA = property(lambda self: 0)
+    childIndexB = property(lambda self: 0)
+
+    def _set_geometry(self, normal: Vec2, points: tuple[Vec2, ...], separation: float) -> None:
+        self._normal, self._points, self._separation = normal, points, separation
+
+    @property
+    def friction(self) -> float:
+        """Mixed friction, sqrt(fa * fb), unless set for this contact."""
+        if self._friction is not None:
+            return self._friction
+        return float((self._fixtureA.friction * self._fixtureB.friction) ** 0.5)
+
+    @friction.setter
+    def friction(self, value: float) -> None:
+        self._friction = float(value)
+
+    def ResetFriction(self) -> None:  # noqa: N802
+        self._friction = None
+
+    @property
+    def restitution(self) -> float:
+        if self._restitution is not None:
+            return self._restitution
+        return max(self._fixtureA.restitution, self._fixtureB.restitution)
+
+    @restitution.setter
+    def restitution(self, value: float) -> None:
+        self._restitution = float(value)
+
+    def ResetRestitution(self) -> None:  # noqa: N802
+        self._restitution = None
+
+    @property
+    def worldManifold(self) -> b2WorldManifold:  # noqa: N802
+        n = self._normal
+        return b2WorldManifold(b2Vec2(*n), [b2Vec2(*p) for p in self._points],
+                               [self._separation] * len(self._points))
+
+    @property
+    def manifold(self) -> b2Manifold:
+        body_b = self._fixtureB.body
+        body_a = self._fixtureA.body
+        pts = [b2ManifoldPoint(body_b.GetLocalPoint(p)) for p in self._points]
+        normal = body_a.GetLocalVector(self._normal)
+        anchor = body_a.GetLocalPoint(self._points[0]) if self._points else b2Vec2(0, 0)
+        return b2Manifold(pts, normal, anchor)
+
+    def __repr__(self) -> str:
+        return f"b2Contact(fixtureA={self._fixtureA!r}, fixtureB={self._fixtureB!r})"
+
+
+def impulse_of(normal_impulse: float, tangent_impulse: float, count: int) -> b2ContactImpulse:
+    """Split kge's summed impulses evenly over the contact's points."""
+    n = max(count, 1)
+    return b2ContactImpulse(tuple([normal_impulse / n] * n), tuple([tangent_impulse / n] * n), n)

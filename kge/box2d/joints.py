@@ -1,0 +1,540 @@
+"""Joints: every pybox2d joint definition and joint, as kge joint-component entities.
+
+One table per joint type names each pybox2d field with its kge component field
+(``maxMotorTorque`` -> ``max_motor_torque``); the definition classes accept those
+names as keywords and attributes, and the joint classes expose them as live
+properties that read and write the joint's component, so ``joint.motorSpeed = 3``
+is an ordinary (checked) component write. Read-only live state (``angle``,
+``speed``, ``translation``, ``motorTorque``...) is what the physics system writes
+into the component after every step.
+
+Definitions take Box2D's defaults, not kge's: a revolute definition's
+``referenceAngle`` is 0 (the angle the bodies have *now* only when given
+``anchor=``, like ``Initialize``), local anchors are given in body frames, and
+``anchor`` / ``axis`` / ``anchorA`` / ``anchorB`` / ``groundAnchorA`` keywords run
+``Initialize`` with the definition's bodies.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from kge.box2d import constants as c
+from kge.box2d.vec import as_xy, b2Vec2
+from kge.components import joints as kj
+from kge.errors import ComponentTypeError, ValidationError
+
+if TYPE_CHECKING:
+    from kge.box2d.body import b2Body
+    from kge.box2d.world import b2World
+
+
+def _vec(v: Any) -> tuple[float, float]:
+    return as_xy(v, "b2JointDef", "vector")
+
+
+def _same(v: Any) -> Any:
+    return v
+
+
+Field = tuple[str, Any, Callable[[Any], Any]]  # kge field, Box2D default, converter
+
+_ANCHORS: dict[str, Field] = {
+    "localAnchorA": ("local_anchor_a", (0.0, 0.0), _vec),
+    "localAnchorB": ("local_anchor_b", (0.0, 0.0), _vec),
+}
+_BASE: dict[str, Field] = {"collideConnected": ("collide_connected", False, bool)}
+
+
+class b2JointDef:  # noqa: N801
+    """Base definition: ``bodyA``, ``bodyB``, ``collideConnected``, ``userData``."""
+
+    FIELDS: ClassVar[dict[str, Field]] = dict(_BASE)
+    COMPONENT: ClassVar[type[kj.Joint]]
+    TYPE: ClassVar[int] = c.e_unknownJoint
+    #: keywords that run Initialize once the bodies are known
+    INIT_KEYS: ClassVar[tuple[str, ...]] = ()
+
+    def __init__(self, **kwargs: Any) -> None:
+        self.bodyA: b2Body | None = None
+        self.bodyB: b2Body | None = None
+        self.userData: Any = None
+        for name, (_, default, _conv) in self.FIELDS.items():
+            object.__setattr__(self, name, b2Vec2(*default) if isinstance(default, tuple) else default)
+        init = {k: kwargs.pop(k) for k in self.INIT_KEYS if k in kwargs}
+        for name, value in kwargs.items():
+            if name not in self.FIELDS and name not in ("bodyA", "bodyB", "userData"):
+                raise ComponentTypeError(f"{type(self).__name__} has no property {name!r}")
+            setattr(self, name, value)
+        if init:
+            self._initialize(**init)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        spec = self.FIELDS.get(name)
+        if spec is not None:
+            value = spec[2](value)
+            if isinstance(value, tuple):
+                value = b2Vec2(*value)
+        object.__setattr__(self, name, value)
+
+    def _initialize(self, **init: Any) -> None:
+        raise ComponentTypeError(f"{type(self).__name__} takes no {sorted(init)}")
+
+    def _bodies(self) -> tuple[b2Body, b2Body]:
+        from kge.box2d.body import b2Body
+
+        a, b = self.bodyA, self.bodyB
+        for name, body in (("bodyA", a), ("bodyB", b)):
+            if not isinstance(body, b2Body):
+                raise ComponentTypeError(f"{type(self).__name__}.{name} must be a b2Body, got {body!r}")
+        assert a is not None and b is not None
+        return a, b
+
+    def component(self, world: b2World) -> kj.Joint:
+        """The kge joint component this definition describes (kge checks the values)."""
+        a, b = self._bodies()
+        if a is b:
+            raise ValidationError(
+                f"{type(self).__name__}: bodyA and bodyB are the same body (entity {a.entity}); "
+                "a joint needs two different bodies"
+            )
+        kw: dict[str, Any] = {}
+        for name, (field, _, _conv) in self.FIELDS.items():
+            v = getattr(self, name)
+            kw[field] = tuple(v) if isinstance(v, b2Vec2) else v
+        return self.COMPONENT(a.entity, b.entity, **kw)  # type: ignore[call-arg]
+
+
+class b2RevoluteJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "referenceAngle": ("reference_angle", 0.0, float),
+              "enableLimit": ("enable_limit", False, bool),
+              "lowerAngle": ("lower_angle", 0.0, float),
+              "upperAngle": ("upper_angle", 0.0, float),
+              "enableMotor": ("enable_motor", False, bool),
+              "motorSpeed": ("motor_speed", 0.0, float),
+              "maxMotorTorque": ("max_motor_torque", 0.0, float)}
+    COMPONENT = kj.RevoluteJoint
+    TYPE = c.e_revoluteJoint
+    INIT_KEYS = ("anchor",)
+
+    def _initialize(self, anchor: Any = None, **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+        self.referenceAngle = b.angle - a.angle
+
+
+class b2WeldJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "referenceAngle": ("reference_angle", 0.0, float),
+              "frequencyHz": ("frequency_hz", 0.0, float),
+              "dampingRatio": ("damping_ratio", 0.0, float)}
+    COMPONENT = kj.WeldJoint
+    TYPE = c.e_weldJoint
+    INIT_KEYS = ("anchor",)
+    _initialize = b2RevoluteJointDef._initialize
+    Initialize = b2RevoluteJointDef.Initialize
+
+
+class b2FrictionJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "maxForce": ("max_force", 0.0, float),
+              "maxTorque": ("max_torque", 0.0, float)}
+    COMPONENT = kj.FrictionJoint
+    TYPE = c.e_frictionJoint
+    INIT_KEYS = ("anchor",)
+
+    def _initialize(self, anchor: Any = None, **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+
+
+class b2PrismaticJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
+              "referenceAngle": ("reference_angle", 0.0, float),
+              "enableLimit": ("enable_limit", False, bool),
+              "lowerTranslation": ("lower_translation", 0.0, float),
+              "upperTranslation": ("upper_translation", 0.0, float),
+              "enableMotor": ("enable_motor", False, bool),
+              "motorSpeed": ("motor_speed", 0.0, float),
+              "maxMotorForce": ("max_motor_force", 0.0, float)}
+    COMPONENT = kj.PrismaticJoint
+    TYPE = c.e_prismaticJoint
+    INIT_KEYS = ("anchor", "axis")
+
+    def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor, axis)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+        self.localAxisA = a.GetLocalVector(axis)
+        self.referenceAngle = b.angle - a.angle
+
+
+class b2WheelJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
+              "enableMotor": ("enable_motor", False, bool),
+              "motorSpeed": ("motor_speed", 0.0, float),
+              "maxMotorTorque": ("max_motor_torque", 0.0, float),
+              "frequencyHz": ("frequency_hz", 2.0, float),
+              "dampingRatio": ("damping_ratio", 0.7, float)}
+    COMPONENT = kj.WheelJoint
+    TYPE = c.e_wheelJoint
+    INIT_KEYS = ("anchor", "axis")
+
+    def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor, axis)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+        self.localAxisA = a.GetLocalVector(axis)
+
+
+class b2DistanceJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "length": ("length", 1.0, float),
+              "frequencyHz": ("frequency_hz", 0.0, float),
+              "dampingRatio": ("damping_ratio", 0.0, float)}
+    COMPONENT = kj.DistanceJoint
+    TYPE = c.e_distanceJoint
+    INIT_KEYS = ("anchorA", "anchorB")
+
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+        self.Initialize(self.bodyA, self.bodyB, anchorA, anchorB)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchorA: Any, anchorB: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        pa, pb = b2Vec2(anchorA), b2Vec2(anchorB)
+        self.localAnchorA = a.GetLocalPoint(pa)
+        self.localAnchorB = b.GetLocalPoint(pb)
+        self.length = (pb - pa).length
+
+
+class b2RopeJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE,
+              "localAnchorA": ("local_anchor_a", (-1.0, 0.0), _vec),
+              "localAnchorB": ("local_anchor_b", (1.0, 0.0), _vec),
+              "maxLength": ("max_length", 0.0, float)}
+    COMPONENT = kj.RopeJoint
+    TYPE = c.e_ropeJoint
+    INIT_KEYS = ("anchorA", "anchorB")
+
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+        a, b = self._bodies()
+        if anchorA is not None:
+            self.localAnchorA = a.GetLocalPoint(anchorA)
+        if anchorB is not None:
+            self.localAnchorB = b.GetLocalPoint(anchorB)
+
+
+class b2PulleyJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, **_ANCHORS,
+              "groundAnchorA": ("ground_anchor_a", (-1.0, 1.0), _vec),
+              "groundAnchorB": ("ground_anchor_b", (1.0, 1.0), _vec),
+              "ratio": ("ratio", 1.0, float),
+              "collideConnected": ("collide_connected", True, bool)}
+    COMPONENT = kj.PulleyJoint
+    TYPE = c.e_pulleyJoint
+    INIT_KEYS = ("anchorA", "anchorB")
+
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchorA)
+        self.localAnchorB = b.GetLocalPoint(anchorB)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, groundAnchorA: Any, groundAnchorB: Any,  # noqa: N802, N803
+                   anchorA: Any, anchorB: Any, ratio: float) -> None:  # noqa: N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        self.groundAnchorA, self.groundAnchorB = groundAnchorA, groundAnchorB
+        self.ratio = ratio
+        self._initialize(anchorA, anchorB)
+
+    @property
+    def lengthA(self) -> float:  # noqa: N802
+        a, _ = self._bodies()
+        return (a.GetWorldPoint(self.localAnchorA) - self.groundAnchorA).length
+
+    @property
+    def lengthB(self) -> float:  # noqa: N802
+        _, b = self._bodies()
+        return (b.GetWorldPoint(self.localAnchorB) - self.groundAnchorB).length
+
+
+class b2MouseJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE,
+              "target": ("target", (0.0, 0.0), _vec),
+              "maxForce": ("max_force", 0.0, float),
+              "frequencyHz": ("frequency_hz", 5.0, float),
+              "dampingRatio": ("damping_ratio", 0.7, float)}
+    COMPONENT = kj.MouseJoint
+    TYPE = c.e_mouseJoint
+
+
+class b2MotorJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE,
+              "linearOffset": ("linear_offset", (0.0, 0.0), _vec),
+              "angularOffset": ("angular_offset", 0.0, float),
+              "maxForce": ("max_force", 1.0, float),
+              "maxTorque": ("max_torque", 1.0, float),
+              "correctionFactor": ("correction_factor", 0.3, float)}
+    COMPONENT = kj.MotorJoint
+    TYPE = c.e_motorJoint
+
+    def Initialize(self, bodyA: Any, bodyB: Any) -> None:  # noqa: N802, N803
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.linearOffset = a.GetLocalPoint(b.position)
+        self.angularOffset = b.angle - a.angle
+
+
+class b2GearJointDef(b2JointDef):  # noqa: N801
+    FIELDS = {**_BASE, "ratio": ("ratio", 1.0, float)}
+    COMPONENT = kj.GearJoint
+    TYPE = c.e_gearJoint
+
+    def __init__(self, **kwargs: Any) -> None:
+        self.joint1: b2Joint | None = None
+        self.joint2: b2Joint | None = None
+        for k in ("joint1", "joint2"):
+            if k in kwargs:
+                setattr(self, k, kwargs.pop(k))
+        super().__init__(**kwargs)
+
+    def component(self, world: b2World) -> kj.Joint:
+        j1, j2 = self.joint1, self.joint2
+        for name, j in (("joint1", j1), ("joint2", j2)):
+            if not isinstance(j, (b2RevoluteJoint, b2PrismaticJoint)):
+                raise ComponentTypeError(
+                    f"b2GearJointDef.{name} must be a revolute or prismatic joint, got {j!r}")
+        assert j1 is not None and j2 is not None
+        return kj.GearJoint(j1.entity, j2.entity, ratio=self.ratio,
+                            collide_connected=self.collideConnected)
+
+
+# -- joints ---------------------------------------------------------------------------------------
+
+def _live_field(field: str, conv: Callable[[Any], Any]) -> property:
+    def get(self: b2Joint) -> Any:
+        v = getattr(self._comp, field)
+        return b2Vec2(*v) if isinstance(v, tuple) else v
+
+    def put(self: b2Joint, value: Any) -> None:
+        self._check_live()
+        setattr(self._comp, field, conv(value))
+
+    return property(get, put)
+
+
+def _read(field: str) -> property:
+    def get(self: b2Joint) -> Any:
+        v = getattr(self._comp, field)
+        return b2Vec2(*v) if isinstance(v, tuple) else v
+
+    return property(get)
+
+
+class b2Joint:  # noqa: N801
+    """A joint between two bodies (a kge joint entity); properties are live component fields."""
+
+    DEF: ClassVar[type[b2JointDef]] = b2JointDef
+
+    def __init__(self, world: b2World, entity: int, comp: kj.Joint, bodyA: b2Body,  # noqa: N803
+                 bodyB: b2Body, user_data: Any) -> None:  # noqa: N803
+        self._world = world
+        self._entity = entity
+        self._comp = comp
+        self._bodyA = bodyA
+        self._bodyB = bodyB
+        self.userData = user_data
+        self._destroyed = False
+
+    def __init_subclass__(cls, **kw: Any) -> None:
+        super().__init_subclass__(**kw)
+        for name, (field, _, conv) in cls.DEF.FIELDS.items():
+            if name not in cls.__dict__:
+                setattr(cls, name, _live_field(field, conv))
+
+    def _check_live(self) -> None:
+        if self._destroyed:
+            raise ValidationError(f"{type(self).__name__} (entity {self._entity}) was destroyed")
+
+    @property
+    def entity(self) -> int:
+        return self._entity
+
+    bodyA = property(lambda self: self._bodyA)
+    bodyB = property(lambda self: self._bodyB)
+    type = property(lambda self: self.DEF.TYPE)
+
+    @property
+    def active(self) -> bool:
+        return bool(self._bodyA.active and self._bodyB.active)
+
+    @property
+    def anchorA(self) -> b2Vec2:  # noqa: N802
+        return self._bodyA.GetWorldPoint(getattr(self._comp, "local_anchor_a", (0.0, 0.0)))
+
+    @property
+    def anchorB(self) -> b2Vec2:  # noqa: N802
+        return self._bodyB.GetWorldPoint(getattr(self._comp, "local_anchor_b", None) or (0, 0))
+
+    def GetReactionForce(self, inv_dt: float = 0.0) -> b2Vec2:  # noqa: N802
+        """The force on bodyB at the anchor over the last step (N)."""
+        return b2Vec2(*self._comp.reaction_force)
+
+    def GetReactionTorque(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+        return float(self._comp.reaction_torque)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(entity={self._entity})"
+
+
+class _Limits:
+    """pybox2d's limit/motor aliases shared by revolute and prismatic joints."""
+
+    _LIMIT: ClassVar[tuple[str, str]]
+    _comp: Any
+
+    limitEnabled = property(lambda self: self._comp.enable_limit,  # noqa: N815
+                            lambda self, v: setattr(self._comp, "enable_limit", bool(v)))
+    motorEnabled = property(lambda self: self._comp.enable_motor,  # noqa: N815
+                            lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
+
+    def EnableLimit(self, flag: bool) -> None:  # noqa: N802
+        self.limitEnabled = flag
+
+    def EnableMotor(self, flag: bool) -> None:  # noqa: N802
+        self.motorEnabled = flag
+
+    def SetLimits(self, lower: float, upper: float) -> None:  # noqa: N802
+        self._comp.set_limits(lower, upper)
+
+    @property
+    def limits(self) -> tuple[float, float]:
+        lo, hi = self._LIMIT
+        return (getattr(self._comp, lo), getattr(self._comp, hi))
+
+    @limits.setter
+    def limits(self, value: Any) -> None:
+        self.SetLimits(*value)
+
+    lowerLimit = property(lambda self: self.limits[0])  # noqa: N815
+    upperLimit = property(lambda self: self.limits[1])  # noqa: N815
+
+
+class b2RevoluteJoint(_Limits, b2Joint):  # noqa: N801
+    DEF = b2RevoluteJointDef
+    _LIMIT = ("lower_angle", "upper_angle")
+    angle = _read("angle")
+    speed = _read("speed")
+    motorTorque = _read("motor_torque")  # noqa: N815
+
+    def GetMotorTorque(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+        return float(self._comp.motor_torque)
+
+
+class b2PrismaticJoint(_Limits, b2Joint):  # noqa: N801
+    DEF = b2PrismaticJointDef
+    _LIMIT = ("lower_translation", "upper_translation")
+    translation = _read("translation")
+    speed = _read("speed")
+    motorForce = _read("motor_force")  # noqa: N815
+
+    def GetMotorForce(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+        return float(self._comp.motor_force)
+
+
+class b2WheelJoint(b2Joint):  # noqa: N801
+    DEF = b2WheelJointDef
+    translation = _read("translation")
+    speed = _read("speed")
+    motorTorque = _read("motor_torque")  # noqa: N815
+    motorEnabled = property(lambda self: self._comp.enable_motor,  # noqa: N815
+                            lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
+    springFrequencyHz = property(lambda self: self._comp.frequency_hz,  # noqa: N815
+                                 lambda self, v: setattr(self._comp, "frequency_hz", v))
+    springDampingRatio = property(lambda self: self._comp.damping_ratio,  # noqa: N815
+                                  lambda self, v: setattr(self._comp, "damping_ratio", v))
+
+
+class b2DistanceJoint(b2Joint):  # noqa: N801
+    DEF = b2DistanceJointDef
+
+
+class b2RopeJoint(b2Joint):  # noqa: N801
+    DEF = b2RopeJointDef
+
+    @property
+    def limitState(self) -> int:  # noqa: N802
+        d = (self.anchorB - self.anchorA).length
+        return 2 if d >= self._comp.max_length - c.b2_linearSlop else 0
+
+
+class b2WeldJoint(b2Joint):  # noqa: N801
+    DEF = b2WeldJointDef
+
+
+class b2FrictionJoint(b2Joint):  # noqa: N801
+    DEF = b2FrictionJointDef
+
+
+class b2MotorJoint(b2Joint):  # noqa: N801
+    DEF = b2MotorJointDef
+
+
+class b2MouseJoint(b2Joint):  # noqa: N801
+    DEF = b2MouseJointDef
+
+    @property
+    def anchorA(self) -> b2Vec2:  # noqa: N802
+        return b2Vec2(*self._comp.target)
+
+    @property
+    def anchorB(self) -> b2Vec2:  # noqa: N802
+        md = self._comp.local_anchor_b
+        if md is None:
+            return b2Vec2(*(self._comp.grab_point or self._comp.target))
+        return self._bodyB.GetWorldPoint(md)
+
+
+class b2PulleyJoint(b2Joint):  # noqa: N801
+    DEF = b2PulleyJointDef
+    length1 = _read("length_a")
+    length2 = _read("length_b")
+    lengthA = length1  # noqa: N815
+    lengthB = length2  # noqa: N815
+
+
+class b2GearJoint(b2Joint):  # noqa: N801
+    DEF = b2GearJointDef
+
+    def __init__(self, *args: Any, joint1: b2Joint, joint2: b2Joint) -> None:
+        super().__init__(*args)
+        self.joint1, self.joint2 = joint1, joint2
+
+
+JOINT_CLASSES: dict[type[b2JointDef], type[b2Joint]] = {
+    cls.DEF: cls for cls in (
+        b2RevoluteJoint, b2PrismaticJoint, b2WheelJoint, b2DistanceJoint, b2RopeJoint,
+        b2WeldJoint, b2FrictionJoint, b2MotorJoint, b2MouseJoint, b2PulleyJoint, b2GearJoint)
+}

@@ -1,0 +1,368 @@
+"""Shapes: ``b2PolygonShape``, ``b2CircleShape``, ``b2EdgeShape``, ``b2ChainShape`` (``b2LoopShape``).
+
+pybox2d shapes are free-standing geometry that a fixture *copies* when it is
+created; programs mutate one shape and reuse it for the next fixture
+(BipedalWalker edits ``fd.shape.vertices`` before each terrain piece). So these
+classes hold plain data, and :meth:`b2Shape.to_kge` turns them into kge's frozen
+shape components at fixture creation.
+
+Polygons go through Box2D's own ``b2PolygonShape::Set``: close points are
+welded, the convex hull is taken by gift wrapping from the right-most point,
+and fewer than 3 hull points (or more than 16 inputs) are refused. So the
+``vertices`` read back are in Box2D's order, which renderers rely on.
+
+>>> b2PolygonShape(box=(1, 0.5)).vertices
+[(-1.0, -0.5), (1.0, -0.5), (1.0, 0.5), (-1.0, 0.5)]
+>>> b2PolygonShape(vertices=[(0, 0), (1, 1), (1, 0), (0.5, 0.2)]).vertices
+[(1.0, 0.0), (1.0, 1.0), (0.0, 0.0)]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from kge.box2d.constants import b2_linearSlop, b2_maxPolygonVertices, b2_polygonRadius
+from kge.box2d.transform import b2AABB, b2Transform
+from kge.box2d.vec import as_xy, b2Vec2
+from kge.components.shapes import Chain, Circle, Edge, Polygon, Shape
+from kge.errors import ComponentTypeError, ValidationError
+
+Vec2 = tuple[float, float]
+
+
+def _points(value: Any, owner: str) -> list[Vec2]:
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        raise ComponentTypeError(f"{owner}.vertices must be a sequence of points, got {value!r}")
+    return [as_xy(p, owner, f"vertices[{i}]") for i, p in enumerate(value)]
+
+
+def polygon_hull(points: list[Vec2], owner: str = "b2PolygonShape") -> list[Vec2]:
+    """Box2D 2.3's b2PolygonShape::Set: weld, then gift-wrap the convex hull."""
+    n = len(points)
+    if not 3 <= n <= b2_maxPolygonVertices:
+        raise ValidationError(
+            f"{owner}.vertices must have 3..{b2_maxPolygonVertices} points, got {n}"
+        )
+    weld = (0.5 * b2_linearSlop) ** 2
+    ps: list[Vec2] = []
+    for x, y in points:
+        if all((x - qx) ** 2 + (y - qy) ** 2 >= weld for qx, qy in ps):
+            ps.append((x, y))
+    n = len(ps)
+    if n < 3:
+        raise ValidationError(f"{owner}: the points are degenerate (fewer than 3 apart)")
+    i0 = 0
+    x0 = ps[0][0]
+    for i in range(1, n):
+        x = ps[i][0]
+        if x > x0 or (x == x0 and ps[i][1] < ps[i0][1]):
+            i0, x0 = i, x
+    hull: list[int] = []
+    ih = i0
+    while True:
+        hull.append(ih)
+        ie = 0
+        hx, hy = ps[ih]
+        for j in range(1, n):
+            if ie == ih:
+                ie = j
+                continue
+            rx, ry = ps[ie][0] - hx, ps[ie][1] - hy
+            vx, vy = ps[j][0] - hx, ps[j][1] - hy
+            c = rx * vy - ry * vx
+            if c < 0.0 or (c == 0.0 and vx * vx + vy * vy > rx * rx + ry * ry):
+                ie = j
+        ih = ie
+        if ie == i0 or len(hull) > n:
+            break
+    if len(hull) < 3:
+        raise ValidationError(f"{owner}: the points are collinear (no area)")
+    return [ps[i] for i in hull]
+
+
+class b2Shape:  # noqa: N801
+    """Base of the four shape types."""
+
+    radius: float
+
+    def to_kge(self) -> Shape:
+        raise NotImplementedError
+
+    @property
+    def type(self) -> int:
+        return _TYPE_IDS[type(self).__name__]
+
+    @property
+    def childCount(self) -> int:  # noqa: N802
+        return 1
+
+    def getAABB(self, transform: b2Transform, childIndex: int = 0) -> b2AABB:  # noqa: N802, N803
+        """The box around the shape placed at ``transform`` (with the skin radius)."""
+        pts = [transform * p for p in self._outline()]
+        r = self.radius
+        xs, ys = [p.x for p in pts], [p.y for p in pts]
+        return b2AABB((min(xs) - r, min(ys) - r), (max(xs) + r, max(ys) + r))
+
+    def _outline(self) -> list[Vec2]:
+        raise NotImplementedError
+
+    def __copy__(self) -> b2Shape:
+        new = type(self).__new__(type(self))
+        new.__dict__.update(self.__dict__)
+        return new
+
+
+class b2CircleShape(b2Shape):  # noqa: N801
+    """A circle of ``radius`` centred at ``pos`` (body-local)."""
+
+    def __init__(self, radius: float = 0.0, pos: Any = (0.0, 0.0), **kw: Any) -> None:
+        self.radius = radius
+        self.pos = pos
+        _set_extra(self, kw)
+
+    @property
+    def radius(self) -> float:
+        return self._radius
+
+    @radius.setter
+    def radius(self, value: float) -> None:
+        self._radius = float(value)
+
+    @property
+    def pos(self) -> b2Vec2:
+        return self._pos
+
+    @pos.setter
+    def pos(self, value: Any) -> None:
+        self._pos = b2Vec2(*as_xy(value, "b2CircleShape", "pos"))
+
+    p = pos
+
+    def to_kge(self) -> Shape:
+        if not self._radius > 0.0:
+            raise ValidationError(f"b2CircleShape.radius must be > 0, got {self._radius!r}")
+        return Circle(self._radius, (self._pos.x, self._pos.y))
+
+    def _outline(self) -> list[Vec2]:
+        return [(self._pos.x, self._pos.y)]
+
+    def __repr__(self) -> str:
+        return f"b2CircleShape(radius={self._radius:g}, pos={self._pos!r})"
+
+
+class b2PolygonShape(b2Shape):  # noqa: N801
+    """A convex polygon (3..16 vertices), given by ``vertices`` or ``box``."""
+
+    def __init__(self, vertices: Any = None, box: Any = None, **kw: Any) -> None:
+        self.radius = b2_polygonRadius
+        self._vertices: list[Vec2] = []
+        if box is not None:
+            self.box = box
+        if vertices is not None:
+            self.vertices = vertices
+        _set_extra(self, kw)
+
+    @property
+    def vertices(self) -> list[Vec2]:
+        return list(self._vertices)
+
+    @vertices.setter
+    def vertices(self, value: Any) -> None:
+        self._vertices = polygon_hull(_points(value, "b2PolygonShape"))
+
+    @property
+    def vertexCount(self) -> int:  # noqa: N802
+        return len(self._vertices)
+
+    def __len__(self) -> int:
+        return len(self._vertices)
+
+    @property
+    def normals(self) -> list[Vec2]:
+        vs, out = self._vertices, []
+        for i, (x0, y0) in enumerate(vs):
+            x1, y1 = vs[(i + 1) % len(vs)]
+            ex, ey = x1 - x0, y1 - y0
+            n = math.hypot(ex, ey)
+            out.append((ey / n, -ex / n))
+        return out
+
+    @property
+    def centroid(self) -> b2Vec2:
+        from kge.physics.mass import polygon_mass  # the engine's own formula
+
+        cx, cy = polygon_mass(self._vertices, 1.0).center
+        return b2Vec2(cx, cy)
+
+    @property
+    def box(self) -> None:
+        raise AttributeError("b2PolygonShape.box is write-only (read vertices)")
+
+    @box.setter
+    def box(self, value: Any) -> None:
+        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
+            raise ComponentTypeError(f"b2PolygonShape.box must be (hx, hy[, center, angle]), got {value!r}")
+        self.SetAsBox(*value)
+
+    def SetAsBox(self, hx: float, hy: float, center: Any = None, angle: float = 0.0) -> None:  # noqa: N802
+        """A box of half extents ``hx``, ``hy``, optionally centred and rotated."""
+        hx, hy = as_xy((hx, hy), "b2PolygonShape", "box")
+        if hx <= 0.0 or hy <= 0.0:
+            raise ValidationError(f"b2PolygonShape box half extents must be > 0, got {(hx, hy)!r}")
+        cx, cy = (0.0, 0.0) if center is None else as_xy(center, "b2PolygonShape", "center")
+        c, s = math.cos(angle), math.sin(angle)
+        corners = ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))
+        if center is None and angle == 0.0:
+            self._vertices = list(corners)
+        else:
+            self._vertices = [(c * x - s * y + cx, s * x + c * y + cy) for x, y in corners]
+
+    def to_kge(self) -> Shape:
+        if len(self._vertices) < 3:
+            raise ValidationError("b2PolygonShape has no vertices (give vertices= or box=)")
+        return Polygon(self._vertices)
+
+    def _outline(self) -> list[Vec2]:
+        return self._vertices
+
+    @property
+    def valid(self) -> bool:
+        try:
+            Polygon(self._vertices)
+        except ValidationError:
+            return False
+        return True
+
+    def __repr__(self) -> str:
+        return f"b2PolygonShape(vertices={self._vertices!r})"
+
+
+class b2EdgeShape(b2Shape):  # noqa: N801
+    """A line segment from ``vertex1`` to ``vertex2``."""
+
+    def __init__(self, vertices: Any = None, vertex1: Any = None, vertex2: Any = None,
+                 **kw: Any) -> None:
+        self.radius = b2_polygonRadius
+        self.vertex1 = b2Vec2(0.0, 0.0)
+        self.vertex2 = b2Vec2(0.0, 0.0)
+        if vertices is not None:
+            self.vertices = vertices
+        if vertex1 is not None:
+            self.vertex1 = b2Vec2(*as_xy(vertex1, "b2EdgeShape", "vertex1"))
+        if vertex2 is not None:
+            self.vertex2 = b2Vec2(*as_xy(vertex2, "b2EdgeShape", "vertex2"))
+        _set_extra(self, kw)
+
+    @property
+    def vertices(self) -> list[Vec2]:
+        return [self.vertex1.tuple, self.vertex2.tuple]
+
+    @vertices.setter
+    def vertices(self, value: Any) -> None:
+        pts = _points(value, "b2EdgeShape")
+        if len(pts) != 2:
+            raise ValidationError(f"b2EdgeShape.vertices must be 2 points, got {len(pts)}")
+        self.vertex1, self.vertex2 = b2Vec2(*pts[0]), b2Vec2(*pts[1])
+
+    def Set(self, v1: Any, v2: Any) -> None:  # noqa: N802
+        self.vertices = [v1, v2]
+
+    @property
+    def all_vertices(self) -> list[Vec2]:
+        return self.vertices
+
+    def to_kge(self) -> Shape:
+        return Edge(self.vertex1.tuple, self.vertex2.tuple)
+
+    def _outline(self) -> list[Vec2]:
+        return self.vertices
+
+    def __repr__(self) -> str:
+        return f"b2EdgeShape(vertices={self.vertices!r})"
+
+
+class b2ChainShape(b2Shape):  # noqa: N801
+    """A chain of edges through ``vertices`` (open); :class:`b2LoopShape` closes it."""
+
+    loop = False
+
+    def __init__(self, vertices: Any = None, vertices_chain: Any = None,
+                 vertices_loop: Any = None, **kw: Any) -> None:
+        self.radius = b2_polygonRadius
+        self._vertices: list[Vec2] = []
+        if vertices_loop is not None:
+            self.loop = True
+            vertices = vertices_loop
+        if vertices_chain is not None:
+            vertices = vertices_chain
+        if vertices is not None:
+            self.vertices = vertices
+        _set_extra(self, kw)
+
+    @property
+    def vertices(self) -> list[Vec2]:
+        return list(self._vertices)
+
+    @vertices.setter
+    def vertices(self, value: Any) -> None:
+        pts = _points(value, type(self).__name__)
+        need = 3 if self.loop else 2
+        if len(pts) < need:
+            raise ValidationError(
+                f"{type(self).__name__}.vertices needs at least {need} points, got {len(pts)}"
+            )
+        self._vertices = pts
+
+    vertices_chain = vertices
+
+    @property
+    def vertexCount(self) -> int:  # noqa: N802
+        return len(self._vertices)
+
+    @property
+    def childCount(self) -> int:  # noqa: N802
+        n = len(self._vertices)
+        return n if self.loop else n - 1
+
+    @property
+    def edges(self) -> list[b2EdgeShape]:
+        vs = self._vertices + (self._vertices[:1] if self.loop else [])
+        return [b2EdgeShape(vertices=[vs[i], vs[i + 1]]) for i in range(len(vs) - 1)]
+
+    def to_kge(self) -> Shape:
+        return Chain(self._vertices, loop=self.loop)
+
+    def _outline(self) -> list[Vec2]:
+        return self._vertices
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(vertices={self._vertices!r})"
+
+
+class b2LoopShape(b2ChainShape):  # noqa: N801
+    """A closed chain (pybox2d's loop shape)."""
+
+    loop = True
+
+
+def _set_extra(shape: b2Shape, kw: dict[str, Any]) -> None:
+    for name, value in kw.items():
+        if not hasattr(type(shape), name) and name != "radius":
+            raise ComponentTypeError(f"{type(shape).__name__} has no property {name!r}")
+        setattr(shape, name, value)
+
+
+_TYPE_IDS = {"b2CircleShape": 0, "b2EdgeShape": 1, "b2PolygonShape": 2,
+             "b2ChainShape": 3, "b2LoopShape": 3}
+
+
+def from_kge(shape: Shape) -> b2Shape:
+    """The pybox2d view of a kge shape (for fixtures made from kge shapes)."""
+    if isinstance(shape, Circle):
+        return b2CircleShape(radius=shape.radius, pos=shape.center)
+    if isinstance(shape, Edge):
+        return b2EdgeShape(vertices=[shape.v1, shape.v2])
+    if isinstance(shape, Chain):
+        return (b2LoopShape if shape.loop else b2ChainShape)(vertices=list(shape.vertices))
+    return b2PolygonShape(vertices=list(shape.vertices()))  # Box
