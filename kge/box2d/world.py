@@ -66,26 +66,29 @@ from kge.world import World
 
 Pair = tuple[int, int]
 
-#: solver passes per step below which kge's substeps make up for few iterations
-SOLVER_PASSES = 32
-#: kge's default substeps (PhysicsSettings.substeps)
-MAX_SUBSTEPS = 4
+#: fewest pymunk substeps per step (kge's default: they stand in for Box2D's
+#: position iterations, which pymunk lacks)
+MIN_SUBSTEPS = 4
+#: most pymunk substeps per step
+MAX_SUBSTEPS = 8
+#: solver passes per substep that a Box2D-like load needs before a substep is added
+PASSES_PER_SUBSTEP = 23
+#: fewest solver passes per substep
+MIN_ITERATIONS = 8
 
 
 def solver_counts(velocity_iterations: int) -> tuple[int, int]:
     """(pymunk substeps, iterations per substep) for Box2D's velocity iteration count.
 
-    Each pymunk substep runs ``velocity_iterations`` solver passes, as a Box2D
-    step does; few iterations get more substeps (up to kge's 4) so that a step
-    still makes about ``SOLVER_PASSES`` passes, which pymunk needs for stacking
-    (it has no separate position pass). 8 -> 4 x 8, 16 -> 2 x 16, 180 -> 1 x 180.
+    Box2D makes ``velocity_iterations`` solver passes per step; kge makes
+    ``substeps x iterations``. Up to 4 x 8 the passes are kge's (few iterations
+    stack badly in pymunk, which has no position pass); above, the passes are
+    Box2D's, split into up to 8 substeps of about 23 (8 -> 4 x 8, 60 -> 4 x 15,
+    180 -> 8 x 23: Gymnasium's 6*30 runs 184 passes).
     """
     v = max(1, velocity_iterations)
-    import os
-    if os.environ.get("B2SUB"):
-        n = int(os.environ["B2SUB"]); return n, max(1, v // n)
-    substeps = max(1, min(MAX_SUBSTEPS, -(-SOLVER_PASSES // v)))
-    return substeps, v
+    substeps = max(MIN_SUBSTEPS, min(MAX_SUBSTEPS, -(-v // PASSES_PER_SUBSTEP)))
+    return substeps, max(MIN_ITERATIONS, -(-v // substeps))
 
 
 class b2World:  # noqa: N801

@@ -42,6 +42,11 @@ class JointContext(Protocol):
         """The length of one pymunk step (``dt / substeps``): springs' stability limit."""
         ...
 
+    @property
+    def iterated_hinges(self) -> bool:
+        """``PhysicsSettings.iterated_hinges``: motors solved in pymunk's iterations."""
+        ...
+
     def body(self, entity: int) -> pymunk.Body:
         """The pymunk body of a body entity (a static placeholder for static ones)."""
         ...

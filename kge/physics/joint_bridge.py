@@ -86,6 +86,10 @@ class JointBridge:
     def substep(self) -> float:
         return self.dt / max(1, self.sim.substeps)
 
+    @property
+    def iterated_hinges(self) -> bool:
+        return bool(self.sim.settings.iterated_hinges)
+
     def body(self, entity: int) -> pymunk.Body:
         rec = self.sim.bodies.get(entity)
         if rec is None:

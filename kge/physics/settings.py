@@ -55,6 +55,13 @@ class PhysicsSettings:
     max_translation: float = 2.0
     #: b2_maxRotation per fixed step
     max_rotation: float = 0.5 * math.pi
+    #: solve revolute motors and limits inside pymunk's iterations, with the
+    #: contacts, as Box2D does (its motor and limit rows are angular-only, like
+    #: pymunk's SimpleMotor and RotaryLimitJoint; limit overshoot is removed by the
+    #: position pass, not by velocity). Holds a load (landing legs) with many
+    #: iterations; kge's default, once per substep on the pivot-folded hinge, brakes
+    #: a heavy pendulum better at few iterations. kge.box2d turns it on.
+    iterated_hinges: bool = False
 
     def __setattr__(self, name: str, value: Any) -> None:
         # every assignment is checked, not only the constructor's: a NaN gravity set
@@ -84,4 +91,5 @@ _CHECKS: dict[str, Callable[[Any, str, str], Any]] = {
     "velocity_threshold": non_negative,
     "max_translation": positive,
     "max_rotation": positive,
+    "iterated_hinges": boolean,
 }

@@ -35,6 +35,8 @@ class Sim:
         self._next = 1
         self.steps = 0
         self.errors = CallbackErrors()
+        #: PhysicsSettings.iterated_hinges (kge's default: off)
+        self.iterated_hinges = False
 
     # -- JointContext -----------------------------------------------------------------
     @property

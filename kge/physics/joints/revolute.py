@@ -17,6 +17,7 @@ Joint angle = ``θb - θa - reference_angle``; ``speed = ωb - ωa`` (CCW positi
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import pymunk
@@ -33,6 +34,13 @@ from kge.physics.joints.positions import (
 )
 from kge.physics.joints.rows import Row, hinge_rows, motor_and_limits
 
+#: Box2D's b2_angularSlop (2°)
+ANGULAR_SLOP = math.radians(2.0)
+#: iterated hinges: the limit's largest push-back speed, rad/s
+ITERATED_LIMIT_BIAS = 0.1
+#: iterated hinges: pivot gaps below this (a tenth of b2_linearSlop) are not projected, m
+ITERATED_PIVOT_TOLERANCE = 0.0005
+
 
 class Revolute(Composite):
     def __init__(self, ctx: JointContext, entity: int, j: RevoluteJoint) -> None:
@@ -43,6 +51,10 @@ class Revolute(Composite):
         self.settings = j
         self.motor_impulse = self.limit_impulse = 0.0
         self.h = ctx.dt
+        self.ctx = ctx
+        #: pymunk's own motor and limit, when ``PhysicsSettings.iterated_hinges`` is on
+        self.motor: pymunk.SimpleMotor | None = None
+        self.limit: pymunk.RotaryLimitJoint | None = None
         self.pivot: pymunk.PivotJoint | None = None
         if not self.active:
             return
@@ -57,7 +69,29 @@ class Revolute(Composite):
         self.pivot.anchor_a, self.pivot.anchor_b = self.la, self.lb
         self.ref = j.reference_angle
         self.settings = j
-        self.run_substeps(j.enable_motor or j.enable_limit)
+        iterated = j.enable_motor and self.ctx.iterated_hinges
+        if iterated:
+            if self.motor is None:
+                self.motor = pymunk.SimpleMotor(self.a, self.b, 0.0)
+                self.add(self.motor, enabled=False)
+            self.motor.rate = -j.motor_speed  # Chipmunk drives w_b - w_a to -rate
+            self.motor.max_force = j.max_motor_torque
+        if self.motor is not None:
+            self.enable(self.motor, iterated)
+        limited = j.enable_limit and self.ctx.iterated_hinges
+        if limited:
+            if self.limit is None:
+                self.limit = pymunk.RotaryLimitJoint(self.a, self.b, 0.0, 0.0)
+                # Box2D: the position pass removes overshoot, not velocity; a slow
+                # bias only stops a motor from creeping past the limit
+                self.limit.max_bias = ITERATED_LIMIT_BIAS
+                self.add(self.limit, enabled=False)
+            self.limit.min = j.lower_angle + self.ref
+            self.limit.max = j.upper_angle + self.ref
+        if self.limit is not None:
+            self.enable(self.limit, limited)
+        self.run_substeps(
+            (j.enable_motor and not iterated) or (j.enable_limit and not limited))
         if not j.enable_motor:
             self.motor_impulse = 0.0
         if not j.enable_limit:
@@ -69,11 +103,14 @@ class Revolute(Composite):
             return
         pa, pb = self.world_anchors(self.la, self.lb)
         rows = hinge_rows(self.a, self.b, pa, pb)
-        motor = (j.motor_speed, j.max_motor_torque) if j.enable_motor else None
-        lo, hi = (j.lower_angle, j.upper_angle) if j.enable_limit else (None, None)
-        self.motor_impulse, self.limit_impulse = motor_and_limits(
+        iterated = self.ctx.iterated_hinges
+        motor = (j.motor_speed, j.max_motor_torque) if j.enable_motor and not iterated else None
+        lo, hi = (j.lower_angle, j.upper_angle) if j.enable_limit and not iterated else (None, None)
+        impulse, self.limit_impulse = motor_and_limits(
             self.space, rows, self.coordinate(), h, motor, lo, hi, MAX_ANGULAR_CORRECTION
         )
+        if not iterated:
+            self.motor_impulse = impulse
         self.h = h
 
     # -- joint coordinate, for gears ---------------------------------------------------
@@ -90,14 +127,29 @@ class Revolute(Composite):
             return
         j = self.settings
         if j.enable_limit:
-            project_limit(self.rows(1.0), self.coordinate(), j.lower_angle, j.upper_angle,
-                          MAX_ANGULAR_CORRECTION)
+            # iterated hinges leave Box2D's b2_angularSlop alone, as its position pass
+            # does: a motor holding a leg on its limit must not move (and so wake) it
+            slop = ANGULAR_SLOP if self.ctx.iterated_hinges else 0.0
+            project_limit(self.rows(1.0), self.coordinate(), j.lower_angle - slop,
+                          j.upper_angle + slop, MAX_ANGULAR_CORRECTION)
+        if self.ctx.iterated_hinges:
+            # a gap this small is left alone: moving a body wakes it (pymunk), and a
+            # motor holding a load leaves such a gap at every step
+            pa = self.a.local_to_world(self.pivot.anchor_a)
+            pb = self.b.local_to_world(self.pivot.anchor_b)
+            if (pb - pa).length < ITERATED_PIVOT_TOLERANCE:
+                return
         gap = project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
         self.jolt(gap, MAX_CORRECTION)
 
     def read_live(self, j: Any, dt: float) -> None:
         raw_set(j, "angle", self.coordinate())
         raw_set(j, "speed", float(self.b.angular_velocity - self.a.angular_velocity))
+        if self.motor is not None and j.enable_motor and self.ctx.iterated_hinges:
+            # pymunk's impulse is the last substep's; Box2D's sign (torque on body b)
+            self.motor_impulse = -self.motor.impulse
+        if self.limit is not None and j.enable_limit and self.ctx.iterated_hinges:
+            self.limit_impulse = -self.limit.impulse
         raw_set(j, "motor_torque", self.motor_impulse / self.h)
         self.write_reaction(j, dt, self.impulse_force(self.pivot), 0.0)
         torque = self.limit_impulse / self.h
