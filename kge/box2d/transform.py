@@ -119,6 +119,14 @@ class b2Transform:  # noqa: N801
             self.R = R
 
     @property
+    def position(self) -> b2Vec2:
+        return self._position
+
+    @position.setter
+    def position(self, value: Any) -> None:
+        self._position = b2Vec2(*as_xy(value, "b2Transform", "position"))
+
+    @property
     def angle(self) -> float:
         return self.q.angle
 
@@ -152,7 +160,7 @@ class b2Transform:  # noqa: N801
             x, y = v.x, v.y
         else:
             x, y = as_xy(v, "b2Transform", "point")
-        q, p = self.q, self.position
+        q, p = self.q, self._position
         return b2Vec2(q.c * x - q.s * y + p.x, q.s * x + q.c * y + p.y)
 
     def __repr__(self) -> str:
@@ -161,7 +169,7 @@ class b2Transform:  # noqa: N801
 
 def make_transform(x: float, y: float, angle: float) -> b2Transform:
     t = b2Transform.__new__(b2Transform)
-    t.position = b2Vec2(x, y)
+    t._position = b2Vec2(x, y)
     q = b2Rot.__new__(b2Rot)
     q.s, q.c = math.sin(angle), math.cos(angle)
     t.q = q

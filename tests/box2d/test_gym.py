@@ -1,0 +1,86 @@
+"""Gymnasium's Box2D environments run unmodified on kge.box2d (pybox2d not used).
+
+LunarLander's own heuristic controller must land (score >= 200) and the episode
+must end the way it does on pybox2d, by the lander falling asleep (Box2D's
+sleep rules: 0.5 s at rest), not by the time limit.
+"""
+
+from __future__ import annotations
+
+import sys
+from types import ModuleType
+
+import numpy as np
+import pytest
+
+
+@pytest.fixture
+def gym(installed: ModuleType) -> ModuleType:
+    for name in [m for m in sys.modules if m.startswith("gymnasium.envs.box2d")]:
+        del sys.modules[name]  # re-import against kge.box2d
+    import gymnasium
+
+    return gymnasium
+
+
+@pytest.mark.parametrize("continuous", [False, True])
+def test_lunar_lander_heuristic_lands(gym: ModuleType, continuous: bool) -> None:
+    from gymnasium.envs.box2d import lunar_lander
+
+    import kge.box2d
+
+    assert lunar_lander.Box2D is kge.box2d
+    env = gym.make("LunarLander-v3", continuous=continuous)
+    for seed in (0, 1, 2):
+        s, _ = env.reset(seed=seed)
+        total, steps = 0.0, 0
+        while True:
+            s, r, term, trunc, _ = env.step(lunar_lander.heuristic(env.unwrapped, s))
+            total += float(r)
+            steps += 1
+            if term or trunc:
+                break
+        assert term and not trunc, f"seed {seed}: hit the time limit (never slept)"
+        assert not env.unwrapped.lander.awake, f"seed {seed}"
+        assert not env.unwrapped.game_over, f"seed {seed}: crashed"
+        assert total >= 200.0, f"seed {seed}: {total:.1f}"
+    env.close()
+
+
+def test_bipedal_walker_steps(gym: ModuleType) -> None:
+    env = gym.make("BipedalWalker-v3")
+    s, _ = env.reset(seed=0)
+    assert s.shape == (24,)
+    for _ in range(100):
+        s, r, term, trunc, _ = env.step(np.array([0.3, -0.5, 0.3, -0.5], dtype=np.float32))
+        assert np.all(np.isfinite(s))
+        if term:
+            break
+    lidar = s[14:]
+    assert np.all((lidar > 0.0) & (lidar <= 1.0))  # ray casts clipped at the terrain
+    assert lidar.min() < 1.0
+    env.close()
+
+
+def test_bipedal_walker_hardcore_resets(gym: ModuleType) -> None:
+    env = gym.make("BipedalWalkerHardcore-v3")
+    for seed in (0, 1):
+        s, _ = env.reset(seed=seed)
+        for _ in range(20):
+            s, *_ = env.step(np.zeros(4, dtype=np.float32))
+        assert np.all(np.isfinite(s))
+    env.close()
+
+
+def test_car_racing_steps(gym: ModuleType) -> None:
+    env = gym.make("CarRacing-v3")
+    obs, _ = env.reset(seed=0)
+    total = 0.0
+    for i in range(60):
+        obs, r, term, trunc, _ = env.step(np.array([0.0, 1.0 if i < 40 else 0.0, 0.0]))
+        total += float(r)
+    assert obs.shape == (96, 96, 3)
+    car = env.unwrapped.car
+    assert car.hull.linearVelocity.length > 1.0  # the wheels' friction drove it
+    assert env.unwrapped.tile_visited_count > 0  # sensor tiles reported BeginContact
+    env.close()
