@@ -86,14 +86,14 @@ from kge.box2d.world import b2World
 from kge.errors import KgeError
 
 
-class b2AssertException(KgeError, AssertionError):  # noqa: N801, N818
+class b2AssertException(KgeError, AssertionError):
     """pybox2d's exception for a failed Box2D assertion (kge raises its own errors)."""
 
 
 b2Globals = sys.modules[__name__]
 
 
-class b2Color:  # noqa: N801
+class b2Color:
     """An RGB colour with components in 0..1 (``bytes`` gives 0..255)."""
 
     def __init__(self, r: float = 0.0, g: float = 0.0, b: float = 0.0) -> None:
@@ -110,18 +110,18 @@ class b2Color:  # noqa: N801
         return f"b2Color({self.r:g},{self.g:g},{self.b:g})"
 
 
-def b2Random(lo: float = -1.0, hi: float = 1.0) -> float:  # noqa: N802
+def b2Random(lo: float = -1.0, hi: float = 1.0) -> float:
     """A uniform random number in [lo, hi] (Box2D's testbed helper)."""
     return random.uniform(lo, hi)
 
 
-def b2Clamp(a: Any, low: Any, high: Any) -> Any:  # noqa: N802
+def b2Clamp(a: Any, low: Any, high: Any) -> Any:
     if isinstance(a, (int, float)):
         return max(low, min(a, high))
     return b2Vec2(max(low[0], min(a[0], high[0])), max(low[1], min(a[1], high[1])))
 
 
-def b2Cross(a: Any, b: Any) -> Any:  # noqa: N802
+def b2Cross(a: Any, b: Any) -> Any:
     """vector x vector -> scalar; vector x scalar and scalar x vector -> vector."""
     if isinstance(a, (int, float)):
         bx, by = b
@@ -129,15 +129,15 @@ def b2Cross(a: Any, b: Any) -> Any:  # noqa: N802
     return b2Vec2(a).cross(b)
 
 
-def b2Dot(a: Any, b: Any) -> float:  # noqa: N802
+def b2Dot(a: Any, b: Any) -> float:
     return b2Vec2(a).dot(b)
 
 
-def b2DistanceSquared(a: Any, b: Any) -> float:  # noqa: N802
+def b2DistanceSquared(a: Any, b: Any) -> float:
     return (b2Vec2(a) - b).lengthSquared
 
 
-def b2Distance_points(a: Any, b: Any) -> float:  # noqa: N802
+def b2Distance_points(a: Any, b: Any) -> float:
     return math.sqrt(b2DistanceSquared(a, b))
 
 

@@ -46,10 +46,10 @@ def body_type(value: Any) -> BodyType:
     return _TO_KGE[value]
 
 
-class b2MassData:  # noqa: N801
+class b2MassData:
     """Mass (kg), centre of mass (body-local) and rotational inertia about the body origin."""
 
-    def __init__(self, mass: float = 0.0, center: Any = (0.0, 0.0), I: float = 0.0) -> None:  # noqa: E741, N803
+    def __init__(self, mass: float = 0.0, center: Any = (0.0, 0.0), I: float = 0.0) -> None:  # noqa: E741
         self.mass = float(mass)
         self.center = b2Vec2(center)
         self.I = float(I)
@@ -58,7 +58,7 @@ class b2MassData:  # noqa: N801
         return f"b2MassData(mass={self.mass:g}, center={self.center!r}, I={self.I:g})"
 
 
-class b2BodyDef:  # noqa: N801
+class b2BodyDef:
     """Everything a body starts with; ``fixtures=`` and ``shapes=`` make its fixtures too."""
 
     def __init__(self, **kwargs: Any) -> None:
@@ -96,21 +96,21 @@ class b2BodyDef:  # noqa: N801
         )
 
 
-class b2JointEdge:  # noqa: N801
+class b2JointEdge:
     """One joint of a body, seen from it: ``joint`` and the ``other`` body."""
 
     def __init__(self, joint: b2Joint, other: b2Body) -> None:
         self.joint, self.other = joint, other
 
 
-class b2ContactEdge:  # noqa: N801
+class b2ContactEdge:
     """One touching contact of a body, seen from it: ``contact`` and the ``other`` body."""
 
     def __init__(self, contact: b2Contact, other: b2Body) -> None:
         self.contact, self.other = contact, other
 
 
-class b2Body:  # noqa: N801
+class b2Body:
     """A rigid body: pose, velocity, mass, its fixtures and joints."""
 
     def __init__(self, world: b2World, entity: int, tf: Transform, rb: RigidBody,
@@ -123,6 +123,10 @@ class b2Body:  # noqa: N801
         self._joints: list[b2Joint] = []
         self.userData = user_data
         self._destroyed = False
+
+    if TYPE_CHECKING:  # programs store their own attributes on bodies
+        def __getattr__(self, name: str) -> Any: ...
+        def __setattr__(self, name: str, value: Any) -> None: ...
 
     # -- identity --------------------------------------------------------------------------
     @property
@@ -183,27 +187,27 @@ class b2Body:  # noqa: N801
         x, y = as_xy(pos, "b2Body", "transform")
         self._tf.x, self._tf.y, self._tf.angle = x, y, angle
 
-    def SetTransform(self, position: Any, angle: float) -> None:  # noqa: N802
+    def SetTransform(self, position: Any, angle: float) -> None:
         self.transform = (position, angle)
 
     # -- velocity and flags -----------------------------------------------------------------------
     @property
-    def linearVelocity(self) -> b2Vec2:  # noqa: N802
+    def linearVelocity(self) -> b2Vec2:
         vx, vy = self._rb.velocity
         return b2Vec2(vx, vy)
 
     @linearVelocity.setter
-    def linearVelocity(self, value: Any) -> None:  # noqa: N802
+    def linearVelocity(self, value: Any) -> None:
         self._live("linearVelocity")
         if self._rb.type is not BodyType.STATIC:
             self._rb.velocity = as_xy(value, "b2Body", "linearVelocity")
 
     @property
-    def angularVelocity(self) -> float:  # noqa: N802
+    def angularVelocity(self) -> float:
         return self._rb.angular_velocity
 
     @angularVelocity.setter
-    def angularVelocity(self, value: float) -> None:  # noqa: N802
+    def angularVelocity(self, value: float) -> None:
         self._live("angularVelocity")
         if self._rb.type is not BodyType.STATIC:
             self._rb.angular_velocity = value
@@ -218,7 +222,7 @@ class b2Body:  # noqa: N801
         if self._rb.type is not BodyType.STATIC:
             self._rb.awake = value
 
-    def _flag(name: str, doc: str) -> property:  # type: ignore[misc]  # noqa: N805
+    def _flag(name: str, doc: str) -> property:  # type: ignore[misc]
         def get(self: b2Body) -> Any:
             return getattr(self._rb, name)
 
@@ -230,11 +234,11 @@ class b2Body:  # noqa: N801
 
     active = _flag("enabled", "False takes the body out of the simulation (Box2D SetActive)")
     bullet = _flag("bullet", "Continuous collision against dynamic bodies too")
-    fixedRotation = _flag("fixed_rotation", "No rotation: zero inverse inertia")  # noqa: N815
-    sleepingAllowed = _flag("allow_sleep", "May this body fall asleep?")  # noqa: N815
-    linearDamping = _flag("linear_damping", "v *= max(0, 1 - c dt) per step")  # noqa: N815
-    angularDamping = _flag("angular_damping", "w *= max(0, 1 - c dt) per step")  # noqa: N815
-    gravityScale = _flag("gravity_scale", "Multiplier on the world's gravity")  # noqa: N815
+    fixedRotation = _flag("fixed_rotation", "No rotation: zero inverse inertia")
+    sleepingAllowed = _flag("allow_sleep", "May this body fall asleep?")
+    linearDamping = _flag("linear_damping", "v *= max(0, 1 - c dt) per step")
+    angularDamping = _flag("angular_damping", "w *= max(0, 1 - c dt) per step")
+    gravityScale = _flag("gravity_scale", "Multiplier on the world's gravity")
     del _flag
 
     @property
@@ -266,7 +270,7 @@ class b2Body:  # noqa: N801
         return md.I
 
     @property
-    def massData(self) -> b2MassData:  # noqa: N802
+    def massData(self) -> b2MassData:
         if self._rb.type is not BodyType.DYNAMIC:
             return b2MassData()
         md = self._world._physics.mass_data(self._entity)
@@ -274,81 +278,81 @@ class b2Body:  # noqa: N801
         return b2MassData(md.mass, (cx, cy), md.inertia + md.mass * (cx * cx + cy * cy))
 
     @massData.setter
-    def massData(self, value: b2MassData) -> None:  # noqa: N802
+    def massData(self, value: b2MassData) -> None:
         self.mass = value.mass
 
-    def ResetMassData(self) -> None:  # noqa: N802
+    def ResetMassData(self) -> None:
         self._rb.mass = None
 
     @property
-    def localCenter(self) -> b2Vec2:  # noqa: N802
+    def localCenter(self) -> b2Vec2:
         if self._rb.type is not BodyType.DYNAMIC:
             return b2Vec2(0.0, 0.0)
         return b2Vec2(*self._world._physics.mass_data(self._entity).center)
 
     @property
-    def worldCenter(self) -> b2Vec2:  # noqa: N802
+    def worldCenter(self) -> b2Vec2:
         return self.GetWorldPoint(self.localCenter)
 
     # -- forces -------------------------------------------------------------------------------
-    def ApplyForce(self, force: Any, point: Any, wake: bool = True) -> None:  # noqa: N802
+    def ApplyForce(self, force: Any, point: Any, wake: bool = True) -> None:
         self._live("ApplyForce")
         self._world._physics.apply_force(self._entity, as_xy(force, "ApplyForce", "force"),
                                          as_xy(point, "ApplyForce", "point"), bool(wake))
 
-    def ApplyForceToCenter(self, force: Any, wake: bool = True) -> None:  # noqa: N802
+    def ApplyForceToCenter(self, force: Any, wake: bool = True) -> None:
         self._live("ApplyForceToCenter")
         self._world._physics.apply_force(
             self._entity, as_xy(force, "ApplyForceToCenter", "force"), None, bool(wake))
 
-    def ApplyTorque(self, torque: float, wake: bool = True) -> None:  # noqa: N802
+    def ApplyTorque(self, torque: float, wake: bool = True) -> None:
         self._live("ApplyTorque")
         self._world._physics.apply_torque(self._entity, torque, bool(wake))
 
-    def ApplyLinearImpulse(self, impulse: Any, point: Any, wake: bool = True) -> None:  # noqa: N802
+    def ApplyLinearImpulse(self, impulse: Any, point: Any, wake: bool = True) -> None:
         self._live("ApplyLinearImpulse")
         self._world._physics.apply_linear_impulse(
             self._entity, as_xy(impulse, "ApplyLinearImpulse", "impulse"),
             as_xy(point, "ApplyLinearImpulse", "point"), bool(wake))
 
-    def ApplyAngularImpulse(self, impulse: float, wake: bool = True) -> None:  # noqa: N802
+    def ApplyAngularImpulse(self, impulse: float, wake: bool = True) -> None:
         self._live("ApplyAngularImpulse")
         self._world._physics.apply_angular_impulse(self._entity, impulse, bool(wake))
 
     # -- coordinates ----------------------------------------------------------------------------
-    def GetWorldPoint(self, localPoint: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetWorldPoint(self, localPoint: Any) -> b2Vec2:
         x, y = as_xy(localPoint, "GetWorldPoint", "localPoint")
         tf = self._tf
         c, s = math.cos(tf.angle), math.sin(tf.angle)
         return b2Vec2(c * x - s * y + tf.x, s * x + c * y + tf.y)
 
-    def GetWorldVector(self, localVector: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetWorldVector(self, localVector: Any) -> b2Vec2:
         x, y = as_xy(localVector, "GetWorldVector", "localVector")
         a = self._tf.angle
         c, s = math.cos(a), math.sin(a)
         return b2Vec2(c * x - s * y, s * x + c * y)
 
-    def GetLocalPoint(self, worldPoint: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetLocalPoint(self, worldPoint: Any) -> b2Vec2:
         x, y = as_xy(worldPoint, "GetLocalPoint", "worldPoint")
         tf = self._tf
         c, s = math.cos(tf.angle), math.sin(tf.angle)
         dx, dy = x - tf.x, y - tf.y
         return b2Vec2(c * dx + s * dy, -s * dx + c * dy)
 
-    def GetLocalVector(self, worldVector: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetLocalVector(self, worldVector: Any) -> b2Vec2:
         x, y = as_xy(worldVector, "GetLocalVector", "worldVector")
         a = self._tf.angle
         c, s = math.cos(a), math.sin(a)
         return b2Vec2(c * x + s * y, -s * x + c * y)
 
-    def GetLinearVelocityFromWorldPoint(self, worldPoint: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetLinearVelocityFromWorldPoint(self, worldPoint: Any) -> b2Vec2:
         px, py = as_xy(worldPoint, "GetLinearVelocityFromWorldPoint", "worldPoint")
         cx, cy = self.worldCenter
         vx, vy = self._rb.velocity
         w = self._rb.angular_velocity
         return b2Vec2(vx - w * (py - cy), vy + w * (px - cx))
 
-    def GetLinearVelocityFromLocalPoint(self, localPoint: Any) -> b2Vec2:  # noqa: N802, N803
+    def GetLinearVelocityFromLocalPoint(self, localPoint: Any) -> b2Vec2:
         return self.GetLinearVelocityFromWorldPoint(self.GetWorldPoint(localPoint))
 
     # -- fixtures -------------------------------------------------------------------------------
@@ -357,7 +361,7 @@ class b2Body:  # noqa: N801
         """Newest first, as Box2D's fixture list."""
         return self._fixtures[::-1]
 
-    def CreateFixture(self, defn: b2FixtureDef | None = None, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreateFixture(self, defn: b2FixtureDef | None = None, **kwargs: Any) -> b2Fixture:
         if defn is None:
             defn = b2FixtureDef(**kwargs)
         elif kwargs:
@@ -373,25 +377,25 @@ class b2Body:  # noqa: N801
                 setattr(shape, k, kwargs.pop(k))
         return self.CreateFixture(b2FixtureDef(shape=shape, **kwargs))
 
-    def CreatePolygonFixture(self, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreatePolygonFixture(self, **kwargs: Any) -> b2Fixture:
         return self._shaped(b2PolygonShape(), kwargs, ("box", "vertices"))
 
-    def CreateCircleFixture(self, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreateCircleFixture(self, **kwargs: Any) -> b2Fixture:
         return self._shaped(b2CircleShape(), kwargs, ("radius", "pos"))
 
-    def CreateEdgeFixture(self, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreateEdgeFixture(self, **kwargs: Any) -> b2Fixture:
         return self._shaped(b2EdgeShape(), kwargs, ("vertices",))
 
-    def CreateChainFixture(self, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreateChainFixture(self, **kwargs: Any) -> b2Fixture:
         return self._shaped(b2ChainShape(), kwargs, ("vertices",))
 
-    def CreateLoopFixture(self, **kwargs: Any) -> b2Fixture:  # noqa: N802
+    def CreateLoopFixture(self, **kwargs: Any) -> b2Fixture:
         return self._shaped(b2LoopShape(), kwargs, ("vertices",))
 
-    def CreateEdgeChain(self, edge_list: Any) -> b2Fixture:  # noqa: N802
+    def CreateEdgeChain(self, edge_list: Any) -> b2Fixture:
         return self.CreateFixture(b2FixtureDef(shape=b2ChainShape(vertices=edge_list)))
 
-    def CreateFixturesFromShapes(self, shapes: Any = None, shapeFixture: Any = None) -> None:  # noqa: N802, N803
+    def CreateFixturesFromShapes(self, shapes: Any = None, shapeFixture: Any = None) -> None:
         template = shapeFixture if shapeFixture is not None else b2FixtureDef()
         if not isinstance(shapes, (list, tuple)):
             shapes = [shapes]
@@ -399,7 +403,7 @@ class b2Body:  # noqa: N801
             template.shape = shape
             self.CreateFixture(template)
 
-    def DestroyFixture(self, fixture: b2Fixture) -> None:  # noqa: N802
+    def DestroyFixture(self, fixture: b2Fixture) -> None:
         self._live("DestroyFixture")
         if not isinstance(fixture, b2Fixture) or fixture.body is not self:
             raise ValidationError(f"DestroyFixture: {fixture!r} is not a fixture of this body")

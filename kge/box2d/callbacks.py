@@ -16,62 +16,62 @@ from __future__ import annotations
 from typing import Any
 
 
-class b2ContactListener:  # noqa: N801
+class b2ContactListener:
     """Told when fixtures start and stop touching, and before/after each solve."""
 
     def __init__(self, **kwargs: Any) -> None:
         for k, v in kwargs.items():
             setattr(self, k, v)
 
-    def BeginContact(self, contact: Any) -> None:  # noqa: N802
+    def BeginContact(self, contact: Any) -> None:
         """Two fixtures started touching (or a sensor started overlapping)."""
 
-    def EndContact(self, contact: Any) -> None:  # noqa: N802
+    def EndContact(self, contact: Any) -> None:
         """Two fixtures stopped touching (also when one of them is destroyed)."""
 
-    def PreSolve(self, contact: Any, oldManifold: Any) -> None:  # noqa: N802, N803
+    def PreSolve(self, contact: Any, oldManifold: Any) -> None:
         """Before the solver: set ``contact.enabled = False`` to skip it this step."""
 
-    def PostSolve(self, contact: Any, impulse: Any) -> None:  # noqa: N802
+    def PostSolve(self, contact: Any, impulse: Any) -> None:
         """After the solver: ``impulse.normalImpulses`` per manifold point."""
 
 
-class b2ContactFilter:  # noqa: N801
+class b2ContactFilter:
     """Decides whether two fixtures may collide (Box2D's default uses their filters)."""
 
     def __init__(self, **kwargs: Any) -> None:
         for k, v in kwargs.items():
             setattr(self, k, v)
 
-    def ShouldCollide(self, fixtureA: Any, fixtureB: Any) -> bool:  # noqa: N802, N803
+    def ShouldCollide(self, fixtureA: Any, fixtureB: Any) -> bool:
         from kge.box2d.fixture import default_should_collide
 
         return default_should_collide(fixtureA, fixtureB)
 
 
-class b2DestructionListener:  # noqa: N801
+class b2DestructionListener:
     """Told about joints and fixtures destroyed implicitly with their body."""
 
     def __init__(self, **kwargs: Any) -> None:
         for k, v in kwargs.items():
             setattr(self, k, v)
 
-    def SayGoodbye(self, obj: Any) -> None:  # noqa: N802
+    def SayGoodbye(self, obj: Any) -> None:
         """``obj`` is a b2Joint or b2Fixture about to go away."""
 
 
-class b2QueryCallback:  # noqa: N801
+class b2QueryCallback:
     """``world.QueryAABB(callback, aabb)``: ``ReportFixture(fixture)`` returns True to go on."""
 
     def __init__(self, **kwargs: Any) -> None:
         for k, v in kwargs.items():
             setattr(self, k, v)
 
-    def ReportFixture(self, fixture: Any) -> bool:  # noqa: N802
+    def ReportFixture(self, fixture: Any) -> bool:
         return True
 
 
-class b2RayCastCallback:  # noqa: N801
+class b2RayCastCallback:
     """``world.RayCast(callback, p1, p2)``: ``ReportFixture(fixture, point, normal, fraction)``.
 
     Return the fraction to clip the ray (closest hit), 1 to continue, 0 to stop,
@@ -82,7 +82,7 @@ class b2RayCastCallback:  # noqa: N801
         for k, v in kwargs.items():
             setattr(self, k, v)
 
-    def ReportFixture(self, fixture: Any, point: Any, normal: Any, fraction: float) -> float:  # noqa: N802
+    def ReportFixture(self, fixture: Any, point: Any, normal: Any, fraction: float) -> float:
         return 1.0
 
 

@@ -12,7 +12,7 @@ Box2D's contact list also holds pairs whose bounding boxes merely overlap
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from kge.box2d.vec import b2Vec2
 
@@ -22,35 +22,35 @@ if TYPE_CHECKING:
 Vec2 = tuple[float, float]
 
 
-class b2ManifoldPoint:  # noqa: N801
+class b2ManifoldPoint:
     """One contact point: where (in fixture B's body frame) and the solver's impulses."""
 
-    def __init__(self, localPoint: b2Vec2, normalImpulse: float = 0.0,  # noqa: N803
-                 tangentImpulse: float = 0.0) -> None:  # noqa: N803
+    def __init__(self, localPoint: b2Vec2, normalImpulse: float = 0.0,
+                 tangentImpulse: float = 0.0) -> None:
         self.localPoint = localPoint
         self.normalImpulse = normalImpulse
         self.tangentImpulse = tangentImpulse
         self.id = 0
 
 
-class b2Manifold:  # noqa: N801
+class b2Manifold:
     """Contact points in local coordinates (Box2D's b2Manifold, face-A form)."""
 
     e_circles, e_faceA, e_faceB = 0, 1, 2
 
-    def __init__(self, points: list[b2ManifoldPoint], localNormal: b2Vec2,  # noqa: N803
-                 localPoint: b2Vec2) -> None:  # noqa: N803
+    def __init__(self, points: list[b2ManifoldPoint], localNormal: b2Vec2,
+                 localPoint: b2Vec2) -> None:
         self.points = points
         self.localNormal = localNormal
         self.localPoint = localPoint
         self.type = self.e_faceA
 
     @property
-    def pointCount(self) -> int:  # noqa: N802
+    def pointCount(self) -> int:
         return len(self.points)
 
 
-class b2WorldManifold:  # noqa: N801
+class b2WorldManifold:
     """World normal (from A to B), world points and separations."""
 
     def __init__(self, normal: b2Vec2, points: list[b2Vec2], separations: list[float]) -> None:
@@ -59,20 +59,20 @@ class b2WorldManifold:  # noqa: N801
         self.separations = separations
 
 
-class b2ContactImpulse:  # noqa: N801
+class b2ContactImpulse:
     """Impulses of one contact over the last step, per manifold point (N s)."""
 
-    def __init__(self, normalImpulses: tuple[float, ...], tangentImpulses: tuple[float, ...],  # noqa: N803
+    def __init__(self, normalImpulses: tuple[float, ...], tangentImpulses: tuple[float, ...],
                  count: int) -> None:
         self.normalImpulses = normalImpulses
         self.tangentImpulses = tangentImpulses
         self.count = count
 
 
-class b2Contact:  # noqa: N801
+class b2Contact:
     """Two touching fixtures (A before B as Box2D orders them) and their contact data."""
 
-    def __init__(self, fixtureA: b2Fixture, fixtureB: b2Fixture) -> None:  # noqa: N803
+    def __init__(self, fixtureA: b2Fixture, fixtureB: b2Fixture) -> None:
         self._fixtureA = fixtureA
         self._fixtureB = fixtureB
         self.touching = True
@@ -103,7 +103,7 @@ class b2Contact:  # noqa: N801
     def friction(self, value: float) -> None:
         self._friction = float(value)
 
-    def ResetFriction(self) -> None:  # noqa: N802
+    def ResetFriction(self) -> None:
         self._friction = None
 
     @property
@@ -116,11 +116,11 @@ class b2Contact:  # noqa: N801
     def restitution(self, value: float) -> None:
         self._restitution = float(value)
 
-    def ResetRestitution(self) -> None:  # noqa: N802
+    def ResetRestitution(self) -> None:
         self._restitution = None
 
     @property
-    def worldManifold(self) -> b2WorldManifold:  # noqa: N802
+    def worldManifold(self) -> b2WorldManifold:
         n = self._normal
         return b2WorldManifold(b2Vec2(*n), [b2Vec2(*p) for p in self._points],
                                [self._separation] * len(self._points))

@@ -34,11 +34,11 @@ def set_keywords(obj: Any, kwargs: dict[str, Any]) -> None:
         setattr(obj, name, value)
 
 
-class b2Filter:  # noqa: N801
+class b2Filter:
     """Collision filtering data: category, mask and group (Box2D's rules)."""
 
-    def __init__(self, categoryBits: int = 0x0001, maskBits: int = 0xFFFF,  # noqa: N803
-                 groupIndex: int = 0) -> None:  # noqa: N803
+    def __init__(self, categoryBits: int = 0x0001, maskBits: int = 0xFFFF,
+                 groupIndex: int = 0) -> None:
         self.categoryBits = categoryBits
         self.maskBits = maskBits
         self.groupIndex = groupIndex
@@ -55,7 +55,7 @@ class b2Filter:  # noqa: N801
                 f"groupIndex={self.groupIndex})")
 
 
-class b2FixtureDef:  # noqa: N801
+class b2FixtureDef:
     """What ``CreateFixture`` needs: a shape and its material."""
 
     def __init__(self, **kwargs: Any) -> None:
@@ -93,7 +93,7 @@ class b2FixtureDef:  # noqa: N801
         return col, shape.__copy__()
 
 
-class b2Fixture:  # noqa: N801
+class b2Fixture:
     """A shape attached to a body, with material and filter (a kge Collider entity)."""
 
     def __init__(self, body: b2Body, entity: int, col: Collider, shape: b2Shape,
@@ -138,23 +138,23 @@ class b2Fixture:  # noqa: N801
     isSensor = sensor
 
     @property
-    def filterData(self) -> b2Filter:  # noqa: N802
+    def filterData(self) -> b2Filter:
         return b2Filter.from_kge(self._col.filter)
 
     @filterData.setter
-    def filterData(self, value: b2Filter) -> None:  # noqa: N802
+    def filterData(self, value: b2Filter) -> None:
         if not isinstance(value, b2Filter):
             raise ComponentTypeError(f"b2Fixture.filterData must be a b2Filter, got {value!r}")
         self._live().filter = value.to_kge()
 
-    def TestPoint(self, p: Any) -> bool:  # noqa: N802
+    def TestPoint(self, p: Any) -> bool:
         """Is the world point ``p`` inside this fixture's shape?"""
         self._live()
         hits = self._body._world._physics.query_point(as_xy(p, "b2Fixture.TestPoint", "p"))
         return any(h.collider == self._entity for h in hits)
 
     @property
-    def massData(self) -> Any:  # noqa: N802
+    def massData(self) -> Any:
         from kge.box2d.body import b2MassData
         from kge.physics.mass import shape_mass
 
@@ -162,7 +162,7 @@ class b2Fixture:  # noqa: N801
         return b2MassData(md.mass, b2Vec2(*md.center), md.inertia
                           + md.mass * (md.center[0] ** 2 + md.center[1] ** 2))
 
-    def GetAABB(self, childIndex: int = 0) -> Any:  # noqa: N802, N803
+    def GetAABB(self, childIndex: int = 0) -> Any:
         return self._shape.getAABB(self._body.transform, childIndex)
 
     @property

@@ -47,8 +47,11 @@ _ANCHORS: dict[str, Field] = {
 _BASE: dict[str, Field] = {"collideConnected": ("collide_connected", False, bool)}
 
 
-class b2JointDef:  # noqa: N801
+class b2JointDef:
     """Base definition: ``bodyA``, ``bodyB``, ``collideConnected``, ``userData``."""
+
+    if TYPE_CHECKING:  # the per-type fields are set from FIELDS
+        def __getattr__(self, name: str) -> Any: ...
 
     FIELDS: ClassVar[dict[str, Field]] = dict(_BASE)
     COMPONENT: ClassVar[type[kj.Joint]]
@@ -61,7 +64,8 @@ class b2JointDef:  # noqa: N801
         self.bodyB: b2Body | None = None
         self.userData: Any = None
         for name, (_, default, _conv) in self.FIELDS.items():
-            object.__setattr__(self, name, b2Vec2(*default) if isinstance(default, tuple) else default)
+            value = b2Vec2(*default) if isinstance(default, tuple) else default
+            object.__setattr__(self, name, value)
         init = {k: kwargs.pop(k) for k in self.INIT_KEYS if k in kwargs}
         for name, value in kwargs.items():
             if name not in self.FIELDS and name not in ("bodyA", "bodyB", "userData"):
@@ -87,7 +91,8 @@ class b2JointDef:  # noqa: N801
         a, b = self.bodyA, self.bodyB
         for name, body in (("bodyA", a), ("bodyB", b)):
             if not isinstance(body, b2Body):
-                raise ComponentTypeError(f"{type(self).__name__}.{name} must be a b2Body, got {body!r}")
+                raise ComponentTypeError(
+                    f"{type(self).__name__}.{name} must be a b2Body, got {body!r}")
         assert a is not None and b is not None
         return a, b
 
@@ -103,11 +108,13 @@ class b2JointDef:  # noqa: N801
         for name, (field, _, _conv) in self.FIELDS.items():
             v = getattr(self, name)
             kw[field] = tuple(v) if isinstance(v, b2Vec2) else v
-        return self.COMPONENT(a.entity, b.entity, **kw)  # type: ignore[call-arg]
+        make: Any = self.COMPONENT
+        joint: kj.Joint = make(a.entity, b.entity, **kw)
+        return joint
 
 
-class b2RevoluteJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2RevoluteJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "enableLimit": ("enable_limit", False, bool),
               "lowerAngle": ("lower_angle", 0.0, float),
@@ -122,7 +129,7 @@ class b2RevoluteJointDef(b2JointDef):  # noqa: N801
     def _initialize(self, anchor: Any = None, **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchor)
@@ -130,8 +137,8 @@ class b2RevoluteJointDef(b2JointDef):  # noqa: N801
         self.referenceAngle = b.angle - a.angle
 
 
-class b2WeldJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2WeldJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "frequencyHz": ("frequency_hz", 0.0, float),
               "dampingRatio": ("damping_ratio", 0.0, float)}
@@ -142,8 +149,8 @@ class b2WeldJointDef(b2JointDef):  # noqa: N801
     Initialize = b2RevoluteJointDef.Initialize
 
 
-class b2FrictionJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2FrictionJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "maxForce": ("max_force", 0.0, float),
               "maxTorque": ("max_torque", 0.0, float)}
     COMPONENT = kj.FrictionJoint
@@ -153,15 +160,15 @@ class b2FrictionJointDef(b2JointDef):  # noqa: N801
     def _initialize(self, anchor: Any = None, **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchor)
         self.localAnchorB = b.GetLocalPoint(anchor)
 
 
-class b2PrismaticJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2PrismaticJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
               "referenceAngle": ("reference_angle", 0.0, float),
               "enableLimit": ("enable_limit", False, bool),
@@ -177,7 +184,7 @@ class b2PrismaticJointDef(b2JointDef):  # noqa: N801
     def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor, axis)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchor)
@@ -186,8 +193,8 @@ class b2PrismaticJointDef(b2JointDef):  # noqa: N801
         self.referenceAngle = b.angle - a.angle
 
 
-class b2WheelJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2WheelJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
               "enableMotor": ("enable_motor", False, bool),
               "motorSpeed": ("motor_speed", 0.0, float),
@@ -201,7 +208,7 @@ class b2WheelJointDef(b2JointDef):  # noqa: N801
     def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor, axis)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchor)
@@ -209,8 +216,8 @@ class b2WheelJointDef(b2JointDef):  # noqa: N801
         self.localAxisA = a.GetLocalVector(axis)
 
 
-class b2DistanceJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2DistanceJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "length": ("length", 1.0, float),
               "frequencyHz": ("frequency_hz", 0.0, float),
               "dampingRatio": ("damping_ratio", 0.0, float)}
@@ -218,10 +225,10 @@ class b2DistanceJointDef(b2JointDef):  # noqa: N801
     TYPE = c.e_distanceJoint
     INIT_KEYS = ("anchorA", "anchorB")
 
-    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchorA, anchorB)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchorA: Any, anchorB: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any, anchorA: Any, anchorB: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         pa, pb = b2Vec2(anchorA), b2Vec2(anchorB)
@@ -230,8 +237,8 @@ class b2DistanceJointDef(b2JointDef):  # noqa: N801
         self.length = (pb - pa).length
 
 
-class b2RopeJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE,
+class b2RopeJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE,
               "localAnchorA": ("local_anchor_a", (-1.0, 0.0), _vec),
               "localAnchorB": ("local_anchor_b", (1.0, 0.0), _vec),
               "maxLength": ("max_length", 0.0, float)}
@@ -239,7 +246,7 @@ class b2RopeJointDef(b2JointDef):  # noqa: N801
     TYPE = c.e_ropeJoint
     INIT_KEYS = ("anchorA", "anchorB")
 
-    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
         a, b = self._bodies()
         if anchorA is not None:
             self.localAnchorA = a.GetLocalPoint(anchorA)
@@ -247,8 +254,8 @@ class b2RopeJointDef(b2JointDef):  # noqa: N801
             self.localAnchorB = b.GetLocalPoint(anchorB)
 
 
-class b2PulleyJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, **_ANCHORS,
+class b2PulleyJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "groundAnchorA": ("ground_anchor_a", (-1.0, 1.0), _vec),
               "groundAnchorB": ("ground_anchor_b", (1.0, 1.0), _vec),
               "ratio": ("ratio", 1.0, float),
@@ -257,31 +264,31 @@ class b2PulleyJointDef(b2JointDef):  # noqa: N801
     TYPE = c.e_pulleyJoint
     INIT_KEYS = ("anchorA", "anchorB")
 
-    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:  # noqa: N803
+    def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchorA)
         self.localAnchorB = b.GetLocalPoint(anchorB)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, groundAnchorA: Any, groundAnchorB: Any,  # noqa: N802, N803
-                   anchorA: Any, anchorB: Any, ratio: float) -> None:  # noqa: N803
+    def Initialize(self, bodyA: Any, bodyB: Any, groundAnchorA: Any, groundAnchorB: Any,
+                   anchorA: Any, anchorB: Any, ratio: float) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         self.groundAnchorA, self.groundAnchorB = groundAnchorA, groundAnchorB
         self.ratio = ratio
         self._initialize(anchorA, anchorB)
 
     @property
-    def lengthA(self) -> float:  # noqa: N802
+    def lengthA(self) -> float:
         a, _ = self._bodies()
         return (a.GetWorldPoint(self.localAnchorA) - self.groundAnchorA).length
 
     @property
-    def lengthB(self) -> float:  # noqa: N802
+    def lengthB(self) -> float:
         _, b = self._bodies()
         return (b.GetWorldPoint(self.localAnchorB) - self.groundAnchorB).length
 
 
-class b2MouseJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE,
+class b2MouseJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE,
               "target": ("target", (0.0, 0.0), _vec),
               "maxForce": ("max_force", 0.0, float),
               "frequencyHz": ("frequency_hz", 5.0, float),
@@ -290,8 +297,8 @@ class b2MouseJointDef(b2JointDef):  # noqa: N801
     TYPE = c.e_mouseJoint
 
 
-class b2MotorJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE,
+class b2MotorJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE,
               "linearOffset": ("linear_offset", (0.0, 0.0), _vec),
               "angularOffset": ("angular_offset", 0.0, float),
               "maxForce": ("max_force", 1.0, float),
@@ -300,15 +307,15 @@ class b2MotorJointDef(b2JointDef):  # noqa: N801
     COMPONENT = kj.MotorJoint
     TYPE = c.e_motorJoint
 
-    def Initialize(self, bodyA: Any, bodyB: Any) -> None:  # noqa: N802, N803
+    def Initialize(self, bodyA: Any, bodyB: Any) -> None:
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.linearOffset = a.GetLocalPoint(b.position)
         self.angularOffset = b.angle - a.angle
 
 
-class b2GearJointDef(b2JointDef):  # noqa: N801
-    FIELDS = {**_BASE, "ratio": ("ratio", 1.0, float)}
+class b2GearJointDef(b2JointDef):
+    FIELDS: ClassVar[dict[str, Field]] = {**_BASE, "ratio": ("ratio", 1.0, float)}
     COMPONENT = kj.GearJoint
     TYPE = c.e_gearJoint
 
@@ -353,20 +360,24 @@ def _read(field: str) -> property:
     return property(get)
 
 
-class b2Joint:  # noqa: N801
+class b2Joint:
     """A joint between two bodies (a kge joint entity); properties are live component fields."""
 
     DEF: ClassVar[type[b2JointDef]] = b2JointDef
 
-    def __init__(self, world: b2World, entity: int, comp: kj.Joint, bodyA: b2Body,  # noqa: N803
-                 bodyB: b2Body, user_data: Any) -> None:  # noqa: N803
+    def __init__(self, world: b2World, entity: int, comp: kj.Joint, bodyA: b2Body,
+                 bodyB: b2Body, user_data: Any) -> None:
         self._world = world
         self._entity = entity
-        self._comp = comp
+        self._comp: Any = comp
         self._bodyA = bodyA
         self._bodyB = bodyB
         self.userData = user_data
         self._destroyed = False
+
+    if TYPE_CHECKING:  # the per-type properties are made by __init_subclass__
+        def __getattr__(self, name: str) -> Any: ...
+        def __setattr__(self, name: str, value: Any) -> None: ...
 
     def __init_subclass__(cls, **kw: Any) -> None:
         super().__init_subclass__(**kw)
@@ -391,18 +402,18 @@ class b2Joint:  # noqa: N801
         return bool(self._bodyA.active and self._bodyB.active)
 
     @property
-    def anchorA(self) -> b2Vec2:  # noqa: N802
+    def anchorA(self) -> b2Vec2:
         return self._bodyA.GetWorldPoint(getattr(self._comp, "local_anchor_a", (0.0, 0.0)))
 
     @property
-    def anchorB(self) -> b2Vec2:  # noqa: N802
+    def anchorB(self) -> b2Vec2:
         return self._bodyB.GetWorldPoint(getattr(self._comp, "local_anchor_b", None) or (0, 0))
 
-    def GetReactionForce(self, inv_dt: float = 0.0) -> b2Vec2:  # noqa: N802
+    def GetReactionForce(self, inv_dt: float = 0.0) -> b2Vec2:
         """The force on bodyB at the anchor over the last step (N)."""
         return b2Vec2(*self._comp.reaction_force)
 
-    def GetReactionTorque(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+    def GetReactionTorque(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.reaction_torque)
 
     def __repr__(self) -> str:
@@ -415,18 +426,18 @@ class _Limits:
     _LIMIT: ClassVar[tuple[str, str]]
     _comp: Any
 
-    limitEnabled = property(lambda self: self._comp.enable_limit,  # noqa: N815
+    limitEnabled = property(lambda self: self._comp.enable_limit,
                             lambda self, v: setattr(self._comp, "enable_limit", bool(v)))
-    motorEnabled = property(lambda self: self._comp.enable_motor,  # noqa: N815
+    motorEnabled = property(lambda self: self._comp.enable_motor,
                             lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
 
-    def EnableLimit(self, flag: bool) -> None:  # noqa: N802
+    def EnableLimit(self, flag: bool) -> None:
         self.limitEnabled = flag
 
-    def EnableMotor(self, flag: bool) -> None:  # noqa: N802
+    def EnableMotor(self, flag: bool) -> None:
         self.motorEnabled = flag
 
-    def SetLimits(self, lower: float, upper: float) -> None:  # noqa: N802
+    def SetLimits(self, lower: float, upper: float) -> None:
         self._comp.set_limits(lower, upper)
 
     @property
@@ -438,94 +449,94 @@ class _Limits:
     def limits(self, value: Any) -> None:
         self.SetLimits(*value)
 
-    lowerLimit = property(lambda self: self.limits[0])  # noqa: N815
-    upperLimit = property(lambda self: self.limits[1])  # noqa: N815
+    lowerLimit = property(lambda self: self.limits[0])
+    upperLimit = property(lambda self: self.limits[1])
 
 
-class b2RevoluteJoint(_Limits, b2Joint):  # noqa: N801
+class b2RevoluteJoint(_Limits, b2Joint):
     DEF = b2RevoluteJointDef
     _LIMIT = ("lower_angle", "upper_angle")
     angle = _read("angle")
     speed = _read("speed")
-    motorTorque = _read("motor_torque")  # noqa: N815
+    motorTorque = _read("motor_torque")
 
-    def GetMotorTorque(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+    def GetMotorTorque(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.motor_torque)
 
 
-class b2PrismaticJoint(_Limits, b2Joint):  # noqa: N801
+class b2PrismaticJoint(_Limits, b2Joint):
     DEF = b2PrismaticJointDef
     _LIMIT = ("lower_translation", "upper_translation")
     translation = _read("translation")
     speed = _read("speed")
-    motorForce = _read("motor_force")  # noqa: N815
+    motorForce = _read("motor_force")
 
-    def GetMotorForce(self, inv_dt: float = 0.0) -> float:  # noqa: N802
+    def GetMotorForce(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.motor_force)
 
 
-class b2WheelJoint(b2Joint):  # noqa: N801
+class b2WheelJoint(b2Joint):
     DEF = b2WheelJointDef
     translation = _read("translation")
     speed = _read("speed")
-    motorTorque = _read("motor_torque")  # noqa: N815
-    motorEnabled = property(lambda self: self._comp.enable_motor,  # noqa: N815
+    motorTorque = _read("motor_torque")
+    motorEnabled = property(lambda self: self._comp.enable_motor,
                             lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
-    springFrequencyHz = property(lambda self: self._comp.frequency_hz,  # noqa: N815
+    springFrequencyHz = property(lambda self: self._comp.frequency_hz,
                                  lambda self, v: setattr(self._comp, "frequency_hz", v))
-    springDampingRatio = property(lambda self: self._comp.damping_ratio,  # noqa: N815
+    springDampingRatio = property(lambda self: self._comp.damping_ratio,
                                   lambda self, v: setattr(self._comp, "damping_ratio", v))
 
 
-class b2DistanceJoint(b2Joint):  # noqa: N801
+class b2DistanceJoint(b2Joint):
     DEF = b2DistanceJointDef
 
 
-class b2RopeJoint(b2Joint):  # noqa: N801
+class b2RopeJoint(b2Joint):
     DEF = b2RopeJointDef
 
     @property
-    def limitState(self) -> int:  # noqa: N802
+    def limitState(self) -> int:
         d = (self.anchorB - self.anchorA).length
         return 2 if d >= self._comp.max_length - c.b2_linearSlop else 0
 
 
-class b2WeldJoint(b2Joint):  # noqa: N801
+class b2WeldJoint(b2Joint):
     DEF = b2WeldJointDef
 
 
-class b2FrictionJoint(b2Joint):  # noqa: N801
+class b2FrictionJoint(b2Joint):
     DEF = b2FrictionJointDef
 
 
-class b2MotorJoint(b2Joint):  # noqa: N801
+class b2MotorJoint(b2Joint):
     DEF = b2MotorJointDef
 
 
-class b2MouseJoint(b2Joint):  # noqa: N801
+class b2MouseJoint(b2Joint):
     DEF = b2MouseJointDef
 
     @property
-    def anchorA(self) -> b2Vec2:  # noqa: N802
+    def anchorA(self) -> b2Vec2:
         return b2Vec2(*self._comp.target)
 
     @property
-    def anchorB(self) -> b2Vec2:  # noqa: N802
+    def anchorB(self) -> b2Vec2:
         md = self._comp.local_anchor_b
         if md is None:
             return b2Vec2(*(self._comp.grab_point or self._comp.target))
         return self._bodyB.GetWorldPoint(md)
 
 
-class b2PulleyJoint(b2Joint):  # noqa: N801
+class b2PulleyJoint(b2Joint):
     DEF = b2PulleyJointDef
     length1 = _read("length_a")
     length2 = _read("length_b")
-    lengthA = length1  # noqa: N815
-    lengthB = length2  # noqa: N815
+    lengthA = length1
+    lengthB = length2
 
 
-class b2GearJoint(b2Joint):  # noqa: N801
+class b2GearJoint(b2Joint):
     DEF = b2GearJointDef
 
     def __init__(self, *args: Any, joint1: b2Joint, joint2: b2Joint) -> None:

@@ -1,4 +1,4 @@
-"""Shapes: ``b2PolygonShape``, ``b2CircleShape``, ``b2EdgeShape``, ``b2ChainShape`` (``b2LoopShape``).
+"""Shapes: polygon, circle, edge and chain (``b2LoopShape``), pybox2d's four shape types.
 
 pybox2d shapes are free-standing geometry that a fixture *copies* when it is
 created; programs mutate one shape and reuse it for the next fixture
@@ -81,7 +81,7 @@ def polygon_hull(points: list[Vec2], owner: str = "b2PolygonShape") -> list[Vec2
     return [ps[i] for i in hull]
 
 
-class b2Shape:  # noqa: N801
+class b2Shape:
     """Base of the four shape types."""
 
     radius: float
@@ -94,10 +94,10 @@ class b2Shape:  # noqa: N801
         return _TYPE_IDS[type(self).__name__]
 
     @property
-    def childCount(self) -> int:  # noqa: N802
+    def childCount(self) -> int:
         return 1
 
-    def getAABB(self, transform: b2Transform, childIndex: int = 0) -> b2AABB:  # noqa: N802, N803
+    def getAABB(self, transform: b2Transform, childIndex: int = 0) -> b2AABB:
         """The box around the shape placed at ``transform`` (with the skin radius)."""
         pts = [transform * p for p in self._outline()]
         r = self.radius
@@ -113,7 +113,7 @@ class b2Shape:  # noqa: N801
         return new
 
 
-class b2CircleShape(b2Shape):  # noqa: N801
+class b2CircleShape(b2Shape):
     """A circle of ``radius`` centred at ``pos`` (body-local)."""
 
     def __init__(self, radius: float = 0.0, pos: Any = (0.0, 0.0), **kw: Any) -> None:
@@ -151,7 +151,7 @@ class b2CircleShape(b2Shape):  # noqa: N801
         return f"b2CircleShape(radius={self._radius:g}, pos={self._pos!r})"
 
 
-class b2PolygonShape(b2Shape):  # noqa: N801
+class b2PolygonShape(b2Shape):
     """A convex polygon (3..16 vertices), given by ``vertices`` or ``box``."""
 
     def __init__(self, vertices: Any = None, box: Any = None, **kw: Any) -> None:
@@ -172,7 +172,7 @@ class b2PolygonShape(b2Shape):  # noqa: N801
         self._vertices = polygon_hull(_points(value, "b2PolygonShape"))
 
     @property
-    def vertexCount(self) -> int:  # noqa: N802
+    def vertexCount(self) -> int:
         return len(self._vertices)
 
     def __len__(self) -> int:
@@ -202,10 +202,11 @@ class b2PolygonShape(b2Shape):  # noqa: N801
     @box.setter
     def box(self, value: Any) -> None:
         if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
-            raise ComponentTypeError(f"b2PolygonShape.box must be (hx, hy[, center, angle]), got {value!r}")
+            raise ComponentTypeError(
+                f"b2PolygonShape.box must be (hx, hy[, center, angle]), got {value!r}")
         self.SetAsBox(*value)
 
-    def SetAsBox(self, hx: float, hy: float, center: Any = None, angle: float = 0.0) -> None:  # noqa: N802
+    def SetAsBox(self, hx: float, hy: float, center: Any = None, angle: float = 0.0) -> None:
         """A box of half extents ``hx``, ``hy``, optionally centred and rotated."""
         hx, hy = as_xy((hx, hy), "b2PolygonShape", "box")
         if hx <= 0.0 or hy <= 0.0:
@@ -238,7 +239,7 @@ class b2PolygonShape(b2Shape):  # noqa: N801
         return f"b2PolygonShape(vertices={self._vertices!r})"
 
 
-class b2EdgeShape(b2Shape):  # noqa: N801
+class b2EdgeShape(b2Shape):
     """A line segment from ``vertex1`` to ``vertex2``."""
 
     def __init__(self, vertices: Any = None, vertex1: Any = None, vertex2: Any = None,
@@ -265,7 +266,7 @@ class b2EdgeShape(b2Shape):  # noqa: N801
             raise ValidationError(f"b2EdgeShape.vertices must be 2 points, got {len(pts)}")
         self.vertex1, self.vertex2 = b2Vec2(*pts[0]), b2Vec2(*pts[1])
 
-    def Set(self, v1: Any, v2: Any) -> None:  # noqa: N802
+    def Set(self, v1: Any, v2: Any) -> None:
         self.vertices = [v1, v2]
 
     @property
@@ -282,7 +283,7 @@ class b2EdgeShape(b2Shape):  # noqa: N801
         return f"b2EdgeShape(vertices={self.vertices!r})"
 
 
-class b2ChainShape(b2Shape):  # noqa: N801
+class b2ChainShape(b2Shape):
     """A chain of edges through ``vertices`` (open); :class:`b2LoopShape` closes it."""
 
     loop = False
@@ -317,11 +318,11 @@ class b2ChainShape(b2Shape):  # noqa: N801
     vertices_chain = vertices
 
     @property
-    def vertexCount(self) -> int:  # noqa: N802
+    def vertexCount(self) -> int:
         return len(self._vertices)
 
     @property
-    def childCount(self) -> int:  # noqa: N802
+    def childCount(self) -> int:
         n = len(self._vertices)
         return n if self.loop else n - 1
 
@@ -340,7 +341,7 @@ class b2ChainShape(b2Shape):  # noqa: N801
         return f"{type(self).__name__}(vertices={self._vertices!r})"
 
 
-class b2LoopShape(b2ChainShape):  # noqa: N801
+class b2LoopShape(b2ChainShape):
     """A closed chain (pybox2d's loop shape)."""
 
     loop = True
@@ -365,4 +366,6 @@ def from_kge(shape: Shape) -> b2Shape:
         return b2EdgeShape(vertices=[shape.v1, shape.v2])
     if isinstance(shape, Chain):
         return (b2LoopShape if shape.loop else b2ChainShape)(vertices=list(shape.vertices))
+    if isinstance(shape, Polygon):
+        return b2PolygonShape(vertices=list(shape.vertices))
     return b2PolygonShape(vertices=list(shape.vertices()))  # Box

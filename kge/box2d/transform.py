@@ -21,7 +21,7 @@ from kge.box2d.vec import as_xy, b2Vec2
 from kge.errors import ComponentTypeError
 
 
-class b2Rot:  # noqa: N801
+class b2Rot:
     """A rotation as sine and cosine."""
 
     def __init__(self, angle: float = 0.0) -> None:
@@ -44,7 +44,7 @@ class b2Rot:  # noqa: N801
     def y_axis(self) -> b2Vec2:
         return b2Vec2(-self.s, self.c)
 
-    def SetIdentity(self) -> None:  # noqa: N802
+    def SetIdentity(self) -> None:
         self.s, self.c = 0.0, 1.0
 
     def __mul__(self, v: Any) -> b2Vec2:
@@ -55,7 +55,7 @@ class b2Rot:  # noqa: N801
         return f"b2Rot(angle={self.angle:g})"
 
 
-class b2Mat22:  # noqa: N801
+class b2Mat22:
     """A 2x2 matrix by columns (``col1``, ``col2``)."""
 
     def __init__(self, col1: Any = (1.0, 0.0), col2: Any = (0.0, 1.0)) -> None:
@@ -74,10 +74,10 @@ class b2Mat22:  # noqa: N801
     def angle(self) -> float:
         return math.atan2(self.col1.y, self.col1.x)
 
-    def SetIdentity(self) -> None:  # noqa: N802
+    def SetIdentity(self) -> None:
         self.col1, self.col2 = b2Vec2(1, 0), b2Vec2(0, 1)
 
-    def SetZero(self) -> None:  # noqa: N802
+    def SetZero(self) -> None:
         self.col1, self.col2 = b2Vec2(0, 0), b2Vec2(0, 0)
 
     @property
@@ -90,7 +90,7 @@ class b2Mat22:  # noqa: N801
 
     GetInverse = inverse.fget  # type: ignore[attr-defined]
 
-    def Solve(self, b: Any) -> b2Vec2:  # noqa: N802
+    def Solve(self, b: Any) -> b2Vec2:
         """Solve ``A x = b`` (Box2D returns zero for a singular matrix... x = 0 scaled)."""
         bx, by = as_xy(b, "b2Mat22.Solve", "b")
         a11, a12, a21, a22 = self.col1.x, self.col2.x, self.col1.y, self.col2.y
@@ -109,10 +109,10 @@ class b2Mat22:  # noqa: N801
         return f"b2Mat22(col1={self.col1!r}, col2={self.col2!r})"
 
 
-class b2Transform:  # noqa: N801
+class b2Transform:
     """A position and a rotation: ``transform * local_point -> world point``."""
 
-    def __init__(self, position: Any = (0.0, 0.0), R: Any = None) -> None:  # noqa: N803
+    def __init__(self, position: Any = (0.0, 0.0), R: Any = None) -> None:
         self.position = b2Vec2(position)
         self.q = b2Rot(0.0)
         if R is not None:
@@ -135,23 +135,21 @@ class b2Transform:  # noqa: N801
         self.q.angle = value
 
     @property
-    def R(self) -> b2Mat22:  # noqa: N802
+    def R(self) -> b2Mat22:
         return b2Mat22.from_angle(self.q.angle)
 
     @R.setter
-    def R(self, value: Any) -> None:  # noqa: N802
-        if isinstance(value, b2Mat22):
-            self.q.angle = value.angle
-        elif isinstance(value, b2Rot):
+    def R(self, value: Any) -> None:
+        if isinstance(value, (b2Mat22, b2Rot)):
             self.q.angle = value.angle
         else:
             raise ComponentTypeError(f"b2Transform.R must be a b2Mat22 or b2Rot, got {value!r}")
 
-    def Set(self, position: Any, angle: float) -> None:  # noqa: N802
+    def Set(self, position: Any, angle: float) -> None:
         self.position = b2Vec2(position)
         self.q.angle = angle
 
-    def SetIdentity(self) -> None:  # noqa: N802
+    def SetIdentity(self) -> None:
         self.position = b2Vec2(0.0, 0.0)
         self.q.SetIdentity()
 
@@ -176,10 +174,10 @@ def make_transform(x: float, y: float, angle: float) -> b2Transform:
     return t
 
 
-class b2AABB:  # noqa: N801
+class b2AABB:
     """An axis-aligned box (``lowerBound``, ``upperBound``)."""
 
-    def __init__(self, lowerBound: Any = (0.0, 0.0), upperBound: Any = (0.0, 0.0)) -> None:  # noqa: N803
+    def __init__(self, lowerBound: Any = (0.0, 0.0), upperBound: Any = (0.0, 0.0)) -> None:
         self.lowerBound = b2Vec2(lowerBound)
         self.upperBound = b2Vec2(upperBound)
 
@@ -201,14 +199,14 @@ class b2AABB:  # noqa: N801
         d = self.upperBound - self.lowerBound
         return 2.0 * (d.x + d.y)
 
-    def Contains(self, other: b2AABB) -> bool:  # noqa: N802
+    def Contains(self, other: b2AABB) -> bool:
         return (
             self.lowerBound.x <= other.lowerBound.x and self.lowerBound.y <= other.lowerBound.y
             and other.upperBound.x <= self.upperBound.x
             and other.upperBound.y <= self.upperBound.y
         )
 
-    def Combine(self, a: b2AABB, b: b2AABB | None = None) -> None:  # noqa: N802
+    def Combine(self, a: b2AABB, b: b2AABB | None = None) -> None:
         if b is None:
             a, b = self, a
         self.lowerBound = b2Vec2(
@@ -227,17 +225,17 @@ class b2AABB:  # noqa: N801
         return f"b2AABB(lowerBound={self.lowerBound!r}, upperBound={self.upperBound!r})"
 
 
-class b2Sweep:  # noqa: N801
+class b2Sweep:
     """A body's motion over a step: centres ``c0`` -> ``c``, angles ``a0`` -> ``a``."""
 
     def __init__(self, a: float = 0.0, a0: float = 0.0, c: Any = (0.0, 0.0),
-                 c0: Any = (0.0, 0.0), localCenter: Any = (0.0, 0.0), alpha0: float = 0.0) -> None:  # noqa: N803
+                 c0: Any = (0.0, 0.0), localCenter: Any = (0.0, 0.0), alpha0: float = 0.0) -> None:
         self.a, self.a0 = float(a), float(a0)
         self.c, self.c0 = b2Vec2(c), b2Vec2(c0)
         self.localCenter = b2Vec2(localCenter)
         self.alpha0 = float(alpha0)
 
-    def GetTransform(self, beta: float) -> b2Transform:  # noqa: N802
+    def GetTransform(self, beta: float) -> b2Transform:
         """The transform at time fraction ``beta`` in [0, 1] (Box2D's b2Sweep::GetTransform)."""
         cx = (1.0 - beta) * self.c0.x + beta * self.c.x
         cy = (1.0 - beta) * self.c0.y + beta * self.c.y
@@ -247,13 +245,13 @@ class b2Sweep:  # noqa: N801
         t.position -= lc
         return t
 
-    def Advance(self, alpha: float) -> None:  # noqa: N802
+    def Advance(self, alpha: float) -> None:
         beta = (alpha - self.alpha0) / (1.0 - self.alpha0)
         self.c0 += (self.c - self.c0) * beta
         self.a0 += beta * (self.a - self.a0)
         self.alpha0 = alpha
 
-    def Normalize(self) -> None:  # noqa: N802
+    def Normalize(self) -> None:
         two_pi = 2.0 * math.pi
         d = two_pi * math.floor(self.a0 / two_pi)
         self.a0 -= d

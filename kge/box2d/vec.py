@@ -42,7 +42,7 @@ def _fmt(v: float) -> str:
     return f"{v:g}"
 
 
-class b2Vec2:  # noqa: N801 (pybox2d's name)
+class b2Vec2:
     """A 2D column vector (metres, newtons, ...)."""
 
     __slots__ = ("x", "y")
@@ -93,8 +93,9 @@ class b2Vec2:  # noqa: N801 (pybox2d's name)
         return f"b2Vec2({_fmt(self.x)},{_fmt(self.y)})"
 
     def __eq__(self, other: object) -> bool:
+        seq: Any = other
         try:
-            ox, oy = other  # type: ignore[misc]
+            ox, oy = seq
         except (TypeError, ValueError):
             return NotImplemented
         return bool(self.x == ox and self.y == oy)
@@ -163,10 +164,10 @@ class b2Vec2:  # noqa: N801 (pybox2d's name)
     def copy(self) -> b2Vec2:
         return b2Vec2(self.x, self.y)
 
-    def Set(self, x: float, y: float) -> None:  # noqa: N802
+    def Set(self, x: float, y: float) -> None:
         self.x, self.y = float(x), float(y)
 
-    def SetZero(self) -> None:  # noqa: N802
+    def SetZero(self) -> None:
         self.x = self.y = 0.0
 
     def dot(self, other: Any) -> float:
@@ -185,10 +186,10 @@ class b2Vec2:  # noqa: N801 (pybox2d's name)
         return math.hypot(self.x, self.y)
 
     @property
-    def lengthSquared(self) -> float:  # noqa: N802
+    def lengthSquared(self) -> float:
         return self.x * self.x + self.y * self.y
 
-    def Normalize(self) -> float:  # noqa: N802
+    def Normalize(self) -> float:
         """Make this a unit vector; return the old length (0 leaves it unchanged)."""
         n = math.hypot(self.x, self.y)
         if n < 1.1920929e-07:

@@ -28,6 +28,7 @@ of them: creating or destroying anything raises
 
 from __future__ import annotations
 
+import contextlib
 from typing import Any
 
 from kge.box2d.body import b2Body, b2BodyDef
@@ -91,10 +92,10 @@ def solver_counts(velocity_iterations: int) -> tuple[int, int]:
     return substeps, max(MIN_ITERATIONS, -(-v // substeps))
 
 
-class b2World:  # noqa: N801
+class b2World:
     """The physics world: bodies, joints, contacts, listeners, Step and queries."""
 
-    def __init__(self, gravity: Any = (0.0, -10.0), doSleep: bool = True, **kwargs: Any) -> None:  # noqa: N803
+    def __init__(self, gravity: Any = (0.0, -10.0), doSleep: bool = True, **kwargs: Any) -> None:
         self._kworld = World()
         self._settings = self._kworld.insert_resource(
             PhysicsSettings(gravity=as_xy(gravity, "b2World", "gravity"), sleep=bool(doSleep),
@@ -138,11 +139,11 @@ class b2World:  # noqa: N801
         self._settings.gravity = as_xy(value, "b2World", "gravity")
 
     @property
-    def allowSleeping(self) -> bool:  # noqa: N802
+    def allowSleeping(self) -> bool:
         return self._settings.sleep
 
     @allowSleeping.setter
-    def allowSleeping(self, value: bool) -> None:  # noqa: N802
+    def allowSleeping(self, value: bool) -> None:
         self._settings.sleep = bool(value)
 
     doSleep = allowSleeping
@@ -153,15 +154,16 @@ class b2World:  # noqa: N801
 
     def _unlocked(self, op: str) -> None:
         if self._locked:
-            raise WorldLockedError(f"{op}: the world is locked (called from inside Step or a callback)")
+            raise WorldLockedError(
+                f"{op}: the world is locked (called from inside Step or a callback)")
 
-    # -- listeners --------------------------------------------------------------------------------
+    # -- listeners -----------------------------------------------------------------------------
     @property
-    def contactListener(self) -> b2ContactListener | None:  # noqa: N802
+    def contactListener(self) -> b2ContactListener | None:
         return self._contactListener
 
     @contactListener.setter
-    def contactListener(self, listener: b2ContactListener | None) -> None:  # noqa: N802
+    def contactListener(self, listener: b2ContactListener | None) -> None:
         if listener is not None and not isinstance(listener, b2ContactListener):
             raise ComponentTypeError(
                 f"b2World.contactListener must be a b2ContactListener or None, got {listener!r}")
@@ -177,11 +179,11 @@ class b2World:  # noqa: N801
                 f._col.contact_hooks = True
 
     @property
-    def contactFilter(self) -> b2ContactFilter | None:  # noqa: N802
+    def contactFilter(self) -> b2ContactFilter | None:
         return self._contactFilter
 
     @contactFilter.setter
-    def contactFilter(self, flt: b2ContactFilter | None) -> None:  # noqa: N802
+    def contactFilter(self, flt: b2ContactFilter | None) -> None:
         if flt is not None and not isinstance(flt, b2ContactFilter):
             raise ComponentTypeError(
                 f"b2World.contactFilter must be a b2ContactFilter or None, got {flt!r}")
@@ -198,17 +200,17 @@ class b2World:  # noqa: N801
         finally:
             self._locked = locked
 
-    # -- bodies -------------------------------------------------------------------------------------
+    # -- bodies --------------------------------------------------------------------------------
     @property
     def bodies(self) -> list[b2Body]:
         """Newest first, as Box2D's body list."""
         return list(self._bodies.values())[::-1]
 
     @property
-    def bodyCount(self) -> int:  # noqa: N802
+    def bodyCount(self) -> int:
         return len(self._bodies)
 
-    def CreateBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:  # noqa: N802
+    def CreateBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:
         self._unlocked("CreateBody")
         if defn is None:
             defn = b2BodyDef(**kwargs)
@@ -238,16 +240,16 @@ class b2World:  # noqa: N801
         defn.type = kind
         return self.CreateBody(defn)
 
-    def CreateDynamicBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:  # noqa: N802
+    def CreateDynamicBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:
         return self._typed(b2_dynamicBody, defn, kwargs)
 
-    def CreateStaticBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:  # noqa: N802
+    def CreateStaticBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:
         return self._typed(b2_staticBody, defn, kwargs)
 
-    def CreateKinematicBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:  # noqa: N802
+    def CreateKinematicBody(self, defn: b2BodyDef | None = None, **kwargs: Any) -> b2Body:
         return self._typed(b2_kinematicBody, defn, kwargs)
 
-    def DestroyBody(self, body: b2Body) -> None:  # noqa: N802
+    def DestroyBody(self, body: b2Body) -> None:
         self._unlocked("DestroyBody")
         if not isinstance(body, b2Body) or body._world is not self:
             raise ValidationError(f"DestroyBody: {body!r} is not a body of this world")
@@ -268,7 +270,7 @@ class b2World:  # noqa: N801
         self._kworld.despawn(body.entity)
         self._kworld.flush()
 
-    # -- fixtures ------------------------------------------------------------------------------------
+    # -- fixtures ------------------------------------------------------------------------------
     def _create_fixture(self, body: b2Body, defn: b2FixtureDef) -> b2Fixture:
         self._unlocked("CreateFixture")
         col, shape = defn.to_collider(body.entity)
@@ -283,7 +285,8 @@ class b2World:  # noqa: N801
     def _destroy_fixture(self, fixture: b2Fixture) -> None:
         self._unlocked("DestroyFixture")
         if fixture._destroyed:
-            raise ValidationError(f"DestroyFixture: fixture (entity {fixture.entity}) was already destroyed")
+            raise ValidationError(
+                f"DestroyFixture: fixture (entity {fixture.entity}) was already destroyed")
         listener = self._contactListener
         for key, contact in list(self._contacts.items()):
             if fixture.entity in key:
@@ -296,21 +299,22 @@ class b2World:  # noqa: N801
         self._kworld.despawn(fixture.entity)
         self._kworld.flush()
 
-    # -- joints ---------------------------------------------------------------------------------------
+    # -- joints --------------------------------------------------------------------------------
     @property
     def joints(self) -> list[b2Joint]:
         return list(self._joints.values())[::-1]
 
     @property
-    def jointCount(self) -> int:  # noqa: N802
+    def jointCount(self) -> int:
         return len(self._joints)
 
-    def CreateJoint(self, defn: b2JointDef | None = None, **kwargs: Any) -> b2Joint:  # noqa: N802
+    def CreateJoint(self, defn: b2JointDef | None = None, **kwargs: Any) -> b2Joint:
         self._unlocked("CreateJoint")
         if defn is None:
             kind = kwargs.pop("type", None)
             if not (isinstance(kind, type) and issubclass(kind, b2JointDef)):
-                raise ComponentTypeError("CreateJoint needs a joint definition (or type=<def class>)")
+                raise ComponentTypeError(
+                    "CreateJoint needs a joint definition (or type=<def class>)")
             defn = kind(**kwargs)
         elif kwargs:
             raise ComponentTypeError("CreateJoint takes a definition or keywords, not both")
@@ -339,45 +343,46 @@ class b2World:  # noqa: N801
     def _create(self, cls: type[b2JointDef], kwargs: dict[str, Any]) -> b2Joint:
         return self.CreateJoint(cls(**kwargs))
 
-    def CreateRevoluteJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateRevoluteJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Revolute, kw)
 
-    def CreatePrismaticJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreatePrismaticJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Prismatic, kw)
 
-    def CreateDistanceJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateDistanceJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Distance, kw)
 
-    def CreateRopeJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateRopeJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Rope, kw)
 
-    def CreateWeldJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateWeldJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Weld, kw)
 
-    def CreateWheelJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateWheelJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Wheel, kw)
 
-    def CreateFrictionJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateFrictionJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Friction, kw)
 
-    def CreateMotorJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateMotorJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Motor, kw)
 
-    def CreateMouseJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateMouseJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Mouse, kw)
 
-    def CreatePulleyJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreatePulleyJoint(self, **kw: Any) -> b2Joint:
         return self._create(_Pulley, kw)
 
-    def CreateGearJoint(self, **kw: Any) -> b2Joint:  # noqa: N802
+    def CreateGearJoint(self, **kw: Any) -> b2Joint:
         return self._create(b2GearJointDef, kw)
 
-    def DestroyJoint(self, joint: b2Joint) -> None:  # noqa: N802
+    def DestroyJoint(self, joint: b2Joint) -> None:
         self._unlocked("DestroyJoint")
         if not isinstance(joint, b2Joint) or joint._world is not self:
             raise ValidationError(f"DestroyJoint: {joint!r} is not a joint of this world")
         if joint._destroyed:
-            raise ValidationError(f"DestroyJoint: joint (entity {joint.entity}) was already destroyed")
+            raise ValidationError(
+                f"DestroyJoint: joint (entity {joint.entity}) was already destroyed")
         self._destroy_joint(joint)
 
     def _destroy_joint(self, joint: b2Joint) -> None:
@@ -395,7 +400,7 @@ class b2World:  # noqa: N801
         self._kworld.despawn(joint.entity)
         self._kworld.flush()
 
-    # -- contacts ---------------------------------------------------------------------------------
+    # -- contacts ------------------------------------------------------------------------------
     def _contact_list(self) -> list[b2Contact]:
         return list(self._contacts.values())
 
@@ -404,15 +409,15 @@ class b2World:  # noqa: N801
         return self._contact_list()
 
     @property
-    def contactCount(self) -> int:  # noqa: N802
+    def contactCount(self) -> int:
         return len(self._contacts)
 
     @property
-    def proxyCount(self) -> int:  # noqa: N802
+    def proxyCount(self) -> int:
         return sum(f.shape.childCount for f in self._fixtures.values())
 
-    # -- stepping ---------------------------------------------------------------------------------
-    def Step(self, timeStep: float, velocityIterations: int, positionIterations: int) -> None:  # noqa: N802, N803
+    # -- stepping ------------------------------------------------------------------------------
+    def Step(self, timeStep: float, velocityIterations: int, positionIterations: int) -> None:
         """Advance by ``timeStep`` seconds (see the module notes for the iteration counts)."""
         self._unlocked("Step")
         dt = finite(timeStep, "b2World.Step", "timeStep")
@@ -443,6 +448,7 @@ class b2World:  # noqa: N801
             return
         # per pair, its begins and ends in alternation starting from the state before
         counts: dict[Pair, list[Any]] = {}
+        e: Any
         for e in (*ev.contact_begin, *ev.sensor_begin):
             key = (e.collider_a, e.collider_b) if e.collider_a < e.collider_b else (
                 e.collider_b, e.collider_a)
@@ -524,11 +530,11 @@ class b2World:  # noqa: N801
         finally:
             self._locked = locked
 
-    def ClearForces(self) -> None:  # noqa: N802
+    def ClearForces(self) -> None:
         """kge clears applied forces after every step (Box2D's autoClearForces): nothing left."""
 
-    # -- queries -----------------------------------------------------------------------------------
-    def RayCast(self, callback: b2RayCastCallback, point1: Any, point2: Any) -> None:  # noqa: N802
+    # -- queries -------------------------------------------------------------------------------
+    def RayCast(self, callback: b2RayCastCallback, point1: Any, point2: Any) -> None:
         """Report fixtures along ``point1 -> point2`` to ``callback.ReportFixture``."""
         if not callable(getattr(callback, "ReportFixture", None)):
             raise ComponentTypeError(f"RayCast needs a b2RayCastCallback, got {callback!r}")
@@ -545,7 +551,7 @@ class b2World:  # noqa: N801
 
         self._physics.raycast(p1, p2, report)
 
-    def QueryAABB(self, callback: b2QueryCallback, aabb: b2AABB) -> None:  # noqa: N802
+    def QueryAABB(self, callback: b2QueryCallback, aabb: b2AABB) -> None:
         """Report fixtures whose bounding boxes overlap ``aabb``; stop when it returns False."""
         if not callable(getattr(callback, "ReportFixture", None)):
             raise ComponentTypeError(f"QueryAABB needs a b2QueryCallback, got {callback!r}")
@@ -559,8 +565,8 @@ class b2World:  # noqa: N801
 
         self._physics.query_aabb(aabb.lowerBound.tuple, aabb.upperBound.tuple, report)
 
-    # -- misc --------------------------------------------------------------------------------------
-    def DrawDebugData(self) -> None:  # noqa: N802
+    # -- misc ----------------------------------------------------------------------------------
+    def DrawDebugData(self) -> None:
         """pybox2d draws through ``world.renderer``; kge.box2d has no debug renderer."""
         if self.renderer is not None:
             raise ValidationError("kge.box2d has no b2Draw support; draw with kge's DebugDraw")
@@ -570,7 +576,5 @@ class b2World:  # noqa: N801
                 f"joints={len(self._joints)}, contacts={len(self._contacts)})")
 
     def __del__(self) -> None:
-        try:
+        with contextlib.suppress(Exception):
             self._kworld.close()
-        except Exception:  # noqa: S110 (interpreter shutdown)
-            pass

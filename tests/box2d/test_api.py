@@ -24,7 +24,7 @@ def _world_with_box() -> tuple[b2.b2World, b2.b2Body, b2.b2Body]:
 
 def test_vec2_arithmetic_and_methods() -> None:
     v = b2.b2Vec2(3, 4)
-    assert v + (1, 1) == (4, 5) and (1, 1) + v == (4, 5)
+    assert v + (1, 1) == (4, 5) and (1, 1) + v == (4, 5)  # noqa: RUF005
     assert v - b2.b2Vec2(1, 1) == (2, 3) and (5, 5) - v == (2, 1)
     assert v * 2 == (6, 8) and 2 * v == (6, 8) and v / 2 == (1.5, 2) and -v == (-3, -4)
     assert v.dot((1, 0)) == 3 and v.cross((0, 1)) == 3 and v.cross(1.0) == (4, -3)
@@ -78,6 +78,7 @@ def test_identity_user_attributes_and_type_constants() -> None:
     fixture = box.fixtures[0]
     assert fixture.body is box and box in world.bodies and {box, ground} == set(world.bodies)
     assert box.type == b2.b2_dynamicBody and ground.type == b2.b2_staticBody
+    assert isinstance(fixture.shape, b2.b2PolygonShape)
     assert fixture.shape.vertices == [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
     assert box.mass == pytest.approx(1.0)
     assert box.GetWorldPoint((0.5, 0)) == pytest.approx((0.5, 2)) and box.worldCenter == (0, 2)
@@ -193,7 +194,7 @@ def test_destruction_listener_and_joint_properties() -> None:
 
 
 def test_raycast_and_query_callbacks() -> None:
-    world, ground, box = _world_with_box()
+    world, _ground, box = _world_with_box()
 
     class Query(b2.b2QueryCallback):
         def __init__(self) -> None:

@@ -52,7 +52,7 @@ def test_bipedal_walker_steps(gym: ModuleType) -> None:
     s, _ = env.reset(seed=0)
     assert s.shape == (24,)
     for _ in range(100):
-        s, r, term, trunc, _ = env.step(np.array([0.3, -0.5, 0.3, -0.5], dtype=np.float32))
+        s, _r, term, _trunc, _ = env.step(np.array([0.3, -0.5, 0.3, -0.5], dtype=np.float32))
         assert np.all(np.isfinite(s))
         if term:
             break
@@ -77,7 +77,7 @@ def test_car_racing_steps(gym: ModuleType) -> None:
     obs, _ = env.reset(seed=0)
     total = 0.0
     for i in range(60):
-        obs, r, term, trunc, _ = env.step(np.array([0.0, 1.0 if i < 40 else 0.0, 0.0]))
+        obs, r, _term, _trunc, _ = env.step(np.array([0.0, 1.0 if i < 40 else 0.0, 0.0]))
         total += float(r)
     assert obs.shape == (96, 96, 3)
     car = env.unwrapped.car

@@ -1,3 +1,4 @@
+# mypy: ignore-errors
 """Ray casts against a static scene: the closest hit, every hit, and a filtered cast."""
 
 import Box2D as b2
