@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
-import kge.box2d as _full
+from kge.box2d import api as _full
 
 
 def _aliases() -> dict[str, Any]:

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
 from kge.box2d.fixture import b2Fixture, b2FixtureDef, set_keywords
+from kge.box2d.massdata import b2MassData
 from kge.box2d.shapes import b2ChainShape, b2CircleShape, b2EdgeShape, b2LoopShape, b2PolygonShape
 from kge.box2d.transform import b2Transform, make_transform
 from kge.box2d.vec import as_xy, b2Vec2
@@ -44,18 +45,6 @@ def body_type(value: Any) -> BodyType:
             f"b2Body.type must be b2_staticBody, b2_kinematicBody or b2_dynamicBody, got {value!r}"
         )
     return _TO_KGE[value]
-
-
-class b2MassData:
-    """Mass (kg), centre of mass (body-local) and rotational inertia about the body origin."""
-
-    def __init__(self, mass: float = 0.0, center: Any = (0.0, 0.0), I: float = 0.0) -> None:  # noqa: E741
-        self.mass = float(mass)
-        self.center = b2Vec2(center)
-        self.I = float(I)
-
-    def __repr__(self) -> str:
-        return f"b2MassData(mass={self.mass:g}, center={self.center!r}, I={self.I:g})"
 
 
 class b2BodyDef:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from kge.box2d.massdata import b2MassData
 from kge.box2d.shapes import b2Shape, from_kge
 from kge.box2d.vec import as_xy, b2Vec2
 from kge.components.collider import Collider
@@ -155,7 +156,6 @@ class b2Fixture:
 
     @property
     def massData(self) -> Any:
-        from kge.box2d.body import b2MassData
         from kge.physics.mass import shape_mass
 
         md = shape_mass(self._col.shape, self._col.density)
