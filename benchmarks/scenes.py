@@ -299,12 +299,27 @@ def scenes(quick: bool = False) -> list[Scene]:
         Scene("spawn", (1000,), _spawn_engines(), warmup=2, frames=10,
               description="one frame that spawns the bodies (plus its step)"),
     ]
+    table += _gym_scenes()
     if quick:
         for s in table:
             small = min(s.sizes)
             s.sizes = (max(2, small // 2) if s.unit in ("rows", "side") else small // 10,)
             s.warmup, s.frames = 2, 4
     return table
+
+
+def _gym_scenes() -> list[Scene]:
+    """Gymnasium's LunarLander on kge.box2d (as "kge") and on pybox2d, when installed."""
+    from benchmarks.gym_box2d import LanderRunner, gymnasium_available
+
+    if gymnasium_available() is not None:
+        return []
+    engines: dict[str, Factory] = {"kge": lambda n: LanderRunner("kge", n)}
+    if box2d_available() is None:
+        engines["box2d"] = lambda n: LanderRunner("box2d", n)
+    return [Scene("lunar-lander", (50,), engines, warmup=4, frames=30, unit="steps",
+                  description="Gymnasium LunarLander-v3, heuristic, 50 env steps per frame "
+                              "(kge.box2d as kge)")]
 
 
 def skipped_engines() -> list[str]:

@@ -31,7 +31,8 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
 
 
 def test_every_scene_runs_on_every_engine(report: dict) -> None:
-    names = {s.name for s in scenes(quick=True)}
+    table = {s.name: s for s in scenes(quick=True)}
+    names = set(table)
     assert len(names) >= 11
     seen: dict[str, set[str]] = {}
     for r in report["results"]:
@@ -40,7 +41,9 @@ def test_every_scene_runs_on_every_engine(report: dict) -> None:
         assert r["quality"], f"{r['scene']} on {r['engine']} reports no quality figure"
     assert set(seen) == names
     for scene, engines in seen.items():
-        assert engines == ENGINES, f"{scene} ran on {engines}"
+        # Gymnasium scenes (unit "steps") have no raw-pymunk version: kge.box2d vs pybox2d
+        expected = ENGINES if table[scene].unit != "steps" else ENGINES - {"pymunk"}
+        assert engines == expected, f"{scene} ran on {engines}"
 
 
 def test_engines_agree_on_quality(report: dict) -> None:
