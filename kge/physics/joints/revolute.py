@@ -137,7 +137,7 @@ class Revolute(Composite):
             # motor holding a load leaves such a gap at every step
             pa = self.a.local_to_world(self.pivot.anchor_a)
             pb = self.b.local_to_world(self.pivot.anchor_b)
-            if (pb - pa).length < ITERATED_PIVOT_TOLERANCE:
+            if math.hypot(pb.x - pa.x, pb.y - pa.y) < ITERATED_PIVOT_TOLERANCE:
                 return
         gap = project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
         self.jolt(gap, MAX_CORRECTION)
