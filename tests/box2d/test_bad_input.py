@@ -3,6 +3,7 @@ call, never a crash, never a NaN pose, and the world keeps stepping."""
 
 from __future__ import annotations
 
+import contextlib
 import math
 import random
 from collections.abc import Callable
@@ -17,7 +18,7 @@ BAD: list[Any] = [float("nan"), float("inf"), -1e300, 1e300, None, "x", (1,), (1
 
 def _scene() -> tuple[b2.b2World, b2.b2Body, b2.b2Body, b2.b2Joint]:
     world = b2.b2World(gravity=(0, -10))
-    ground = world.CreateStaticBody(shapes=b2.b2EdgeShape(vertices=[(-20, 0), (20, 0)]))
+    world.CreateStaticBody(shapes=b2.b2EdgeShape(vertices=[(-20, 0), (20, 0)]))
     body = world.CreateDynamicBody(position=(0, 2))
     body.CreatePolygonFixture(box=(0.5, 0.5), density=1)
     other = world.CreateDynamicBody(position=(2, 2))
@@ -74,10 +75,8 @@ def test_garbage_never_crashes_or_makes_nan() -> None:
     calls = _calls(world, body, joint)
     for _ in range(400):
         call, value = rng.choice(calls), rng.choice(BAD)
-        try:
+        with contextlib.suppress(KgeError, TypeError, ValueError):  # refused at the call
             call(value)
-        except (KgeError, TypeError, ValueError):
-            pass  # refused at the call: what pybox2d programs can expect
         world.Step(1 / 60, 8, 3)
         for b in world.bodies:
             assert all(math.isfinite(c) for c in (*b.position, b.angle)), b
