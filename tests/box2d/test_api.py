@@ -242,3 +242,46 @@ def test_runner_runs_a_pybox2d_script(tmp_path: Path) -> None:
     out = subprocess.run([sys.executable, "-m", "kge.box2d", str(script), "hello"],
                          capture_output=True, text=True, check=True).stdout
     assert out.split() == ["1.5", "hello"]
+
+
+def test_presolve_tangent_speed_moves_a_box_like_a_conveyor() -> None:
+    class Belt(b2.b2ContactListener):
+        def PreSolve(self, contact: b2.b2Contact, old: b2.b2Manifold) -> None:
+            contact.tangentSpeed = 3.0
+
+    world, _, box = _world_with_box()
+    world.contactListener = Belt()
+    for _ in range(120):
+        world.Step(1 / 60, 8, 3)
+    assert abs(box.linearVelocity.x) > 1.0 and abs(box.position.x) > 1.0
+
+
+def test_contact_filter_decides_and_is_called_with_fixtures() -> None:
+    calls: list[tuple[b2.b2Fixture, b2.b2Fixture]] = []
+
+    class NoGround(b2.b2ContactFilter):
+        def ShouldCollide(self, fixtureA: b2.b2Fixture, fixtureB: b2.b2Fixture) -> bool:
+            calls.append((fixtureA, fixtureB))
+            return False
+
+    world, ground, box = _world_with_box()
+    world.contactFilter = NoGround()
+    for _ in range(90):
+        world.Step(1 / 60, 8, 3)
+    assert box.position.y < -1.0 and world.contacts == []
+    assert calls and {calls[0][0].body, calls[0][1].body} == {box, ground}
+
+
+def test_sensor_switched_at_runtime_reports_but_does_not_push() -> None:
+    begins: list[b2.b2Contact] = []
+
+    class Listener(b2.b2ContactListener):
+        def BeginContact(self, contact: b2.b2Contact) -> None:
+            begins.append(contact)
+
+    world, ground, box = _world_with_box()
+    world.contactListener = Listener()
+    ground.fixtures[0].sensor = True  # CarRacing's tiles do this after creation
+    for _ in range(90):
+        world.Step(1 / 60, 8, 3)
+    assert begins and box.position.y < -1.0
