@@ -111,8 +111,9 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     for scene, size in (("pyramid", 40), ("rain", 5000)):
         add(f"kge / raw pymunk, {scene}-{size}", ratio(results, scene, size, "kge", "pymunk"),
             1.10, True)
+    # lunar-lander: Gymnasium's LunarLander on kge.box2d vs on pybox2d (goal: half its speed)
     for scene, size, goal in (("pyramid", 40, 0.80), ("chain", 200, 0.70),
-                              ("many-sleeping", 5000, 0.10)):
+                              ("many-sleeping", 5000, 0.10), ("lunar-lander", 50, 2.0)):
         add(f"kge / pybox2d, {scene}-{size}", ratio(results, scene, size, "kge", "box2d"),
             goal, True)
     # a 60 Hz frame with one fixed step pays the per-frame sync and the per-step record
