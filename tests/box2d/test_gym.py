@@ -84,3 +84,22 @@ def test_car_racing_steps(gym: ModuleType) -> None:
     assert car.hull.linearVelocity.length > 1.0  # the wheels' friction drove it
     assert env.unwrapped.tile_visited_count > 0  # sensor tiles reported BeginContact
     env.close()
+
+
+def test_lunar_lander_renders_with_particles(gym: ModuleType) -> None:
+    """rgb_array rendering reads shapes and transforms; engine particles are bodies
+    created and destroyed every step."""
+    from gymnasium.envs.box2d import lunar_lander
+
+    env = gym.make("LunarLander-v3", render_mode="rgb_array")
+    s, _ = env.reset(seed=0)
+    most = 0
+    for _ in range(80):
+        s, *_ = env.step(lunar_lander.heuristic(env.unwrapped, s))
+        frame = env.render()
+        most = max(most, len(env.unwrapped.particles))
+    assert frame.shape == (400, 600, 3) and frame.std() > 0
+    assert most > 0
+    world = env.unwrapped.world
+    assert world.bodyCount == 4 + len(env.unwrapped.particles)  # moon, lander, 2 legs
+    env.close()
