@@ -103,8 +103,13 @@ class b2Fixture:
         self._entity = entity
         self._col = col
         self._shape = shape
+        shape._owner = self
         self.userData = user_data
         self._destroyed = False
+
+    def _reshape(self, shape: b2Shape) -> None:
+        """The fixture's shape was edited in place: the collider takes the new geometry."""
+        self._live().shape = shape.to_kge()
 
     @property
     def entity(self) -> int:

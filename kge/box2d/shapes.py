@@ -85,9 +85,25 @@ class b2Shape:
     """Base of the four shape types."""
 
     radius: float
+    #: the fixture whose live shape this is (None for a free-standing shape)
+    _owner: Any = None
 
     def to_kge(self) -> Shape:
         raise NotImplementedError
+
+    def _commit(self, old: dict[str, Any]) -> None:
+        """A property of a fixture's shape changed: rebuild the collider's shape, as
+        pybox2d programs expect (``fixture.shape.radius = 2``); a refused value puts
+        the old geometry back."""
+        owner = self._owner
+        if owner is None:
+            return
+        try:
+            owner._reshape(self)
+        except Exception:
+            self.__dict__.clear()
+            self.__dict__.update(old)
+            raise
 
     @property
     def type(self) -> int:
@@ -110,6 +126,7 @@ class b2Shape:
     def __copy__(self) -> b2Shape:
         new = type(self).__new__(type(self))
         new.__dict__.update(self.__dict__)
+        new.__dict__.pop("_owner", None)
         return new
 
 
@@ -127,7 +144,9 @@ class b2CircleShape(b2Shape):
 
     @radius.setter
     def radius(self, value: float) -> None:
+        old = dict(self.__dict__)
         self._radius = float(value)
+        self._commit(old)
 
     @property
     def pos(self) -> b2Vec2:
@@ -135,7 +154,9 @@ class b2CircleShape(b2Shape):
 
     @pos.setter
     def pos(self, value: Any) -> None:
+        old = dict(self.__dict__)
         self._pos = b2Vec2(*as_xy(value, "b2CircleShape", "pos"))
+        self._commit(old)
 
     p = pos
 
@@ -169,7 +190,9 @@ class b2PolygonShape(b2Shape):
 
     @vertices.setter
     def vertices(self, value: Any) -> None:
+        old = dict(self.__dict__)
         self._vertices = polygon_hull(_points(value, "b2PolygonShape"))
+        self._commit(old)
 
     @property
     def vertexCount(self) -> int:
@@ -212,12 +235,14 @@ class b2PolygonShape(b2Shape):
         if hx <= 0.0 or hy <= 0.0:
             raise ValidationError(f"b2PolygonShape box half extents must be > 0, got {(hx, hy)!r}")
         cx, cy = (0.0, 0.0) if center is None else as_xy(center, "b2PolygonShape", "center")
+        old = dict(self.__dict__)
         c, s = math.cos(angle), math.sin(angle)
         corners = ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))
         if center is None and angle == 0.0:
             self._vertices = list(corners)
         else:
             self._vertices = [(c * x - s * y + cx, s * x + c * y + cy) for x, y in corners]
+        self._commit(old)
 
     def to_kge(self) -> Shape:
         if len(self._vertices) < 3:
@@ -264,7 +289,9 @@ class b2EdgeShape(b2Shape):
         pts = _points(value, "b2EdgeShape")
         if len(pts) != 2:
             raise ValidationError(f"b2EdgeShape.vertices must be 2 points, got {len(pts)}")
+        old = dict(self.__dict__)
         self.vertex1, self.vertex2 = b2Vec2(*pts[0]), b2Vec2(*pts[1])
+        self._commit(old)
 
     def Set(self, v1: Any, v2: Any) -> None:
         self.vertices = [v1, v2]
@@ -313,7 +340,9 @@ class b2ChainShape(b2Shape):
             raise ValidationError(
                 f"{type(self).__name__}.vertices needs at least {need} points, got {len(pts)}"
             )
+        old = dict(self.__dict__)
         self._vertices = pts
+        self._commit(old)
 
     vertices_chain = vertices
 

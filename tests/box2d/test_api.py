@@ -285,3 +285,25 @@ def test_sensor_switched_at_runtime_reports_but_does_not_push() -> None:
     for _ in range(90):
         world.Step(1 / 60, 8, 3)
     assert begins and box.position.y < -1.0
+
+
+def test_editing_a_fixtures_shape_changes_the_collider() -> None:
+    world = b2.b2World(gravity=(0, -10))
+    world.CreateStaticBody(shapes=b2.b2EdgeShape(vertices=[(-10, 0), (10, 0)]))
+    ball = world.CreateDynamicBody(position=(0, 3))
+    fixture = ball.CreateCircleFixture(radius=0.5, density=1)
+    shape = fixture.shape
+    assert isinstance(shape, b2.b2CircleShape)
+    mass = ball.mass
+    shape.radius = 1.0  # pybox2d programs edit the live shape
+    assert ball.mass == pytest.approx(4 * mass)
+    for _ in range(120):
+        world.Step(1 / 60, 8, 3)
+    assert ball.position.y == pytest.approx(1.0, abs=0.03)  # rests on the bigger radius
+    with pytest.raises(ValidationError):
+        shape.radius = -1.0
+    assert shape.radius == 1.0 and ball.mass == pytest.approx(4 * mass)
+    template = b2.b2FixtureDef(shape=b2.b2CircleShape(radius=0.2), density=1)
+    f2 = ball.CreateFixture(template)
+    template.shape.radius = 5.0  # the definition's shape is not the fixture's
+    assert f2.shape.radius == pytest.approx(0.2)
