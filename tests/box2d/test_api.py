@@ -303,7 +303,7 @@ def test_editing_a_fixtures_shape_changes_the_collider() -> None:
     with pytest.raises(ValidationError):
         shape.radius = -1.0
     assert shape.radius == 1.0 and ball.mass == pytest.approx(4 * mass)
-    template = b2.b2FixtureDef(shape=b2.b2CircleShape(radius=0.2), density=1)
-    f2 = ball.CreateFixture(template)
-    template.shape.radius = 5.0  # the definition's shape is not the fixture's
+    free = b2.b2CircleShape(radius=0.2)
+    f2 = ball.CreateFixture(b2.b2FixtureDef(shape=free, density=1))
+    free.radius = 5.0  # the definition's shape is not the fixture's
     assert f2.shape.radius == pytest.approx(0.2)
