@@ -24,6 +24,7 @@ from kge.box2d.contact import (
     b2ManifoldPoint,
     b2WorldManifold,
 )
+from kge.box2d.distance import b2Distance, b2DistanceResult, b2TimeOfImpact, b2TOIOutput
 from kge.box2d.fixture import b2Filter, b2Fixture, b2FixtureDef
 from kge.box2d.joints import (
     b2DistanceJoint,

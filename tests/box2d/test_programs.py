@@ -26,6 +26,9 @@ TOLERANCE: dict[str, dict[str, tuple[float, float]]] = {
     "pendulum": {"period": (0.0, 0.02), "arm": (0.005, 0.0)},
     "raycast": {"x": (1e-6, 0.0), "nx": (1e-6, 0.0), "fraction": (1e-6, 0.0),
                 "skip_x": (1e-6, 0.0)},
+    "distance_toi": {"distance": (1e-5, 0.0), "ax": (1e-5, 0.0), "ay": (1e-5, 0.0),
+                     "bx": (1e-5, 0.0), "ball_distance": (1e-5, 0.0), "toi": (1e-4, 0.0),
+                     "miss_t": (1e-4, 0.0)},
     "contacts": {"first_touch": (1.0, 0.0), "bounces": (1.0, 0.0), "ends": (1.0, 0.0),
                  "rest_y": (0.01, 0.0)},
 }
