@@ -1,8 +1,11 @@
 """Contacts: ``b2Contact`` with its ``manifold`` / ``worldManifold``, and ``b2ContactImpulse``.
 
-kge records a contact's geometry when it begins (normal from fixture A to B,
-world points, separation), and, for listeners that override ``PreSolve`` or
-``PostSolve``, at every step through kge's pre-solve hook. One ``b2Contact``
+``manifold`` and ``worldManifold`` are computed when read, by
+:func:`kge.collision.collide` on the two fixtures' shapes at the bodies' current
+poses (Box2D's b2Collide functions: the same normal, points and separations).
+Between steps that is what Box2D's stored manifold holds; if the shapes have
+moved apart since, the geometry kge recorded when the contact began (or at the
+last pre-solve) is returned instead. One ``b2Contact``
 object lives as long as its two fixtures touch, so a program that keeps it
 sees the same object in ``BeginContact``, ``PreSolve`` and ``EndContact``.
 
@@ -14,6 +17,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from kge import collision
 from kge.box2d.vec import b2Vec2
 
 if TYPE_CHECKING:
@@ -119,14 +123,38 @@ class b2Contact:
     def ResetRestitution(self) -> None:
         self._restitution = None
 
+    def _collide(self) -> collision.Manifold | None:
+        """The live manifold (deepest over chain children), or None if apart now."""
+        fa, fb = self._fixtureA, self._fixtureB
+        sa, sb = fa._col.shape, fb._col.shape
+        ta, tb = fa.body._tf, fb.body._tf
+        xa, xb = (ta.x, ta.y, ta.angle), (tb.x, tb.y, tb.angle)
+        best: collision.Manifold | None = None
+        for ca in range(collision.child_count(sa)):
+            for cb in range(collision.child_count(sb)):
+                m = collision.collide(sa, xa, sb, xb, child_a=ca, child_b=cb)
+                if m and (best is None or min(m.separations) < min(best.separations)):
+                    best = m
+        return best
+
     @property
     def worldManifold(self) -> b2WorldManifold:
+        m = self._collide()
+        if m is not None:
+            return b2WorldManifold(b2Vec2(*m.normal), [b2Vec2(*p) for p in m.points],
+                                   list(m.separations))
         n = self._normal
         return b2WorldManifold(b2Vec2(*n), [b2Vec2(*p) for p in self._points],
                                [self._separation] * len(self._points))
 
     @property
     def manifold(self) -> b2Manifold:
+        m = self._collide()
+        if m is not None:
+            out = b2Manifold([b2ManifoldPoint(b2Vec2(*p.local_point)) for p in m.local_points],
+                             b2Vec2(*m.local_normal), b2Vec2(*m.local_point))
+            out.type = _MANIFOLD_TYPES[m.type]
+            return out
         body_b = self._fixtureB.body
         body_a = self._fixtureA.body
         pts = [b2ManifoldPoint(body_b.GetLocalPoint(p)) for p in self._points]
@@ -136,6 +164,10 @@ class b2Contact:
 
     def __repr__(self) -> str:
         return f"b2Contact(fixtureA={self._fixtureA!r}, fixtureB={self._fixtureB!r})"
+
+
+_MANIFOLD_TYPES = {"circles": b2Manifold.e_circles, "face_a": b2Manifold.e_faceA,
+                   "face_b": b2Manifold.e_faceB}
 
 
 def impulse_of(normal_impulse: float, tangent_impulse: float, count: int) -> b2ContactImpulse:

@@ -29,6 +29,8 @@ TOLERANCE: dict[str, dict[str, tuple[float, float]]] = {
     "distance_toi": {"distance": (1e-5, 0.0), "ax": (1e-5, 0.0), "ay": (1e-5, 0.0),
                      "bx": (1e-5, 0.0), "ball_distance": (1e-5, 0.0), "toi": (1e-4, 0.0),
                      "miss_t": (1e-4, 0.0)},
+    "manifold": {"nx": (1e-6, 0.0), "ny": (1e-6, 0.0), "x0": (1e-4, 0.0), "y0": (1e-4, 0.0),
+                 "x1": (1e-4, 0.0), "y1": (1e-4, 0.0), "box_y": (0.01, 0.0)},
     "contacts": {"first_touch": (1.0, 0.0), "bounces": (1.0, 0.0), "ends": (1.0, 0.0),
                  "rest_y": (0.01, 0.0)},
 }
