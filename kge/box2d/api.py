@@ -20,6 +20,7 @@ from kge.box2d.constants import b2_pi
 from kge.box2d.contact import (
     b2Contact,
     b2ContactImpulse,
+    b2GetPointStates,
     b2Manifold,
     b2ManifoldPoint,
     b2WorldManifold,

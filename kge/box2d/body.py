@@ -136,6 +136,17 @@ class b2Body:
         return (f"b2Body(entity={self._entity}, type={_FROM_KGE[self._rb.type]}, "
                 f"position=({p.x:g}, {p.y:g}), angle={p.angle:g})")
 
+    def _pose(self) -> tuple[float, float, float]:
+        """(x, y, angle) now; inside a step (pre-solve) the engine's live pose, which the
+        Transform component only receives when the step is over."""
+        if not self._world._locked:
+            tf = self._tf
+            return (tf.x, tf.y, tf.angle)
+        physics = self._world._physics
+        x, y = physics.world_point(self._entity, (0.0, 0.0))
+        ux, uy = physics.world_vector(self._entity, (1.0, 0.0))
+        return (x, y, math.atan2(uy, ux))
+
     # -- pose ---------------------------------------------------------------------------------
     @property
     def position(self) -> b2Vec2:

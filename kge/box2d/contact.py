@@ -48,6 +48,8 @@ class b2Manifold:
         self.localNormal = localNormal
         self.localPoint = localPoint
         self.type = self.e_faceA
+        #: kge's manifold behind this one (its contact ids), when computed live
+        self._kge: collision.Manifold | None = None
 
     @property
     def pointCount(self) -> int:
@@ -87,6 +89,8 @@ class b2Contact:
         self._normal: Vec2 = (0.0, 0.0)
         self._points: tuple[Vec2, ...] = ()
         self._separation = 0.0
+        #: the manifold of the last PreSolve, handed to the next one as ``oldManifold``
+        self._last_manifold = b2Manifold([], b2Vec2(0, 0), b2Vec2(0, 0))
 
     fixtureA = property(lambda self: self._fixtureA)
     fixtureB = property(lambda self: self._fixtureB)
@@ -127,8 +131,7 @@ class b2Contact:
         """The live manifold (deepest over chain children), or None if apart now."""
         fa, fb = self._fixtureA, self._fixtureB
         sa, sb = fa._col.shape, fb._col.shape
-        ta, tb = fa.body._tf, fb.body._tf
-        xa, xb = (ta.x, ta.y, ta.angle), (tb.x, tb.y, tb.angle)
+        xa, xb = fa.body._pose(), fb.body._pose()
         best: collision.Manifold | None = None
         for ca in range(collision.child_count(sa)):
             for cb in range(collision.child_count(sb)):
@@ -154,6 +157,7 @@ class b2Contact:
             out = b2Manifold([b2ManifoldPoint(b2Vec2(*p.local_point)) for p in m.local_points],
                              b2Vec2(*m.local_normal), b2Vec2(*m.local_point))
             out.type = _MANIFOLD_TYPES[m.type]
+            out._kge = m
             return out
         body_b = self._fixtureB.body
         body_a = self._fixtureA.body
@@ -168,6 +172,26 @@ class b2Contact:
 
 _MANIFOLD_TYPES = {"circles": b2Manifold.e_circles, "face_a": b2Manifold.e_faceA,
                    "face_b": b2Manifold.e_faceB}
+
+
+_POINT_STATES = {"add": 1, "persist": 2, "remove": 3}  # b2_addState...
+
+
+def b2GetPointStates(manifold1: b2Manifold, manifold2: b2Manifold
+                     ) -> tuple[tuple[int, int], tuple[int, int]]:
+    """Which points of ``manifold1`` persist or go, and which of ``manifold2`` are new
+    (``b2_nullState`` pads to two, as pybox2d returns them)."""
+    old, new = manifold1._kge, manifold2._kge
+    if old is not None and new is not None:
+        s1, s2 = collision.point_states(old, new)
+        a = [_POINT_STATES[x] for x in s1]
+        b = [_POINT_STATES[x] for x in s2]
+    else:  # no ids to match: every old point goes, every new one is new
+        a = [3] * manifold1.pointCount
+        b = [1] * manifold2.pointCount
+    a += [0] * (2 - len(a))
+    b += [0] * (2 - len(b))
+    return (a[0], a[1]), (b[0], b[1])
 
 
 def impulse_of(normal_impulse: float, tangent_impulse: float, count: int) -> b2ContactImpulse:

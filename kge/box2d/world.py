@@ -109,6 +109,8 @@ class b2World:
         self._fixtures: dict[int, b2Fixture] = {}
         self._joints: dict[int, b2Joint] = {}
         self._contacts: dict[Pair, b2Contact] = {}
+        #: contacts a pre-solve saw before their begin was delivered (same object later)
+        self._pending: dict[Pair, b2Contact] = {}
         self._locked = False
         self._hooks = False  # pre/post-solve hooks installed
         self._contactListener: b2ContactListener | None = None
@@ -476,7 +478,7 @@ class b2World:
                         touching = True
                         if fa is None or fb is None:
                             continue  # destroyed since
-                        contact = b2Contact(fa, fb)
+                        contact = self._pending.pop(key, None) or b2Contact(fa, fb)
                         if hasattr(begin, "normal"):
                             contact._set_geometry(begin.normal, begin.points, begin.separation)
                         contacts[key] = contact
@@ -484,6 +486,7 @@ class b2World:
                             listener.BeginContact(contact)
         finally:
             self._locked = False
+            self._pending.clear()
 
     def _contact_for(self, ca: int, cb: int) -> b2Contact | None:
         key = (ca, cb) if ca < cb else (cb, ca)
@@ -492,7 +495,10 @@ class b2World:
             fa, fb = self._fixtures.get(ca), self._fixtures.get(cb)
             if fa is None or fb is None:
                 return None
-            contact = b2Contact(fa, fb)  # begun in this very step: the table gets it after
+            # begun in this very step: the table gets this same object after the step
+            contact = self._pending.get(key)
+            if contact is None:
+                contact = self._pending[key] = b2Contact(fa, fb)
         return contact
 
     def _pre_solve(self, pre: PreSolve) -> None:
@@ -504,7 +510,8 @@ class b2World:
             return
         contact._set_geometry(pre.normal, pre.points, pre.separation)
         contact.enabled = True
-        old = contact.manifold
+        old = contact._last_manifold
+        contact._last_manifold = contact.manifold
         listener.PreSolve(contact, old)
         pre.enabled = bool(contact.enabled)
         pre.tangent_speed = float(contact.tangentSpeed)
