@@ -164,7 +164,24 @@ class PymunkRunner:
 
 
 def box2d_available() -> str | None:
-    """None when pybox2d imports, else the reason it does not."""
+    """None when the real pybox2d imports, else the reason it does not.
+
+    ``kge.box2d.install()`` makes ``import Box2D`` give kge's own layer; that is not
+    pybox2d, so it is looked up past it.
+    """
+    import importlib.util
+    import sys
+
+    shim = sys.modules.get("Box2D")
+    if shim is not None and shim.__name__.startswith("kge"):
+        del sys.modules["Box2D"]
+        try:
+            found = importlib.util.find_spec("Box2D") is not None
+        finally:
+            sys.modules["Box2D"] = shim
+        if not found:
+            return "pybox2d is not installed (only kge.box2d is); pip install 'box2d==2.3.10'"
+        return None
     try:
         import Box2D  # noqa: F401
     except ImportError as err:
