@@ -1,0 +1,37 @@
+"""Gymnasium environments from kge scenes (docs/rl.md).
+
+Importing this package registers ``kge/LunarLander-v0`` and ``kge/CartPole-v0``
+with Gymnasium. It is the top floor: nothing else in kge imports it, and it needs
+the ``gym`` extra (``pip install kge[gym]``).
+"""
+
+from kge.gym.cartpole import CartPole
+from kge.gym.env import KgeEnv, physics_systems
+from kge.gym.errors import (
+    EnvError,
+    InvalidActionError,
+    InvalidSeedError,
+    ObservationError,
+    ResetNeededError,
+)
+from kge.gym.lunar_lander import LunarLander
+from kge.gym.registration import CARTPOLE, LUNAR_LANDER, register_envs
+from kge.gym.vector import KgeVectorEnv
+
+register_envs()
+
+__all__ = [
+    "CARTPOLE",
+    "LUNAR_LANDER",
+    "CartPole",
+    "EnvError",
+    "InvalidActionError",
+    "InvalidSeedError",
+    "KgeEnv",
+    "KgeVectorEnv",
+    "LunarLander",
+    "ObservationError",
+    "ResetNeededError",
+    "physics_systems",
+    "register_envs",
+]
