@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import gymnasium as gym
 import numpy as np
@@ -26,10 +27,20 @@ from kge.gym import (
 IDS = [LUNAR_LANDER, CARTPOLE]
 
 
+def make(env_id: str, **kwargs: Any) -> Any:
+    """gymnasium.make, typed loosely: the tests reach into the kge env behind it."""
+    return gym.make(env_id, **kwargs)
+
+
+def make_vec(env_id: str, **kwargs: Any) -> Any:
+    return gym.make_vec(env_id, **kwargs)
+
+
+
 @pytest.mark.parametrize("env_id", IDS)
 @pytest.mark.parametrize("render_mode", [None, "rgb_array"])
 def test_check_env_passes(env_id, render_mode):
-    env = gym.make(env_id, render_mode=render_mode)
+    env = make(env_id, render_mode=render_mode)
     check_env(env.unwrapped, skip_render_check=False)
     env.close()
 
@@ -51,15 +62,15 @@ def _rollout(env, seed, steps=150):
 
 @pytest.mark.parametrize("env_id", IDS)
 def test_same_seed_replays_bit_for_bit(env_id):
-    a, ra = _rollout(gym.make(env_id), seed=7)
-    b, rb = _rollout(gym.make(env_id), seed=7)
+    a, ra = _rollout(make(env_id), seed=7)
+    b, rb = _rollout(make(env_id), seed=7)
     assert a.tobytes() == b.tobytes() and ra.tobytes() == rb.tobytes()
-    c, _ = _rollout(gym.make(env_id), seed=8)
+    c, _ = _rollout(make(env_id), seed=8)
     assert not np.array_equal(a[:10], c[:10])
 
 
 def test_reset_without_seed_continues_the_stream():
-    env = gym.make(LUNAR_LANDER)
+    env = make(LUNAR_LANDER)
     first, _ = env.reset(seed=3)
     second, _ = env.reset()
     again, _ = env.reset(seed=3)
@@ -79,7 +90,7 @@ def _episode(env, policy, seed, limit):
 
 @pytest.mark.parametrize("seed", range(4))
 def test_lunar_lander_heuristic_lands(seed):
-    env = gym.make(LUNAR_LANDER)
+    env = make(LUNAR_LANDER)
     total, term, info, obs = _episode(env, lunar_lander.heuristic, seed, 1000)
     assert term and not info["game_over"] and not info["awake"]  # came to rest
     assert obs[6] == 1.0 and obs[7] == 1.0  # both legs down
@@ -88,7 +99,7 @@ def test_lunar_lander_heuristic_lands(seed):
 
 
 def test_lunar_lander_doing_nothing_crashes():
-    env = gym.make(LUNAR_LANDER)
+    env = make(LUNAR_LANDER)
     total, term, info, _ = _episode(env, lambda obs: lunar_lander.NOOP, 0, 1000)
     assert term and info["game_over"] and total < -100
 
@@ -106,7 +117,7 @@ def test_lunar_lander_main_engine_lifts_and_costs_fuel():
 
 
 def test_cartpole_heuristic_balances_and_passive_pole_falls():
-    env = gym.make(CARTPOLE)
+    env = make(CARTPOLE)
     total, term, _, _ = _episode(env, cartpole.heuristic, 0, 500)
     assert total == 500.0 and not term
     total, term, _, obs = _episode(env, lambda obs: 1, 0, 500)
@@ -144,7 +155,7 @@ def test_cartpole_joints_follow_gymnasiums_equations(action):
 
 
 def test_rgb_array_frames_show_the_scene():
-    env = gym.make(LUNAR_LANDER, render_mode="rgb_array")
+    env = make(LUNAR_LANDER, render_mode="rgb_array")
     _obs, _ = env.reset(seed=2)
     for _ in range(40):  # fall into the middle of the view
         env.step(lunar_lander.NOOP)
@@ -163,7 +174,7 @@ def test_rgb_array_frames_show_the_scene():
 
 
 def test_render_without_mode_warns_and_returns_none():
-    env = gym.make(LUNAR_LANDER).unwrapped
+    env = make(LUNAR_LANDER).unwrapped
     env.reset(seed=0)
     with pytest.warns(UserWarning, match="render_mode"):
         assert env.render() is None
@@ -177,7 +188,7 @@ def test_metadata_render_fps_matches_the_step():
 # -- bad input -----------------------------------------------------------------------------
 @pytest.mark.parametrize("action", [4, -1, 1.5, "2", None, np.array([1, 2])])
 def test_action_outside_the_space_is_refused(action):
-    env = gym.make(LUNAR_LANDER).unwrapped
+    env = make(LUNAR_LANDER).unwrapped
     env.reset(seed=0)
     before = env.world.get(env.lander, Transform).y
     with pytest.raises(InvalidActionError, match=r"kge/LunarLander-v0.*action"):
@@ -188,7 +199,7 @@ def test_action_outside_the_space_is_refused(action):
 
 @pytest.mark.parametrize("seed", ["1", 1.5, -1, True, [1]])
 def test_bad_seed_is_refused(seed):
-    env = gym.make(CARTPOLE).unwrapped
+    env = make(CARTPOLE).unwrapped
     with pytest.raises(InvalidSeedError, match=r"kge/CartPole-v0.*seed") as err:
         env.reset(seed=seed)
     assert repr(seed) in str(err.value)
@@ -231,7 +242,7 @@ class BallEnv(KgeEnv):
 
 
 def _ball_env(**kwargs) -> KgeEnv:
-    args = {
+    args: dict[str, Any] = {
         "build": _build_ball,
         "act": _push,
         "observe": lambda world: np.array([world.get(1, Transform).y,
