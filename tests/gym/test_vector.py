@@ -98,7 +98,7 @@ def test_time_limit_truncates_and_resets():
 def test_gymnasium_sync_vector_env_still_works():
     envs = make_vec(CARTPOLE, num_envs=3, vectorization_mode="sync")
     assert isinstance(envs, gym.vector.SyncVectorEnv)
-    obs = envs.reset(seed=0)[0]
+    obs: Any = envs.reset(seed=0)[0]
     ours = make_vec(CARTPOLE, num_envs=3)
     assert np.array_equal(obs, ours.reset(seed=0)[0])
 
