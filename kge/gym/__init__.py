@@ -6,7 +6,7 @@ the ``gym`` extra (``pip install kge[gym]``).
 """
 
 from kge.gym.cartpole import CartPole
-from kge.gym.env import KgeEnv, physics_systems
+from kge.gym.env import KgeEnv, env_plugins
 from kge.gym.errors import (
     EnvError,
     InvalidActionError,
@@ -32,6 +32,6 @@ __all__ = [
     "LunarLander",
     "ObservationError",
     "ResetNeededError",
-    "physics_systems",
+    "env_plugins",
     "register_envs",
 ]

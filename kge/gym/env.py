@@ -35,8 +35,10 @@ from typing import TYPE_CHECKING, Any
 import gymnasium as gym
 import numpy as np
 
-from kge.app import App, SystemFactory, has_display
+from kge.app import App
 from kge.gym.errors import InvalidActionError, InvalidSeedError, ObservationError, ResetNeededError
+from kge.platform import has_display
+from kge.plugin import PluginLike
 from kge.world import World
 
 if TYPE_CHECKING:
@@ -52,16 +54,18 @@ InfoFn = Callable[[World], dict[str, Any]]
 RENDER_MODES = ("rgb_array", "human")
 
 
-def physics_systems() -> list[SystemFactory]:
-    """Behaviours and physics only: what a headless training env needs each step.
+def env_plugins(render: bool) -> list[PluginLike]:
+    """Behaviours and physics (and drawing when the env renders): no audio, and no
+    camera-follow or render systems stepping in an env that never draws a frame."""
+    from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.physics import PhysicsPlugin
 
-    Rendering systems are added by the App the first time a frame is drawn, so an
-    env that is never rendered never pays for them (or for audio and camera follow).
-    """
-    from kge.systems.behaviour import FixedBehaviours, UpdateBehaviours
-    from kge.systems.physics import PhysicsSystem
+    plugins: list[PluginLike] = [BehaviourPlugin(), PhysicsPlugin()]
+    if render:
+        from kge.systems.render import RenderPlugin
 
-    return [FixedBehaviours, PhysicsSystem, UpdateBehaviours]
+        plugins.append(RenderPlugin())
+    return plugins
 
 
 def check_seed(env_name: str, seed: Any) -> int | None:
@@ -109,7 +113,7 @@ class KgeEnv(gym.Env[Any, Any]):
         fixed_dt: float | None = None,
         frame_skip: int | None = None,
         size: tuple[int, int] | None = None,
-        systems: Sequence[SystemFactory] | None = None,
+        plugins: Sequence[PluginLike] | None = None,
         render_fps: float | None = None,
     ) -> None:
         name = type(self).__name__
@@ -146,7 +150,7 @@ class KgeEnv(gym.Env[Any, Any]):
         self.metadata["render_fps"] = (
             render_fps if render_fps is not None else round(1.0 / (self.fixed_dt * self.frame_skip))
         )
-        self._systems = list(systems) if systems is not None else physics_systems()
+        self._plugins = list(plugins) if plugins is not None else None
         self._app: App | None = None
         self._needs_reset = True
         self._last_frame_time = 0.0
@@ -198,9 +202,12 @@ class KgeEnv(gym.Env[Any, Any]):
     def _new_world(self) -> World:
         if self._app is None:
             headless = self.render_mode != "human" or not has_display()
+            plugins = self._plugins
+            if plugins is None:
+                plugins = env_plugins(render=self.render_mode is not None)
             self._app = App(
                 self._setup, headless=headless, size=self.size, fixed_dt=self.fixed_dt,
-                background=self.background, systems=list(self._systems),
+                background=self.background, plugins=plugins,
             )
         else:
             self._app.replace_scene(self._setup)
