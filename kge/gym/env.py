@@ -28,6 +28,7 @@ offscreen and says so once).
 
 from __future__ import annotations
 
+import sys
 import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
@@ -330,6 +331,6 @@ class KgeEnv(gym.Env[Any, Any]):
         if app is None:
             return
         app.close()
-        from kge.render.setup import release
-
-        release(app)
+        setup = sys.modules.get("kge.render.setup")  # loaded iff this process ever drew
+        if setup is not None:
+            setup.release(app)
