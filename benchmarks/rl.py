@@ -145,11 +145,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=list(SIZES))
     parser.add_argument("--steps", type=int, default=4000, help="env steps per measurement")
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
     args = parser.parse_args(argv)
     missing = box2d_lander_missing()
     if missing:
         print(f"skipped {missing}", file=sys.stderr)
-    print(table(measure(tuple(args.sizes), args.steps, args.repeats)))
+    print(table(measure(tuple(args.sizes), args.steps, args.repeats), args.markdown))
     return 0
 
 
