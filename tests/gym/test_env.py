@@ -308,3 +308,14 @@ def test_constructor_refuses_bad_arguments():
         KgeEnv(build=_build_ball, action_space=gym.spaces.Discrete(2))
     with pytest.raises(TypeError, match="observe must be callable"):
         _ball_env(observe=3)
+
+
+def test_human_mode_without_a_display_draws_offscreen():
+    env = lunar_lander.LunarLander(render_mode="human")
+    with pytest.warns(UserWarning, match="no display; frames are drawn offscreen"):
+        env.reset(seed=0)
+    env.step(lunar_lander.MAIN)  # each step draws its frame (warned once)
+    assert env.app.headless
+    env.close()
+    with pytest.raises(ResetNeededError):
+        env.step(0)
