@@ -1,8 +1,9 @@
 """Gymnasium environments from kge scenes (docs/rl.md).
 
-Importing this package registers ``kge/LunarLander-v0`` and ``kge/CartPole-v0``
-with Gymnasium. It is the top floor: nothing else in kge imports it, and it needs
-the ``gym`` extra (``pip install kge[gym]``).
+Importing this package registers ``kge/LunarLander-v0``,
+``kge/LunarLanderContinuous-v0`` and ``kge/CartPole-v0`` with Gymnasium. It is the
+top floor: nothing else in kge imports it, and it needs the ``gym`` extra
+(``pip install kge[gym]``).
 """
 
 from kge.gym.cartpole import CartPole
@@ -15,7 +16,7 @@ from kge.gym.errors import (
     ResetNeededError,
 )
 from kge.gym.lunar_lander import LunarLander
-from kge.gym.registration import CARTPOLE, LUNAR_LANDER, register_envs
+from kge.gym.registration import CARTPOLE, LUNAR_LANDER, LUNAR_LANDER_CONTINUOUS, register_envs
 from kge.gym.vector import KgeVectorEnv
 
 register_envs()
@@ -23,6 +24,7 @@ register_envs()
 __all__ = [
     "CARTPOLE",
     "LUNAR_LANDER",
+    "LUNAR_LANDER_CONTINUOUS",
     "CartPole",
     "EnvError",
     "InvalidActionError",

@@ -9,7 +9,8 @@ transfers to the other:
 * the lander: a 6-sided polygon (pixel outline / 30), density 5, two legs on revolute
   joints with a spring-like motor (torque 40) and limits; an initial random push;
 * actions (discrete): 0 nothing, 1 left orientation engine, 2 main engine, 3 right
-  orientation engine; engines are impulses at offset points with a little random
+  orientation engine; or, with ``continuous=True``, Gymnasium's two throttles in
+  [-1, 1] (main, side); engines are impulses at offset points with a little random
   dispersion, as in Gymnasium;
 * observation: position and velocity scaled to the viewport, angle, angular velocity,
   and one contact flag per leg;
@@ -112,17 +113,23 @@ class LunarLander(KgeEnv):
     fixed_dt = 1.0 / FPS
     size = (VIEWPORT_W, VIEWPORT_H)
 
-    action_space = gym.spaces.Discrete(4)
+    action_space: gym.spaces.Space[Any] = gym.spaces.Discrete(4)
     observation_space = gym.spaces.Box(
         np.array([-2.5, -2.5, -10.0, -10.0, -2 * math.pi, -10.0, 0.0, 0.0], np.float32),
         np.array([2.5, 2.5, 10.0, 10.0, 2 * math.pi, 10.0, 1.0, 1.0], np.float32),
         dtype=np.float32,
     )
 
-    def __init__(self, render_mode: str | None = None, gravity: float = -10.0) -> None:
+    def __init__(self, render_mode: str | None = None, gravity: float = -10.0,
+                 continuous: bool = False) -> None:
         if not (isinstance(gravity, (int, float)) and -12.0 < gravity < 0.0):
             raise ValueError(f"LunarLander: gravity must be in (-12, 0) m/s^2, got {gravity!r}")
+        if not isinstance(continuous, bool):
+            raise TypeError(f"LunarLander: continuous must be True or False, got {continuous!r}")
         self.gravity = float(gravity)
+        self.continuous = continuous
+        if continuous:  # Gymnasium's: [main throttle, side engines], each in [-1, 1]
+            self.action_space = gym.spaces.Box(-1.0, 1.0, (2,), dtype=np.float32)
         super().__init__(render_mode=render_mode)
         self.lander = 0
         self.legs = self._leg_sprites = (0, 0)
@@ -184,7 +191,7 @@ class LunarLander(KgeEnv):
         self.prev_shaping = None
         self.game_over = False
         self.leg_contact = [False, False]
-        self.act(world, NOOP)
+        self.act(world, np.zeros(2, np.float32) if self.continuous else NOOP)
         self.app.step(self.frame_skip)
 
     # -- one step --------------------------------------------------------------------------------
@@ -194,23 +201,39 @@ class LunarLander(KgeEnv):
         tip = (math.sin(tf.angle), math.cos(tf.angle))
         side = (-tip[1], tip[0])
         d0, d1 = (self.np_random.uniform(-1.0, 1.0, size=2) / SCALE).tolist()
-        self.m_power = self.s_power = 0.0
-        a = int(action)
-        if a == MAIN:
-            self.m_power = 1.0
+        self.m_power, self.s_power, direction = self.throttle(action)
+        if self.m_power > 0.0:
             ox = tip[0] * (MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0) + side[0] * d1
             oy = -tip[1] * (MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0) - side[1] * d1
             p = MAIN_ENGINE_POWER * self.m_power
             physics.apply_linear_impulse(self.lander, (-ox * p, -oy * p), (tf.x + ox, tf.y + oy))
-        elif a in (LEFT, RIGHT):
-            direction = a - 2
-            self.s_power = 1.0
+        if self.s_power > 0.0:
             lever = 3 * d1 + direction * SIDE_ENGINE_AWAY / SCALE
             ox = tip[0] * d0 + side[0] * lever
             oy = -tip[1] * d0 - side[1] * lever
             at = (tf.x + ox - tip[0] * 17 / SCALE, tf.y + oy + tip[1] * SIDE_ENGINE_HEIGHT / SCALE)
             p = SIDE_ENGINE_POWER * self.s_power
             physics.apply_linear_impulse(self.lander, (-ox * p, -oy * p), at)
+
+    def throttle(self, action: Any) -> tuple[float, float, float]:
+        """(main power 0..1, side power 0..1, side direction -1/+1) for an action.
+
+        Discrete: engines fire at full power. Continuous (Gymnasium's rules): the main
+        engine runs at 50-100 % for ``action[0]`` in (0, 1] and is off below; the side
+        engines fire at 50-100 % for ``|action[1]|`` in (0.5, 1], left for negative.
+        """
+        if not self.continuous:
+            a = int(action)
+            if a == MAIN:
+                return 1.0, 0.0, 0.0
+            if a in (LEFT, RIGHT):
+                return 0.0, 1.0, float(a - 2)
+            return 0.0, 0.0, 0.0
+        main, lateral = (float(v) for v in np.asarray(action, dtype=np.float64))
+        m_power = (min(max(main, 0.0), 1.0) + 1.0) * 0.5 if main > 0.0 else 0.0
+        if abs(lateral) > 0.5:
+            return m_power, min(max(abs(lateral), 0.5), 1.0), math.copysign(1.0, lateral)
+        return m_power, 0.0, 0.0
 
     def observe(self, world: World) -> np.ndarray:
         self._read_contacts(world)
@@ -273,6 +296,10 @@ class LunarLander(KgeEnv):
                 tf = world.get(sprite, Transform)
                 tf.x, tf.y, tf.angle = hull.x, hull.y, hull.angle
         return super().render()
+
+
+#: a discrete action as the continuous throttles that fire the same engine at full power
+AS_CONTINUOUS = {NOOP: (-1.0, 0.0), LEFT: (-1.0, -1.0), MAIN: (1.0, 0.0), RIGHT: (-1.0, 1.0)}
 
 
 def heuristic(obs: np.ndarray) -> int:

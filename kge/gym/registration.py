@@ -1,6 +1,7 @@
 """Register the kge environments with Gymnasium under the ``kge/`` namespace.
 
-``import kge.gym`` registers them, after which::
+``import kge.gym`` registers ``kge/LunarLander-v0``, ``kge/LunarLanderContinuous-v0``
+and ``kge/CartPole-v0``, after which::
 
     env = gymnasium.make("kge/LunarLander-v0")
     envs = gymnasium.make_vec("kge/LunarLander-v0", num_envs=64)   # KgeVectorEnv
@@ -20,12 +21,19 @@ from kge.gym.lunar_lander import LunarLander
 from kge.gym.vector import KgeVectorEnv
 
 LUNAR_LANDER = "kge/LunarLander-v0"
+LUNAR_LANDER_CONTINUOUS = "kge/LunarLanderContinuous-v0"
 CARTPOLE = "kge/CartPole-v0"
 
 
 def lunar_lander_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:
     """The ``vector_entry_point`` of ``kge/LunarLander-v0``."""
     return KgeVectorEnv(LunarLander, num_envs, name=LUNAR_LANDER, **kwargs)
+
+
+def lunar_lander_continuous_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:
+    """The ``vector_entry_point`` of ``kge/LunarLanderContinuous-v0``."""
+    return KgeVectorEnv(LunarLander, num_envs, name=LUNAR_LANDER_CONTINUOUS,
+                        **{"continuous": True, **kwargs})
 
 
 def cartpole_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:
@@ -37,6 +45,10 @@ ENVS: dict[str, dict[str, Any]] = {
     LUNAR_LANDER: {"entry_point": "kge.gym.lunar_lander:LunarLander",
                    "vector_entry_point": "kge.gym.registration:lunar_lander_vector",
                    "max_episode_steps": 1000, "reward_threshold": 200.0},
+    LUNAR_LANDER_CONTINUOUS: {
+        "entry_point": "kge.gym.lunar_lander:LunarLander", "kwargs": {"continuous": True},
+        "vector_entry_point": "kge.gym.registration:lunar_lander_continuous_vector",
+        "max_episode_steps": 1000, "reward_threshold": 200.0},
     CARTPOLE: {"entry_point": "kge.gym.cartpole:CartPole",
                "vector_entry_point": "kge.gym.registration:cartpole_vector",
                "max_episode_steps": 500, "reward_threshold": 475.0},

@@ -15,6 +15,7 @@ from kge import Box, Collider, RigidBody, Transform, World
 from kge.gym import (
     CARTPOLE,
     LUNAR_LANDER,
+    LUNAR_LANDER_CONTINUOUS,
     InvalidActionError,
     InvalidSeedError,
     KgeEnv,
@@ -24,7 +25,7 @@ from kge.gym import (
     lunar_lander,
 )
 
-IDS = [LUNAR_LANDER, CARTPOLE]
+IDS = [LUNAR_LANDER, LUNAR_LANDER_CONTINUOUS, CARTPOLE]
 
 
 def make(env_id: str, **kwargs: Any) -> Any:
@@ -46,12 +47,12 @@ def test_check_env_passes(env_id, render_mode):
 
 
 def _rollout(env, seed, steps=150):
-    rng = np.random.default_rng(123)
+    env.action_space.seed(123)  # the same actions every time
     obs, _ = env.reset(seed=seed)
     trace = [obs]
     rewards = []
     for _ in range(steps):
-        obs, r, term, trunc, _ = env.step(env.action_space.sample() * 0 + int(rng.integers(env.action_space.n)))
+        obs, r, term, trunc, _ = env.step(env.action_space.sample())
         trace.append(obs)
         rewards.append(r)
         if term or trunc:
@@ -96,6 +97,29 @@ def test_lunar_lander_heuristic_lands(seed):
     assert obs[6] == 1.0 and obs[7] == 1.0  # both legs down
     assert abs(obs[0]) < 0.2  # between the flags
     assert total > 200.0  # Gymnasium's "solved" score
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_continuous_lander_lands_with_the_same_pilot(seed):
+    env = make(LUNAR_LANDER_CONTINUOUS)
+    assert env.action_space.shape == (2,)
+
+    def pilot(obs):
+        return np.array(lunar_lander.AS_CONTINUOUS[lunar_lander.heuristic(obs)], np.float32)
+
+    total, term, info, _ = _episode(env, pilot, seed, 1000)
+    assert term and not info["game_over"] and not info["awake"] and total > 200.0
+
+
+@pytest.mark.parametrize(("action", "powers"), [
+    ((0.0, 0.4), (0.0, 0.0, 0.0)),       # main off at <= 0, side dead zone |x| <= 0.5
+    ((0.5, 0.0), (0.75, 0.0, 0.0)),      # main 50-100 % over (0, 1]
+    ((1.0, -0.75), (1.0, 0.75, -1.0)),   # both engines at once, left side at 75 %
+    ((-1.0, 1.0), (0.0, 1.0, 1.0)),
+])
+def test_continuous_throttles_follow_gymnasium(action, powers):
+    env = lunar_lander.LunarLander(continuous=True)
+    assert env.throttle(np.array(action, np.float32)) == pytest.approx(powers)
 
 
 def test_lunar_lander_doing_nothing_crashes():
