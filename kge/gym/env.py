@@ -28,6 +28,7 @@ offscreen and says so once).
 
 from __future__ import annotations
 
+import math
 import sys
 import time
 from collections.abc import Callable
@@ -138,7 +139,7 @@ class KgeEnv(gym.Env[Any, Any]):
                     raise TypeError(f"{name}: {key} must be callable, got {fn!r}")
                 setattr(self, key, fn)  # an instance attribute shadows the method
         if fixed_dt is not None:
-            if not (isinstance(fixed_dt, (int, float)) and fixed_dt > 0):
+            if not (isinstance(fixed_dt, (int, float)) and 0 < fixed_dt < math.inf):
                 raise ValueError(f"{name}: fixed_dt must be a number > 0, got {fixed_dt!r}")
             self.fixed_dt = float(fixed_dt)
         if frame_skip is not None:
@@ -156,6 +157,7 @@ class KgeEnv(gym.Env[Any, Any]):
         self._needs_reset = True
         self._last_frame_time = 0.0
         self._warned_headless_human = False
+        self.options: dict[str, Any] = {}
 
     # -- what a scene provides (override, or pass functions) ----------------------------------
     def build(self, world: World, rng: np.random.Generator) -> None:
@@ -223,7 +225,7 @@ class KgeEnv(gym.Env[Any, Any]):
             raise TypeError(f"{self.env_name}.reset(options=...) must be a dict or None, "
                             f"got {options!r}")
         super().reset(seed=seed)
-        self._options = options or {}
+        self.options = dict(options or {})  # build() may read the reset's options
         world = self._new_world()
         self.on_reset(world)
         obs = self._observe(world)

@@ -328,6 +328,9 @@ def test_constructor_refuses_bad_arguments():
         _ball_env(render_mode="ascii")
     with pytest.raises(ValueError, match="frame_skip"):
         _ball_env(frame_skip=0)
+    for bad in (0.0, -0.1, math.nan, math.inf):
+        with pytest.raises(ValueError, match="fixed_dt"):
+            _ball_env(fixed_dt=bad)
     with pytest.raises(TypeError, match="observation_space"):
         KgeEnv(build=_build_ball, action_space=gym.spaces.Discrete(2))
     with pytest.raises(TypeError, match="observe must be callable"):
@@ -343,3 +346,22 @@ def test_human_mode_without_a_display_draws_offscreen():
     env.close()
     with pytest.raises(ResetNeededError):
         env.step(0)
+
+
+def test_reset_options_reach_build():
+    class Dropped(KgeEnv):
+        action_space = gym.spaces.Discrete(1)
+        observation_space = gym.spaces.Box(-100.0, 100.0, (1,), np.float32)
+
+        def build(self, world, rng):
+            world.spawn(Transform(0.0, self.options.get("height", 2.0)), RigidBody(),
+                        Collider(Box(0.25, 0.25)))
+
+        def observe(self, world):
+            return np.array([world.get(1, Transform).y])
+
+    env = Dropped()
+    assert env.reset(seed=0, options={"height": 7.5})[0][0] == pytest.approx(7.5)
+    assert env.reset(seed=0)[0][0] == pytest.approx(2.0)
+    with pytest.raises(TypeError, match=r"Dropped.reset\(options=...\) must be a dict"):
+        env.reset(options=[1])  # type: ignore[arg-type]
