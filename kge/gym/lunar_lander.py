@@ -6,8 +6,9 @@ transfers to the other:
 
 * a 20 x 13.3 m moon; 11 terrain chunks of random height (uniform 0..H/2, smoothed),
   flattened around the helipad between the two flags at y = H/4;
-* the lander: a 6-sided polygon (pixel outline / 30), density 5, two legs on revolute
-  joints with a spring-like motor (torque 40) and limits; an initial random push;
+* the lander: a 6-sided polygon (pixel outline / 30), density 5, two leg boxes (held
+  rigid at the angle Gymnasium's leg motors hold them: see :func:`leg_box`); an
+  initial random push;
 * actions (discrete): 0 nothing, 1 left orientation engine, 2 main engine, 3 right
   orientation engine; or, with ``continuous=True``, Gymnasium's two throttles in
   [-1, 1] (main, side); engines are impulses at offset points with a little random
