@@ -58,7 +58,6 @@ SIDE_ENGINE_POWER = 0.6
 INITIAL_RANDOM = 1000.0  # N, the random push at the start
 LANDER_POLY = ((-14, 17), (-17, 0), (-17, -10), (17, -10), (17, 0), (14, 17))
 LEG_AWAY, LEG_DOWN, LEG_W, LEG_H = 20, 18, 2, 8
-LEG_SPRING_TORQUE = 40.0
 LEG_ANGLE = 0.4  # where Gymnasium's leg motors hold the legs: their joint limit
 # A touchdown faster than this folds Gymnasium's legs to their stop and the hull hits the
 # moon: the two leg motors (40 N m) resisting over their 0.5 rad of travel absorb
