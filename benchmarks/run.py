@@ -99,7 +99,8 @@ def _median(results: list[Result], scene: str, size: int, engine: str) -> float 
 
 
 def targets(results: list[Result], fitting: dict[str, dict[str, float]],
-            render: dict[int, dict[str, float]]) -> list[dict[str, Any]]:
+            render: dict[int, dict[str, float]],
+            rl: list[dict[str, Any]] | None = None) -> list[dict[str, Any]]:
     """The issue's targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
 
@@ -125,6 +126,10 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     add("sparse bodies at 60 Hz (sparse)", fitting.get("sparse", {}).get("kge"), 20000, False)
     add("spawning 1,000 bodies in one frame", _median(results, "spawn", 1000, "kge"),
         25.0, True, "ms")
+    from benchmarks.rl import ratio as rl_ratio
+
+    add("LunarLander steps/s, kge batched / pybox2d SyncVectorEnv, N = 64 (one core)",
+        rl_ratio(rl or [], 64), 1.0, False)
     return rows
 
 
@@ -271,6 +276,11 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.collision import markdown as collision_markdown
 
         out += collision_markdown(report["collision"])
+    if report.get("rl"):
+        from benchmarks.rl import table as rl_table
+
+        out += ["", "Gymnasium LunarLander, env steps per second in one process (random "
+                "actions, episodes reset as they end):", "", rl_table(report["rl"], True)]
     out += ["", "Targets:", "", "| target | measured | goal | |", "|---|---:|---:|---|"]
     for t in report["targets"]:
         out.append("| " + " | ".join(_fmt_target(t)) + " |")
@@ -287,6 +297,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", default="out", help="folder for bench.json/.png/.md")
     parser.add_argument("--no-chart", action="store_true")
     parser.add_argument("--no-render", action="store_true", help="skip the render sync section")
+    parser.add_argument("--no-rl", action="store_true",
+                        help="skip the Gymnasium LunarLander throughput section")
     parser.add_argument("--breakdown", action="store_true",
                         help="also time kge's phases (sync-in, step, sync-out, events)")
     args = parser.parse_args(argv)
@@ -321,6 +333,22 @@ def main(argv: list[str] | None = None) -> int:
         else:
             print("\nrender sync, µs per sprite (median):")
             print(render_table(render))
+    rl: list[dict[str, Any]] = []
+    if not args.no_rl and not args.scene:
+        from benchmarks.rl import box2d_lander_missing
+        from benchmarks.rl import measure as rl_measure
+        from benchmarks.rl import table as rl_table
+
+        progress("gymnasium LunarLander steps per second")
+        if args.quick:
+            rl = rl_measure(sizes=(1, 4), env_steps=100, repeats=1)
+        else:
+            rl = rl_measure()
+        missing = box2d_lander_missing()
+        if missing:
+            skipped.append(missing)
+        print("\nGymnasium LunarLander, env steps per second (one process):")
+        print(rl_table(rl))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -335,7 +363,7 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
-    goals = targets(results, fitting, render)
+    goals = targets(results, fitting, render, rl)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -352,6 +380,7 @@ def main(argv: list[str] | None = None) -> int:
         "render": {str(n): r for n, r in render.items()},
         "breakdown": rows,
         "collision": collision,
+        "rl": rl,
         "targets": goals,
         "skipped": skipped,
     }

@@ -90,3 +90,17 @@ def test_raw_churn_keeps_the_population() -> None:
         churn.step()
     assert len(churn.poses()) == 40
     assert churn.spawned == 4 * 4  # four periods of 5 steps, a tenth (4) each
+
+
+def test_gymnasium_lander_throughput_is_reported(report: dict) -> None:
+    from benchmarks.rl import box2d_lander_missing
+
+    seen = {(r["engine"], r["mode"], r["n"]) for r in report["rl"]}
+    want = {("kge", "single", 1), ("kge", "batched", 1), ("kge", "batched", 4),
+            ("kge", "sync", 4)}
+    if box2d_lander_missing() is None:
+        want |= {("box2d", "single", 1), ("box2d", "sync", 4)}
+    assert want <= seen
+    assert all(r["steps_per_s"] > 0 for r in report["rl"])
+    assert "Gymnasium LunarLander, env steps per second" in report["_md"]
+    assert any(t["target"].startswith("LunarLander steps/s") for t in report["targets"])

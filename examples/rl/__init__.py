@@ -1,0 +1,1 @@
+"""Reinforcement-learning and scale-out examples on kge scenes (docs/rl.md)."""
