@@ -232,7 +232,9 @@ class ClipState:
             return Crossings([], np.zeros(0, np.intp))
         clip = self.clip
         rate = np.where(self.playing & ~self.finished, self.speed * t.speed[clip], 0.0)
-        before = np.where(self.fresh, -1e-12, self.time)
+        # crossings are counted in (before, after] shifted by EPS like the frame lookup;
+        # a fresh start counts from just below 0 so frame 0's events fire
+        before = np.where(self.fresh, -EPS, self.time + EPS)
         after = self.time + rate * dt
         total = t.total[clip]
         mode = t.mode[clip]
@@ -241,7 +243,8 @@ class ClipState:
         ended = ~looping & (after + EPS >= total) & ~self.finished
         finished_rows = np.flatnonzero(ended)
         # wrap loops (keeps precision over hours of play)
-        wrapped = np.where(looping, after - np.floor(after / total) * total, after)
+        laps = np.floor((after + EPS) / total)
+        wrapped = np.where(looping, np.maximum(after - laps * total, 0.0), after)
         self.time = wrapped
         self.finished |= ended
         local = np.where(looping, wrapped, np.minimum(wrapped, total))

@@ -36,8 +36,12 @@ _FLIPS = ([0, 1, 2, 3], [1, 0, 3, 2], [3, 2, 1, 0], [2, 3, 0, 1])
 class AtlasFrames:
     """The atlas of one world's animation frames and the bulk texture-coordinate writer."""
 
-    def __init__(self, world: Any, table: ClipTable, state: ClipState, sprites: Any) -> None:
+    def __init__(
+        self, world: Any, table: ClipTable, state: ClipState, sprites: Any, sync: Any = None
+    ) -> None:
         self.world = world
+        #: brings ``state`` up to date with the components (new animators get rows)
+        self.sync = sync
         self.table = table
         self.state = state
         self.sprites = sprites
@@ -113,6 +117,8 @@ class AtlasFrames:
 
     def frame_region(self, entity: int) -> tuple[Any, tuple[int, int, int, int]] | None:
         """The store's ``frame_source``: the atlas texture and the entity's current frame."""
+        if self.sync is not None:
+            self.sync()
         row = self.state.rows.get(entity)
         if row is None:
             return None

@@ -349,7 +349,9 @@ class _AtlasPass:
         if self.frames is None:
             from kge.render.animation import AtlasFrames
 
-            self.frames = AtlasFrames(self.world, self.anims.table, self.anims.state, view.sprites)
+            self.frames = AtlasFrames(
+                self.world, self.anims.table, self.anims.state, view.sprites, self.anims.sync
+            )
             view.sprites.frame_source = self.frames.frame_region
             self.anims.redraw = view.dirty.add
             # sprites made before the atlas existed move onto it now
