@@ -89,7 +89,10 @@ def _as_vector(value: Any, label: str, what: str) -> tuple[list[float], bool]:
                 f"{label}: {what} {value!r} is not numeric (a tween animates numbers, "
                 "vectors and colours)"
             )
-        out.append(finite(v, label, what))
+        f = float(v)
+        if not math.isfinite(f):
+            raise ValidationError(f"{label}: {what} must be finite, got {value!r}")
+        out.append(f)
     ints = all(isinstance(v, (int, np.integer)) for v in items)
     return out, ints
 
@@ -138,8 +141,8 @@ class TweenTable:
         self.cycles = np.ones(n)  # repeat + 1 (inf: forever)
         self.yoyo = np.zeros(n, bool)
         self.ease = np.zeros(n, np.intp)
-        self.start = np.zeros((n, WIDTH))
-        self.end = np.zeros((n, WIDTH))
+        self.v_start = np.zeros((n, WIDTH))
+        self.v_end = np.zeros((n, WIDTH))
         self.captured = np.zeros(n, bool)
         self.prev_u = np.zeros(n)
         self.live = np.zeros(n, bool)
@@ -211,8 +214,8 @@ class TweenTable:
         )
         self.yoyo = np.concatenate([self.yoyo, [bool(s.yoyo) for s in specs]])
         self.ease = np.concatenate([self.ease, [easing_code(s.ease) for s in specs]]).astype(np.intp)
-        self.start = np.concatenate([self.start, start])
-        self.end = np.concatenate([self.end, end])
+        self.v_start = np.concatenate([self.v_start, start])
+        self.v_end = np.concatenate([self.v_end, end])
         self.captured = np.concatenate([self.captured, captured])
         self.prev_u = np.concatenate([self.prev_u, np.full(k, -1.0)])
         self.live = np.concatenate([self.live, np.ones(k, bool)])
@@ -342,13 +345,25 @@ class TweenTable:
 
     def _write(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray,
                dt: float, fixed: bool) -> None:
-        # capture start values of tweens beginning now
-        fresh = rows[~self.captured[rows]]
-        for i in fresh.tolist():
-            obj, field, width, _, _, _ = self.targets[i]
-            value = getattr(obj, field)
-            self.start[i, :width] = list(value) if isinstance(value, (tuple, list)) else [value]
-            self.captured[i] = True
+        """Write the rows already under way, then capture and write the ones starting now
+        (so a tween following another in a sequence starts from where that one ended)."""
+        fresh = ~self.captured[rows]
+        if fresh.any():
+            old = ~fresh
+            self._apply(rows[old], u[old], dur[old], cyc[old], dt)
+            for i in rows[fresh].tolist():
+                obj, field, width, _, _, _ = self.targets[i]
+                value = getattr(obj, field)
+                self.v_start[i, :width] = list(value) if isinstance(value, (tuple, list)) else [value]
+                self.captured[i] = True
+            self._apply(rows[fresh], u[fresh], dur[fresh], cyc[fresh], dt)
+        else:
+            self._apply(rows, u, dur, cyc, dt)
+
+    def _apply(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray,
+               dt: float) -> None:
+        if not len(rows):
+            return
         k = np.floor(u / dur)
         last = cyc - 1
         over = k > last
@@ -358,8 +373,8 @@ class TweenTable:
         back = self.yoyo[rows] & (np.mod(k, 2) == 1)
         p = np.where(back, 1.0 - p, p)
         eased = apply(self.ease[rows], p)
-        s = self.start[rows]
-        values = s + (self.end[rows] - s) * eased[:, None]
+        s = self.v_start[rows]
+        values = s + (self.v_end[rows] - s) * eased[:, None]
         targets = self.targets
         world = self.world
         for i, row in zip(rows.tolist(), values.tolist(), strict=True):
@@ -382,8 +397,8 @@ class TweenTable:
             setattr(obj, field, value)
         except ValidationError:
             # an overshooting easing (back, elastic) left the field's range: clamp to the ends
-            lo = np.minimum(self.start[i, :width], self.end[i, :width])
-            hi = np.maximum(self.start[i, :width], self.end[i, :width])
+            lo = np.minimum(self.v_start[i, :width], self.v_end[i, :width])
+            hi = np.maximum(self.v_start[i, :width], self.v_end[i, :width])
             clamped = np.clip(np.array(row[:width]), lo, hi).tolist()
             vals = [round(v) for v in clamped] if ints else clamped
             setattr(obj, field, tuple(vals) if kind >= 4 else vals[0])
@@ -424,7 +439,7 @@ class TweenTable:
             return
         keep = np.flatnonzero(self.live)
         remap = {int(old): new for new, old in enumerate(keep.tolist())}
-        for name in ("group", "offset", "duration", "cycles", "yoyo", "ease", "start", "end",
+        for name in ("group", "offset", "duration", "cycles", "yoyo", "ease", "v_start", "v_end",
                      "captured", "prev_u", "live", "fixed"):
             setattr(self, name, getattr(self, name)[keep])
         self.targets = [self.targets[i] for i in keep.tolist()]
