@@ -272,7 +272,9 @@ class ClipState:
                 looped = np.floor((a - start) / tot) - np.floor((b - start) / tot)
                 single = ((b < start) & (start <= a)).astype(float)
                 count = np.where(lp, looped, single).astype(np.int64)
-                for r, c in zip(rows[count > 0].tolist(), count[count > 0].tolist(), strict=True):
-                    found.extend((r, start + k * float(total[r]), slot, name, frame) for k in range(c))
+                hit = count > 0
+                for r, c in zip(rows[hit].tolist(), count[hit].tolist(), strict=True):
+                    lap = float(total[r])
+                    found.extend((r, start + k * lap, slot, name, frame) for k in range(c))
         found.sort(key=lambda item: (int(self.entity[item[0]]), item[1]))
         return [(r, slot, name, frame) for r, _, slot, name, frame in found]

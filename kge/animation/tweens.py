@@ -147,7 +147,8 @@ class TweenTable:
         self.prev_u = np.zeros(n)
         self.live = np.zeros(n, bool)
         self.fixed = np.zeros(n, bool)  # advanced in the fixed step (physics bodies)
-        self.targets: list[tuple[Any, str, int, int, int | None, int]] = []  # obj, field, width, kind, entity, axis
+        #: (component, field, width, kind, entity, axis) per channel
+        self.targets: list[tuple[Any, str, int, int, int | None, int]] = []
         # groups (by group id -> arrays indexed by group slot)
         self.g_ids = np.zeros(0, np.int64)
         self.g_elapsed = np.zeros(0)
@@ -213,7 +214,8 @@ class TweenTable:
             [self.cycles, [math.inf if s.repeat < 0 else s.repeat + 1.0 for s in specs]]
         )
         self.yoyo = np.concatenate([self.yoyo, [bool(s.yoyo) for s in specs]])
-        self.ease = np.concatenate([self.ease, [easing_code(s.ease) for s in specs]]).astype(np.intp)
+        codes = [easing_code(s.ease) for s in specs]
+        self.ease = np.concatenate([self.ease, codes]).astype(np.intp)
         self.v_start = np.concatenate([self.v_start, start])
         self.v_end = np.concatenate([self.v_end, end])
         self.captured = np.concatenate([self.captured, captured])
@@ -354,7 +356,8 @@ class TweenTable:
             for i in rows[fresh].tolist():
                 obj, field, width, _, _, _ = self.targets[i]
                 value = getattr(obj, field)
-                self.v_start[i, :width] = list(value) if isinstance(value, (tuple, list)) else [value]
+                vec = list(value) if isinstance(value, (tuple, list)) else [value]
+                self.v_start[i, :width] = vec
                 self.captured[i] = True
             self._apply(rows[fresh], u[fresh], dur[fresh], cyc[fresh], dt)
         else:

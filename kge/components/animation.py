@@ -24,7 +24,7 @@ layer, size, anchor, tint and opacity).
 
 >>> walk = Clip.grid("hero.png", (8, 4), frames=range(8, 16), fps=12, events={2: "step"})
 >>> len(walk.frames), round(walk.duration, 4)
-8 0.6667
+(8, 0.6667)
 >>> anim = Animator({"walk": walk, "idle": Clip.grid("hero.png", (8, 4), frames=[0])})
 >>> anim.play("run")
 Traceback (most recent call last):

@@ -40,8 +40,9 @@ from kge.validate import boolean, integer, non_negative, positive
 
 #: easing names (the curves live in kge.animation.easing, which checks names at start)
 FAMILIES = ("quad", "cubic", "quart", "quint", "sine", "expo", "circ", "back", "elastic", "bounce")
-EASING_NAMES: tuple[str, ...] = ("linear",) + tuple(
-    f"{f}_{kind}" for f in FAMILIES for kind in ("in", "out", "in_out")
+EASING_NAMES: tuple[str, ...] = (
+    "linear",
+    *(f"{f}_{kind}" for f in FAMILIES for kind in ("in", "out", "in_out")),
 )
 
 

@@ -62,6 +62,7 @@ class AtlasFrames:
     def _source_image(self, ref: FrameRef) -> Any:
         """pyglet ImageData of the frame's pixels (whole images decoded once)."""
         img = ref.image
+        key: Any
         if ref.gif_frame is not None:
             key = ("gif", img)
             frames = self._images.get(key)
@@ -70,7 +71,9 @@ class AtlasFrames:
 
                 frames = self._images[key] = gif_frames(assets_for(self.world).bytes(img))
             if ref.gif_frame >= len(frames):
-                raise ValidationError(f"GIF {img!r} has {len(frames)} frames, not {ref.gif_frame + 1}")
+                raise ValidationError(
+                    f"GIF {img!r} has {len(frames)} frames, not {ref.gif_frame + 1}"
+                )
             arr = frames[ref.gif_frame]
             h, w = arr.shape[:2]
             return pyglet.image.ImageData(w, h, "RGBA", arr.tobytes())
@@ -86,7 +89,9 @@ class AtlasFrames:
             elif hasattr(img, "get_image_data"):
                 whole = img
             else:
-                raise ValidationError(f"cannot draw {img!r}: not an asset name, PixelImage or image")
+                raise ValidationError(
+                    f"cannot draw {img!r}: not an asset name, PixelImage or image"
+                )
             whole = whole.get_image_data()
             self._images[key] = whole
         x, y, w, h = ref.rect(whole.width, whole.height)
@@ -98,7 +103,7 @@ class AtlasFrames:
         start = len(self.regions)
         if start == len(sources):
             return
-        rows = []
+        rows: list[np.ndarray] = []
         for ref in sources[start:]:
             try:
                 image = self._source_image(ref)

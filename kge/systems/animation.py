@@ -1,15 +1,15 @@
 """Animation systems and the plugin that installs them: sprite clips, tweens, camera shake.
 
-=========================  ======================  =========================================
-system                     stage (order)           does
-=========================  ======================  =========================================
-:class:`AnimationFrameStart` INPUT (-1000)         clears this frame's :class:`AnimationEvents`
-:class:`FixedTweens`       FIXED (150)             tweens of physics bodies: velocities, before physics
-:class:`ShakeRestore`      UPDATE (0)              takes last frame's shake offset off the camera
-:class:`AnimationSystem`   UPDATE (200)            advances every Animator (numpy), events, hooks
-:class:`TweenSystem`       UPDATE (210)            advances every other tween
-:class:`ShakeApply`        LATE (300)              decays trauma, adds this frame's shake offset
-=========================  ======================  =========================================
+===========================  ==============  ===========================================
+system                       stage (order)   does
+===========================  ==============  ===========================================
+``AnimationFrameStart``      INPUT (-1000)   clears this frame's ``AnimationEvents``
+``FixedTweens``              FIXED (150)     tweens of physics bodies: velocities
+``ShakeRestore``             UPDATE (0)      takes last frame's shake offset off
+``AnimationSystem``          UPDATE (200)    advances every Animator, events, hooks
+``TweenSystem``              UPDATE (210)    advances every other tween
+``ShakeApply``               LATE (300)      decays trauma, adds this frame's offset
+===========================  ==============  ===========================================
 
 Everything runs on game time: the dt the App hands to the UPDATE stage is
 scaled by ``time_scale``, zero while paused, one fixed step on ``single_step``,

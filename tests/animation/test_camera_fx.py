@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 from typing import Any
 
 import numpy as np
@@ -44,7 +45,7 @@ def test_shake_is_bounded_by_trauma_squared_and_decays_to_rest() -> None:
         offsets.append(np.hypot(ox, oy))
         trauma.append(s.trauma)
     assert max(offsets) > 0.05  # it does shake
-    assert all(b <= a for a, b in zip(trauma, trauma[1:], strict=False))  # decays
+    assert all(b <= a for a, b in itertools.pairwise(trauma))  # decays
     assert s.trauma == pytest.approx(0.8 - 30 * 0.02)
     app.step(60)
     assert s.trauma == 0.0
