@@ -304,15 +304,15 @@ class ShakeApply(System):
     def process(self, dt: float) -> None:
         world = self.world
         cam = active_camera(world)
-        if cam is None:
-            return
-        shake = _shake_of(world, cam)
+        shake = _shake_of(world, cam) if cam is not None else world.try_resource(CameraShake)
         if shake is None or shake.trauma <= 0.0:
             return
         time = world.try_resource(Time)
         now = time.elapsed if time is not None else 0.0
         ox, oy = offset(shake.trauma, now, shake.max_offset, shake.frequency, shake.seed)
         shake.trauma = decayed(shake.trauma, shake.decay, dt)
+        if cam is None:  # nothing to move (no camera yet): the trauma still decays
+            return
         cx, cy = cam.center
         cam.center = (cx + ox, cy + oy)
         restore = world.get_system(ShakeRestore)
