@@ -4,9 +4,9 @@
     python tools/make_assets.py --out DIR
 
 Every file is a pure function of this script: PNGs come from a tiny zlib PNG
-writer below (no pyglet, no PIL), the GIF from Pillow's encoder, WAVs from :mod:`kge.sound` through the
-``wave`` module. Output is deterministic (seeded noise, no timestamps), so
-re-running it leaves the committed files byte-identical.
+writer below (no pyglet, no PIL), the GIF from Pillow's encoder, WAVs from
+:mod:`kge.sound` through the ``wave`` module. Output is deterministic (seeded
+noise, no timestamps), so re-running it leaves the committed files byte-identical.
 
 Pong: ``pad_left.png`` (red), ``pad_right.png`` (blue), ``ball.png``,
 ``background.png``; ``paddle_hit.wav``, ``wall_hit.wav``, ``score.wav``,
