@@ -99,7 +99,8 @@ def _median(results: list[Result], scene: str, size: int, engine: str) -> float 
 
 
 def targets(results: list[Result], fitting: dict[str, dict[str, float]],
-            render: dict[int, dict[str, float]]) -> list[dict[str, Any]]:
+            render: dict[int, dict[str, float]],
+            animation: dict[int, dict[str, float]] | None = None) -> list[dict[str, Any]]:
     """The issue's targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
 
@@ -124,6 +125,12 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     add("sparse bodies at 60 Hz (sparse)", fitting.get("sparse", {}).get("kge"), 20000, False)
     add("spawning 1,000 bodies in one frame", _median(results, "spawn", 1000, "kge"),
         25.0, True, "ms")
+    anim = animation[max(animation)] if animation else {}
+    add("animated sprites per sprite and frame (advance + tex coords + upload, largest N)",
+        anim.get("kge_total"), 0.3, True, "µs")
+    add("pyglet animated Sprite / kge per animated sprite (largest N)",
+        anim["pyglet_sprite"] / anim["kge_total"] if anim else None, 10.0, False)
+    add("live tweens per tween and frame (largest N)", anim.get("tweens"), 0.5, True, "µs")
     return rows
 
 
@@ -209,6 +216,21 @@ def run_render(sizes: tuple[int, ...], repeats: int, progress: Progress
         return {}, f"render sync skipped: {type(err).__name__}: {err}"
 
 
+def run_animation(sizes: tuple[int, ...], repeats: int, progress: Progress
+                  ) -> tuple[dict[int, dict[str, float]], str | None]:
+    """Animated sprites and tweens, µs per item and frame, or why it could not run."""
+    try:
+        from benchmarks.animation import measure as animation_measure
+
+        out = {}
+        for n in sizes:
+            progress(f"animation [{n} sprites, {n} tweens]")
+            out[n] = animation_measure(n, repeats)
+        return out, None
+    except Exception as err:  # no GL: report, do not fail the run
+        return {}, f"animation skipped: {type(err).__name__}: {err}"
+
+
 def render_table(render: dict[int, dict[str, float]]) -> str:
     cols = ("blend", "bulk_write", "kge_sync", "record", "sprite_update", "frame")
     lines = [f"{'sprites':>8}" + "".join(f"{c:>15}" for c in cols)]
@@ -257,6 +279,16 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         for n, r in sorted(report["render"].items(), key=lambda kv: int(kv[0])):
             out.append(f"| {n} | {r['blend']:.3f} | {r['bulk_write']:.3f} | {r['kge_sync']:.3f}"
                        f" | {r['record']:.3f} | {r['sprite_update']:.3f} | {r['frame']:.3f} |")
+    if report.get("animation"):
+        out += ["", "Animation, µs per item and frame (median; kge = numpy advance + bulk "
+                "texture-coordinate write + GPU upload; pyglet = its animated `Sprite` on a "
+                "clock; every sprite changes frame every frame):", "",
+                "| N | advance | tex coords | upload | kge total | pyglet Sprite | pyglet/kge "
+                "| tweens |", "|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        for n, r in sorted(report["animation"].items(), key=lambda kv: int(kv[0])):
+            out.append(f"| {n} | {r['advance']:.3f} | {r['texcoords']:.3f} | {r['upload']:.3f}"
+                       f" | {r['kge_total']:.3f} | {r['pyglet_sprite']:.3f}"
+                       f" | {r['pyglet_sprite'] / r['kge_total']:.0f} | {r['tweens']:.3f} |")
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -320,6 +352,18 @@ def main(argv: list[str] | None = None) -> int:
         else:
             print("\nrender sync, µs per sprite (median):")
             print(render_table(render))
+    animation: dict[int, dict[str, float]] = {}
+    if not args.no_render and not args.scene:
+        animation, why = run_animation((200,) if args.quick else (1000, 10000),
+                                       2 if args.quick else 9, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        else:
+            from benchmarks.animation import table as animation_table
+
+            print("\nanimation, µs per sprite (tween) and frame (median):")
+            print(animation_table(animation))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -334,7 +378,7 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
-    goals = targets(results, fitting, render)
+    goals = targets(results, fitting, render, animation)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -349,6 +393,7 @@ def main(argv: list[str] | None = None) -> int:
         "results": [r.as_dict() for r in results],
         "largest_fitting": fitting,
         "render": {str(n): r for n, r in render.items()},
+        "animation": {str(n): r for n, r in animation.items()},
         "breakdown": rows,
         "collision": collision,
         "targets": goals,

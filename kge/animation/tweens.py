@@ -24,7 +24,9 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections import deque
 from collections.abc import Callable
+from operator import attrgetter, itemgetter
 from typing import Any
 
 import numpy as np
@@ -38,6 +40,7 @@ from kge.errors import ComponentTypeError, ValidationError, where
 from kge.validate import finite
 
 WIDTH = 4  # widest value: an RGBA colour
+_binding = attrgetter("_binding")
 _AXES = {"x": 0, "y": 1, "angle": 2}
 
 
@@ -147,6 +150,9 @@ class TweenTable:
         self.prev_u = np.zeros(n)
         self.live = np.zeros(n, bool)
         self.fixed = np.zeros(n, bool)  # advanced in the fixed step (physics bodies)
+        self.kind = np.zeros(n, np.int8)  # how the value is written (see _resolve)
+        self.objs: list[Any] = []  # the component of each channel
+        self.fields: list[str] = []
         #: (component, field, width, kind, entity, axis) per channel
         self.targets: list[tuple[Any, str, int, int, int | None, int]] = []
         # groups (by group id -> arrays indexed by group slot)
@@ -203,6 +209,8 @@ class TweenTable:
                 start[i, :width] = s
                 captured[i] = True
             self.targets.append((obj, field, width, kind, ent, axis))
+            self.objs.append(obj)
+            self.fields.append(field)
             if ent is not None:
                 self._by_target.setdefault((ent, plan.spec.component), []).append(base + i)
                 self._hook(plan.spec.component)
@@ -222,6 +230,7 @@ class TweenTable:
         self.prev_u = np.concatenate([self.prev_u, np.full(k, -1.0)])
         self.live = np.concatenate([self.live, np.ones(k, bool)])
         self.fixed = np.concatenate([self.fixed, np.full(k, any_fixed)])
+        self.kind = np.concatenate([self.kind, np.array([r[5] for r in rows], np.int8)])
         return handle
 
     def _resolve(self, target: Any, plan: _Plan) -> tuple[Any, ...]:
@@ -265,13 +274,14 @@ class TweenTable:
         vector = isinstance(getattr(obj, spec.field), (tuple, list))
         if vector:
             kind += 4
+        rb = None
         if entity is not None and ctype is Transform and spec.field in _AXES:
             rb = self.world.try_get(entity, RigidBody)
-            if rb is not None and rb.type != BodyType.STATIC:
-                kind, axis = 2, _AXES[spec.field]
-        elif kind in (0, 4):
+        if rb is not None and rb.type != BodyType.STATIC:
+            kind, axis = 2, _AXES[spec.field]
+        elif kind == 0:
             check = getattr(ctype, "_checks", {}).get(spec.field)
-            if isinstance(obj, Tracked) and check is finite and kind == 0:
+            if isinstance(obj, Tracked) and check is finite:
                 kind = 3  # plain finite float of a tracked component: the raw write
         return (obj, spec.field, len(now), start, to, kind, entity, axis)
 
@@ -378,16 +388,24 @@ class TweenTable:
         eased = apply(self.ease[rows], p)
         s = self.v_start[rows]
         values = s + (self.v_end[rows] - s) * eased[:, None]
+        raw = self.kind[rows] == 3
+        if raw.any():  # the common case, kept tight: one raw write and one mark per tween
+            idx = rows[raw].tolist()
+            pick = itemgetter(*idx)
+            objs = pick(self.objs) if len(idx) > 1 else (self.objs[idx[0]],)
+            fields = pick(self.fields) if len(idx) > 1 else (self.fields[idx[0]],)
+            # C-level loops: the writes, then the bindings (tracked components' dirty marks)
+            deque(map(raw_set, objs, fields, values[raw, 0].tolist()), maxlen=0)
+            for b in filter(None, map(_binding, objs)):
+                b.dirty.add(b.entity)
+            if raw.all():
+                return
+            rows, values = rows[~raw], values[~raw]
         targets = self.targets
         world = self.world
         for i, row in zip(rows.tolist(), values.tolist(), strict=True):
             obj, field, width, kind, entity, axis = targets[i]
-            if kind == 3:
-                raw_set(obj, field, row[0])
-                b = obj._binding
-                if b is not None:
-                    b.dirty.add(b.entity)
-            elif kind == 2:
+            if kind == 2:
                 self._drive(world, entity, axis, row[0], dt)
             else:
                 self._set(obj, field, width, kind, row, i)
@@ -443,9 +461,12 @@ class TweenTable:
         keep = np.flatnonzero(self.live)
         remap = {int(old): new for new, old in enumerate(keep.tolist())}
         for name in ("group", "offset", "duration", "cycles", "yoyo", "ease", "v_start", "v_end",
-                     "captured", "prev_u", "live", "fixed"):
+                     "captured", "prev_u", "live", "fixed", "kind"):
             setattr(self, name, getattr(self, name)[keep])
-        self.targets = [self.targets[i] for i in keep.tolist()]
+        kept = keep.tolist()
+        self.targets = [self.targets[i] for i in kept]
+        self.objs = [self.objs[i] for i in kept]
+        self.fields = [self.fields[i] for i in kept]
         self._by_target = {
             key: [remap[i] for i in idx if i in remap] for key, idx in self._by_target.items()
         }

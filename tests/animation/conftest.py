@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 
 os.environ.setdefault("PYGLET_HEADLESS", "1")
 
@@ -15,6 +16,10 @@ import pytest
 
 from kge import App
 from kge.render.images import PixelImage
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+if str(EXAMPLES) not in sys.path:  # the example games import as modules (test_games.py)
+    sys.path.insert(0, str(EXAMPLES))
 
 #: the colours of the generated sheet's frames, left to right
 COLOURS = [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 255)]

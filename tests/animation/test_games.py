@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import pong  # examples/pong.py (tests/games/conftest.py puts examples/ on the path)
+import pong  # examples/pong.py (this folder's conftest puts examples/ on the path)
 import pytest
 import shooter  # examples/shooter.py
 
 from kge import Animations, App, Behaviour, CameraShake, Text, Transform
 from kge.testbed.samples.build import named
-from tests.games import conftest as _games  # noqa: F401  (examples/ on sys.path)
 
 
 def _referee(app: App) -> shooter.Referee:
