@@ -52,8 +52,8 @@ def _sheet() -> Any:
 
 def _kge(n: int) -> tuple[Any, Any, Any, Any]:
     from kge import Animator, App, Camera, Clip, Sprite, Transform
-    from kge.systems.animation import AnimationSystem, _AtlasPass
     from kge.render.passes import RenderPasses
+    from kge.systems.animation import AnimationSystem, _AtlasPass
 
     sheet = _sheet()
     clip = Clip.grid(sheet, (8, 1), duration=DT)
@@ -85,7 +85,7 @@ def _pyglet(n: int) -> tuple[Any, Any]:
         tex = pyglet.image.ImageData(64, 8, "RGBA", sheet.pixels).get_texture()
         # regions of one texture: pyglet's fast path (a texture swap only rewrites tex coords)
         frames = [tex.get_region(8 * i, 0, 8, 8) for i in range(8)]
-        anim = pyglet.image.Animation.from_image_sequence(frames, DT, loop=True)
+        anim = pyglet.image.Animation.from_image_sequence(frames, DT, loop=True)  # type: ignore[arg-type]
         batch = pyglet.graphics.Batch()
         rng = np.random.default_rng(1)
         sprites = [pyglet.sprite.Sprite(anim, float(x), float(y), batch=batch)
