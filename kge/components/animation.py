@@ -305,6 +305,14 @@ def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
     return out
 
 
+def _has(obj: object, name: str) -> bool:
+    try:
+        getattr(obj, name)
+    except AttributeError:  # a slot not yet set (inside __init__)
+        return False
+    return True
+
+
 def _speed(value: Any, owner: str, field: str) -> float:
     v = finite(value, owner, field)
     if v < 0:
@@ -339,6 +347,20 @@ class Animator(Tracked):
     #: bumped by play()/stop(): the system restarts the clip when it changes
     serial: int = 0
     stopped: bool = False
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        # ``current`` must name a clip, and new ``clips`` must still hold ``current``: rules
+        # across two fields, so they are checked here rather than in the per-field table
+        if name == "current" and value is not None and _has(self, "clips"):
+            self._check_name(value, "current")
+        elif name == "clips" and _has(self, "current") and self.current is not None:
+            clips = _clips(value, self._owner(), "clips")
+            if self.current not in clips:
+                raise ValidationError(
+                    f"{self._owner()}.clips: the new clips lack the current clip "
+                    f"{self.current!r}; play() one of them first or include it"
+                )
+        Tracked.__setattr__(self, name, value)
 
     def __post_init__(self) -> None:
         if self.current is None:

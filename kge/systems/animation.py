@@ -32,6 +32,7 @@ from kge.components.animation import Animator
 from kge.components.camera import Camera, active_camera
 from kge.components.shake import CameraShake
 from kge.components.tracked import bind, unbind
+from kge.errors import MissingComponentError
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.scene import Time
@@ -95,7 +96,10 @@ class Animations:
     def _row(self, entity: int) -> int:
         row = self.state.rows.get(entity)
         if row is None:
-            raise KeyError(f"entity {entity} has no Animator")
+            self.sync()  # spawned since the last frame
+            row = self.state.rows.get(entity)
+        if row is None:
+            raise MissingComponentError(f"entity {entity} has no Animator component")
         return row
 
     # -- syncing from the components --------------------------------------------------------

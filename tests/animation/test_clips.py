@@ -15,6 +15,7 @@ from kge import (
     Behaviour,
     Camera,
     Clip,
+    MissingComponentError,
     Script,
     Sprite,
     Transform,
@@ -276,3 +277,10 @@ def test_unknown_clip_names_leave_the_world_unchanged(sheet: Any) -> None:
     with pytest.raises(ValidationError, match="Animator.speed must be >= 0"):
         anim.speed = -1.0
     assert anim.speed == 1.0
+    with pytest.raises(ValidationError, match="entity 1, Animator.current: unknown clip 'x'"):
+        anim.current = "x"
+    with pytest.raises(ValidationError, match="the new clips lack the current clip 'walk'"):
+        anim.clips = {"other": clip}
+    assert anim.current == "walk" and list(anim.clips) == ["walk"]
+    with pytest.raises(MissingComponentError, match="entity 99 has no Animator"):
+        app.world.resource(Animations).frame(99)
