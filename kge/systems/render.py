@@ -22,8 +22,8 @@ from typing import Any
 
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
-from kge.components.sprite import Sprite
 from kge.components.rigidbody import RigidBody
+from kge.components.sprite import Sprite
 from kge.components.transform import Transform
 from kge.errors import DisplayError, where
 from kge.host import Host
