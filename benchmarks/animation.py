@@ -15,7 +15,10 @@ repetitions, in microseconds per sprite (or tween) per frame:
   of the same 8 frames, driven by pyglet's clock (one ``_animate`` call and one
   texture swap per sprite per frame: pyglet's own path);
 * ``tweens``: :class:`~kge.systems.animation.TweenSystem` advancing N live tweens
-  (``Transform.x``, sine in-out, yoyo forever) and writing them back.
+  (``Transform.x``, sine in-out, yoyo forever) and writing them back;
+* ``arcade_sprite``: Arcade 3's ``TextureAnimationSprite`` (``update_animation`` +
+  buffer upload), run by ``benchmarks/arcade_animation.py`` in ``.venv-arcade``
+  (Arcade pins pymunk 6.9) when that venv exists; ``make bench`` creates it.
 
 Run ``python benchmarks/animation.py`` (``--sizes 1000 10000``) for the table;
 :func:`measure` with a small N is what the test suite calls.
@@ -24,10 +27,13 @@ Run ``python benchmarks/animation.py`` (``--sizes 1000 10000``) for the table;
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import statistics
+import subprocess
 import sys
 import time
+from pathlib import Path
 from typing import Any
 
 os.environ.setdefault("PYGLET_HEADLESS", "1")
@@ -164,11 +170,38 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
     return {k: statistics.median(v) * 1e6 / n for k, v in samples.items()}
 
 
+ARCADE_PYTHON = Path(__file__).resolve().parents[1] / ".venv-arcade" / "bin" / "python"
+
+
+def measure_arcade(sizes: tuple[int, ...], repeats: int, python: str | None = None
+                   ) -> dict[int, float]:
+    """Arcade 3's TextureAnimationSprite in its own venv (``make bench`` makes it):
+    µs per sprite and frame by size. Raises when that venv is missing or fails."""
+    exe = python or os.environ.get("KGE_ARCADE_PYTHON") or str(ARCADE_PYTHON)
+    if not Path(exe).exists():
+        raise FileNotFoundError(f"no Arcade venv at {exe} (make bench creates .venv-arcade)")
+    script = Path(__file__).with_name("arcade_animation.py")
+    done = subprocess.run(
+        [exe, str(script), "--sizes", *map(str, sizes), "--repeats", str(repeats)],
+        capture_output=True, text=True, timeout=900, check=False,
+    )
+    if done.returncode != 0:
+        raise RuntimeError(f"Arcade run failed: {done.stderr.strip().splitlines()[-1:]}")
+    data = json.loads(done.stdout.strip().splitlines()[-1])
+    return {int(n): float(r["arcade_sprite"]) for n, r in data.items()}
+
+
 def table(results: dict[int, dict[str, float]]) -> str:
-    lines = [f"{'N':>8}" + "".join(f"{c:>15}" for c in VARIANTS) + f"{'pyglet/kge':>12}"]
+    extra = any("arcade_sprite" in r for r in results.values())
+    cols = (*VARIANTS, "arcade_sprite") if extra else VARIANTS
+    lines = [f"{'N':>8}" + "".join(f"{c:>15}" for c in cols) + f"{'pyglet/kge':>12}"
+             + (f"{'arcade/kge':>12}" if extra else "")]
     for n, r in sorted(results.items()):
-        lines.append(f"{n:>8}" + "".join(f"{r[c]:>15.3f}" for c in VARIANTS)
-                     + f"{r['pyglet_sprite'] / r['kge_total']:>12.1f}")
+        line = f"{n:>8}" + "".join(f"{r.get(c, float('nan')):>15.3f}" for c in cols)
+        line += f"{r['pyglet_sprite'] / r['kge_total']:>12.1f}"
+        if extra:
+            line += f"{r.get('arcade_sprite', float('nan')) / r['kge_total']:>12.1f}"
+        lines.append(line)
     return "\n".join(lines)
 
 
@@ -178,6 +211,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--repeats", type=int, default=15)
     args = parser.parse_args(argv)
     results = {n: measure(n, args.repeats) for n in args.sizes}
+    try:
+        for n, us in measure_arcade(tuple(args.sizes), args.repeats).items():
+            results[n]["arcade_sprite"] = us
+    except (OSError, RuntimeError, ValueError) as err:
+        print(f"Arcade skipped: {err}", file=sys.stderr)
     print("µs per sprite (tween) per frame, median:")
     print(table(results))
     return 0

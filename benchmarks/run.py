@@ -130,6 +130,9 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
         anim.get("kge_total"), 0.3, True, "µs")
     add("pyglet animated Sprite / kge per animated sprite (largest N)",
         anim["pyglet_sprite"] / anim["kge_total"] if anim else None, 10.0, False)
+    add("Arcade TextureAnimationSprite / kge per animated sprite (largest N)",
+        anim["arcade_sprite"] / anim["kge_total"] if "arcade_sprite" in anim else None,
+        10.0, False)
     add("live tweens per tween and frame (largest N)", anim.get("tweens"), 0.5, True, "µs")
     return rows
 
@@ -226,9 +229,17 @@ def run_animation(sizes: tuple[int, ...], repeats: int, progress: Progress
         for n in sizes:
             progress(f"animation [{n} sprites, {n} tweens]")
             out[n] = animation_measure(n, repeats)
-        return out, None
     except Exception as err:  # no GL: report, do not fail the run
         return {}, f"animation skipped: {type(err).__name__}: {err}"
+    from benchmarks.animation import measure_arcade
+
+    try:
+        progress("animation [Arcade 3, its own venv]")
+        for n, us in measure_arcade(sizes, repeats).items():
+            out[n]["arcade_sprite"] = us
+    except (OSError, RuntimeError, ValueError) as err:
+        return out, f"Arcade animation column skipped: {err}"
+    return out, None
 
 
 def render_table(render: dict[int, dict[str, float]]) -> str:
@@ -284,11 +295,15 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
                 "texture-coordinate write + GPU upload; pyglet = its animated `Sprite` on a "
                 "clock; every sprite changes frame every frame):", "",
                 "| N | advance | tex coords | upload | kge total | pyglet Sprite | pyglet/kge "
-                "| tweens |", "|---:|---:|---:|---:|---:|---:|---:|---:|"]
+                "| Arcade 3 | Arcade/kge | tweens |",
+                "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for n, r in sorted(report["animation"].items(), key=lambda kv: int(kv[0])):
+            arc = r.get("arcade_sprite")
+            arcade_cells = "- | -" if arc is None else f"{arc:.3f} | {arc / r['kge_total']:.0f}"
             out.append(f"| {n} | {r['advance']:.3f} | {r['texcoords']:.3f} | {r['upload']:.3f}"
                        f" | {r['kge_total']:.3f} | {r['pyglet_sprite']:.3f}"
-                       f" | {r['pyglet_sprite'] / r['kge_total']:.0f} | {r['tweens']:.3f} |")
+                       f" | {r['pyglet_sprite'] / r['kge_total']:.0f} | {arcade_cells}"
+                       f" | {r['tweens']:.3f} |")
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -359,7 +374,7 @@ def main(argv: list[str] | None = None) -> int:
         if why:
             skipped.append(why)
             print(why, file=sys.stderr)
-        else:
+        if animation:
             from benchmarks.animation import table as animation_table
 
             print("\nanimation, µs per sprite (tween) and frame (median):")

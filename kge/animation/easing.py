@@ -79,7 +79,12 @@ def _out(f: Curve) -> Curve:
 
 
 def _in_out(f: Curve) -> Curve:
-    return lambda p: np.where(p < 0.5, f(2 * p) / 2, 1 - f(2 - 2 * p) / 2)
+    def curve(p: np.ndarray) -> np.ndarray:
+        first = p < 0.5  # in over the first half, out (mirrored in) over the second
+        half = f(np.where(first, 2 * p, 2 - 2 * p)) / 2
+        return np.where(first, half, 1 - half)
+
+    return curve
 
 
 def _linear(p: np.ndarray) -> np.ndarray:
@@ -120,10 +125,13 @@ def ease(name: str, p: Any) -> np.ndarray:
 def apply(codes: np.ndarray, p: np.ndarray) -> np.ndarray:
     """Evaluate each row's easing (``codes[i]``) at ``p[i]``: one numpy call per easing used."""
     out = np.empty_like(p)
-    used = np.unique(codes)
-    if len(used) == 1:
-        out[:] = CURVES[int(used[0])](p)
+    if not len(codes):
         return out
+    lo, hi = int(codes.min()), int(codes.max())
+    if lo == hi:  # one easing for all (the usual case): no grouping
+        out[:] = CURVES[lo](p)
+        return out
+    used = np.unique(codes)
     for code in used:
         mask = codes == code
         out[mask] = CURVES[int(code)](p[mask])
