@@ -151,6 +151,7 @@ class TweenTable:
         self.live = np.zeros(n, bool)
         self.fixed = np.zeros(n, bool)  # advanced in the fixed step (physics bodies)
         self.kind = np.zeros(n, np.int8)  # how the value is written (see _resolve)
+        self.gslot = np.zeros(n, np.intp)  # the row of each channel's group in the g_ arrays
         self.objs: list[Any] = []  # the component of each channel
         self.fields: list[str] = []
         #: (component, field, width, kind, entity, axis) per channel
@@ -231,6 +232,7 @@ class TweenTable:
         self.live = np.concatenate([self.live, np.ones(k, bool)])
         self.fixed = np.concatenate([self.fixed, np.full(k, any_fixed)])
         self.kind = np.concatenate([self.kind, np.array([r[5] for r in rows], np.int8)])
+        self.gslot = np.concatenate([self.gslot, np.full(k, len(self.g_ids) - 1, np.intp)])
         return handle
 
     def _resolve(self, target: Any, plan: _Plan) -> tuple[Any, ...]:
@@ -318,31 +320,45 @@ class TweenTable:
 
     # -- advancing -----------------------------------------------------------------------
     def advance(self, dt: float, fixed: bool) -> list[TweenHandle]:
-        """Advance the fixed (physics) or frame groups by ``dt``; returns finished handles."""
+        """Advance the fixed (physics) or frame groups by ``dt``; returns finished handles.
+
+        Written for thousands of rows: when every live row takes part (the usual
+        frame pass) the arrays are used whole, without gathering.
+        """
         if fixed:
             self._stop_bodies(dt)
         gsel = self.g_live & (self.g_fixed == fixed)
         if not gsel.any():
             return []
         self.g_elapsed[gsel] += dt
-        rows = np.flatnonzero(self.live & (self.fixed == fixed))
+        sel = self.live & (self.fixed == fixed)
         finished: list[TweenHandle] = []
-        if len(rows):
-            slot = np.searchsorted(self.g_ids, self.group[rows])  # ids ascend
+        if sel.any():
+            rows = np.arange(len(sel)) if sel.all() else np.flatnonzero(sel)
+            whole = len(rows) == len(sel)
+
+            def take(arr: np.ndarray) -> np.ndarray:
+                return arr if whole else arr[rows]
+
+            slot = take(self.gslot)
             el = self.g_elapsed[slot]
-            period = self.g_period[slot]
-            looping = np.isfinite(period)
-            gt = np.where(looping, np.mod(el, np.where(looping, period, 1.0)), el)
-            u = gt - self.offset[rows]
-            dur = self.duration[rows]
-            cyc = self.cycles[rows]
-            active_len = dur * cyc
-            prev = self.prev_u[rows]
-            wrapped = u < prev
-            due = (u >= 0) & ((prev < active_len) | wrapped)
-            self.prev_u[rows] = u
-            if due.any():
-                self._write(rows[due], u[due], dur[due], cyc[due], dt, fixed)
+            if np.isfinite(self.g_period).any():
+                period = self.g_period[slot]
+                looping = np.isfinite(period)
+                el = np.where(looping, np.mod(el, np.where(looping, period, 1.0)), el)
+            u = el - take(self.offset)
+            dur = take(self.duration)
+            cyc = take(self.cycles)
+            prev = take(self.prev_u)
+            due = (u >= 0) & ((prev < dur * cyc) | (u < prev))
+            if whole:
+                self.prev_u = u
+            else:
+                self.prev_u[rows] = u
+            if due.all():
+                self._write(rows, u, dur, cyc, dt)
+            elif due.any():
+                self._write(rows[due], u[due], dur[due], cyc[due], dt)
         done_groups = np.flatnonzero(gsel & (self.g_elapsed >= self.g_total))
         for gi in done_groups.tolist():
             gid = int(self.g_ids[gi])
@@ -356,7 +372,7 @@ class TweenTable:
         return finished
 
     def _write(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray,
-               dt: float, fixed: bool) -> None:
+               dt: float) -> None:
         """Write the rows already under way, then capture and write the ones starting now
         (so a tween following another in a sequence starts from where that one ended)."""
         fresh = ~self.captured[rows]
@@ -373,34 +389,48 @@ class TweenTable:
         else:
             self._apply(rows, u, dur, cyc, dt)
 
+    def _progress(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray
+                  ) -> np.ndarray:
+        """Eased progress of each row at local time ``u`` (repeats and yoyo folded in)."""
+        k = np.floor(u / dur)
+        over = k > cyc - 1
+        if over.any():
+            k = np.where(over, cyc - 1, k)
+        p = np.clip((u - k * dur) / dur, 0.0, 1.0)
+        if over.any():
+            p[over] = 1.0
+        yoyo = self.yoyo[rows]
+        if yoyo.any():
+            back = yoyo & (np.mod(k, 2) == 1)
+            p = np.where(back, 1.0 - p, p)
+        return apply(self.ease[rows], p)
+
     def _apply(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray,
                dt: float) -> None:
         if not len(rows):
             return
-        k = np.floor(u / dur)
-        last = cyc - 1
-        over = k > last
-        k = np.where(over, last, k)
-        p = np.clip((u - k * dur) / dur, 0.0, 1.0)
-        p = np.where(over, 1.0, p)
-        back = self.yoyo[rows] & (np.mod(k, 2) == 1)
-        p = np.where(back, 1.0 - p, p)
-        eased = apply(self.ease[rows], p)
-        s = self.v_start[rows]
-        values = s + (self.v_end[rows] - s) * eased[:, None]
+        eased = self._progress(rows, u, dur, cyc)
         raw = self.kind[rows] == 3
         if raw.any():  # the common case, kept tight: one raw write and one mark per tween
-            idx = rows[raw].tolist()
+            if raw.all():
+                sub, e = rows, eased
+            else:
+                sub, e = rows[raw], eased[raw]
+            s0 = self.v_start[sub, 0]
+            first = s0 + (self.v_end[sub, 0] - s0) * e
+            idx = sub.tolist()
             pick = itemgetter(*idx)
             objs = pick(self.objs) if len(idx) > 1 else (self.objs[idx[0]],)
             fields = pick(self.fields) if len(idx) > 1 else (self.fields[idx[0]],)
             # C-level loops: the writes, then the bindings (tracked components' dirty marks)
-            deque(map(raw_set, objs, fields, values[raw, 0].tolist()), maxlen=0)
+            deque(map(raw_set, objs, fields, first.tolist()), maxlen=0)
             for b in filter(None, map(_binding, objs)):
                 b.dirty.add(b.entity)
             if raw.all():
                 return
-            rows, values = rows[~raw], values[~raw]
+            rows, eased = rows[~raw], eased[~raw]
+        s = self.v_start[rows]
+        values = s + (self.v_end[rows] - s) * eased[:, None]
         targets = self.targets
         world = self.world
         for i, row in zip(rows.tolist(), values.tolist(), strict=True):
@@ -461,7 +491,7 @@ class TweenTable:
         keep = np.flatnonzero(self.live)
         remap = {int(old): new for new, old in enumerate(keep.tolist())}
         for name in ("group", "offset", "duration", "cycles", "yoyo", "ease", "v_start", "v_end",
-                     "captured", "prev_u", "live", "fixed", "kind"):
+                     "captured", "prev_u", "live", "fixed", "kind", "gslot"):
             setattr(self, name, getattr(self, name)[keep])
         kept = keep.tolist()
         self.targets = [self.targets[i] for i in kept]
@@ -472,6 +502,9 @@ class TweenTable:
         }
         self._by_target = {k: v for k, v in self._by_target.items() if v}
         gkeep = np.flatnonzero(self.g_live)
+        new_slot = np.full(len(self.g_live), -1, np.intp)
+        new_slot[gkeep] = np.arange(len(gkeep))
+        self.gslot = new_slot[self.gslot]  # live channels belong to live groups
         for name in ("g_ids", "g_elapsed", "g_period", "g_total", "g_fixed", "g_live"):
             setattr(self, name, getattr(self, name)[gkeep])
 

@@ -270,3 +270,21 @@ def test_tweens_of_a_despawned_entity_stop() -> None:
     w.flush()
     _run(w, 0.5)
     assert h.done and h.cancelled and len(tweens) == 0
+
+
+def test_finished_rows_are_compacted_and_the_rest_keep_going() -> None:
+    w, tweens = _world()
+    short = [w.spawn(Transform()) for _ in range(600)]
+    long = [w.spawn(Transform()) for _ in range(10)]
+    for e in short:
+        tweens.to(e, Transform, "x", 1.0, 0.1)
+    handles = [tweens.to(e, Transform, "y", 2.0, 1.0, delay=0.1 * (i % 2))
+               for i, e in enumerate(long)]
+    _run(w, 0.25)
+    assert len(tweens.live) == 10 and len(tweens.g_ids) == 10  # compacted
+    assert all(w.get(e, Transform).x == 1.0 for e in short)
+    _run(w, 0.25)
+    ys = [w.get(e, Transform).y for e in long]
+    assert ys[0] == pytest.approx(1.0) and ys[1] == pytest.approx(0.8)
+    _run(w, 0.5, 2)
+    assert all(h.done for h in handles) and all(w.get(e, Transform).y == 2.0 for e in long)
