@@ -284,3 +284,62 @@ def test_unknown_clip_names_leave_the_world_unchanged(sheet: Any) -> None:
     assert anim.current == "walk" and list(anim.clips) == ["walk"]
     with pytest.raises(MissingComponentError, match="entity 99 has no Animator"):
         app.world.resource(Animations).frame(99)
+
+
+def test_image_list_clips_and_flips_draw_the_right_pixels(make_app: Any) -> None:
+    import numpy as np
+
+    from kge.render.images import PixelImage, solid
+    from kge.render.setup import frame_pixels
+
+    arr = np.zeros((8, 8, 4), np.uint8)
+    arr[:, :4] = (255, 0, 0, 255)  # left half red, right half blue
+    arr[:, 4:] = (0, 0, 255, 255)
+    halves = PixelImage(8, 8, arr.tobytes())
+    plain = Clip.images([halves, solid(8, 8, (0, 255, 0))], duration=0.1)
+    mirrored = Clip.images([halves], flip_x=True)
+
+    def setup(world: World) -> None:
+        world.insert_resource(Camera(pixels_per_meter=16))
+        world.spawn(Transform(-1.0, 0.0), Sprite(halves, size=(1.5, 1.5)),
+                    Animator({"a": plain}))
+        world.spawn(Transform(1.0, 0.0), Sprite(halves, size=(1.5, 1.5)),
+                    Animator({"m": mirrored}))
+
+    app = make_app(setup, fixed_dt=DT)
+    app.render()
+    px = frame_pixels(app)
+
+    def at(x: int) -> tuple[int, ...]:
+        return tuple(int(v) for v in px[32, x, :3])
+
+    assert at(11) == (255, 0, 0) and at(21) == (0, 0, 255)  # left sprite as drawn
+    assert at(43) == (0, 0, 255) and at(53) == (255, 0, 0)  # right sprite mirrored
+    app.step(2)
+    app.render()
+    px = frame_pixels(app)
+    assert at(11) == (0, 255, 0) and at(21) == (0, 255, 0)  # the second image
+
+
+def test_tags_make_one_clip_per_range(sheet: Any) -> None:
+    clips = Clip.tags(sheet, (4, 1), {"idle": (0, 0), "run": (1, 3)}, fps=10)
+    assert [len(c.frames) for c in clips.values()] == [1, 3]
+    assert [f.index for f in clips["run"].frames] == [1, 2, 3]
+    with pytest.raises(ValidationError, match=r"Clip.tags\['bad'\]: last frame 0 < first 2"):
+        Clip.tags(sheet, (4, 1), {"bad": (2, 0)})
+    with pytest.raises(ValidationError, match="frame 4 is outside the 4x1 sheet"):
+        Clip.tags(sheet, (4, 1), {"far": (3, 4)})
+
+
+def test_bad_gifs_are_refused_with_the_file_named(tmp_path: Path) -> None:
+    with pytest.raises(ValidationError, match="cannot read the file"):
+        gif_clip(str(tmp_path / "missing.gif"))
+    png = tmp_path / "still.png"
+    from PIL import Image
+
+    Image.new("RGB", (4, 4)).save(png)
+    with pytest.raises(ValidationError, match="the file is a PNG, not a GIF"):
+        gif_clip(str(png))
+    (tmp_path / "junk.gif").write_bytes(b"not an image")
+    with pytest.raises(ValidationError, match="not an image Pillow can read"):
+        gif_clip(str(tmp_path / "junk.gif"))

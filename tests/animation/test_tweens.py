@@ -288,3 +288,15 @@ def test_finished_rows_are_compacted_and_the_rest_keep_going() -> None:
     assert ys[0] == pytest.approx(1.0) and ys[1] == pytest.approx(0.8)
     _run(w, 0.5, 2)
     assert all(h.done for h in handles) and all(w.get(e, Transform).y == 2.0 for e in long)
+
+
+def test_text_colour_and_size_tween() -> None:
+    from kge import Text
+
+    w, tweens = _world()
+    e = w.spawn(Transform(), Text("hi", size=10.0, color=(0, 0, 0, 255)))
+    tweens.start(e, Parallel(Tween(Text, "color", (255, 255, 255, 0), 1.0),
+                             Tween(Text, "size", 20.0, 1.0, ease="quad_in")))
+    _run(w, 0.5)
+    t = w.get(e, Text)
+    assert t.color == (128, 128, 128, 128) and t.size == pytest.approx(12.5)
