@@ -39,8 +39,7 @@ class _Counter(Script):
 
 @sample("Animation", "Walk Cycle",
         help="A walk cycle cut from a sprite sheet, walking to and fro (a tween) "
-             "with footstep events on frames 0 and 4.",
-        camera=(0.0, 1.0, 2.0))
+             "with footstep events on frames 0 and 4.")
 def walk_cycle(world: World, walkers: int = 3) -> None:
     sheet = as_image(walk_sheet())
     walk = Clip.grid(sheet, (8, 1), fps=12, events={0: "step", 4: "step"})
@@ -101,7 +100,7 @@ def _coin_file() -> str:
 
 
 @sample("Animation", "GIF", help="Spinning coins played from an animated GIF with the file's "
-        "own frame delays; each coin at its own speed.", camera=(0.0, 0.0, 2.0))
+        "own frame delays; each coin at its own speed.")
 def gif(world: World, coins: int = 5) -> None:
     path = _coin_file()
     clip = gif_clip(path)
@@ -121,8 +120,7 @@ def _gif_timing(app: Any) -> None:
 
 
 @sample("Animation", "Easing Gallery",
-        help="Every easing (31 curves) moving a dot from left to right and back, in rows.",
-        camera=(0.0, 0.0, 0.75))
+        help="Every easing (31 curves) moving a dot from left to right and back, in rows.")
 def easing_gallery(world: World) -> None:
     tweens = world.resource(Tweens)
     cols = 4
@@ -165,8 +163,7 @@ class _SpaceShakes(Script):
 
 @sample("Animation", "Camera Shake",
         help="Boxes drop onto the ground; every hard landing adds trauma to a camera shake "
-             "that decays smoothly. Space: shake.", keys={"Space": "shake"},
-        camera=(0.0, 4.0, 1.0))
+             "that decays smoothly. Space: shake.", keys={"Space": "shake"})
 def camera_shake(world: World, boxes: int = 6) -> None:
     static_box(world, 0.0, -0.5, 12.0, 0.5, name="ground")
     for i in range(boxes):
