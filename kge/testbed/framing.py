@@ -75,9 +75,9 @@ def _drawn_bounds(world: World) -> list[Rect]:
         r = math.hypot(w, h) / 2
         out.append((t.x - r, t.y - r, t.x + r, t.y + r))
     for dtype in DRAWABLE_TYPES:
-        for _, (t, d) in world.query(Transform, dtype):
-            reach = _reach(d)
-            out.append((t.x - reach, t.y - reach, t.x + reach, t.y + reach))
+        for _, (tf, drawn) in world.query(Transform, dtype):
+            reach = _reach(drawn)
+            out.append((tf.x - reach, tf.y - reach, tf.x + reach, tf.y + reach))
     return out
 
 
