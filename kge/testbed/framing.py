@@ -75,7 +75,8 @@ def _drawn_bounds(world: World) -> list[Rect]:
         r = math.hypot(w, h) / 2
         out.append((t.x - r, t.y - r, t.x + r, t.y + r))
     for dtype in DRAWABLE_TYPES:
-        for _, (tf, drawn) in world.query(Transform, dtype):
+        found: list[tuple[int, tuple[Transform, object]]] = world.query(Transform, dtype)
+        for _, (tf, drawn) in found:
             reach = _reach(drawn)
             out.append((tf.x - reach, tf.y - reach, tf.x + reach, tf.y + reach))
     return out
