@@ -16,6 +16,10 @@ bench:
 	@tools/bootstrap.sh
 	@$(PY) -c "import Box2D" 2>/dev/null || $(PY) -m pip install -q -e ".[bench]" || \
 	  echo "make bench: could not install pybox2d (box2d 2.3.10); its column is skipped"
+	@# Arcade 3 pins pymunk 6.9 (kge needs 7.3): its animation row runs in a venv of its own
+	@[ -x .venv-arcade/bin/python ] || { python3 -m venv .venv-arcade && \
+	  .venv-arcade/bin/python -m pip install -q "arcade>=3,<4"; } || \
+	  echo "make bench: could not make .venv-arcade (Arcade 3); its animation column is skipped"
 	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m kge bench --breakdown $(BENCH_ARGS)
 
 lint:

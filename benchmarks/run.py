@@ -100,7 +100,8 @@ def _median(results: list[Result], scene: str, size: int, engine: str) -> float 
 
 def targets(results: list[Result], fitting: dict[str, dict[str, float]],
             render: dict[int, dict[str, float]],
-            rl: list[dict[str, Any]] | None = None) -> list[dict[str, Any]]:
+            rl: list[dict[str, Any]] | None = None,
+            animation: dict[int, dict[str, float]] | None = None) -> list[dict[str, Any]]:
     """The issue's targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
 
@@ -130,6 +131,15 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
 
     add("LunarLander steps/s, kge batched / pybox2d SyncVectorEnv, N = 64 (one core)",
         rl_ratio(rl or [], 64), 1.0, False)
+    anim = animation[max(animation)] if animation else {}
+    add("animated sprites per sprite and frame (advance + tex coords + upload, largest N)",
+        anim.get("kge_total"), 0.3, True, "µs")
+    add("pyglet animated Sprite / kge per animated sprite (largest N)",
+        anim["pyglet_sprite"] / anim["kge_total"] if anim else None, 10.0, False)
+    add("Arcade TextureAnimationSprite / kge per animated sprite (largest N)",
+        anim["arcade_sprite"] / anim["kge_total"] if "arcade_sprite" in anim else None,
+        10.0, False)
+    add("live tweens per tween and frame (largest N)", anim.get("tweens"), 0.5, True, "µs")
     return rows
 
 
@@ -215,6 +225,29 @@ def run_render(sizes: tuple[int, ...], repeats: int, progress: Progress
         return {}, f"render sync skipped: {type(err).__name__}: {err}"
 
 
+def run_animation(sizes: tuple[int, ...], repeats: int, progress: Progress
+                  ) -> tuple[dict[int, dict[str, float]], str | None]:
+    """Animated sprites and tweens, µs per item and frame, or why it could not run."""
+    try:
+        from benchmarks.animation import measure as animation_measure
+
+        out = {}
+        for n in sizes:
+            progress(f"animation [{n} sprites, {n} tweens]")
+            out[n] = animation_measure(n, repeats)
+    except Exception as err:  # no GL: report, do not fail the run
+        return {}, f"animation skipped: {type(err).__name__}: {err}"
+    from benchmarks.animation import measure_arcade
+
+    try:
+        progress("animation [Arcade 3, its own venv]")
+        for n, us in measure_arcade(sizes, repeats).items():
+            out[n]["arcade_sprite"] = us
+    except (OSError, RuntimeError, ValueError) as err:
+        return out, f"Arcade animation column skipped: {err}"
+    return out, None
+
+
 def render_table(render: dict[int, dict[str, float]]) -> str:
     cols = ("blend", "bulk_write", "kge_sync", "record", "sprite_update", "frame")
     lines = [f"{'sprites':>8}" + "".join(f"{c:>15}" for c in cols)]
@@ -263,6 +296,20 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         for n, r in sorted(report["render"].items(), key=lambda kv: int(kv[0])):
             out.append(f"| {n} | {r['blend']:.3f} | {r['bulk_write']:.3f} | {r['kge_sync']:.3f}"
                        f" | {r['record']:.3f} | {r['sprite_update']:.3f} | {r['frame']:.3f} |")
+    if report.get("animation"):
+        out += ["", "Animation, µs per item and frame (median; kge = numpy advance + bulk "
+                "texture-coordinate write + GPU upload; pyglet = its animated `Sprite` on a "
+                "clock; every sprite changes frame every frame):", "",
+                "| N | advance | tex coords | upload | kge total | pyglet Sprite | pyglet/kge "
+                "| Arcade 3 | Arcade/kge | tweens |",
+                "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        for n, r in sorted(report["animation"].items(), key=lambda kv: int(kv[0])):
+            arc = r.get("arcade_sprite")
+            arcade_cells = "- | -" if arc is None else f"{arc:.3f} | {arc / r['kge_total']:.0f}"
+            out.append(f"| {n} | {r['advance']:.3f} | {r['texcoords']:.3f} | {r['upload']:.3f}"
+                       f" | {r['kge_total']:.3f} | {r['pyglet_sprite']:.3f}"
+                       f" | {r['pyglet_sprite'] / r['kge_total']:.0f} | {arcade_cells}"
+                       f" | {r['tweens']:.3f} |")
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -349,6 +396,18 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(missing)
         print("\nGymnasium LunarLander, env steps per second (one process):")
         print(rl_table(rl))
+    animation: dict[int, dict[str, float]] = {}
+    if not args.no_render and not args.scene:
+        animation, why = run_animation((200,) if args.quick else (1000, 10000),
+                                       2 if args.quick else 9, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        if animation:
+            from benchmarks.animation import table as animation_table
+
+            print("\nanimation, µs per sprite (tween) and frame (median):")
+            print(animation_table(animation))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -363,7 +422,7 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
-    goals = targets(results, fitting, render, rl)
+    goals = targets(results, fitting, render, rl, animation)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -378,6 +437,7 @@ def main(argv: list[str] | None = None) -> int:
         "results": [r.as_dict() for r in results],
         "largest_fitting": fitting,
         "render": {str(n): r for n, r in render.items()},
+        "animation": {str(n): r for n, r in animation.items()},
         "breakdown": rows,
         "collision": collision,
         "rl": rl,

@@ -37,9 +37,12 @@ from kge import (
     Name,
     RigidBody,
     Script,
+    Sequence,
     Sprite,
     Text,
     Transform,
+    Tween,
+    Tweens,
     Wait,
     World,
 )
@@ -72,6 +75,12 @@ class Score(Script):
     def add(self) -> None:
         self.points += 1
         self.get(Text).value = str(self.points)
+        self.world.resource(Tweens).start(self.entity, SCORE_POP)  # the number pops
+
+
+#: a point scored: the score grows quickly, then bounces back to its size
+SCORE_POP = Sequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
+                     Tween(Text, "size", 15.0, 0.35, ease="bounce_out"), name="score-pop")
 
 
 class PlayerPaddle(Script):

@@ -24,12 +24,14 @@ import kge_required  # noqa: F401  (first: names the Python to use when kge is m
 
 import kge
 from kge import (
+    Animator,
     App,
     Assets,
     Audio,
     Behaviour,
     Chain,
     Circle,
+    Clip,
     Collider,
     Input,
     Key,
@@ -45,6 +47,7 @@ from kge import (
     draw,
 )
 from kge.physics.events import PhysicsEvents
+from kge.systems.animation import shake
 
 ASSETS = Assets(anchor=__file__)
 
@@ -178,6 +181,9 @@ class Referee(Script):
     def kill(self, enemy: int, shot: int) -> None:
         if not (self.world.exists(enemy) and self.world.exists(shot)):
             return
+        t = self.world.get(enemy, Transform)
+        explode(self.world, t.x, t.y)
+        shake(self.world, 0.3)  # the camera shakes on a hit
         _despawn(self.world, enemy)
         _despawn(self.world, shot)
         self.world.resource(Audio).play("explosion.wav", volume=0.2)
@@ -188,6 +194,9 @@ class Referee(Script):
     def lose(self, ship: int) -> None:
         if not self.world.exists(ship):
             return
+        t = self.world.get(ship, Transform)
+        explode(self.world, t.x, t.y, size=2.0)
+        shake(self.world, 0.8)
         _despawn(self.world, ship)
         for _, (beh,) in self.world.query(Behaviour):
             if isinstance(beh.script, Spawner):
@@ -197,6 +206,38 @@ class Referee(Script):
                          Name("game-over"))
         self.world.spawn(Transform(0.0, -0.7), Text("PRESS R TO RESTART", size=20, bold=True,
                                                     color=BLUE), Name("game-over"))
+
+
+# -- animation: explosions and the thruster, cut from generated sheets ---------------------
+EXPLOSION = Clip.grid("explosion_sheet.png", (8, 1), fps=20, loop="once")
+THRUSTER = Clip.grid("thruster.png", (4, 1), duration=[0.06, 0.05, 0.07, 0.05])
+
+
+class Blast(Script):
+    """An explosion that removes itself when its clip ends."""
+
+    def on_animation_end(self, event: object) -> None:
+        self.despawn()
+
+
+def explode(world: World, x: float, y: float, size: float = 1.2) -> int:
+    return world.spawn(Transform(x, y), Sprite("explosion_sheet.png", size=(size, size), layer=2),
+                       Animator({"boom": EXPLOSION}), Behaviour(Blast()), Name("explosion"))
+
+
+class Thruster(Script):
+    """A flame behind the ship, turning with it (and gone with it)."""
+
+    def on_late_update(self, dt: float) -> None:
+        ships = self.world.query(ShipTag, Transform)
+        if not ships:
+            self.despawn()
+            return
+        ship = ships[0][1][1]
+        back = SHIP_RADIUS * 1.1  # the ship art points along +y of its angle
+        self.transform.x = ship.x + math.sin(ship.angle) * back
+        self.transform.y = ship.y - math.cos(ship.angle) * back
+        self.transform.angle = ship.angle
 
 
 def _kind(world: World, entity: int) -> str:
@@ -248,6 +289,8 @@ def game(world: World, seed: int | None = None) -> None:
         Behaviour(Ship()),
         Name("ship"),
     )
+    world.spawn(Transform(0.0, -SHIP_RADIUS), Sprite("thruster.png", size=(0.45, 0.45), layer=0),
+                Animator({"flame": THRUSTER}), Behaviour(Thruster()), Name("thruster"))
     f = FRAME_HALF
     world.spawn(Transform(), Collider(Chain([(-f, -f), (f, -f), (f, f), (-f, f)], loop=True),
                                       sensor=True), Name("frame"))

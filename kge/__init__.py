@@ -12,6 +12,16 @@ from typing import TYPE_CHECKING, Any
 
 import kge.dependencies  # noqa: F401  (first: a missing dependency is named, with the venv to use)
 from kge import collision as collision  # Box2D's collision module, no World needed
+from kge.animation import (
+    AnimationEvent,
+    AnimationEvents,
+    AnimationFinished,
+    TweenFinished,
+    TweenHandle,
+    Tweens,
+    ease,
+    gif_clip,
+)
 from kge.app import App, run
 from kge.components import (
     Behaviour,
@@ -42,11 +52,14 @@ from kge.components import (
     WheelJoint,
 )
 from kge.components import drawables as draw
+from kge.components.animation import Animator, Clip, FrameRef, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
+from kge.components.tween import Delay, Parallel, Sequence, Tween
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
@@ -90,6 +103,7 @@ if TYPE_CHECKING:
     from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
     from kge.audio import Audio, SoundHandle
     from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.render import RenderPlugin
 
@@ -106,6 +120,9 @@ _LAZY = {
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
     "AudioPlugin": "kge.systems.audio",
+    "AnimationPlugin": "kge.systems.animation",
+    "Animations": "kge.systems.animation",
+    "shake": "kge.systems.animation",
     "RenderPlugin": "kge.systems.render",
 }
 
@@ -121,6 +138,12 @@ def __getattr__(name: str) -> Any:
 __version__ = "2.0.0a1"
 
 __all__ = [
+    "AnimationEvent",
+    "AnimationEvents",
+    "AnimationFinished",
+    "AnimationPlugin",
+    "Animations",
+    "Animator",
     "App",
     "AssetDecodeError",
     "AssetError",
@@ -135,19 +158,23 @@ __all__ = [
     "BodyType",
     "Box",
     "Camera",
+    "CameraShake",
     "Chain",
     "Circle",
+    "Clip",
     "Collider",
     "ComponentTypeError",
     "ContactBegin",
     "ContactEnd",
     "Coroutine",
     "DebugDraw",
+    "Delay",
     "DistanceJoint",
     "Edge",
     "EntityNotFoundError",
     "Filter",
     "FixedTimestep",
+    "FrameRef",
     "FrictionJoint",
     "FunctionPlugin",
     "GearJoint",
@@ -171,6 +198,7 @@ __all__ = [
     "MouseJoint",
     "Name",
     "OneWayPlatform",
+    "Parallel",
     "Physics",
     "PhysicsEvents",
     "PhysicsPlugin",
@@ -193,6 +221,7 @@ __all__ = [
     "Script",
     "SensorBegin",
     "SensorEnd",
+    "Sequence",
     "SoundData",
     "SoundHandle",
     "Sprite",
@@ -201,6 +230,11 @@ __all__ = [
     "Text",
     "Time",
     "Transform",
+    "Transition",
+    "Tween",
+    "TweenFinished",
+    "TweenHandle",
+    "Tweens",
     "ValidationError",
     "Wait",
     "WaitFrames",
@@ -211,8 +245,11 @@ __all__ = [
     "checker",
     "default_plugins",
     "draw",
+    "ease",
     "from_array",
+    "gif_clip",
     "has_display",
     "run",
+    "shake",
     "solid",
 ]

@@ -5,7 +5,9 @@ yields decides when it resumes:
 
 * ``None``: next frame;
 * ``Wait(seconds)``: after that much *game* time (scaled by ``time_scale``);
-* ``WaitFrames(n)``: after n frames.
+* ``WaitFrames(n)``: after n frames;
+* anything with an ``is_done()`` method, such as the handle of a tween
+  (``yield tweens.start(e, spec)``): once ``is_done()`` is true, checked each frame.
 
 It runs in the update pass, after ``on_update``, and stops for good when it
 returns, when ``handle.stop()`` is called, or when its entity or scene goes away.
@@ -45,7 +47,7 @@ class WaitFrames:
 class Coroutine:
     """A running coroutine; ``stop()`` ends it."""
 
-    __slots__ = ("_frames_left", "_time_left", "done", "entity", "gen")
+    __slots__ = ("_frames_left", "_time_left", "_until", "done", "entity", "gen")
 
     def __init__(self, entity: int, gen: Generator[Any, None, Any]) -> None:
         if not isinstance(gen, Generator):
@@ -57,6 +59,7 @@ class Coroutine:
         self.gen = gen
         self._time_left = 0.0
         self._frames_left = 0
+        self._until: Any = None
         self.done = False
 
     def stop(self) -> None:
@@ -68,7 +71,11 @@ class Coroutine:
         """Advance by one frame of ``dt`` seconds; resume the generator when due."""
         if self.done:
             return
-        if self._frames_left > 0:
+        if self._until is not None:
+            if not self._until.is_done():
+                return
+            self._until = None
+        elif self._frames_left > 0:
             self._frames_left -= 1
             if self._frames_left > 0:
                 return
@@ -93,9 +100,11 @@ class Coroutine:
                 self._frames_left = 1
         elif isinstance(order, WaitFrames):
             self._frames_left = max(order.frames, 1)
+        elif callable(getattr(order, "is_done", None)):
+            self._until = order
         else:
             self.stop()
             raise TypeError(
                 f"coroutine of entity {self.entity} yielded {order!r}; "
-                "yield None, Wait(seconds) or WaitFrames(n)"
+                "yield None, Wait(seconds), WaitFrames(n) or a handle with is_done() (a tween)"
             )

@@ -5,6 +5,7 @@
 ``PhysicsPlugin``      Box2D-style physics on pymunk, contact events, joints, queries
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
+``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -20,9 +21,10 @@ from kge.plugin import Plugin
 
 def default_plugins() -> list[Plugin]:
     """A fresh instance of every default plugin, in build order."""
+    from kge.systems.animation import AnimationPlugin
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
 
-    return [BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin()]
+    return [BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin(), AnimationPlugin()]

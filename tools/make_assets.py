@@ -4,15 +4,19 @@
     python tools/make_assets.py --out DIR
 
 Every file is a pure function of this script: PNGs come from a tiny zlib PNG
-writer below (no pyglet, no PIL), WAVs from :mod:`kge.sound` through the
-``wave`` module. Output is deterministic (seeded noise, no timestamps), so
-re-running it leaves the committed files byte-identical.
+writer below (no pyglet, no PIL), the GIF from Pillow's encoder, WAVs from
+:mod:`kge.sound` through the ``wave`` module. Output is deterministic (seeded
+noise, no timestamps), so re-running it leaves the committed files byte-identical.
 
 Pong: ``pad_left.png`` (red), ``pad_right.png`` (blue), ``ball.png``,
 ``background.png``; ``paddle_hit.wav``, ``wall_hit.wav``, ``score.wav``,
 ``music_loop.wav``.
 Shooter: ``ship.png``, ``enemy.png``, ``laser.png``; ``laser.wav``,
 ``explosion.wav``, ``death.wav`` (and the shared ``music_loop.wav``).
+Animation (sheets, one row of frames each): ``hero_walk.png`` (8 frames of
+32x32, a walk cycle), ``explosion_sheet.png`` (8 frames of 32x32),
+``thruster.png`` (4 frames of 16x16); ``coin.gif`` (a spinning coin, 8 frames
+with their own delays).
 """
 
 from __future__ import annotations
@@ -24,12 +28,14 @@ import sys
 import zlib
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # run from a checkout without installing kge
     sys.path.insert(0, str(ROOT))
 
 from kge.sound import SoundData, melody, mix, silence, tone  # noqa: E402
+from kge.testbed.art import SHEETS, coin_gif  # noqa: E402
 
 RGBA = tuple[int, int, int, int]
 Pixel = Callable[[float, float], RGBA]
@@ -137,7 +143,15 @@ def images() -> dict[str, bytes]:
         "ship.png": png_bytes(64, 64, glow((120, 200, 255), polygon(ship), 4)),
         "enemy.png": png_bytes(48, 48, glow((120, 255, 120), polygon(enemy), 4)),
         "laser.png": png_bytes(8, 24, glow((255, 80, 200), rounded_bar(8, 24, 2), 2)),
+        **{name: png_bytes(*_array_pixels(make())) for name, make in SHEETS.items()},
+        "coin.gif": coin_gif(),
     }
+
+
+def _array_pixels(arr: Any) -> tuple[int, int, Pixel]:
+    """An (h, w, 4) RGBA array (rows top-down) as ``png_bytes`` arguments."""
+    h, w = arr.shape[:2]
+    return w, h, lambda x, y: tuple(int(v) for v in arr[int(y), int(x)])  # type: ignore[return-value]
 
 
 # -- WAV ------------------------------------------------------------------------------

@@ -19,6 +19,9 @@ on_hit                 (event)           an impact above the hit threshold
 on_key_down/up         (key)             a key code from :mod:`kge.keys`
 on_mouse_down/up/move  (event)           a :class:`kge.input.MouseEvent`
 on_mouse_scroll        (event)
+on_animation_event     (event)           a named frame of a clip was entered
+on_animation_end       (event)           a once/hold clip finished
+on_tween_end           (event)           a tween started on this entity ended
 =====================  ================  =======================================
 
 >>> class Spin(Script):
@@ -69,6 +72,9 @@ HOOKS: dict[str, tuple[int, str]] = {
     "on_mouse_up": (1, "on_mouse_up(event)"),
     "on_mouse_move": (1, "on_mouse_move(event)"),
     "on_mouse_scroll": (1, "on_mouse_scroll(event)"),
+    "on_animation_event": (1, "on_animation_event(event)"),
+    "on_animation_end": (1, "on_animation_end(event)"),
+    "on_tween_end": (1, "on_tween_end(event)"),
 }
 
 _hook_cache: dict[type, tuple[str, ...]] = {}

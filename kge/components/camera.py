@@ -17,7 +17,10 @@ inserted as a resource so ``world.resource(Camera)`` can change it.
 the target's position, all the way when ``smoothing`` is 0, otherwise with that
 time constant in seconds (``1 - exp(-dt / smoothing)`` of the way per frame, so
 it behaves the same at any frame rate). ``bounds=(min_x, min_y, max_x, max_y)``
-keeps the visible area inside the level.
+keeps the visible area inside the level. ``dead_zone=(w, h)`` (metres) lets the
+target move inside a box around the centre without moving the camera (it moves
+once the target leaves the box, by just enough); ``look_ahead`` (seconds) aims
+ahead of a moving target by its velocity times that time.
 
 >>> cam = Camera(center=(2.0, 1.0), pixels_per_meter=50, zoom=2)
 >>> cam.world_to_screen((3.0, 1.0), (800, 600))
@@ -57,6 +60,13 @@ def _entity(value: Any, owner: str, field: str) -> int | None:
     return value
 
 
+def _dead_zone(value: Any, owner: str, field: str) -> Vec2:
+    w, h = vec2(value, owner, field)
+    non_negative(w, owner, f"{field}[0]")
+    non_negative(h, owner, f"{field}[1]")
+    return (w, h)
+
+
 def _bounds(value: Any, owner: str, field: str) -> Bounds | None:
     if value is None:
         return None
@@ -79,6 +89,8 @@ class Camera(Tracked):
         "follow": _entity,
         "smoothing": non_negative,
         "bounds": _bounds,
+        "dead_zone": _dead_zone,
+        "look_ahead": non_negative,
     }
 
     center: Vec2 = (0.0, 0.0)
@@ -87,6 +99,8 @@ class Camera(Tracked):
     follow: int | None = None
     smoothing: float = 0.0
     bounds: Bounds | None = None
+    dead_zone: Vec2 = (0.0, 0.0)
+    look_ahead: float = 0.0
 
     @property
     def scale(self) -> float:
@@ -134,13 +148,35 @@ class Camera(Tracked):
 
         return (clamp(center[0], x0, x1, hw), clamp(center[1], y0, y1, hh))
 
-    def track(self, target: Vec2, dt: float, viewport: tuple[float, float] | None = None) -> None:
+    def track(
+        self,
+        target: Vec2,
+        dt: float,
+        viewport: tuple[float, float] | None = None,
+        velocity: Vec2 = (0.0, 0.0),
+    ) -> None:
         """Move the centre towards ``target`` for a frame of ``dt`` seconds (follow logic).
 
         >>> cam = Camera(smoothing=0.5)
         >>> cam.track((10.0, 0.0), dt=0.5); round(cam.center[0], 3)
         6.321
+        >>> cam = Camera(dead_zone=(4.0, 2.0))
+        >>> cam.track((1.5, 0.5), dt=0.1); cam.center
+        (0.0, 0.0)
+        >>> cam.track((3.0, 0.0), dt=0.1); cam.center
+        (1.0, 0.0)
         """
+        aim = (target[0] + velocity[0] * self.look_ahead, target[1] + velocity[1] * self.look_ahead)
+        hw, hh = self.dead_zone[0] / 2, self.dead_zone[1] / 2
+        if hw > 0 or hh > 0:
+            cx0, cy0 = self.center
+
+            def edge(a: float, c: float, half: float) -> float:
+                return a - half if a > c + half else a + half if a < c - half else c
+
+            target = (edge(aim[0], cx0, hw), edge(aim[1], cy0, hh))
+        else:
+            target = aim
         if self.smoothing <= 0 or dt <= 0:
             k = 1.0 if self.smoothing <= 0 else 0.0
         else:

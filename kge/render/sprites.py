@@ -36,6 +36,11 @@ class SpriteStore:
         self.sprites: dict[int, Any] = {}
         self._keys: dict[int, tuple[Any, Any]] = {}  # entity -> (texture id, group)
         self._rows: dict[int, int] = {}
+        #: ``fn(entity) -> (texture, (x, y, w, h)) | None``: where an entity's pixels come
+        #: from when not from ``Sprite.image`` (animated sprites draw from an atlas)
+        self.frame_source: Any = None
+        #: bumped when a pyglet sprite is created or deleted (bulk writers re-index then)
+        self.version = 0
 
     def __len__(self) -> int:
         return len(self.sprites)
@@ -43,8 +48,12 @@ class SpriteStore:
     def sync(self, entity: int, comp: Sprite, transform: Any, ppm: float) -> None:
         """Create or update the pyglet sprite of ``entity`` from its component."""
         try:
-            tex = self.textures.texture(comp.image)
-            x, y, w, h = comp.frame_rect(tex.width, tex.height)
+            source = None if self.frame_source is None else self.frame_source(entity)
+            if source is None:
+                tex = self.textures.texture(comp.image)
+                x, y, w, h = comp.frame_rect(tex.width, tex.height)
+            else:
+                tex, (x, y, w, h) = source
         except (KgeError, OSError) as exc:  # unknown asset, undecodable file, bad region
             raise ValidationError(f"entity {entity}, Sprite.image {comp.image!r}: {exc}") from exc
         region = tex.get_region(x, y, w, h)
@@ -63,6 +72,7 @@ class SpriteStore:
                 self.poser.remove(entity)
                 ps.delete()
             ps = pyglet.sprite.Sprite(region, batch=self.batch, group=group, subpixel=True)
+            self.version += 1
             self.sprites[entity] = ps
             self._keys[entity] = key
         ps.color = (*comp.tint, comp.opacity)
@@ -88,6 +98,7 @@ class SpriteStore:
         self.poser.remove(entity)
         self._keys.pop(entity, None)
         ps.delete()
+        self.version += 1
         if self._rows.pop(entity, None) is not None:
             self.poses.release(entity)
 

@@ -22,6 +22,7 @@ from typing import Any
 
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
 from kge.components.transform import Transform
 from kge.errors import DisplayError, where
@@ -98,7 +99,12 @@ class CameraFollow(System):
                 continue
             t = world.try_get(cam.follow, Transform)
             if t is not None:
-                cam.track((t.x, t.y), dt, viewport)
+                velocity = (0.0, 0.0)
+                if cam.look_ahead > 0:
+                    rb = world.try_get(cam.follow, RigidBody)
+                    if rb is not None:
+                        velocity = rb.velocity
+                cam.track((t.x, t.y), dt, viewport, velocity)
 
 
 class DebugKeys(System):

@@ -3,7 +3,8 @@
 Each sample gets its own camera: after its setup, the world AABB of its colliders is
 fitted into the part of the window the sample list and the help text leave free.
 Static colliders much larger than the rest (a 200 m floor) are left out of the fit,
-so the view shows the action rather than the whole ground.
+so the view shows the action rather than the whole ground. A sample with no collider
+(sprites, shape drawables: the animation samples) is fitted to those instead.
 """
 
 from __future__ import annotations
@@ -14,8 +15,10 @@ import numpy as np
 
 from kge.components.camera import Camera
 from kge.components.collider import Collider
+from kge.components.drawables import DRAWABLE_TYPES
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Circle
+from kge.components.sprite import Sprite
 from kge.components.transform import Transform
 from kge.render.geometry import circle_points, shape_polyline
 from kge.testbed.registry import Sample
@@ -57,11 +60,37 @@ def scene_bounds(world: World) -> Rect | None:
         static = world.try_get(body, RigidBody) is None
         big = r[2] - r[0] > HUGE or r[3] - r[1] > HUGE
         (huge if static and big else kept).append(r)
-    rects = kept or huge
+    rects = kept or huge or _drawn_bounds(world)
     if not rects:
         return None
     a = np.array(rects)
     return (float(a[:, 0].min()), float(a[:, 1].min()), float(a[:, 2].max()), float(a[:, 3].max()))
+
+
+def _drawn_bounds(world: World) -> list[Rect]:
+    """Rough AABBs of sprites (their size, else 1 m) and drawables (their local points)."""
+    out: list[Rect] = []
+    for _, (t, sp) in world.query(Transform, Sprite):
+        w, h = sp.size if sp.size is not None else (1.0, 1.0)
+        r = math.hypot(w, h) / 2
+        out.append((t.x - r, t.y - r, t.x + r, t.y + r))
+    for dtype in DRAWABLE_TYPES:
+        found: list[tuple[int, tuple[Transform, object]]] = world.query(Transform, dtype)
+        for _, (tf, drawn) in found:
+            reach = _reach(drawn)
+            out.append((tf.x - reach, tf.y - reach, tf.x + reach, tf.y + reach))
+    return out
+
+
+def _reach(d: object) -> float:
+    """How far a drawable reaches from its entity's origin (metres)."""
+    pts = [getattr(d, name) for name in ("start", "end", "a", "b", "c") if hasattr(d, name)]
+    pts += list(getattr(d, "vertices", ()))
+    reach = max((math.hypot(*p) for p in pts), default=0.0)
+    for name in ("radius", "width", "height"):
+        reach = max(reach, float(getattr(d, name, 0.0)))
+    ox, oy = getattr(d, "offset", (0.0, 0.0))
+    return reach + math.hypot(ox, oy)
 
 
 def fit_camera(bounds: Rect, size: tuple[int, int], free: Rect, margin: float = 0.08) -> Camera:

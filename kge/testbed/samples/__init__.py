@@ -1,6 +1,7 @@
 """Every sample module; importing this package registers them all."""
 
 from kge.testbed.samples import (  # noqa: F401
+    animation,
     basics,
     bodies,
     collision,

@@ -1,0 +1,280 @@
+"""Every animator's playback state in numpy arrays, advanced in one pass per frame.
+
+Why: a scene may hold thousands of animated sprites. Keeping their time and
+frame in per-entity Python objects would cost a Python call each per frame;
+here one row per animator lives in flat arrays and :meth:`ClipState.advance`
+moves them all with a handful of numpy operations:
+
+* every clip used is registered once in a :class:`ClipTable`: its frames are
+  laid end to end in global arrays (``ping_pong`` clips expanded to
+  0..n-1..1 so they are plain loops), with each frame's *end* time offset by
+  the clip's base, so the frame shown at clip time ``t`` for all rows at once is
+  one ``np.searchsorted(frame_end, base[clip] + t)``;
+* each row's time is the clip time since it started, scaled by the animator's
+  and the clip's speed; loops wrap it, ``once``/``hold`` clips finish;
+* frame events and finished events are found by counting crossings of the
+  frames' start times between the previous and the new time, so a long frame
+  (a slow machine, a large time scale) never skips an event.
+
+Frames are identified by *source ids* (one per distinct :class:`FrameRef`), which
+the renderer maps to atlas texture coordinates; this module needs no GL.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from kge.components.animation import Clip, FrameRef
+
+#: time slack: a frame due at exactly t (summed fixed steps land 1e-16 short) shows at t
+EPS = 1e-9
+MODES = {"loop": 0, "ping_pong": 0, "once": 1, "hold": 2}
+LOOP, ONCE, HOLD = 0, 1, 2
+
+
+@dataclass(slots=True)
+class ClipInfo:
+    """One registered clip: its slot, expanded frame order and events."""
+
+    slot: int
+    clip: Clip
+    order: list[int]  # expanded frame order (original frame indices)
+    #: (start time inside the clip, original frame, event name), expanded
+    events: list[tuple[float, int, str]]
+
+
+class ClipTable:
+    """Registered clips and frame sources, as flat numpy arrays (see the module docstring)."""
+
+    def __init__(self) -> None:
+        self.sources: list[FrameRef] = []
+        self._source_ids: dict[FrameRef, int] = {}
+        self.infos: list[ClipInfo] = []
+        self._by_id: dict[int, ClipInfo] = {}
+        self._keep: list[Clip] = []
+        self._ends: list[float] = []
+        self._src: list[int] = []
+        self._orig: list[int] = []
+        self._first: list[int] = []
+        self._len: list[int] = []
+        self._total: list[float] = []
+        self._base: list[float] = []
+        self._mode: list[int] = []
+        self._speed: list[float] = []
+        self._variant: list[int] = []
+        self._has_events: list[bool] = []
+        self._next_base = 0.0
+        self.version = 0
+        self._arrays()
+
+    def _arrays(self) -> None:
+        self.frame_end = np.array(self._ends, float)
+        self.frame_src = np.array(self._src, np.intp)
+        self.frame_orig = np.array(self._orig, np.intp)
+        self.first = np.array(self._first, np.intp)
+        self.length = np.array(self._len, np.intp)
+        self.total = np.array(self._total, float)
+        self.base = np.array(self._base, float)
+        self.mode = np.array(self._mode, np.int8)
+        self.speed = np.array(self._speed, float)
+        self.variant = np.array(self._variant, np.intp)
+        self.has_events = np.array(self._has_events, bool)
+
+    def source_id(self, ref: FrameRef) -> int:
+        sid = self._source_ids.get(ref)
+        if sid is None:
+            sid = self._source_ids[ref] = len(self.sources)
+            self.sources.append(ref)
+        return sid
+
+    def register(self, clip: Clip) -> ClipInfo:
+        """The slot of ``clip`` (registered on first use; clips are immutable)."""
+        info = self._by_id.get(id(clip))
+        if info is not None:
+            return info
+        n = len(clip.frames)
+        order = list(range(n))
+        if clip.loop == "ping_pong":
+            order += list(range(n - 2, 0, -1))
+        durs = [clip.durations[i] for i in order]
+        total = math.fsum(durs)
+        slot = len(self.infos)
+        starts = np.concatenate([[0.0], np.cumsum(durs)[:-1]])
+        named = dict(clip.events)
+        events = [(float(starts[j]), i, named[i]) for j, i in enumerate(order) if i in named]
+        info = ClipInfo(slot, clip, order, events)
+        self.infos.append(info)
+        self._by_id[id(clip)] = info
+        self._keep.append(clip)  # ids stay unique while the table lives
+        base = self._next_base
+        self._first.append(len(self._ends))
+        self._len.append(len(order))
+        acc = 0.0
+        for k, i in enumerate(order):
+            acc += durs[k]
+            self._ends.append(base + acc)
+            self._src.append(self.source_id(clip.frames[i]))
+            self._orig.append(i)
+        # the next clip's frames start well after this one's last end, so that a
+        # query just below ``base + total`` never lands in the next clip
+        self._next_base = base + total + 1.0 + total * 1e-9
+        self._total.append(total)
+        self._base.append(base)
+        self._mode.append(MODES[clip.loop])
+        self._speed.append(clip.speed)
+        self._variant.append(int(clip.flip_x) | (int(clip.flip_y) << 1))
+        self._has_events.append(bool(events))
+        self._arrays()
+        self.version += 1
+        return info
+
+
+@dataclass(slots=True)
+class Crossings:
+    """What one :meth:`ClipState.advance` found: frame events and finished rows."""
+
+    events: list[tuple[int, int, str, int]]  # (row, clip slot, name, original frame), ordered
+    finished: np.ndarray  # rows whose once/hold clip ended in this pass
+
+
+class ClipState:
+    """One row per animator (entity): clip slot, time, speed, flags, frame shown."""
+
+    def __init__(self, table: ClipTable) -> None:
+        self.table = table
+        self.rows: dict[int, int] = {}  # entity -> row
+        self.entity = np.zeros(0, np.int64)
+        self.clip = np.zeros(0, np.intp)
+        self.time = np.zeros(0, float)
+        self.speed = np.zeros(0, float)
+        self.playing = np.zeros(0, bool)
+        self.finished = np.zeros(0, bool)
+        self.fresh = np.zeros(0, bool)  # started since the last pass: frame 0's events due
+        self.shown = np.zeros(0, np.intp)  # global frame index shown
+        self.version = 0  # bumped when rows are added, removed or moved
+
+    def __len__(self) -> int:
+        return len(self.entity)
+
+    def add(self, entity: int) -> int:
+        row = self.rows.get(entity)
+        if row is not None:
+            return row
+        row = len(self.entity)
+        self.rows[entity] = row
+        self.entity = np.append(self.entity, entity)
+        self.clip = np.append(self.clip, 0)
+        self.time = np.append(self.time, 0.0)
+        self.speed = np.append(self.speed, 1.0)
+        self.playing = np.append(self.playing, False)
+        self.finished = np.append(self.finished, False)
+        self.fresh = np.append(self.fresh, False)
+        self.shown = np.append(self.shown, 0)
+        self.version += 1
+        return row
+
+    def add_many(self, entities: list[int]) -> None:
+        """Rows for many entities at once (a wave of spawns costs one concatenate)."""
+        new = [e for e in dict.fromkeys(entities) if e not in self.rows]
+        if not new:
+            return
+        n0, k = len(self.entity), len(new)
+        for i, e in enumerate(new):
+            self.rows[e] = n0 + i
+        self.entity = np.concatenate([self.entity, np.array(new, np.int64)])
+        self.clip = np.concatenate([self.clip, np.zeros(k, np.intp)])
+        self.time = np.concatenate([self.time, np.zeros(k)])
+        self.speed = np.concatenate([self.speed, np.ones(k)])
+        self.playing = np.concatenate([self.playing, np.zeros(k, bool)])
+        self.finished = np.concatenate([self.finished, np.zeros(k, bool)])
+        self.fresh = np.concatenate([self.fresh, np.zeros(k, bool)])
+        self.shown = np.concatenate([self.shown, np.zeros(k, np.intp)])
+        self.version += 1
+
+    def remove(self, entity: int) -> None:
+        """Drop ``entity``'s row (the last row moves into its place)."""
+        row = self.rows.pop(entity, None)
+        if row is None:
+            return
+        last = len(self.entity) - 1
+        arrays = ("entity", "clip", "time", "speed", "playing", "finished", "fresh", "shown")
+        if row != last:
+            moved = int(self.entity[last])
+            for name in arrays:
+                arr = getattr(self, name)
+                arr[row] = arr[last]
+            self.rows[moved] = row
+        for name in arrays:
+            setattr(self, name, getattr(self, name)[:last])
+        self.version += 1
+
+    def start(self, row: int, slot: int, *, stopped: bool = False) -> None:
+        """Row ``row`` plays clip ``slot`` from its first frame (``stopped``: shows it, still)."""
+        t = self.table
+        self.clip[row] = slot
+        self.time[row] = 0.0
+        self.finished[row] = stopped
+        self.fresh[row] = not stopped
+        self.shown[row] = t.first[slot]
+
+    def local_frame(self, row: int) -> int:
+        """The original frame index (inside its clip) shown by ``row``."""
+        return int(self.table.frame_orig[self.shown[row]])
+
+    def advance(self, dt: float) -> Crossings:
+        """Move every playing row by ``dt`` seconds of game time; see the module docstring."""
+        t = self.table
+        n = len(self.entity)
+        if n == 0 or not len(t.total):
+            return Crossings([], np.zeros(0, np.intp))
+        clip = self.clip
+        rate = np.where(self.playing & ~self.finished, self.speed * t.speed[clip], 0.0)
+        # crossings are counted in (before, after] shifted by EPS like the frame lookup;
+        # a fresh start counts from just below 0 so frame 0's events fire
+        before = np.where(self.fresh, -EPS, self.time + EPS)
+        after = self.time + rate * dt
+        total = t.total[clip]
+        mode = t.mode[clip]
+        looping = mode == LOOP
+        events = self._events(before, after + EPS, total, looping) if t.has_events.any() else []
+        ended = ~looping & (after + EPS >= total) & ~self.finished
+        finished_rows = np.flatnonzero(ended)
+        # wrap loops (keeps precision over hours of play)
+        laps = np.floor((after + EPS) / total)
+        wrapped = np.where(looping, np.maximum(after - laps * total, 0.0), after)
+        self.time = wrapped
+        self.finished |= ended
+        local = np.where(looping, wrapped, np.minimum(wrapped, total))
+        local = np.where(self.finished & (mode == ONCE), 0.0, local)
+        first = t.first[clip]
+        g = np.searchsorted(t.frame_end, t.base[clip] + local + EPS, side="right")
+        self.shown = np.minimum(np.maximum(g, first), first + t.length[clip] - 1)
+        self.fresh[:] = False
+        return Crossings(events, finished_rows)
+
+    def _events(
+        self, before: np.ndarray, after: np.ndarray, total: np.ndarray, looping: np.ndarray
+    ) -> list[tuple[int, int, str, int]]:
+        """Frame events crossed in (before, after], ordered by row then time."""
+        t = self.table
+        found: list[tuple[int, float, int, str, int]] = []
+        with_events = t.has_events[self.clip]
+        for slot in np.unique(self.clip[with_events]).tolist():
+            info = t.infos[slot]
+            rows = np.flatnonzero((self.clip == slot) & (after > before))
+            if not len(rows):
+                continue
+            b, a, tot, lp = before[rows], after[rows], total[rows], looping[rows]
+            for start, frame, name in info.events:
+                looped = np.floor((a - start) / tot) - np.floor((b - start) / tot)
+                single = ((b < start) & (start <= a)).astype(float)
+                count = np.where(lp, looped, single).astype(np.int64)
+                hit = count > 0
+                for r, c in zip(rows[hit].tolist(), count[hit].tolist(), strict=True):
+                    lap = float(total[r])
+                    found.extend((r, start + k * lap, slot, name, frame) for k in range(c))
+        found.sort(key=lambda item: (int(self.entity[item[0]]), item[1]))
+        return [(r, slot, name, frame) for r, _, slot, name, frame in found]

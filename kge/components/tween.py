@@ -1,0 +1,169 @@
+"""Tween specs: what to animate, to what value, how long and with which easing.
+
+A :class:`Tween` names a component type and one of its numeric, vector or colour
+fields (``Transform.x``, ``Sprite.opacity``, ``Camera.center``, ``Sprite.tint``),
+the value to reach, a duration in seconds and an easing (``linear``, or
+``quad``/``cubic``/``quart``/``quint``/``sine``/``expo``/``circ``/``back``/
+``elastic``/``bounce`` with ``_in``, ``_out`` or ``_in_out``). ``delay`` waits
+first; ``repeat`` plays it again that many times (-1: forever), ``yoyo`` plays
+every other repetition backwards. ``start`` fixes the starting value; without
+it the field's value when the tween begins is used.
+
+:class:`Sequence` runs steps one after another, :class:`Parallel` together, and
+:class:`Delay` is a pause inside a sequence. Specs are plain immutable data;
+``world.resource(kge.Tweens).start(entity, spec)`` runs one (see
+:mod:`kge.systems.animation`) and returns a handle a coroutine can ``yield``.
+
+>>> from kge.components.transform import Transform
+>>> pop = Sequence(Tween(Transform, "y", 1.0, 0.2, ease="back_out"), Delay(0.1),
+...                Tween(Transform, "y", 0.0, 0.3, ease="bounce_out"))
+>>> round(pop.total, 3)
+0.6
+>>> Tween(Transform, "x", 1.0, 0.0)
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: Tween(Transform.x).duration must be > 0, got 0.0
+>>> Tween(Transform, "x", 1.0, 1.0, ease="wobble_in")
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: Tween(Transform.x).ease: unknown easing 'wobble_in'; choose one of: ...
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from kge.errors import ComponentTypeError, ValidationError
+from kge.validate import boolean, integer, non_negative, positive
+
+#: easing names (the curves live in kge.animation.easing, which checks names at start)
+FAMILIES = ("quad", "cubic", "quart", "quint", "sine", "expo", "circ", "back", "elastic", "bounce")
+EASING_NAMES: tuple[str, ...] = (
+    "linear",
+    *(f"{f}_{kind}" for f in FAMILIES for kind in ("in", "out", "in_out")),
+)
+
+
+def _check_ease(name: Any, owner: str) -> str:
+    if name not in EASING_NAMES:
+        raise ValidationError(
+            f"{owner}.ease: unknown easing {name!r}; choose one of: {', '.join(EASING_NAMES)}"
+        )
+    return str(name)
+
+
+@dataclass(slots=True, frozen=True)
+class Tween:
+    """Animate ``component.field`` to ``to`` over ``duration`` seconds. See the module docstring."""
+
+    component: type
+    field: str
+    to: Any
+    duration: float
+    ease: str = "linear"
+    delay: float = 0.0
+    repeat: int = 0
+    yoyo: bool = False
+    start: Any = None
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.component, type):
+            raise ComponentTypeError(
+                f"Tween.component must be a component class (Transform, Sprite...), "
+                f"got {self.component!r}"
+            )
+        if not isinstance(self.field, str) or not self.field:
+            raise ComponentTypeError(f"Tween.field must be a field name, got {self.field!r}")
+        owner = self.label
+        positive(self.duration, owner, "duration")
+        non_negative(self.delay, owner, "delay")
+        rep = integer(self.repeat, owner, "repeat")
+        if rep < -1:
+            raise ValidationError(f"{owner}.repeat must be >= 0, or -1 for forever, got {rep}")
+        boolean(self.yoyo, owner, "yoyo")
+        _check_ease(self.ease, owner)
+
+    @property
+    def label(self) -> str:
+        return f"Tween({self.component.__name__}.{self.field})"
+
+    @property
+    def total(self) -> float:
+        """Seconds from start to end, delay and repeats included (inf when forever)."""
+        if self.repeat < 0:
+            return math.inf
+        return float(self.delay) + float(self.duration) * (self.repeat + 1)
+
+
+@dataclass(slots=True, frozen=True)
+class Delay:
+    """A pause of ``seconds`` inside a :class:`Sequence`."""
+
+    seconds: float
+
+    def __post_init__(self) -> None:
+        non_negative(self.seconds, "Delay", "seconds")
+
+    @property
+    def total(self) -> float:
+        return float(self.seconds)
+
+
+def _steps(steps: tuple[Any, ...], owner: str) -> None:
+    if not steps:
+        raise ValidationError(f"{owner} needs at least one step")
+    for i, s in enumerate(steps):
+        if not isinstance(s, (Tween, Delay, Sequence, Parallel)):
+            raise ComponentTypeError(
+                f"{owner} step {i} must be a Tween, Delay, Sequence or Parallel, got {s!r}"
+            )
+
+
+class Sequence:
+    """Steps one after another; ``repeat`` runs the whole sequence again (-1: forever)."""
+
+    __slots__ = ("name", "repeat", "steps")
+
+    def __init__(self, *steps: Any, repeat: int = 0, name: str = "") -> None:
+        _steps(steps, "Sequence")
+        rep = integer(repeat, "Sequence", "repeat")
+        if rep < -1:
+            raise ValidationError(f"Sequence.repeat must be >= 0, or -1 for forever, got {rep}")
+        self.steps: tuple[Any, ...] = steps
+        self.repeat = rep
+        self.name = name
+
+    @property
+    def once(self) -> float:
+        """One pass through the steps, in seconds."""
+        return math.fsum(s.total for s in self.steps)
+
+    @property
+    def total(self) -> float:
+        if self.repeat < 0:
+            return math.inf
+        return self.once * (self.repeat + 1)
+
+    def __repr__(self) -> str:
+        return f"Sequence({', '.join(map(repr, self.steps))}, repeat={self.repeat})"
+
+
+class Parallel:
+    """Steps that start together; it ends when the longest ends."""
+
+    __slots__ = ("name", "steps")
+
+    def __init__(self, *steps: Any, name: str = "") -> None:
+        _steps(steps, "Parallel")
+        self.steps: tuple[Any, ...] = steps
+        self.name = name
+
+    @property
+    def total(self) -> float:
+        return max(s.total for s in self.steps)
+
+    def __repr__(self) -> str:
+        return f"Parallel({', '.join(map(repr, self.steps))})"

@@ -1,0 +1,383 @@
+"""Animation systems and the plugin that installs them: sprite clips, tweens, camera shake.
+
+===========================  ==============  ===========================================
+system                       stage (order)   does
+===========================  ==============  ===========================================
+``AnimationFrameStart``      INPUT (-1000)   clears this frame's ``AnimationEvents``
+``FixedTweens``              FIXED (150)     tweens of physics bodies: velocities
+``ShakeRestore``             UPDATE (0)      takes last frame's shake offset off
+``AnimationSystem``          UPDATE (200)    advances every Animator, events, hooks
+``TweenSystem``              UPDATE (210)    advances every other tween
+``ShakeApply``               LATE (300)      decays trauma, adds this frame's offset
+===========================  ==============  ===========================================
+
+Everything runs on game time: the dt the App hands to the UPDATE stage is
+scaled by ``time_scale``, zero while paused, one fixed step on ``single_step``,
+so animations freeze, slow down and step with the game, headless or not.
+
+Drawing: a render pass (``before``) packs frames into an atlas and writes every
+animated sprite's texture coordinates in bulk (:mod:`kge.render.animation`),
+imported only when the App first renders.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from kge.animation.clips import ClipState, ClipTable
+from kge.animation.events import AnimationEvent, AnimationEvents, AnimationFinished, TweenFinished
+from kge.animation.shake import decayed, offset
+from kge.animation.tweens import TweenHandle, Tweens
+from kge.components.animation import Animator
+from kge.components.camera import Camera, active_camera
+from kge.components.shake import CameraShake
+from kge.components.tracked import bind, unbind
+from kge.errors import MissingComponentError
+from kge.plugin import Plugin
+from kge.render.passes import Frame, passes_for
+from kge.scene import Time
+from kge.schedule import Stage, System
+from kge.systems.behaviour import BehaviourRunner
+from kge.world import World
+
+
+class Animations:
+    """Every Animator of a world as numpy rows (a resource): what the systems and the
+    renderer share, and what game code can ask (``frame(entity)``, ``clip(entity)``)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+        self.table = ClipTable()
+        self.state = ClipState(self.table)
+        self.dirty: set[int] = set()
+        self._new: list[int] = []
+        self._serials: dict[int, int] = {}
+        self._conditional: set[int] = set()
+        #: called with an entity whose sprite must be re-made (added/removed Animator)
+        self.redraw: Any = None
+        world.on_add(Animator, self._added)
+        world.on_remove(Animator, self._removed)
+
+    def _added(self, entity: int, anim: Animator) -> None:
+        bind(anim, entity, self.dirty)
+        self.dirty.add(entity)
+        if entity not in self.state.rows:
+            self._new.append(entity)
+        self._serials.pop(entity, None)
+        if self.redraw is not None:
+            self.redraw(entity)
+
+    def _removed(self, entity: int, anim: Animator) -> None:
+        unbind(anim, self.dirty)
+        self.dirty.discard(entity)
+        if entity in self._new:
+            self._new.remove(entity)
+        self.state.remove(entity)
+        self._serials.pop(entity, None)
+        self._conditional.discard(entity)
+        if self.redraw is not None:
+            self.redraw(entity)
+
+    # -- reading ------------------------------------------------------------------------
+    def frame(self, entity: int) -> int:
+        """The frame (index inside its clip) ``entity`` shows now."""
+        self.sync()
+        return self.state.local_frame(self._row(entity))
+
+    def clip(self, entity: int) -> str:
+        """The name of the clip ``entity`` plays."""
+        return str(self.world.get(entity, Animator).current)
+
+    def finished(self, entity: int) -> bool:
+        """True once a ``once``/``hold`` clip has ended (or the animator was stopped)."""
+        self.sync()
+        return bool(self.state.finished[self._row(entity)])
+
+    def _row(self, entity: int) -> int:
+        row = self.state.rows.get(entity)
+        if row is None:
+            self.sync()  # spawned since the last frame
+            row = self.state.rows.get(entity)
+        if row is None:
+            raise MissingComponentError(f"entity {entity} has no Animator component")
+        return row
+
+    # -- syncing from the components --------------------------------------------------------
+    def sync(self) -> None:
+        if self._new:
+            self.state.add_many(self._new)
+            self._new.clear()
+        if self.dirty:
+            for entity in sorted(self.dirty):
+                self._sync_one(entity)
+            self.dirty.clear()
+
+    def _sync_one(self, entity: int) -> None:
+        anim = self.world.try_get(entity, Animator)
+        row = self.state.rows.get(entity)
+        if anim is None or row is None:
+            return
+        state = self.state
+        slot = self.table.register(anim.clips[str(anim.current)]).slot
+        state.speed[row] = anim.speed
+        state.playing[row] = anim.playing
+        if self._serials.get(entity) != anim.serial or state.clip[row] != slot:
+            state.start(row, slot, stopped=anim.stopped)
+            self._serials[entity] = anim.serial
+        if any(tr.when is not None for tr in anim.transitions):
+            self._conditional.add(entity)
+        else:
+            self._conditional.discard(entity)
+
+    def _conditions(self) -> None:
+        """Conditional transitions: switch clips whose parameter is set (entity order)."""
+        for entity in sorted(self._conditional):
+            anim = self.world.try_get(entity, Animator)
+            if anim is None:
+                continue
+            for tr in anim.transitions:
+                if (
+                    tr.when is not None
+                    and tr.src in ("*", anim.current)
+                    and anim.current != tr.dst
+                    and anim.params.get(tr.when)
+                ):
+                    anim.play(tr.dst)
+                    self._sync_one(entity)
+                    break
+
+    def _after_end(self, entity: int, anim: Animator) -> None:
+        """A clip ended: follow an end transition, else the queue."""
+        for tr in anim.transitions:
+            if tr.when is None and tr.src in ("*", anim.current):
+                anim.play(tr.dst)
+                break
+        else:
+            if not anim.queued:
+                return
+            nxt = anim.queued.pop(0)
+            rest = list(anim.queued)
+            anim.play(nxt)
+            anim.queued.extend(rest)
+        self._sync_one(entity)
+
+
+def animations(world: World) -> Animations:
+    """The world's :class:`Animations`, created on first use."""
+    found = world.try_resource(Animations)
+    if found is None:
+        found = world.insert_resource(Animations(world))
+    return found
+
+
+def tweens_of(world: World) -> Tweens:
+    """The world's :class:`~kge.animation.tweens.Tweens`, created on first use."""
+    found = world.try_resource(Tweens)
+    if found is None:
+        found = world.insert_resource(Tweens(world))
+    return found
+
+
+def events_of(world: World) -> AnimationEvents:
+    found = world.try_resource(AnimationEvents)
+    if found is None:
+        found = world.insert_resource(AnimationEvents())
+    return found
+
+
+def _hook(world: World, entity: int | None, name: str, event: Any) -> None:
+    runner = world.try_resource(BehaviourRunner)
+    if runner is not None and entity is not None:
+        runner.call_one(entity, name, event)
+
+
+class AnimationFrameStart(System):
+    """Clears the per-frame animation event lists (first thing in a frame)."""
+
+    stage = Stage.INPUT
+    order = -1000
+
+    def process(self, dt: float) -> None:
+        events_of(self.world).clear()
+
+
+class AnimationSystem(System):
+    """Advances every Animator with numpy, then delivers frame and end events."""
+
+    stage = Stage.UPDATE
+    order = 200
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self.anims = animations(world)
+        self.events = events_of(world)
+
+    def process(self, dt: float) -> None:
+        anims = self.anims
+        anims.sync()
+        anims._conditions()
+        state = anims.state
+        if not len(state):
+            return
+        crossings = state.advance(dt)
+        world = self.world
+        for row, _slot, name, frame in crossings.events:
+            entity = int(state.entity[row])
+            anim = world.try_get(entity, Animator)
+            clip = str(anim.current) if anim is not None else ""
+            ev = AnimationEvent(entity, clip, name, frame)
+            self.events.frame.append(ev)
+            _hook(world, entity, "on_animation_event", ev)
+        ended = sorted(int(state.entity[r]) for r in crossings.finished.tolist())
+        for entity in ended:
+            anim = world.try_get(entity, Animator)
+            if anim is None:
+                continue
+            fin = AnimationFinished(entity, str(anim.current))
+            self.events.finished.append(fin)
+            _hook(world, entity, "on_animation_end", fin)
+            anims._after_end(entity, anim)
+
+
+def _finished(world: World, handles: list[TweenHandle]) -> None:
+    events = events_of(world)
+    for h in handles:
+        ev = TweenFinished(h.entity, h, h.name)
+        events.tweens.append(ev)
+        _hook(world, h.entity, "on_tween_end", ev)
+
+
+class TweenSystem(System):
+    """Advances every tween not driving a physics body (game time, once per frame)."""
+
+    stage = Stage.UPDATE
+    order = 210
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self.tweens = tweens_of(world)
+
+    def process(self, dt: float) -> None:
+        _finished(self.world, self.tweens.advance(dt, fixed=False))
+
+
+class FixedTweens(System):
+    """Advances tweens of physics bodies' Transforms in the fixed step, before physics."""
+
+    stage = Stage.FIXED
+    order = 150
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self.tweens = tweens_of(world)
+
+    def process(self, dt: float) -> None:
+        if self.tweens.stop_next or len(self.tweens.g_ids):
+            _finished(self.world, self.tweens.advance(dt, fixed=True))
+
+
+def _shake_of(world: World, cam: Camera) -> CameraShake | None:
+    for _, (c, s) in world.query(Camera, CameraShake):
+        if c is cam:
+            return s
+    found: CameraShake | None = world.try_resource(CameraShake)
+    return found
+
+
+class ShakeRestore(System):
+    """Takes last frame's shake offset off the camera before this frame's updates."""
+
+    stage = Stage.UPDATE
+    order = 0
+    applied: tuple[Camera, tuple[float, float]] | None = None
+
+    def process(self, dt: float) -> None:
+        if self.applied is not None:
+            cam, (ox, oy) = self.applied
+            cx, cy = cam.center
+            cam.center = (cx - ox, cy - oy)
+            self.applied = None
+
+
+class ShakeApply(System):
+    """Decays trauma and adds this frame's shake offset to the active camera (LATE)."""
+
+    stage = Stage.LATE
+    order = 300
+
+    def process(self, dt: float) -> None:
+        world = self.world
+        cam = active_camera(world)
+        shake = _shake_of(world, cam) if cam is not None else world.try_resource(CameraShake)
+        if shake is None or shake.trauma <= 0.0:
+            return
+        time = world.try_resource(Time)
+        now = time.elapsed if time is not None else 0.0
+        ox, oy = offset(shake.trauma, now, shake.max_offset, shake.frequency, shake.seed)
+        shake.trauma = decayed(shake.trauma, shake.decay, dt)
+        if cam is None:  # nothing to move (no camera yet): the trauma still decays
+            return
+        cx, cy = cam.center
+        cam.center = (cx + ox, cy + oy)
+        restore = world.get_system(ShakeRestore)
+        if restore is not None:
+            restore.applied = (cam, (ox, oy))
+
+
+def shake(world: World, amount: float) -> CameraShake:
+    """Add ``amount`` trauma to the active camera's shake (creating a CameraShake resource)."""
+    cam = active_camera(world)
+    found = _shake_of(world, cam) if cam is not None else world.try_resource(CameraShake)
+    if found is None:
+        found = world.insert_resource(CameraShake())
+    found.add(amount)
+    return found
+
+
+class _AtlasPass:
+    """The render pass: animated sprites drawn from the atlas (GL loaded only here)."""
+
+    def __init__(self, world: World, anims: Animations) -> None:
+        self.world = world
+        self.anims = anims
+        self.frames: Any = None
+
+    def __call__(self, frame: Frame) -> None:
+        from kge.systems.render import RenderSystem
+
+        rs = self.world.get_system(RenderSystem)
+        if rs is None:
+            return
+        view = rs.view
+        self.anims.sync()
+        if self.frames is None:
+            from kge.render.animation import AtlasFrames
+
+            self.frames = AtlasFrames(
+                self.world, self.anims.table, self.anims.state, view.sprites, self.anims.sync
+            )
+            view.sprites.frame_source = self.frames.frame_region
+            self.anims.redraw = view.dirty.add
+            # sprites made before the atlas existed move onto it now
+            known = [e for e in self.anims.state.rows if e in view.sprites.sprites]
+            if known:
+                view.dirty.update(known)
+                view.sync(frame.camera.pixels_per_meter)
+                frame.poses = view.poses.blend(frame.alpha)
+                view.sprites.poser.write(frame.poses, frame.view)
+        self.frames.write()
+
+
+class AnimationPlugin(Plugin):
+    """Sprite animation (Animator + clips), tweens and camera shake. See the module docstring."""
+
+    def build(self, world: World) -> None:
+        anims = animations(world)
+        tweens_of(world)
+        events_of(world)
+        for system in (
+            AnimationFrameStart(), FixedTweens(), ShakeRestore(), AnimationSystem(),
+            TweenSystem(), ShakeApply(),
+        ):  # fmt: skip
+            world.add_system(system)
+        passes_for(world).add(_AtlasPass(world, anims), phase="before", order=-100)
