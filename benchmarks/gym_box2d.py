@@ -29,9 +29,13 @@ def lunar_lander_module(backend: str) -> ModuleType:
     """Gymnasium's lunar_lander module bound to ``backend`` ("kge" or "box2d")."""
     if backend in _MODULES:
         return _MODULES[backend]
-    import gymnasium.envs.box2d as pkg
-
     import kge.box2d
+
+    # the package's path only: importing gymnasium.envs.box2d runs its __init__, which
+    # (Gymnasium 1.2) imports every Box2D env, and Box2D before it is bound
+    found = importlib.util.find_spec("gymnasium.envs.box2d")
+    assert found is not None and found.submodule_search_locations is not None
+    package_dir = list(found.submodule_search_locations)[0]
 
     keys = ("Box2D", "Box2D.b2", "Box2D.Box2D")
     saved = {k: sys.modules.get(k) for k in keys}
@@ -43,7 +47,7 @@ def lunar_lander_module(backend: str) -> ModuleType:
                 if saved[k] is not None and saved[k].__name__.startswith("kge"):  # type: ignore[union-attr]
                     del sys.modules[k]
             import Box2D  # noqa: F401  (real pybox2d)
-        path = pkg.__path__[0] + "/lunar_lander.py"
+        path = package_dir + "/lunar_lander.py"
         spec = importlib.util.spec_from_file_location(f"_lunar_lander_{backend}", path)
         assert spec is not None and spec.loader is not None
         module = importlib.util.module_from_spec(spec)
