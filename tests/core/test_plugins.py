@@ -173,3 +173,12 @@ def test_close_lets_each_plugin_clean_up_in_reverse_order() -> None:
     app = App(hello, headless=True, plugins=[First(), Second()])
     app.close()
     assert calls == ["second", "first"]
+
+
+def test_the_readme_lists_every_default_plugin() -> None:
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    table = readme.split("## Architecture", 1)[1].split("**Floors.**", 1)[0]
+    for plugin in kge.default_plugins():
+        assert f"| `{plugin.name}` |" in table, plugin.name
