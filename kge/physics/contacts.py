@@ -66,6 +66,8 @@ class PreSolve:
     restitution: float = 0.0
     #: Box2D's tangentSpeed: B slides along t = (n.y, -n.x) at this speed relative to A
     tangent_speed: float = 0.0
+    child_a: int = 0  #: segment of a chain collider A (0 for other shapes)
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -80,6 +82,8 @@ class PostSolve:
     point_count: int
     normal_impulse: float  #: N*s, >= 0, summed over points and substeps
     tangent_impulse: float  #: N*s along t = (n.y, -n.x)
+    child_a: int = 0
+    child_b: int = 0
 
 
 PreSolveFn = Callable[[PreSolve], Any]
@@ -199,21 +203,24 @@ class ContactRecorder:
                 return
         self.active[(id(sa), id(sb))] = (sa, sb, sensor)
         ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
+        ka, kb = sa.kge_child, sb.kge_child
         events = self.events
         if sensor:
-            events.sensor_begin.append(SensorBegin(ca, cb, ba, bb))
+            events.sensor_begin.append(SensorBegin(ca, cb, ba, bb, ka, kb))
             return
         speed = _approach(sa, sb, normal, points[0])
         ea, eb = sa.kge_material[1], sb.kge_material[1]
         e = ea if ea > eb else eb
         if e > 0.0 and speed > self.velocity_threshold:
             arb.restitution = e
-        events.contact_begin.append(ContactBegin(ca, cb, ba, bb, normal, points, sep, speed))
+        events.contact_begin.append(
+            ContactBegin(ca, cb, ba, bb, normal, points, sep, speed, ka, kb)
+        )
         ta, tb = sa.kge_hit, sb.kge_hit
         if ta is not None or tb is not None:
             limit = max(t for t in (ta, tb) if t is not None)
             if speed > limit:
-                events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed))
+                events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed, ka, kb))
 
     @staticmethod
     def _one_way_accepts(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2) -> bool:
@@ -239,10 +246,11 @@ class ContactRecorder:
             self._pre_cache.pop(key, None)
         sa, sb, sensor = rec
         ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
+        ka, kb = sa.kge_child, sb.kge_child
         if sensor:
-            self.events.sensor_end.append(SensorEnd(ca, cb, ba, bb))
+            self.events.sensor_end.append(SensorEnd(ca, cb, ba, bb, ka, kb))
         else:
-            self.events.contact_end.append(ContactEnd(ca, cb, ba, bb))
+            self.events.contact_end.append(ContactEnd(ca, cb, ba, bb, ka, kb))
 
     # -- user hooks (per step, only for HOOKED shapes) -------------------------------------
     def _ordered(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape, bool] | None:
@@ -275,7 +283,7 @@ class ContactRecorder:
             fr = (sa.kge_material[0] * sb.kge_material[0]) ** 0.5
             contact = PreSolve(
                 sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, points, sep,
-                True, fr, arb.restitution,
+                True, fr, arb.restitution, 0.0, sa.kge_child, sb.kge_child,
             )
             with self.world.locked():
                 for fn in self.pre_solve:
@@ -324,14 +332,15 @@ class ContactRecorder:
         if not self._post_acc:
             return
         items = sorted(
-            self._post_acc.values(), key=lambda a: (a[0].kge_collider, a[1].kge_collider)
+            self._post_acc.values(),
+            key=lambda a: (a[0].kge_collider, a[1].kge_collider, a[0].kge_child, a[1].kge_child),
         )
         self._post_acc.clear()
         with self.world.locked():
             for sa, sb, _flip, jn, jt, count, normal in items:
                 ev = PostSolve(
                     sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, count,
-                    abs(jn), jt,
+                    abs(jn), jt, sa.kge_child, sb.kge_child,
                 )
                 for fn in self.post_solve:
                     fn(ev)

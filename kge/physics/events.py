@@ -10,7 +10,14 @@ Entities: ``collider_a`` / ``collider_b`` are collider entities; ``body_a`` /
 ``body_b`` are the body entities (``None`` for a collider on the implicit
 static body). The normal points from collider A to collider B, with A chosen
 as Box2D does (edge before polygon before circle; otherwise the older
-collider).
+collider). ``child_a`` / ``child_b`` are Box2D's child indices: the segment of a
+chain collider (0 for every other shape), so the begins and ends of a body
+touching two segments of one chain pair up.
+
+Order: every list is sorted at the end of each step by entity ids, then child
+indices (joint events by joint id), so the same script gives the same lists in
+every process. Chipmunk reports contacts in the order of its arbiter hash set,
+which follows memory addresses; that order never reaches kge's lists.
 """
 
 from __future__ import annotations
@@ -31,6 +38,8 @@ class ContactBegin:
     points: tuple[Vec2, ...]  #: world points, 1 or 2
     separation: float  #: most negative distance (< 0 = overlap)
     approach_speed: float  #: relative normal speed at first contact (>= 0), m/s
+    child_a: int = 0  #: segment of a chain collider A (0 for other shapes)
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -39,6 +48,8 @@ class ContactEnd:
     collider_b: int
     body_a: int | None
     body_b: int | None
+    child_a: int = 0
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -47,6 +58,8 @@ class SensorBegin:
     collider_b: int
     body_a: int | None
     body_b: int | None
+    child_a: int = 0
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -55,6 +68,8 @@ class SensorEnd:
     collider_b: int
     body_a: int | None
     body_b: int | None
+    child_a: int = 0
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -68,6 +83,8 @@ class Hit:
     point: Vec2
     normal: Vec2
     approach_speed: float
+    child_a: int = 0
+    child_b: int = 0
 
 
 @dataclass(slots=True, frozen=True)
@@ -117,9 +134,31 @@ class PhysicsEvents:
         return (self.contact_begin, self.contact_end, self.sensor_begin, self.sensor_end,
                 self.hits, self.joint_broken, self.joint_destroyed)
 
+    def sort(self) -> None:
+        """Put every list in its defined order (entity ids, then child indices).
+
+        Sorting is stable, so two events of one pair in one list (an end carried
+        from a sync, then a begin and end in the step) keep their order.
+        """
+        for lst in (self.contact_begin, self.contact_end, self.sensor_begin, self.sensor_end,
+                    self.hits):
+            if len(lst) > 1:
+                lst.sort(key=_contact_key)
+        for jl in (self.joint_broken, self.joint_destroyed):
+            if len(jl) > 1:
+                jl.sort(key=_joint_key)
+
     def clear(self) -> None:
         for lst in self._lists():
             lst.clear()
 
     def __len__(self) -> int:
         return sum(map(len, self._lists()))
+
+
+def _contact_key(ev: ContactEvent) -> tuple[int, int, int, int]:
+    return (ev.collider_a, ev.collider_b, ev.child_a, ev.child_b)
+
+
+def _joint_key(ev: JointBroken | JointDestroyed) -> int:
+    return ev.joint

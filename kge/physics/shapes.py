@@ -10,6 +10,7 @@ callbacks and debug drawing can map it back to entities without a lookup:
 ``kge_rank``      Box2D's fixture order for choosing contact side A
 ``kge_hit``       the collider's hit threshold (m/s) or None
 ``kge_oneway``    a OneWayPlatform (up, min_cos) or None
+``kge_child``     Box2D's child index: the segment of a chain, 0 for other shapes
 
 Material: pymunk multiplies the two shapes' friction, so each shape gets
 ``sqrt(friction)`` and the pair gets sqrt(a)*sqrt(b) = sqrt(a*b), Box2D's mixing,
@@ -80,7 +81,8 @@ def build_shapes(
         "kge_filter": collider.filter,
         "kge_hit": collider.hit_threshold,
     }
-    for s in shapes:
+    for i, s in enumerate(shapes):
+        vars(s)["kge_child"] = i
         # what apply_material does, minus the writes a fresh shape does not need
         # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
         vars(s).update(attrs)

@@ -122,11 +122,35 @@ class Simulation:
     def on_rigidbody_removed(self, entity: int, rb: RigidBody) -> None:
         unbind(rb)
         self.body_struct.add(entity)
+        if not self.world.exists(entity):  # despawned, not just a removed RigidBody
+            self._despawn_attached(entity)
+
+    def _despawn_attached(self, body: int) -> None:
+        """Despawn the colliders on other entities that name ``body`` (``Collider(body=e)``).
+
+        Box2D's DestroyBody destroys the body's fixtures; kge's fixtures on other
+        entities go with it instead of staying alive attached to nothing. Runs from
+        the flush that applies the despawn, so they are despawned in that same flush.
+        """
+        world = self.world
+        rec = self.bodies.get(body)
+        found = set() if rec is None else set(rec.colliders)
+        for c in self.pending:
+            col = world.try_get(c, Collider)
+            if col is not None and col.body == body:
+                found.add(c)
+        for c in sorted(found):
+            if c != body and world.exists(c):
+                world.despawn(c)
 
     def on_collider_added(self, entity: int, col: Collider) -> None:
         bind(col, entity, self.col_dirty)
         self.collider_struct.add(entity)
         self.body_struct.add(entity)
+        body = col.body
+        if body is not None and not self.world.exists(body) and self.world.exists(entity):
+            # queued in the flush that despawned its body (validated while it lived)
+            self.world.despawn(entity)
 
     def on_collider_removed(self, entity: int, col: Collider) -> None:
         unbind(col)
@@ -378,6 +402,10 @@ class Simulation:
             self.colliders.pop(e)
             self._detach(crec)
             self.pending.add(e)
+            if owner != crec.owner:
+                # an implicit static body of this entity goes (moved onto a body) or
+                # comes (moved back to body=None)
+                self._restructure_body(e)
             return
         rec = self.bodies.get(owner)
         refilter = False
@@ -643,6 +671,7 @@ class Simulation:
         else:
             self._prev_is_current = False
             self.sync_out()
+        self.events.sort()  # Chipmunk's order follows addresses (kge.physics.events)
         self.errors.raise_pending()
         rec.deliver_post_solve()
 
@@ -715,6 +744,7 @@ class Simulation:
                 rec.in_space = False
         self.bodies.clear()
         self.colliders.clear()
+        self.pending.clear()
 
 
 def _make_ccd(space: pymunk.Space, errors: CallbackErrors) -> Any:

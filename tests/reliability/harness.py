@@ -61,7 +61,8 @@ class PhysicsWorld:
 
 
 class EventBalance:
-    """Per collider pair, begin and end events must alternate (and start with a begin).
+    """Per collider pair and child pair (chain segments), begin and end events must
+    alternate (and start with a begin).
 
     Begins and ends of one step come in separate lists, so a pair's order within
     the step is unknown: an open pair may end and begin again (E B ...), a closed
@@ -70,21 +71,21 @@ class EventBalance:
     """
 
     def __init__(self) -> None:
-        self.open: set[tuple[str, int, int]] = set()
+        self.open: set[tuple[str, int, int, int, int]] = set()
         self.begins = 0
         self.ends = 0
 
     def record(self, events: PhysicsEvents) -> None:
-        step: dict[tuple[str, int, int], list[int]] = {}
+        step: dict[tuple[str, int, int, int, int], list[int]] = {}
         for kind, starts, stops in (
             ("contact", events.contact_begin, events.contact_end),
             ("sensor", events.sensor_begin, events.sensor_end),
         ):
             for ev in starts:
-                step.setdefault((kind, ev.collider_a, ev.collider_b), [0, 0])[0] += 1
+                step.setdefault(_pair(kind, ev), [0, 0])[0] += 1
                 self.begins += 1
             for end in stops:
-                step.setdefault((kind, end.collider_a, end.collider_b), [0, 0])[1] += 1
+                step.setdefault(_pair(kind, end), [0, 0])[1] += 1
                 self.ends += 1
         for key, (b, e) in step.items():
             if key in self.open:
@@ -96,8 +97,12 @@ class EventBalance:
                 if b > e:
                     self.open.add(key)
 
-    def live_pairs(self) -> set[tuple[str, int, int]]:
+    def live_pairs(self) -> set[tuple[str, int, int, int, int]]:
         return set(self.open)
+
+
+def _pair(kind: str, ev: Any) -> tuple[str, int, int, int, int]:
+    return (kind, ev.collider_a, ev.collider_b, ev.child_a, ev.child_b)
 
 
 def space_counts(sim: Simulation) -> dict[str, int]:
@@ -182,13 +187,14 @@ def check_invariants(pw: PhysicsWorld | AppProbe) -> None:
         assert id(constraint) in owned, "a constraint in the space belongs to no live joint"
     # -- contacts -------------------------------------------------------------------
     active = {
-        ("sensor" if sensor else "contact", a.kge_collider, b.kge_collider)
+        ("sensor" if sensor else "contact", a.kge_collider, b.kge_collider, a.kge_child,
+         b.kge_child)
         for a, b, sensor in sim.recorder.active.values()
     }
     # ends produced by that sync are held for the next step's lists
     carried = world.resource(Physics)._carried
-    ending = {("contact", ev.collider_a, ev.collider_b) for ev in carried.contact_end} | {
-        ("sensor", ev.collider_a, ev.collider_b) for ev in carried.sensor_end
+    ending = {_pair("contact", ev) for ev in carried.contact_end} | {
+        _pair("sensor", ev) for ev in carried.sensor_end
     }
     opened = pw.balance.live_pairs()
     assert ending <= opened, f"end events {ending - opened} without a begin"
