@@ -31,6 +31,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from kge.components.camera import Camera, active_camera
+from kge.errors import ValidationError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
@@ -39,6 +40,7 @@ from kge.plugins import default_plugins
 from kge.scene import Scene, SceneLike, Time, as_scene
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
+from kge.validate import boolean, integer, non_negative
 from kge.world import World
 
 SystemFactory = Callable[[], System]
@@ -111,9 +113,7 @@ class App(Host):
 
     @time_scale.setter
     def time_scale(self, value: float) -> None:
-        if not value >= 0:
-            raise ValueError(f"App.time_scale must be >= 0, got {value!r}")
-        self.timestep.time_scale = float(value)
+        self.timestep.time_scale = non_negative(value, "App", "time_scale")
 
     @property
     def paused(self) -> bool:
@@ -121,7 +121,7 @@ class App(Host):
 
     @paused.setter
     def paused(self, value: bool) -> None:
-        self.timestep.paused = bool(value)
+        self.timestep.paused = boolean(value, "App", "paused")
 
     def single_step(self) -> None:
         """While paused: run exactly one fixed step on the next frame."""
@@ -274,7 +274,10 @@ class App(Host):
 
         This ignores the accumulator and the pause flag: it is the test driver.
         """
-        for _ in range(int(n)):
+        count = integer(n, "App.step", "n")
+        if count < 0:
+            raise ValidationError(f"App.step.n must be >= 0, got {count}")
+        for _ in range(count):
             self._frame(steps=1, game_dt=self.fixed_dt)
 
     def advance(self, frame_dt: float) -> int:

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
 from kge.keys import Mouse
+from kge.validate import finite, integer, vec2
 
 Vec2 = tuple[float, float]
 
@@ -108,7 +109,7 @@ class Input:
     def press(self, key: int, modifiers: int = 0) -> None:
         """A key goes down (a repeat while held is not a new press)."""
         _check_code(key, "press", "key", "Key.SPACE")
-        self.modifiers = modifiers
+        self.modifiers = integer(modifiers, "Input.press", "modifiers")
         if key not in self._held:
             self._held.add(key)
             self._pressed.add(key)
@@ -116,7 +117,7 @@ class Input:
 
     def release(self, key: int, modifiers: int = 0) -> None:
         _check_code(key, "release", "key", "Key.SPACE")
-        self.modifiers = modifiers
+        self.modifiers = integer(modifiers, "Input.release", "modifiers")
         if key in self._held:
             self._held.discard(key)
             self._released.add(key)
@@ -124,7 +125,7 @@ class Input:
 
     def move_mouse(self, x: float, y: float) -> None:
         """The pointer moves to screen pixel (x, y) (origin bottom-left)."""
-        self.mouse_screen = (float(x), float(y))
+        self.mouse_screen = (finite(x, "Input.move_mouse", "x"), finite(y, "Input.move_mouse", "y"))
         self.mouse_world = self.screen_to_world(self.mouse_screen)
         self.events.append(
             MouseEvent("move", 0, self.mouse_screen, self.mouse_world, modifiers=self.modifiers)
@@ -143,9 +144,12 @@ class Input:
 
     def _button(self, kind: str, button: int, at: Vec2 | None, modifiers: int) -> None:
         _check_code(button, f"mouse_{kind}", "button", "Mouse.LEFT")
+        owner = f"Input.mouse_{kind}"
+        integer(modifiers, owner, "modifiers")
+        point = None if at is None else vec2(at, owner, "at")  # before any change
         self.modifiers = modifiers
-        if at is not None:
-            self.mouse_screen = (float(at[0]), float(at[1]))
+        if point is not None:
+            self.mouse_screen = point
         self.mouse_world = self.screen_to_world(self.mouse_screen)
         held, edge = (self._buttons, self._buttons_pressed)
         if kind == "down" and button not in held:
@@ -164,6 +168,7 @@ class Input:
         self.mouse_up(button, at, modifiers)
 
     def scroll_by(self, dx: float, dy: float) -> None:
+        dx, dy = finite(dx, "Input.scroll_by", "dx"), finite(dy, "Input.scroll_by", "dy")
         self.scroll = (self.scroll[0] + dx, self.scroll[1] + dy)
         self.events.append(
             MouseEvent("scroll", 0, self.mouse_screen, self.mouse_world, (dx, dy), self.modifiers)

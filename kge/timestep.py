@@ -17,8 +17,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
-from kge.validate import non_negative, positive
+from kge.errors import ValidationError
+from kge.validate import boolean, finite, integer, non_negative, positive
 
 _EPS = 1e-9
 
@@ -33,12 +35,12 @@ class FixedTimestep:
     accumulator: float = 0.0
     _single_steps: int = 0
 
-    def __post_init__(self) -> None:
-        positive(self.fixed_dt, "FixedTimestep", "fixed_dt")
-        positive(self.max_frame_dt, "FixedTimestep", "max_frame_dt")
-        non_negative(self.time_scale, "FixedTimestep", "time_scale")
-        if self.max_steps_per_frame < 1:
-            raise ValueError("FixedTimestep.max_steps_per_frame must be >= 1")
+    def __setattr__(self, name: str, value: Any) -> None:
+        # every write is checked: a NaN time scale or accumulator would freeze the game
+        check = _CHECKS.get(name)
+        if check is not None:
+            value = check(value, "FixedTimestep", name)
+        object.__setattr__(self, name, value)
 
     def frame_time(self, frame_dt: float) -> float:
         """The game time a frame of ``frame_dt`` real seconds represents (0 when paused)."""
@@ -47,7 +49,12 @@ class FixedTimestep:
         return min(max(frame_dt, 0.0) * self.time_scale, self.max_frame_dt)
 
     def advance(self, frame_dt: float) -> int:
-        """Add one frame; return the number of fixed steps to run now."""
+        """Add one frame; return the number of fixed steps to run now.
+
+        ``frame_dt`` must be a finite number (NaN would stop the clock for good);
+        a negative one (a clock stepping back) counts as 0.
+        """
+        frame_dt = finite(frame_dt, "App.advance", "frame_dt")
         if self.paused:
             if self._single_steps:
                 self._single_steps -= 1
@@ -72,3 +79,21 @@ class FixedTimestep:
     def alpha(self) -> float:
         """Interpolation weight of the current pose, in [0, 1)."""
         return min(max(self.accumulator / self.fixed_dt, 0.0), 1.0)
+
+
+def _at_least_one(value: Any, owner: str, name: str) -> int:
+    v = integer(value, owner, name)
+    if v < 1:
+        raise ValidationError(f"{owner}.{name} must be >= 1, got {v!r}")
+    return v
+
+
+_CHECKS = {
+    "fixed_dt": positive,
+    "max_steps_per_frame": _at_least_one,
+    "max_frame_dt": positive,
+    "time_scale": non_negative,
+    "paused": boolean,
+    "accumulator": finite,
+    "_single_steps": integer,
+}

@@ -49,7 +49,13 @@ def number(value: Any, owner: str, field: str) -> float:
         raise ComponentTypeError(
             f"{_label(owner, field)} must be a number, got {type(value).__name__} {value!r}"
         )
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:  # an int beyond float64 (10**400): say so, naming the field
+        raise ValidationError(
+            f"{_label(owner, field)} must be finite, got an int of {int(value).bit_length()} bits "
+            "(beyond a float)"
+        ) from None
 
 
 def finite(value: Any, owner: str, field: str) -> float:
@@ -90,6 +96,47 @@ def at_most(value: float, limit: float, owner: str, field: str, unit: str) -> fl
     if value > limit:
         raise ValidationError(f"{_label(owner, field)} must be <= {limit:g} {unit}, got {value!r}")
     return value
+
+
+#: kge's world bound, metres: every position and joint anchor, world or local, lies
+#: within it. Measured: joint anchors (lever arms) of 1e8 m give NaN within a step,
+#: 2e7 m do not; a Transform at 1e160 m overflows every joint solve after it.
+MAX_COORDINATE = 1e7
+
+#: highest spring frequency a joint accepts (Hz); (2 pi f)^2 must stay far from overflow
+MAX_FREQUENCY = 1e6
+
+
+def coordinate(value: Any, owner: str, field: str) -> float:
+    """A finite position coordinate within :data:`MAX_COORDINATE` metres of the origin."""
+    v = finite(value, owner, field)
+    if not -MAX_COORDINATE <= v <= MAX_COORDINATE:
+        raise ValidationError(
+            f"{_label(owner, field)} must lie within {MAX_COORDINATE:g} m of the origin "
+            f"(kge's world bound), got {v!r}"
+        )
+    return v
+
+
+def point(value: Any, owner: str, field: str) -> Vec2:
+    """An (x, y) pair of :func:`coordinate` values (joint anchors, targets, offsets)."""
+    if _is_bounded_pair(value):
+        return value
+    x, y = vec2(value, owner, field)
+    if not (-MAX_COORDINATE <= x <= MAX_COORDINATE and -MAX_COORDINATE <= y <= MAX_COORDINATE):
+        raise ValidationError(
+            f"{_label(owner, field)} must lie within {MAX_COORDINATE:g} m of the origin "
+            f"(kge's world bound), got {(x, y)!r}"
+        )
+    return (x, y)
+
+
+def frequency(value: Any, owner: str, field: str) -> float:
+    """A spring frequency in [0, :data:`MAX_FREQUENCY`] Hz."""
+    v = non_negative(value, owner, field)
+    if v > MAX_FREQUENCY:
+        raise ValidationError(f"{_label(owner, field)} must be <= {MAX_FREQUENCY:g} Hz, got {v!r}")
+    return v
 
 
 def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:
@@ -160,6 +207,16 @@ def _is_float_pair(v: Any) -> bool:
     return type(x) is float and type(y) is float and x - x == 0.0 and y - y == 0.0
 
 
+def _is_bounded_pair(v: Any) -> bool:
+    if type(v) is not tuple or len(v) != 2:
+        return False
+    x, y = v
+    return (
+        type(x) is float and type(y) is float
+        and -MAX_COORDINATE <= x <= MAX_COORDINATE and -MAX_COORDINATE <= y <= MAX_COORDINATE
+    )
+
+
 def _is_bool(v: Any) -> bool:
     return type(v) is bool
 
@@ -171,6 +228,8 @@ FAST: dict[Callable[..., Any], Callable[[Any], bool]] = {
     vec2: _is_float_pair,
     boolean: _is_bool,
     integer: lambda v: type(v) is int,
+    coordinate: lambda v: type(v) is float and -MAX_COORDINATE <= v <= MAX_COORDINATE,
+    point: _is_bounded_pair,
 }
 """check -> predicate that is True only for values the check returns unchanged.
 
@@ -187,4 +246,7 @@ FAST_EXPR: dict[Callable[..., Any], str] = {
     positive: "{type}({v}) is {float} and {v} - {v} == 0.0 and {v} > 0.0",
     boolean: "{type}({v}) is {bool}",
     integer: "{type}({v}) is {int}",
+    coordinate: (
+        f"{{type}}({{v}}) is {{float}} and -{MAX_COORDINATE!r} <= {{v}} <= {MAX_COORDINATE!r}"
+    ),
 }

@@ -47,6 +47,7 @@ from kge.errors import (
     EntityNotFoundError,
     MissingComponentError,
     MissingResourceError,
+    ValidationError,
     WorldLockedError,
 )
 from kge.plugin import Plugin, PluginLike, resolve
@@ -78,6 +79,30 @@ def _check_component(component: object, entity: int | None = None) -> None:
         )
 
 
+def _check_type(component_type: Any, op: str) -> None:
+    """Refuse a lookup by something that is not a class (``world.get(e, "Transform")``)."""
+    if not isinstance(component_type, type):
+        raise ComponentTypeError(
+            f"world.{op}(): the component type must be a class, got "
+            f"{type(component_type).__name__} {component_type!r}"
+        )
+
+
+def _check_groups(where: str, types: list[type]) -> None:
+    """Refuse two components of one exclusive group (``_one_per_entity``, e.g. joints)."""
+    seen: dict[str, type] = {}
+    for t in types:
+        group = getattr(t, "_one_per_entity", None)
+        if group is None:
+            continue
+        if group in seen:
+            raise ComponentTypeError(
+                f"{where} {seen[group].__name__} and {t.__name__} are both {group}s; an "
+                f"entity holds one {group} (spawn one entity per {group})"
+            )
+        seen[group] = t
+
+
 def _forget_esper_world(name: str) -> None:
     """Delete esper's tables of a closed or collected world (run once, by ``finalize``)."""
     if esper.current_world == name:
@@ -107,6 +132,8 @@ class World:
         self._seq = itertools.count()
         self._pending: dict[int, dict[type, Any]] = {}  # queued adds, visible to get()
         self._dying: set[int] = set()  # despawned, awaiting flush
+        #: id(component) -> (entity, component): one instance belongs to one entity
+        self._owners: dict[int, tuple[int, Any]] = {}
         self._defer_depth = 0
         self._lock_depth = 0
         self._closed = False
@@ -191,10 +218,15 @@ class World:
             raise ComponentTypeError(
                 f"world.spawn(): two {dup.__name__} components; an entity holds one per type"
             )
+        _check_groups("world.spawn()", types)
+        for c in components:
+            self._check_unowned(c, None, "spawn")
         for c in components:
             self._validate(None, c)
         self._use()
         entity: int = esper.create_entity()
+        for c in components:
+            self._owners[id(c)] = (entity, c)
         if self._defer_depth:
             pend = self._pending.setdefault(entity, {})
             for c in components:
@@ -210,7 +242,12 @@ class World:
         self._guard("add")
         self._live(entity, "add")
         _check_component(component, entity)
+        self._check_unowned(component, entity, "add")
+        others = [type(c) for c in self._db()[entity].values() if type(c) is not type(component)]
+        others += [t for t in self._pending.get(entity, ()) if t is not type(component)]
+        _check_groups(f"world.add(): entity {entity}:", [*others, type(component)])
         self._validate(entity, component)
+        self._owners[id(component)] = (entity, component)
         if self._defer_depth:
             self._pending.setdefault(entity, {})[type(component)] = component
             self._enqueue(entity, "add", component)
@@ -238,6 +275,27 @@ class World:
         self._dying.add(entity)
         self._enqueue(entity, "despawn", None)
 
+    def _check_unowned(self, component: Any, entity: int | None, op: str) -> None:
+        """Refuse an instance that already is a component of another entity."""
+        owner = self._owners.get(id(component))
+        if owner is not None and owner[1] is component and owner[0] != entity:
+            target = "" if entity is None else f"entity {entity}: "
+            raise ValidationError(
+                f"world.{op}(): {target}this {type(component).__name__} instance already is "
+                f"a component of entity {owner[0]}; one instance belongs to one entity "
+                "(give each its own, e.g. dataclasses.replace(component))"
+            )
+        binding = getattr(component, "_binding", None)
+        if owner is None and binding is not None:
+            raise ValidationError(
+                f"world.{op}(): this {type(component).__name__} instance already is a "
+                f"component of entity {binding.entity} of another world"
+            )
+
+    def validate(self, entity: int | None, component: Any) -> None:
+        """Run the validators of ``component``'s type (tracked writes of references use it)."""
+        self._validate(entity, component)
+
     def _validate(self, entity: int | None, component: Any) -> None:
         for check in self._validators.get(type(component), ()):
             check(entity, component)
@@ -255,6 +313,8 @@ class World:
                 if op == "add":
                     if self._entity_known(entity):
                         self._apply_add(entity, payload)
+                    else:
+                        self._disown(entity, payload)
                 elif op == "remove":
                     if self._entity_known(entity) and self._has_raw(entity, payload):
                         self._apply_remove(entity, payload)
@@ -274,6 +334,9 @@ class World:
         if old is not None and old is not component:
             for hook in self._on_remove.get(ctype, ()):
                 hook(entity, old)
+        if old is not None and old is not component:
+            self._disown(entity, old)
+        self._owners[id(component)] = (entity, component)
         self._use()
         esper.add_component(entity, component)
         if old is not component:
@@ -283,6 +346,7 @@ class World:
     def _apply_remove(self, entity: int, component_type: type) -> None:
         self._use()
         comp: Any = esper.remove_component(entity, component_type)
+        self._disown(entity, comp)
         for hook in self._on_remove.get(component_type, ()):
             hook(entity, comp)
 
@@ -297,7 +361,14 @@ class World:
                 hook(entity, comp)
         if entity in self._db():
             esper.delete_entity(entity, immediate=True)
+        for comp in comps.values():
+            self._disown(entity, comp)
         self._dying.discard(entity)
+
+    def _disown(self, entity: int, component: Any) -> None:
+        owner = self._owners.get(id(component))
+        if owner is not None and owner[0] == entity and owner[1] is component:
+            del self._owners[id(component)]
 
     # -- reading ---------------------------------------------------------------------
     def exists(self, entity: int) -> bool:
@@ -315,6 +386,7 @@ class World:
             if pend is not None:
                 comp = pend.get(component_type)
         if comp is None:
+            _check_type(component_type, "get")
             raise MissingComponentError(
                 f"entity {entity} has no {component_type.__name__} component"
             )
@@ -330,6 +402,8 @@ class World:
         comp: Any = comps.get(component_type)
         if comp is None and entity in self._pending:
             comp = self._pending[entity].get(component_type)
+        if comp is None:
+            _check_type(component_type, "try_get")
         return comp
 
     def has(self, entity: int, component_type: type) -> bool:
@@ -358,6 +432,9 @@ class World:
         Despawned entities awaiting the flush are left out. Order is esper's
         (deterministic for the same operations); sort by entity where it matters.
         """
+        for t in types:
+            if not isinstance(t, type):
+                _check_type(t, "query")
         self._use()
         result: list[tuple[int, tuple[Any, ...]]] = esper.get_components(*types)
         if self._dying:
@@ -516,6 +593,7 @@ class World:
         self._pending.clear()
         for entity in self.entities() + sorted(self._dying):
             self._apply_despawn(entity)
+        self._owners.clear()
         self._closed = True
         self._forget()
 

@@ -106,9 +106,16 @@ def _check_spelling(cls: type) -> None:
 
 
 def script_hooks(script: object) -> tuple[str, ...]:
-    """The hook names ``script`` defines, after checking their signatures and spelling."""
+    """The hook names ``script`` defines, after checking their signatures and spelling.
+
+    Looked up per instance: a hook assigned on one instance (``s.on_update = fn``)
+    belongs to that instance only. The per-class cache is used for instances
+    without such assignments, and filled only from them.
+    """
     cls = type(script)
-    cached = _hook_cache.get(cls)
+    own: dict[str, Any] = getattr(script, "__dict__", None) or {}
+    per_instance = any(name in own for name in HOOKS)
+    cached = None if per_instance else _hook_cache.get(cls)
     if cached is not None:
         return cached
     _check_spelling(cls)
@@ -129,7 +136,8 @@ def script_hooks(script: object) -> tuple[str, ...]:
             )
         found.append(name)
     result = tuple(found)
-    _hook_cache[cls] = result
+    if not per_instance:
+        _hook_cache[cls] = result
     return result
 
 
@@ -192,3 +200,9 @@ class Behaviour:
             what = "None" if self.script is None else f"the class {self.script.__name__}"
             raise ComponentTypeError(f"Behaviour.script must be a script instance, got {what}")
         self.hooks = script_hooks(self.script)
+        if not self.hooks and not isinstance(self.script, Script):
+            script = self.script
+            raise ComponentTypeError(
+                f"Behaviour.script must define a hook ({', '.join(list(HOOKS)[:3])}, ...) or "
+                f"be a kge.Script, got {type(script).__name__} {script!r}"
+            )

@@ -101,6 +101,7 @@ FAST[_optional_speed] = lambda v: v is None or (type(v) is float and v - v == 0.
 class Collider(Tracked):
     """A shape plus density, friction, restitution, filter and sensor flag."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"body"})
     _checks: ClassVar[dict[str, Check]] = {
         "shape": _shape,
         "density": _density,

@@ -111,6 +111,18 @@ def check_convex_ccw(vertices: Sequence[Vec2], owner: str) -> None:
                 f"{vertices[(i + 1) % n]!r} is {'reflex' if cross < 0 else 'straight'}; "
                 "split concave outlines into several colliders"
             )
+    # every turn is to the left; a star (pentagram) is too, but winds around twice
+    turning = 0.0
+    for i in range(n):
+        (x0, y0), (x1, y1), (x2, y2) = vertices[i], vertices[(i + 1) % n], vertices[(i + 2) % n]
+        ax, ay, bx, by = x1 - x0, y1 - y0, x2 - x1, y2 - y1
+        turning += math.atan2(ax * by - ay * bx, ax * bx + ay * by)
+    winds = round(turning / math.tau)
+    if winds != 1:
+        raise ValidationError(
+            f"{owner}.vertices must outline a simple convex polygon: the outline crosses "
+            f"itself and winds {winds} times around (a star); list the hull's corners once"
+        )
 
 
 @dataclass(slots=True, frozen=True)

@@ -14,12 +14,20 @@ unchanged (a finite float for ``finite``) pass through its fast predicate in
 components are built field by field through here, thousands per frame when a
 game spawns a wave.
 
+Fields that name other entities (``Collider.body``, a joint's ``body_a``) need
+the world to be checked: the entity must exist and hold a body. Such fields are
+listed in the class's ``_world_fields``; a write to one of them on a bound
+component runs the world's validators (the same ones ``spawn`` and ``add`` run)
+on a copy holding the new value, before the write, so a bad reference is
+refused at the line that wrote it and the component keeps its old value.
+
 Systems write their own results (poses after a step) with :func:`raw_set`,
 which skips both validation and dirty marking.
 """
 
 from __future__ import annotations
 
+import copy
 import inspect
 from collections.abc import Callable
 from dataclasses import MISSING, dataclass, field, fields
@@ -30,6 +38,7 @@ from kge.validate import FAST as _FAST
 from kge.validate import FAST_EXPR as _FAST_EXPR
 
 Check = Callable[[Any, str, str], Any]
+Validate = Callable[[int | None, Any], None]
 T = TypeVar("T")
 
 _SET = object.__setattr__
@@ -45,12 +54,14 @@ class Binding:
     itself and :meth:`add` marks each of their sets.
     """
 
-    __slots__ = ("dirty", "entity", "sets")
+    __slots__ = ("dirty", "entity", "sets", "validate")
 
     def __init__(self, entity: int, dirty: set[int], *more: set[int]) -> None:
         self.entity = entity
         self.sets: tuple[set[int], ...] = (dirty, *more)
         self.dirty: set[int] | Binding = self if more else dirty
+        #: the world's validators, for writes of ``_world_fields`` (set by :func:`bind`)
+        self.validate: Validate | None = None
 
     def add(self, entity: int) -> None:
         """Mark ``entity`` in every bound set (the fan-out behind ``dirty.add``)."""
@@ -63,14 +74,20 @@ class Binding:
             return Binding(entity, dirty)
         if any(s is dirty for s in self.sets):  # identity: two empty sets are equal
             return self
-        return Binding(entity, *self.sets, dirty)
+        joined = Binding(entity, *self.sets, dirty)
+        joined.validate = self.validate
+        return joined
 
     def without(self, dirty: set[int]) -> Binding | None:
         """This binding minus ``dirty`` (None when nothing is left to mark)."""
         rest = [s for s in self.sets if s is not dirty]
         if len(rest) == len(self.sets):
             return self
-        return Binding(self.entity, *rest) if rest else None
+        if not rest:
+            return None
+        left = Binding(self.entity, *rest)
+        left.validate = self.validate
+        return left
 
 
 @dataclass(slots=True)
@@ -78,6 +95,8 @@ class Tracked:
     """Base for components whose writes are validated and (when bound) tracked."""
 
     _checks: ClassVar[dict[str, Check]] = {}
+    #: fields naming other entities: writes are also checked by the world's validators
+    _world_fields: ClassVar[frozenset[str]] = frozenset()
     # Declared first so the generated __init__ sets it before any checked field.
     _binding: Binding | None = field(default=None, init=False, repr=False, compare=False)
 
@@ -87,6 +106,8 @@ class Tracked:
             fast = _FAST.get(check)
             if fast is None or not fast(value):  # the owner's name is only formatted here
                 value = check(value, self._owner(), name)
+            if name in self._world_fields:
+                self._check_in_world(name, value)
         _SET(self, name, value)
         try:
             binding = self._binding
@@ -94,6 +115,18 @@ class Tracked:
             return
         if binding is not None and name != "_binding":
             binding.dirty.add(binding.entity)
+
+    def _check_in_world(self, name: str, value: Any) -> None:
+        """Run the world's validators on a copy holding ``value`` (bound components only)."""
+        try:
+            binding = self._binding
+        except AttributeError:  # inside __init__: spawn/add validate the whole component
+            return
+        if binding is None or binding.validate is None:
+            return
+        candidate = copy.copy(self)
+        _SET(candidate, name, value)
+        binding.validate(binding.entity, candidate)
 
     def _owner(self) -> str:
         """"entity 7, Collider" (or "Collider" while unbound), for validation messages."""
@@ -198,13 +231,19 @@ raw_set: Callable[[object, str, Any], None] = object.__setattr__
 """Assign a field without validation or dirty marking (for systems writing results)."""
 
 
-def bind(component: Tracked, entity: int, dirty: set[int]) -> None:
+def bind(
+    component: Tracked, entity: int, dirty: set[int], validate: Validate | None = None
+) -> None:
     """Start tracking writes to ``component`` as changes of ``entity`` in ``dirty``.
 
     Sets other systems bound for the same entity keep being marked too.
+    ``validate(entity, candidate)`` (the world's validators) checks writes of the
+    class's ``_world_fields``.
     """
     old = component._binding
     new = Binding(entity, dirty) if old is None else old.joined(entity, dirty)
+    if validate is not None:
+        new.validate = validate
     raw_set(component, "_binding", new)
 
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from kge.components.tracked import Check, Tracked, fast_init
-from kge.validate import finite
+from kge.validate import coordinate, finite
 
 
 @fast_init
@@ -28,7 +28,7 @@ from kge.validate import finite
 class Transform(Tracked):
     """Pose of an entity: ``x``, ``y`` (m) and ``angle`` (rad, CCW)."""
 
-    _checks: ClassVar[dict[str, Check]] = {"x": finite, "y": finite, "angle": finite}
+    _checks: ClassVar[dict[str, Check]] = {"x": coordinate, "y": coordinate, "angle": finite}
 
     x: float = 0.0
     y: float = 0.0

@@ -35,6 +35,7 @@ from pymunk._chipmunk import lib as _lib
 
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
+from kge.validate import boolean, finite, non_negative
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -68,6 +69,26 @@ class PreSolve:
     tangent_speed: float = 0.0
     child_a: int = 0  #: segment of a chain collider A (0 for other shapes)
     child_b: int = 0
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        # a hook's writes reach Chipmunk's solver directly: a NaN friction there is a
+        # NaN pose, so they are checked at the line that wrote them, like components
+        check = _PRE_SOLVE_CHECKS.get(name)
+        if check is not None:
+            try:
+                owner = f"contact {self.collider_a}-{self.collider_b}, PreSolve"
+            except AttributeError:  # still inside __init__
+                owner = "PreSolve"
+            value = check(value, owner, name)
+        object.__setattr__(self, name, value)
+
+
+_PRE_SOLVE_CHECKS: dict[str, Callable[[Any, str, str], Any]] = {
+    "enabled": boolean,
+    "friction": non_negative,
+    "restitution": non_negative,
+    "tangent_speed": finite,
+}
 
 
 @dataclass(slots=True, frozen=True)

@@ -102,7 +102,7 @@ class JointBridge:
     # -- world hooks -----------------------------------------------------------------
     def added(self, entity: int, component: Any) -> None:
         if isinstance(component, Tracked):
-            bind(component, entity, self.dirty)
+            bind(component, entity, self.dirty, self.sim.world.validate)
         self.components[entity] = component
         if entity in self.handles:  # replaced: rebuild
             self.removed.add(entity)

@@ -27,7 +27,7 @@ from typing import Any
 
 from kge.errors import ValidationError
 from kge.snapshot import keep_resource
-from kge.validate import Vec2, boolean, integer, non_negative, positive, vec2
+from kge.validate import Vec2, at_most, boolean, integer, non_negative, positive, vec2
 
 
 @keep_resource  # simulation state: snapshots carry it
@@ -79,17 +79,27 @@ def _at_least_one(value: Any, owner: str, name: str) -> int:
     return v
 
 
+def _bounded(limit: float, unit: str, check: Callable[[Any, str, str], float]) -> Any:
+    """``check``, then no more than ``limit``: skins and slops beyond a metre, or per-step
+    caps beyond a kilometre, are no game's settings and overflow squares downstream."""
+
+    def checked(value: Any, owner: str, name: str) -> float:
+        return at_most(check(value, owner, name), limit, owner, name, unit)
+
+    return checked
+
+
 _CHECKS: dict[str, Callable[[Any, str, str], Any]] = {
     "gravity": vec2,
     "substeps": _at_least_one,
     "iterations": _at_least_one,
-    "collision_slop": non_negative,
-    "polygon_radius": non_negative,
+    "collision_slop": _bounded(1.0, "m", non_negative),
+    "polygon_radius": _bounded(1.0, "m", non_negative),
     "sleep": boolean,
     "time_to_sleep": positive,
     "sleep_speed": non_negative,
     "velocity_threshold": non_negative,
-    "max_translation": positive,
-    "max_rotation": positive,
+    "max_translation": _bounded(1e3, "m", positive),
+    "max_rotation": _bounded(1e3, "rad", positive),
     "iterated_hinges": boolean,
 }

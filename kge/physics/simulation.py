@@ -144,7 +144,7 @@ class Simulation:
                 world.despawn(c)
 
     def on_collider_added(self, entity: int, col: Collider) -> None:
-        bind(col, entity, self.col_dirty)
+        bind(col, entity, self.col_dirty, self.world.validate)
         self.collider_struct.add(entity)
         self.body_struct.add(entity)
         body = col.body

@@ -52,13 +52,14 @@ def clamp(v: np.ndarray, vmax: float, wmax: float) -> np.ndarray:
     >>> v.tolist()
     [[1.5, 2.0, 0.1], [0.5, 0.0, -2.0], [1.0, 1.0, 1.0]]
     """
-    speed2 = v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1]
+    with np.errstate(over="ignore"):  # a square beyond float64 is inf: over the limit
+        speed2 = v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1]
     fast = speed2 > vmax * vmax
     spin = np.abs(v[:, 2]) > wmax
     over = np.flatnonzero(fast | spin)
     if len(over):
         k = np.flatnonzero(fast)
-        scale = vmax / np.sqrt(speed2[k])
+        scale = vmax / np.hypot(v[k, 0], v[k, 1])  # overflow-safe where the square was not
         v[k, 0] *= scale
         v[k, 1] *= scale
         np.clip(v[:, 2], -wmax, wmax, out=v[:, 2])
@@ -73,8 +74,12 @@ def clamp_one(
     >>> clamp_one(300.0, 400.0, -1.0, 100.0, 2.0)
     ((60.0, 80.0), None)
     """
-    speed = math.hypot(vx, vy)
-    nv = (vx * vmax / speed, vy * vmax / speed) if speed > vmax else None
+    speed = math.hypot(vx, vy)  # overflow-safe; so is the scale (vx * vmax overflows at 1e307)
+    if speed > vmax:
+        scale = vmax / speed
+        nv: tuple[float, float] | None = (vx * scale, vy * scale)
+    else:
+        nv = None
     nw = math.copysign(wmax, w) if abs(w) > wmax else None
     return nv, nw
 

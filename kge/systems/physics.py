@@ -117,6 +117,11 @@ class PhysicsSystem(System):
                     f"{_where(entity, f'{name}.{field}')}: entity {ref} has no RigidBody "
                     "or Collider, so there is no body to join"
                 )
+        if a is None and b is None and not isinstance(joint, GearJoint):
+            raise ValidationError(
+                f"{_where(entity, name)}: body_a and body_b are both None (the ground); "
+                "a joint needs at least one body"
+            )
         if a is not None and a == b:
             raise ValidationError(
                 f"{_where(entity, name)}: body_a and body_b are both entity {a}; "

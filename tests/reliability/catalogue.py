@@ -235,6 +235,94 @@ CASES: list[Case] = [
          r"not a kge snapshot"),
     Case("zero solver iterations", "PhysicsSettings(iterations=0)", V,
          r"PhysicsSettings\.iterations must be >= 1"),
+    # -- one instance, one entity (issue 15, class 5) ------------------------------------
+    Case("one component instance on two entities", "world.spawn(world.get(a, Transform))", V,
+         r"world\.spawn\(\): this Transform instance already is a component of entity 2"),
+    Case("adding another entity's component", "world.add(plain, world.get(b, RigidBody))", V,
+         r"world\.add\(\): entity 4: this RigidBody instance already is a component of entity 3"),
+    Case("two joints spawned on one entity",
+         "world.spawn(RevoluteJoint(a, b, anchor=(0.0, 0.0)), DistanceJoint(a, b))", T,
+         r"RevoluteJoint and DistanceJoint are both joints; an entity holds one joint"),
+    Case("a second joint added to a joint entity", "world.add(hinge, DistanceJoint(a, b))", T,
+         r"world\.add\(\): entity 5: RevoluteJoint and DistanceJoint are both joints"),
+    # -- time and API inputs (issue 15, class 7) ----------------------------------------
+    Case("NaN frame time", "App(headless=True).advance(nan)", V,
+         r"App\.advance\.frame_dt must be finite, got nan"),
+    Case("step count as a string", "App(headless=True).step('3')", T,
+         r"App\.step\.n must be an int, got str '3'"),
+    Case("negative step count", "App(headless=True).step(-1)", V, r"App\.step\.n must be >= 0"),
+    Case("time scale as a string", "app = App(headless=True); app.time_scale = 'fast'", T,
+         r"App\.time_scale must be a number, got str 'fast'"),
+    Case("paused as a string", "app = App(headless=True); app.paused = 'no'", T,
+         r"App\.paused must be True or False"),
+    Case("NaN accumulator", "App(headless=True).timestep.accumulator = nan", V,
+         r"FixedTimestep\.accumulator must be finite"),
+    Case("int beyond a float", "Transform(x=10**400)", V,
+         r"Transform\.x must be finite, got an int of 1329 bits"),
+    Case("huge int velocity write", "world.get(a, RigidBody).velocity = (10**400, 0)", V,
+         r"entity 2, RigidBody\.velocity\[0\] must be finite, got an int"),
+    Case("component type as a string", "world.get(a, 'Transform')", T,
+         r"world\.get\(\): the component type must be a class, got str 'Transform'"),
+    Case("query by a string", "world.query(Transform, 'RigidBody')", T,
+         r"world\.query\(\): the component type must be a class"),
+    Case("joint of the ground to the ground",
+         "world.spawn(RevoluteJoint(None, None, anchor=(0.0, 0.0)))", V,
+         r"RevoluteJoint: body_a and body_b are both None \(the ground\)"),
+    Case("behaviour of a number", "Behaviour(5)", T,
+         r"Behaviour\.script must define a hook .* got int 5"),
+    Case("NaN mouse move", "Input().move_mouse(nan, 10.0)", V,
+         r"Input\.move_mouse\.x must be finite"),
+    Case("mouse button at a 3-tuple", "Input().mouse_down(at=(1.0, 2.0, 3.0))", V,
+         r"Input\.mouse_down\.at must be an \(x, y\) pair"),
+    Case("self-intersecting star polygon",
+         "Polygon([(0.0, 1.0), (-0.588, -0.809), (0.951, 0.309), (-0.951, 0.309), "
+         "(0.588, -0.809)])", V,
+         r"Polygon\.vertices must outline a simple convex polygon: .* winds 2 times"),
+    # -- extreme finite values (issue 15, class 6) --------------------------------------
+    Case("teleport beyond the world bound", "world.get(b, Transform).x = 1e160", V,
+         r"entity 3, Transform\.x must lie within 1e\+07 m of the origin"),
+    Case("joint anchor beyond the world bound",
+         "world.get(hinge, RevoluteJoint).local_anchor_a = (1e8, 0.0)", V,
+         r"entity 5, RevoluteJoint\.local_anchor_a must lie within 1e\+07 m"),
+    Case("motor joint offset beyond the world bound", "MotorJoint(a, b, linear_offset=(1e300, 0.0))",
+         V, r"MotorJoint\.linear_offset must lie within 1e\+07 m"),
+    Case("mouse target beyond the world bound", "MouseJoint(None, a, target=(0.0, -1e160))", V,
+         r"MouseJoint\.target must lie within 1e\+07 m"),
+    Case("spring frequency too high", "world.get(rod, DistanceJoint).frequency_hz = 1e300", V,
+         r"entity 6, DistanceJoint\.frequency_hz must be <= 1e\+06 Hz"),
+    Case("polygon skin of metres", "physics.settings.polygon_radius = 5.0", V,
+         r"PhysicsSettings\.polygon_radius must be <= 1 m"),
+    Case("per-step translation cap too high", "physics.settings.max_translation = 1e300", V,
+         r"PhysicsSettings\.max_translation must be <= 1000 m"),
+    Case("NaN friction written in pre-solve", "physics.on_pre_solve(nan_friction); step()", V,
+         r"contact 1-2, PreSolve\.friction must be finite, got nan", in_step=True),
+    Case("string written to PreSolve.enabled", "physics.on_pre_solve(text_enabled); step()", T,
+         r"contact 1-2, PreSolve\.enabled must be True or False", in_step=True),
+    # -- live writes of entity references (issue 15, class 4) ----------------------------
+    Case("live joint body write to a missing entity", "world.get(hinge, RevoluteJoint).body_b = 999",
+         V, r"entity 5, RevoluteJoint\.body_b: body entity 999 does not exist"),
+    Case("live joint body write to a despawned entity", "world.get(rod, DistanceJoint).body_a = dead",
+         V, r"entity 6, DistanceJoint\.body_a: body entity 7 does not exist"),
+    Case("live joint body write to an entity without body",
+         "world.get(rod, DistanceJoint).body_b = plain", V,
+         r"entity 6, DistanceJoint\.body_b: entity 4 has no RigidBody or Collider"),
+    Case("live joint body write making both bodies one", "world.get(hinge, RevoluteJoint).body_b = a",
+         V, r"entity 5, RevoluteJoint: body_a and body_b are both entity 2"),
+    Case("live joint body write of a string", "world.get(hinge, RevoluteJoint).body_a = 'a'", T,
+         r"entity 5, RevoluteJoint\.body_a must be an entity id"),
+    Case("live Collider.body write to a missing entity", "world.get(ground, Collider).body = dead",
+         V, r"entity 1, Collider\.body: body entity 7 does not exist"),
+    Case("live Collider.body write to an entity without body",
+         "world.get(ground, Collider).body = plain", V,
+         r"entity 1, Collider\.body: entity 4 has no RigidBody"),
+    Case("live gear write naming a distance joint", "world.get(gear, GearJoint).joint_b = rod", V,
+         r"entity 9, GearJoint\.joint_b: entity 6 must hold a RevoluteJoint or PrismaticJoint",
+         setup="hinge2 = world.spawn(RevoluteJoint(None, a, anchor=(0.0, 0.5))); "
+               "gear = world.spawn(GearJoint(hinge, hinge2))"),
+    Case("live gear write naming a missing joint", "world.get(gear, GearJoint).joint_a = 999", V,
+         r"entity 9, GearJoint\.joint_a: joint entity 999 does not exist",
+         setup="hinge2 = world.spawn(RevoluteJoint(None, a, anchor=(0.0, 0.5))); "
+               "gear = world.spawn(GearJoint(hinge, hinge2))"),
 ]
 
 
@@ -279,6 +367,8 @@ def build_scene() -> Scene:
         hinge=hinge, rod=rod, dead=dead, BadHook=BadHook,
         spawn_in_hook=lambda contact: w.spawn(Transform()),
         despawn_in_hook=lambda contact: w.despawn(b),
+        nan_friction=lambda contact: setattr(contact, "friction", math.nan),
+        text_enabled=lambda contact: setattr(contact, "enabled", "no"),
         add_in_filter=lambda ca, cb: w.add(plain, kge.Name("x")) is None,  # type: ignore[func-returns-value]
     )
     return Scene(pw, ns)
@@ -330,6 +420,8 @@ def run_case(case: Case) -> BaseException:
         assert re.search(case.names, str(err)), f"{case.name}: message {str(err)!r}"
         pw.physics.remove_hook(ns["spawn_in_hook"])
         pw.physics.remove_hook(ns["despawn_in_hook"])
+        pw.physics.remove_hook(ns["nan_friction"])
+        pw.physics.remove_hook(ns["text_enabled"])
         pw.physics.contact_filter = None
         if case.in_step:
             assert structure(pw) == shape, f"{case.name}: entities/components changed"

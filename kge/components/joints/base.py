@@ -34,7 +34,7 @@ from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError, where
-from kge.validate import boolean, finite, non_negative, vec2
+from kge.validate import boolean, finite, non_negative, point, vec2
 
 Vec2 = tuple[float, float]
 
@@ -111,6 +111,9 @@ class Joint(Tracked):
     """
 
     _checks: ClassVar[dict[str, Check]] = BASE_CHECKS
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"body_a", "body_b"})
+    #: a joint is an entity: the world refuses a second joint component on one entity
+    _one_per_entity: ClassVar[str] = "joint"
     #: (lower field, upper field) pairs that must stay ordered
     _ordered: ClassVar[tuple[tuple[str, str], ...]] = ()
 
@@ -171,18 +174,18 @@ def _has(obj: object, name: str) -> bool:
 
 #: the checks of the anchor fields every one-point joint has (see AnchoredJoint)
 ANCHOR_CHECKS: dict[str, Check] = {
-    "anchor": optional(vec2),
-    "local_anchor_a": vec2,
-    "local_anchor_b": vec2,
+    "anchor": optional(point),
+    "local_anchor_a": point,
+    "local_anchor_b": point,
 }
 
 
 #: the checks of the two anchor points of rods and ropes (see TwoPointJoint)
 TWO_POINT_CHECKS: dict[str, Check] = {
-    "anchor_a": optional(vec2),
-    "anchor_b": optional(vec2),
-    "local_anchor_a": vec2,
-    "local_anchor_b": vec2,
+    "anchor_a": optional(point),
+    "anchor_b": optional(point),
+    "local_anchor_a": point,
+    "local_anchor_b": point,
 }
 
 

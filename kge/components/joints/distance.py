@@ -20,7 +20,7 @@ from typing import ClassVar
 
 from kge.components.joints.base import TWO_POINT_CHECKS, TwoPointJoint, checks, optional
 from kge.components.tracked import Check
-from kge.validate import non_negative
+from kge.validate import frequency, non_negative
 
 
 @dataclass(slots=True)
@@ -37,7 +37,7 @@ class DistanceJoint(TwoPointJoint):
         length=optional(non_negative),
         min_length=optional(non_negative),
         max_length=optional(non_negative),
-        frequency_hz=non_negative,
+        frequency_hz=frequency,
         damping_ratio=non_negative,
     )
     _ordered: ClassVar[tuple[tuple[str, str], ...]] = (("min_length", "max_length"),)

@@ -43,6 +43,7 @@ class GearJoint(Joint):
     _checks: ClassVar[dict[str, Check]] = checks(
         joint_a=joint_ref, joint_b=joint_ref, ratio=nonzero
     )
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"joint_a", "joint_b"})
 
     joint_a: int
     joint_b: int

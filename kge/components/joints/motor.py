@@ -18,7 +18,7 @@ from typing import Any, ClassVar
 
 from kge.components.joints.base import Joint, Vec2, checks
 from kge.components.tracked import Check
-from kge.validate import finite, in_range, non_negative, vec2
+from kge.validate import finite, in_range, non_negative, point
 
 
 def fraction(value: Any, owner: str, name: str) -> float:
@@ -30,7 +30,7 @@ class MotorJoint(Joint):
     """Box2D's defaults: max_force 1, max_torque 1, correction_factor 0.3."""
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        linear_offset=vec2,
+        linear_offset=point,
         angular_offset=finite,
         max_force=non_negative,
         max_torque=non_negative,

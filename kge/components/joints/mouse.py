@@ -20,7 +20,7 @@ from typing import ClassVar
 
 from kge.components.joints.base import Joint, Vec2, checks, optional
 from kge.components.tracked import Check
-from kge.validate import non_negative, vec2
+from kge.validate import frequency, non_negative, point
 
 
 @dataclass(slots=True)
@@ -28,11 +28,11 @@ class MouseJoint(Joint):
     """Pull ``body_b``'s grab point towards ``target`` (world, m)."""
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        target=vec2,
-        grab_point=optional(vec2),
-        local_anchor_b=optional(vec2),
+        target=point,
+        grab_point=optional(point),
+        local_anchor_b=optional(point),
         max_force=non_negative,
-        frequency_hz=non_negative,
+        frequency_hz=frequency,
         damping_ratio=non_negative,
     )
 

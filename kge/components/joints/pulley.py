@@ -19,7 +19,7 @@ from typing import ClassVar
 
 from kge.components.joints.base import Joint, Vec2, checks, greater_than_zero, optional
 from kge.components.tracked import Check
-from kge.validate import non_negative, vec2
+from kge.validate import non_negative, point
 
 
 @dataclass(slots=True)
@@ -31,12 +31,12 @@ class PulleyJoint(Joint):
     """
 
     _checks: ClassVar[dict[str, Check]] = checks(
-        ground_anchor_a=vec2,
-        ground_anchor_b=vec2,
-        anchor_a=optional(vec2),
-        anchor_b=optional(vec2),
-        local_anchor_a=vec2,
-        local_anchor_b=vec2,
+        ground_anchor_a=point,
+        ground_anchor_b=point,
+        anchor_a=optional(point),
+        anchor_b=optional(point),
+        local_anchor_a=point,
+        local_anchor_b=point,
         ratio=greater_than_zero,
         max_length_a=optional(non_negative),
         max_length_b=optional(non_negative),

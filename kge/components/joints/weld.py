@@ -14,7 +14,7 @@ from typing import ClassVar
 
 from kge.components.joints.base import ANCHOR_CHECKS, AnchoredJoint, checks, optional
 from kge.components.tracked import Check
-from kge.validate import finite, non_negative
+from kge.validate import finite, frequency, non_negative
 
 
 @dataclass(slots=True)
@@ -24,7 +24,7 @@ class WeldJoint(AnchoredJoint):
     _checks: ClassVar[dict[str, Check]] = checks(
         **ANCHOR_CHECKS,
         reference_angle=optional(finite),
-        frequency_hz=non_negative,
+        frequency_hz=frequency,
         damping_ratio=non_negative,
     )
 

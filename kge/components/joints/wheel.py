@@ -21,7 +21,7 @@ from kge.components.joints.base import (
     unit_vector,
 )
 from kge.components.tracked import Check
-from kge.validate import boolean, finite, non_negative
+from kge.validate import boolean, finite, frequency, non_negative
 
 
 @dataclass(slots=True)
@@ -36,7 +36,7 @@ class WheelJoint(AnchoredJoint):
         enable_motor=boolean,
         motor_speed=finite,
         max_motor_torque=non_negative,
-        frequency_hz=non_negative,
+        frequency_hz=frequency,
         damping_ratio=non_negative,
     )
 
