@@ -31,7 +31,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from kge.components.camera import Camera, active_camera
-from kge.errors import ValidationError
+from kge.errors import ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
@@ -232,15 +232,27 @@ class App(Host):
 
         The scene object stays; its ``setup`` is not run again. Systems are rebuilt,
         and the physics system recreates every body from the restored components.
+        The data is validated in full first (as ``spawn`` validates): on any error a
+        ``SnapshotError`` is raised here and the running scene is left as it was.
+        What the scene registered in code carries over (see :mod:`kge.scene_carry`).
         """
+        from kge.scene_carry import carry_over
         from kge.snapshot import restore_into
+
+        if not self._stack:
+            raise RuntimeError("App.restore() needs a running scene")
+        world = self._make_world(self._stack[-1][0])
+        try:
+            restore_into(world, data)
+        except BaseException:
+            world.close()
+            raise
 
         def op() -> None:
             scene, old = self._stack.pop()
+            carry_over(old, world)
             old.close()
-            world = self._make_world(scene)
             self._stack.append((scene, world))
-            restore_into(world, data)
 
         self._schedule(op)
 
@@ -274,6 +286,7 @@ class App(Host):
 
         This ignores the accumulator and the pause flag: it is the test driver.
         """
+        self._not_reentrant("step")
         count = integer(n, "App.step", "n")
         if count < 0:
             raise ValidationError(f"App.step.n must be >= 0, got {count}")
@@ -285,12 +298,22 @@ class App(Host):
 
         Returns the number of fixed steps that ran. A window calls this every tick.
         """
+        self._not_reentrant("advance")
         steps = self.timestep.advance(frame_dt)
         game_dt = self.timestep.frame_time(frame_dt)
         if self.paused and steps:
             game_dt = self.fixed_dt * steps  # a single step also advances update time
         self._frame(steps, game_dt)
         return steps
+
+    def _not_reentrant(self, op: str) -> None:
+        """Refuse a frame inside a frame (a hook or physics callback calling app.step()):
+        the inner frame would clear and deliver the outer step's events mid-delivery."""
+        if self._in_frame:
+            raise WorldLockedError(
+                f"App.{op}() inside a running frame (a system, behaviour or physics "
+                "callback): schedule the work for the next frame instead"
+            )
 
     def _frame(self, steps: int, game_dt: float) -> None:
         if not self._stack:

@@ -32,6 +32,7 @@ Transform(x=1.0, y=2.0, angle=0.0)
 from __future__ import annotations
 
 import copy
+import dataclasses
 import itertools
 import os
 import pickle
@@ -107,12 +108,89 @@ def _load(data: bytes) -> dict[str, Any]:
     return loaded
 
 
+def _recheck(value: Any, where: str) -> None:
+    """Run the checks ``value``'s constructor runs (unpickling bypasses them).
+
+    A dataclass is rebuilt from its init fields with :func:`dataclasses.replace`
+    (the rebuilt copy is discarded: the restored object keeps its read-back
+    fields), after its nested dataclasses (a collider's shape, filter).
+    """
+    if not dataclasses.is_dataclass(value) or isinstance(value, type):
+        return
+    for f in dataclasses.fields(value):
+        if f.init:
+            _recheck(getattr(value, f.name, None), where)
+    try:
+        dataclasses.replace(value)
+    except KgeError as err:
+        raise SnapshotError(f"{where}: {err}") from err
+    except (TypeError, ValueError) as err:
+        raise SnapshotError(f"{where}: {type(value).__name__} is not valid: {err}") from err
+
+
+def _validate(world: World, entities: Any, next_id: Any) -> None:
+    """Every check ``spawn`` would run, before anything is added (then nothing is).
+
+    Field checks run per component; the world's validators (a collider's body, a
+    joint's bodies...) run with every restored entity visible through the queued
+    table, so references between restored entities resolve whatever their order.
+    """
+    if not isinstance(entities, dict) or not isinstance(next_id, int):
+        raise SnapshotError("not a kge snapshot: bad entity table")
+    for entity in entities:
+        if isinstance(entity, bool) or not isinstance(entity, int) or entity < 1:
+            raise SnapshotError(f"not a kge snapshot: entity id {entity!r}")
+    seen: dict[int, int] = {}
+    for entity in sorted(entities):
+        comps = entities[entity]
+        if entity >= next_id:
+            raise SnapshotError(f"snapshot entity {entity} is not below its id counter {next_id}")
+        if not isinstance(comps, tuple | list):
+            raise SnapshotError(f"snapshot entity {entity}: bad component list")
+        types = [type(c) for c in comps]
+        if len(set(types)) != len(types):
+            raise SnapshotError(f"snapshot entity {entity}: two components of one type")
+        for comp in comps:
+            if id(comp) in seen:
+                raise SnapshotError(
+                    f"snapshot entities {seen[id(comp)]} and {entity} share one "
+                    f"{type(comp).__name__} instance"
+                )
+            seen[id(comp)] = entity
+            _recheck(comp, f"snapshot entity {entity}, {type(comp).__name__}")
+    world._use()
+    table = esper._entities
+    for entity in entities:
+        table[entity] = {}
+        world._pending[entity] = {type(c): c for c in entities[entity]}
+    try:
+        for entity in sorted(entities):
+            for comp in entities[entity]:
+                try:
+                    world.validate(entity, comp)
+                except KgeError as err:
+                    raise SnapshotError(f"snapshot entity {entity}: {err}") from err
+    finally:
+        world._pending.clear()
+        for entity in entities:
+            table.pop(entity, None)
+
+
 def restore_into(world: World, data: bytes) -> World:
-    """Fill an empty ``world`` (with its systems already added) from a snapshot."""
+    """Fill an empty ``world`` (with its systems already added) from a snapshot.
+
+    Everything is validated first, as ``spawn`` validates (NaN fields, bad shapes,
+    references to missing bodies, shared instances); on any error a
+    :class:`SnapshotError` is raised and ``world`` is left empty and unchanged.
+    """
     loaded = _load(data)
     if world.entities():
         raise SnapshotError(f"restore needs an empty world; {world.name!r} has entities")
-    for resource in loaded["resources"]:
+    resources = loaded.get("resources", [])
+    for resource in resources:
+        _recheck(resource, f"snapshot resource {type(resource).__name__}")
+    _validate(world, loaded.get("entities"), loaded.get("next_id"))
+    for resource in resources:
         world.insert_resource(resource)
     world._use()
     table = esper._entities

@@ -587,6 +587,11 @@ class World:
         """Despawn everything (running on_remove hooks) and delete the esper world."""
         if self._closed:
             return
+        if self._lock_depth:
+            raise WorldLockedError(
+                "world.close() inside a physics callback: the step is still running; "
+                "close the world (or change scene) from a Behaviour hook or between steps"
+            )
         self.schedule.close()
         self._lock_depth = 0
         self._queue.clear()

@@ -298,6 +298,20 @@ CASES: list[Case] = [
          r"contact 1-2, PreSolve\.friction must be finite, got nan", in_step=True),
     Case("string written to PreSolve.enabled", "physics.on_pre_solve(text_enabled); step()", T,
          r"contact 1-2, PreSolve\.enabled must be True or False", in_step=True),
+    # -- restores (issue 15, class 2) ------------------------------------------------------
+    Case("snapshot holding a NaN position", "World.restore(bad)", SnapshotError,
+         r"snapshot entity 2, Transform: Transform\.x must be finite, got nan",
+         setup="import pickle; d = pickle.loads(world.snapshot()); "
+               "object.__setattr__(d['entities'][a][0], 'x', nan); bad = pickle.dumps(d)"),
+    Case("snapshot of a collider on a missing body",
+         "App(lambda w: None, headless=True).restore(bad)", SnapshotError,
+         r"snapshot entity 2: entity 2, Collider\.body: body entity 999 does not exist",
+         setup="import pickle; d = pickle.loads(world.snapshot()); "
+               "c = [c for c in d['entities'][a] if type(c) is Collider][0]; "
+               "object.__setattr__(c, 'body', 999); bad = pickle.dumps(d)"),
+    # -- callbacks (issue 15, class 8) --------------------------------------------------
+    Case("closing the world inside pre-solve", "physics.on_pre_solve(close_in_hook); step()",
+         WorldLockedError, r"world\.close\(\) inside a physics callback", in_step=True),
     # -- live writes of entity references (issue 15, class 4) ----------------------------
     Case("live joint body write to a missing entity", "world.get(hinge, RevoluteJoint).body_b = 999",
          V, r"entity 5, RevoluteJoint\.body_b: body entity 999 does not exist"),
@@ -368,6 +382,7 @@ def build_scene() -> Scene:
         spawn_in_hook=lambda contact: w.spawn(Transform()),
         despawn_in_hook=lambda contact: w.despawn(b),
         nan_friction=lambda contact: setattr(contact, "friction", math.nan),
+        close_in_hook=lambda contact: w.close(),
         text_enabled=lambda contact: setattr(contact, "enabled", "no"),
         add_in_filter=lambda ca, cb: w.add(plain, kge.Name("x")) is None,  # type: ignore[func-returns-value]
     )
@@ -421,6 +436,7 @@ def run_case(case: Case) -> BaseException:
         pw.physics.remove_hook(ns["spawn_in_hook"])
         pw.physics.remove_hook(ns["despawn_in_hook"])
         pw.physics.remove_hook(ns["nan_friction"])
+        pw.physics.remove_hook(ns["close_in_hook"])
         pw.physics.remove_hook(ns["text_enabled"])
         pw.physics.contact_filter = None
         if case.in_step:

@@ -43,6 +43,16 @@ def pendulum_chain(world: World) -> None:
         prev = link
 
 
+def tall_stack(world: World) -> None:
+    """Twenty 1 m boxes stacked on the ground, sleeping off: an awake, loaded stack."""
+    from kge import PhysicsSettings
+
+    world.insert_resource(PhysicsSettings(sleep=False))
+    world.spawn(Transform(0.0, -1.0), Collider(Box(10.0, 1.0)))
+    for i in range(20):
+        world.spawn(Transform(0.0, 0.5 + 1.0 * i), RigidBody(), Collider(Box(0.5, 0.5)))
+
+
 def poses(app: App) -> dict[int, tuple[float, float, float]]:
     return {e: (t.x, t.y, t.angle) for e, (t, _) in app.world.query(Transform, RigidBody)}
 
@@ -71,6 +81,8 @@ SCENES: list[tuple[str, Callable[..., Any], int, int]] = [
     ("pyramid of 55 boxes, saved while settling (step 30)", pyramid, 30, 120),
     ("pyramid of 55 boxes, saved at rest, awake (step 60)", pyramid, 60, 120),
     ("pyramid of 55 boxes, saved asleep (step 400)", pyramid, 400, 120),
+    ("tall stack of 20 boxes, sleep off, saved at step 120", tall_stack, 120, 120),
+    ("tall stack of 20 boxes, sleep off, saved at step 120, 600 steps", tall_stack, 120, 600),
 ]
 
 
