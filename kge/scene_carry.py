@@ -24,11 +24,11 @@ naming it: it would act on a closed world.
 
 from __future__ import annotations
 
+import sys
 import warnings
 from collections.abc import Callable
 from typing import Any
 
-from kge.physics.resource import Physics
 from kge.world import World
 
 
@@ -86,8 +86,12 @@ def carry_over(old: World, new: World) -> list[str]:
     for rtype, resource in list(old._resources.items()):
         if rtype not in new._resources:
             new.insert_resource(resource)
-    old_physics, new_physics = old.try_resource(Physics), new.try_resource(Physics)
     swaps: dict[int, Any] = {id(old): new}
+    # physics is a plugin: a world has a Physics only if kge.physics was imported
+    physics_module = sys.modules.get("kge.physics.resource")
+    physics = None if physics_module is None else physics_module.Physics
+    old_physics = None if physics is None else old.try_resource(physics)
+    new_physics = None if physics is None else new.try_resource(physics)
     if old_physics is not None and new_physics is not None:
         swaps[id(old_physics)] = new_physics
         rec = old_physics._sim.recorder

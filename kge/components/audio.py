@@ -150,6 +150,10 @@ class ImpactSound(Tracked):
         return self.volume * min(1.0, speed / self.max_speed)
 
 
+def _optional_positive(value: Any, owner: str, name: str) -> float | None:
+    return None if value is None else positive(value, owner, name)
+
+
 @dataclass(slots=True)
 class AudioListener(Tracked):
     """Marks the entity (with a Transform) that hears positional sounds.
@@ -159,10 +163,7 @@ class AudioListener(Tracked):
     when a camera is known, else 10 m.
     """
 
-    _checks: ClassVar[dict[str, Check]] = {}
+    # every write is checked, not only the constructor's (a NaN width pans to NaN)
+    _checks: ClassVar[dict[str, Check]] = {"pan_width": _optional_positive}
 
     pan_width: float | None = None
-
-    def __post_init__(self) -> None:
-        if self.pan_width is not None:
-            self.pan_width = positive(self.pan_width, "AudioListener", "pan_width")

@@ -324,6 +324,8 @@ CASES: list[Case] = [
          V, r"entity 5, RevoluteJoint: body_a and body_b are both entity 2"),
     Case("live joint body write of a string", "world.get(hinge, RevoluteJoint).body_a = 'a'", T,
          r"entity 5, RevoluteJoint\.body_a must be an entity id"),
+    Case("live NaN write to a listener's pan width", "AudioListener(2.0).pan_width = nan", V,
+         r"AudioListener\.pan_width must be finite, got nan"),
     Case("live Collider.body write to a missing entity", "world.get(ground, Collider).body = dead",
          V, r"entity 1, Collider\.body: body entity 7 does not exist"),
     Case("live Collider.body write to an entity without body",

@@ -22,7 +22,7 @@ from kge.physics.contacts import PreSolve
 from kge.physics.resource import Physics
 from kge.scene_carry import RestoreWarning
 from kge.schedule import Stage
-from kge.snapshot import SnapshotError, restore
+from kge.snapshot import SnapshotError
 
 from .harness import state_dump
 
@@ -91,11 +91,11 @@ def test_restored_data_is_validated_like_spawned_data() -> None:
     app.step(5)
     bad = _bad_snapshots(app)
     with pytest.raises(SnapshotError, match=r"snapshot entity 2, Transform: Transform\.x must be"):
-        restore(bad["NaN position"])
+        World.restore(bad["NaN position"])
     with pytest.raises(SnapshotError, match=r"snapshot entity 3, RigidBody: .*velocity\[0\]"):
-        restore(bad["infinite velocity"])
+        World.restore(bad["infinite velocity"])
     with pytest.raises(SnapshotError, match="share one"):
-        restore(bad["one instance on two entities"])
+        World.restore(bad["one instance on two entities"])
     with pytest.raises(SnapshotError, match=r"snapshot entity 2: .*body entity 999 does not exist"):
         app.restore(bad["collider on a missing body"])
 
@@ -187,5 +187,5 @@ def test_a_hook_bound_to_the_old_world_is_reported_loudly() -> None:
 def test_restoring_a_world_directly_keeps_ids_and_checks_references() -> None:
     w = World()
     w.spawn(Transform())
-    copy = restore(w.snapshot())
+    copy = World.restore(w.snapshot())
     assert copy.entities() == [1]
