@@ -117,6 +117,15 @@ class PhysicsMachine(RuleBasedStateMachine):
         if body is not None:
             self.world.spawn(Transform(dx, 0.0), Collider(s, body=body))  # type: ignore[arg-type]
 
+    @rule(i=index, k=index, to_static=st.booleans())
+    def move_collider(self, i: int, k: int, to_static: bool) -> None:
+        """Write ``Collider.body``: onto another body, or back to its own / implicit one."""
+        c = self._pick(self._live(Collider), i)
+        if c is None:
+            return
+        target = None if to_static else self._pick(self._bodies(), k)
+        self.world.get(c, Collider).body = target
+
     @rule(x=coord, y=height)
     def spawn_static_edge(self, x: float, y: float) -> None:
         self.world.spawn(Transform(x, y), Collider(Edge((-1.0, 0.0), (1.0, 0.0))))
