@@ -150,9 +150,9 @@ def vec2(value: Any, owner: str, field: str) -> Vec2:
     """A pair of finite floats, from any 2-sequence (tuple, list, pymunk Vec2d, numpy)."""
     if _is_float_pair(value):
         return value
-    if isinstance(value, (str, bytes)) or (not isinstance(value, Sequence) and not hasattr(
-        value, "__len__"
-    )):
+    if isinstance(value, (str, bytes, set, frozenset, dict)) or not (
+        isinstance(value, Sequence) or (hasattr(value, "__len__") and hasattr(value, "__getitem__"))
+    ):  # a set or a dict has a length but no order: not a point
         raise ComponentTypeError(
             f"{_label(owner, field)} must be an (x, y) pair, got {type(value).__name__} {value!r}"
         )

@@ -72,7 +72,8 @@ def _check_component(component: object, entity: int | None = None) -> None:
             f"{target}expected a component instance, got the class {component.__name__} "
             f"(write {component.__name__}(...))"
         )
-    if component is None or isinstance(component, (int, float, str, bytes, tuple, list, dict)):
+    if component is None or type(component).__module__ == "builtins":
+        # numbers, strings, containers, functions, bare object()s: not component data
         target = "" if entity is None else f"entity {entity}: "
         raise ComponentTypeError(
             f"{target}expected a component instance, got {type(component).__name__} {component!r}"
@@ -373,9 +374,15 @@ class World:
     # -- reading ---------------------------------------------------------------------
     def exists(self, entity: int) -> bool:
         """True for a spawned entity that has not been despawned."""
-        if entity in self._dying:
-            return False
-        return entity in self._db()
+        try:
+            if entity in self._dying:
+                return False
+            return entity in self._db()
+        except TypeError:  # unhashable: a list, a set...
+            raise ComponentTypeError(
+                f"world.exists(): entity must be an int id, got {type(entity).__name__} "
+                f"{entity!r}"
+            ) from None
 
     def get(self, entity: int, component_type: type[T]) -> T:
         """The entity's component of ``component_type`` (queued adds included)."""
@@ -399,7 +406,11 @@ class World:
         comps = self._db().get(entity)
         if comps is None:
             return None
-        comp: Any = comps.get(component_type)
+        try:
+            comp: Any = comps.get(component_type)
+        except TypeError:  # unhashable: a list, a set...
+            _check_type(component_type, "try_get")
+            raise
         if comp is None and entity in self._pending:
             comp = self._pending[entity].get(component_type)
         if comp is None:
@@ -483,7 +494,8 @@ class World:
         """The singleton of ``resource_type`` (settings, physics, input, events...)."""
         try:
             return self._resources[resource_type]
-        except KeyError:
+        except (KeyError, TypeError):
+            _check_type(resource_type, "resource")
             for value in self._resources.values():
                 if isinstance(value, resource_type):
                     return value

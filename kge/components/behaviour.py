@@ -195,6 +195,19 @@ class Behaviour:
     hooks: tuple[str, ...] = field(init=False, repr=False, compare=False, default=())
     started: bool = field(init=False, repr=False, compare=False, default=False)
 
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name == "script":
+            try:
+                object.__getattribute__(self, "hooks")
+            except AttributeError:  # inside __init__: the first assignment
+                pass
+            else:
+                raise ComponentTypeError(
+                    "Behaviour.script cannot be replaced (the runner keeps calling the "
+                    "script it was given); add a new Behaviour(script) to the entity instead"
+                )
+        object.__setattr__(self, name, value)
+
     def __post_init__(self) -> None:
         if self.script is None or isinstance(self.script, type):
             what = "None" if self.script is None else f"the class {self.script.__name__}"

@@ -76,6 +76,8 @@ def _at_least_one(value: Any, owner: str, name: str) -> int:
     v = integer(value, owner, name)
     if v < 1:
         raise ValidationError(f"{owner}.{name} must be >= 1, got {v!r}")
+    if v > 1000:  # 10**19 substeps is a step that never ends
+        raise ValidationError(f"{owner}.{name} must be <= 1000, got {v!r}")
     return v
 
 
