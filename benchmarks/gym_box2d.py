@@ -35,7 +35,7 @@ def lunar_lander_module(backend: str) -> ModuleType:
     # (Gymnasium 1.2) imports every Box2D env, and Box2D before it is bound
     found = importlib.util.find_spec("gymnasium.envs.box2d")
     assert found is not None and found.submodule_search_locations is not None
-    package_dir = list(found.submodule_search_locations)[0]
+    package_dir = next(iter(found.submodule_search_locations))
 
     keys = ("Box2D", "Box2D.b2", "Box2D.Box2D")
     saved = {k: sys.modules.get(k) for k in keys}
