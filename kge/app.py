@@ -5,7 +5,8 @@ One frame, in the order of DESIGN.md:
 1. **input**: window events (or test calls such as ``app.input.press``) are in
    the :class:`~kge.input.Input` resource; ``on_key_*`` / ``on_mouse_*`` hooks run.
 2. **fixed loop**: the accumulator decides how many fixed steps run; each one
-   clears the per-step event lists and runs the FIXED stage (behaviours
+   clears the per-step event lists, shows the input edges since the previous
+   step to fixed-step code, and runs the FIXED stage (behaviours
    ``on_fixed_update`` -> physics -> contact events), flushing queued changes
    after every system.
 3. **update**: UPDATE then LATE stages with the scaled frame time.
@@ -30,6 +31,7 @@ import sys
 from collections.abc import Callable, Iterable
 from typing import Any
 
+from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
 from kge.errors import ValidationError, WorldLockedError
 from kge.host import Frontend, Host
@@ -90,6 +92,7 @@ class App(Host):
         )
         self.input = Input()
         self.input.screen_to_world = self.screen_to_world
+        self.actions = InputMap(self.input)  #: named actions, shared by every scene
         self.frontend: Frontend | None = None
         self.extra_systems: list[SystemFactory] = []
         self._stack: list[tuple[Scene, World]] = []
@@ -219,6 +222,7 @@ class App(Host):
     def _make_world(self, scene: Scene) -> World:
         world = World(name=scene.name or type(scene).__name__)
         world.insert_resource(self.input)
+        world.insert_resource(self.actions)
         world.insert_resource(Time(self.fixed_dt))
         world.insert_resource(self)
         world.insert_resource(self, as_type=Host)
@@ -328,7 +332,9 @@ class App(Host):
                 if self._scene_ops:
                     break  # the scene is changing: do not step a world about to close
                 world.clear_events()
+                self.input.begin_step()  # fixed-step code sees each input edge once
                 world.schedule.run(Stage.FIXED, self.fixed_dt)
+                self.input.end_step()
                 time.step += 1
                 time.fixed_elapsed += self.fixed_dt
             time.dt = game_dt

@@ -1,10 +1,20 @@
-"""The ``Input`` resource: what the keyboard and mouse did this frame.
+"""The ``Input`` resource: what the keyboard, mouse and gamepads did.
 
 Three views per key or button, as in most engines: *held* (down now), *pressed*
-(went down this frame) and *released* (went up this frame). The edges last one
-frame: the App clears them at the end of each frame (after the update pass), so
-a ``pressed`` seen in ``on_fixed_update`` is also seen in ``on_update`` of the
-same frame.
+(went down) and *released* (went up). The edges are kept twice, because frames and
+fixed steps do not line up:
+
+* code running in the update pass (``on_update``, UPDATE/LATE systems) sees an edge
+  in exactly one frame: the frame after it happened;
+* code running in a fixed step (``on_fixed_update``, FIXED systems) sees an edge in
+  exactly one fixed step: the first step after it happened, even when that step
+  comes several frames later (144 Hz frames, 60 Hz steps) and never again in the
+  second step of a frame that runs two (30 Hz frames). This is the classic
+  FixedUpdate trap of frame-based input, closed.
+
+The App tells the Input when a fixed step starts and ends
+(:meth:`Input.begin_step` / :meth:`Input.end_step`); the queries answer for the
+pass they are called from.
 
 A window feeds it from pyglet events; headless tests drive it directly:
 
@@ -15,11 +25,18 @@ A window feeds it from pyglet events; headless tests drive it directly:
 (True, True)
 >>> inp.end_frame(); inp.pressed(Key.SPACE), inp.held(Key.SPACE)
 (False, True)
+>>> inp.begin_step(); inp.pressed(Key.SPACE)      # the first fixed step still sees it
+True
+>>> inp.end_step(); inp.begin_step(); inp.pressed(Key.SPACE)
+False
+
+Gamepads (see :class:`Gamepad`) are fed the same way: the window connects pyglet's
+controllers, tests call :meth:`Input.connect_gamepad` and drive the returned pad.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
@@ -27,6 +44,18 @@ from kge.keys import Mouse
 from kge.validate import finite, integer, vec2
 
 Vec2 = tuple[float, float]
+
+#: gamepad buttons, with pyglet's (SDL's) names
+PAD_BUTTONS: frozenset[str] = frozenset(
+    (
+        "a", "b", "x", "y", "back", "start", "guide", "leftshoulder", "rightshoulder",
+        "leftstick", "rightstick", "dpleft", "dpright", "dpup", "dpdown",
+    )
+)  # fmt: skip
+#: gamepad axes: sticks in [-1, 1] (y up), triggers in [0, 1]
+PAD_AXES: frozenset[str] = frozenset(
+    ("leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger")
+)
 
 
 def _check_code(code: object, call: str, what: str, example: str) -> None:
@@ -59,69 +88,292 @@ class MouseEvent:
     modifiers: int = 0
 
 
+@dataclass(slots=True, frozen=True)
+class TextEvent:
+    """Text typed this frame (after the keyboard layout: ``"A"`` with shift, ``"é"``)."""
+
+    text: str
+
+
+@dataclass(slots=True, frozen=True)
+class GamepadEvent:
+    """A gamepad connected (``"connect"``), went away (``"disconnect"``), or a button
+    went ``"down"`` / ``"up"``."""
+
+    kind: str
+    pad: int
+    button: str = ""
+
+
+AnyEvent = KeyEvent | MouseEvent | TextEvent | GamepadEvent
+
+
+class _Edges:
+    """Held codes and their edges, per frame and per fixed step (one family of codes)."""
+
+    __slots__ = ("held", "pending", "pressed", "released", "step_pressed", "step_released")
+
+    def __init__(self) -> None:
+        self.held: set[Hashable] = set()
+        self.pressed: set[Hashable] = set()
+        self.released: set[Hashable] = set()
+        #: edges since the last fixed step began: (pressed, released)
+        self.pending: tuple[set[Hashable], set[Hashable]] = (set(), set())
+        self.step_pressed: set[Hashable] = set()
+        self.step_released: set[Hashable] = set()
+
+    def down(self, code: Hashable) -> bool:
+        if code in self.held:
+            return False
+        self.held.add(code)
+        self.pressed.add(code)
+        self.pending[0].add(code)
+        return True
+
+    def up(self, code: Hashable) -> bool:
+        if code not in self.held:
+            return False
+        self.held.discard(code)
+        self.released.add(code)
+        self.pending[1].add(code)
+        return True
+
+    def edges(self, fixed: bool) -> tuple[set[Hashable], set[Hashable]]:
+        if fixed:
+            return self.step_pressed, self.step_released
+        return self.pressed, self.released
+
+    def begin_step(self) -> None:
+        self.step_pressed, self.step_released = self.pending
+        self.pending = (set(), set())
+
+    def end_step(self) -> None:
+        self.step_pressed = set()
+        self.step_released = set()
+
+    def end_frame(self) -> None:
+        self.pressed.clear()
+        self.released.clear()
+
+    def forget(self, code: Hashable) -> None:
+        """Hide a press from the game (the UI took it); it stays held."""
+        self.pressed.discard(code)
+        self.pending[0].discard(code)
+
+    def reset(self) -> None:
+        self.held.clear()
+        self.end_frame()
+        self.pending = (set(), set())
+        self.end_step()
+
+
+@dataclass(slots=True)
+class Gamepad:
+    """One connected gamepad: its index (lowest free slot), name and axis values.
+
+    Buttons are read through :class:`Input` (``inp.pad_held("a", pad=0)``) so their
+    edges follow the same frame / fixed-step rules as keys. A simulated pad is just
+    one that a test drives with :meth:`press`, :meth:`release` and :meth:`move`.
+    """
+
+    index: int
+    name: str
+    axes: dict[str, float] = field(default_factory=lambda: dict.fromkeys(PAD_AXES, 0.0))
+    connected: bool = True
+    #: ``(weak, strong, duration)`` of the last rumble asked for (what a test checks)
+    last_rumble: tuple[float, float, float] | None = None
+    rumble_fn: Callable[[float, float, float], None] | None = field(default=None, repr=False)
+    _input: Input | None = field(default=None, repr=False)
+
+    def _owner(self) -> Input:
+        if self._input is None or not self.connected:
+            raise ValidationError(f"gamepad {self.index} ({self.name}) is not connected")
+        return self._input
+
+    def press(self, button: str) -> None:
+        self._owner().pad_press(self.index, button)
+
+    def release(self, button: str) -> None:
+        self._owner().pad_release(self.index, button)
+
+    def move(self, axis: str, value: float) -> None:
+        self._owner().pad_axis(self.index, axis, value)
+
+    def rumble(self, weak: float = 1.0, strong: float = 1.0, duration: float = 0.3) -> None:
+        """Vibrate (where the pad and pyglet's driver can): motor strengths 0..1, seconds."""
+        for name, v in (("weak", weak), ("strong", strong)):
+            if not 0.0 <= v <= 1.0:
+                raise ValidationError(f"Gamepad.rumble: {name} must be in [0, 1], got {v!r}")
+        if not duration >= 0.0:
+            raise ValidationError(f"Gamepad.rumble: duration must be >= 0, got {duration!r}")
+        self.last_rumble = (float(weak), float(strong), float(duration))
+        if self.rumble_fn is not None and self.connected:
+            self.rumble_fn(float(weak), float(strong), float(duration))
+
+
+def _check_button(button: str) -> str:
+    if button not in PAD_BUTTONS:
+        raise ValidationError(
+            f"unknown gamepad button {button!r}; buttons are {', '.join(sorted(PAD_BUTTONS))}"
+        )
+    return button
+
+
+def _check_axis(axis: str) -> str:
+    if axis not in PAD_AXES:
+        raise ValidationError(
+            f"unknown gamepad axis {axis!r}; axes are {', '.join(sorted(PAD_AXES))}"
+        )
+    return axis
+
+
 @dataclass(slots=True)
 class Input:
-    """Keyboard and mouse state for the current frame."""
+    """Keyboard, mouse and gamepad state (see the module docstring)."""
 
-    _held: set[int] = field(default_factory=set)
-    _pressed: set[int] = field(default_factory=set)
-    _released: set[int] = field(default_factory=set)
-    _buttons: set[int] = field(default_factory=set)
-    _buttons_pressed: set[int] = field(default_factory=set)
-    _buttons_released: set[int] = field(default_factory=set)
+    _keys: _Edges = field(default_factory=_Edges)
+    _buttons: _Edges = field(default_factory=_Edges)
+    _pads: _Edges = field(default_factory=_Edges)  # codes: (pad index, button)
+    _fixed: bool = False
     modifiers: int = 0
     mouse_screen: Vec2 = (0.0, 0.0)
     mouse_world: Vec2 = (0.0, 0.0)
     scroll: Vec2 = (0.0, 0.0)
-    events: list[KeyEvent | MouseEvent] = field(default_factory=list)
+    text: str = ""  #: text typed this frame
+    events: list[AnyEvent] = field(default_factory=list)
+    gamepads: dict[int, Gamepad] = field(default_factory=dict)
     screen_to_world: Callable[[Vec2], Vec2] = field(default=lambda p: p, repr=False)
 
-    # -- queries -------------------------------------------------------------------
+    # -- keys --------------------------------------------------------------------------
     def held(self, key: int) -> bool:
-        return key in self._held
+        return key in self._keys.held
 
     def pressed(self, key: int) -> bool:
-        return key in self._pressed
+        return key in self._keys.edges(self._fixed)[0]
 
     def released(self, key: int) -> bool:
-        return key in self._released
+        return key in self._keys.edges(self._fixed)[1]
 
     def any_held(self, *keys: int) -> bool:
-        return any(k in self._held for k in keys)
+        return any(k in self._keys.held for k in keys)
 
     def any_pressed(self, *keys: int) -> bool:
-        return any(k in self._pressed for k in keys)
+        edges = self._keys.edges(self._fixed)[0]
+        return any(k in edges for k in keys)
+
+    def keys_pressed(self) -> list[int]:
+        """Keys that went down (this frame, or this fixed step inside one), sorted."""
+        return sorted(k for k in self._keys.edges(self._fixed)[0] if isinstance(k, int))
 
     def axis(self, negative: tuple[int, ...], positive: tuple[int, ...]) -> float:
         """-1, 0 or +1 from two groups of keys (e.g. ``(Key.S, Key.DOWN)``, ``(Key.W, Key.UP)``)."""
         return float(self.any_held(*positive)) - float(self.any_held(*negative))
 
+    # -- mouse -------------------------------------------------------------------------
     def mouse_held(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons
+        return button in self._buttons.held
 
     def mouse_pressed(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons_pressed
+        return button in self._buttons.edges(self._fixed)[0]
 
     def mouse_released(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons_released
+        return button in self._buttons.edges(self._fixed)[1]
 
-    # -- feeding (window events or tests) -------------------------------------------
+    # -- gamepads ----------------------------------------------------------------------
+    def pad_held(self, button: str, pad: int | None = None) -> bool:
+        """Is ``button`` down on gamepad ``pad`` (any pad when None)?"""
+        return self._pad_in(self._pads.held, button, pad)
+
+    def pad_pressed(self, button: str, pad: int | None = None) -> bool:
+        return self._pad_in(self._pads.edges(self._fixed)[0], button, pad)
+
+    def pad_released(self, button: str, pad: int | None = None) -> bool:
+        return self._pad_in(self._pads.edges(self._fixed)[1], button, pad)
+
+    def pad_axis_value(self, axis: str, pad: int | None = None) -> float:
+        """The raw value of ``axis`` on ``pad`` (any pad: the one pushed furthest)."""
+        _check_axis(axis)
+        if pad is not None:
+            gp = self.gamepads.get(pad)
+            return gp.axes[axis] if gp is not None else 0.0
+        return max((gp.axes[axis] for gp in self.gamepads.values()), key=abs, default=0.0)
+
+    def _pad_in(self, codes: set[Hashable], button: str, pad: int | None) -> bool:
+        _check_button(button)
+        if pad is not None:
+            return (pad, button) in codes
+        return any((i, button) in codes for i in self.gamepads)
+
+    def connect_gamepad(
+        self,
+        name: str = "Simulated gamepad",
+        rumble: Callable[[float, float, float], None] | None = None,
+    ) -> Gamepad:
+        """A gamepad joins, in the lowest free slot (a test's simulated pad, or pyglet's)."""
+        index = 0
+        while index in self.gamepads:
+            index += 1
+        pad = Gamepad(index, str(name), rumble_fn=rumble, _input=self)
+        self.gamepads[index] = pad
+        self.events.append(GamepadEvent("connect", index))
+        return pad
+
+    def disconnect_gamepad(self, index: int) -> None:
+        """A gamepad went away: its buttons are released and its slot is free again."""
+        pad = self.gamepads.pop(index, None)
+        if pad is None:
+            raise ValidationError(f"no gamepad {index} is connected")
+        for code in [c for c in self._pads.held if isinstance(c, tuple) and c[0] == index]:
+            self._pads.up(code)
+        pad.connected = False
+        self.events.append(GamepadEvent("disconnect", index))
+
+    def _pad(self, index: int) -> Gamepad:
+        pad = self.gamepads.get(index)
+        if pad is None:
+            raise ValidationError(f"no gamepad {index} is connected")
+        return pad
+
+    def pad_press(self, index: int, button: str) -> None:
+        self._pad(index)
+        if self._pads.down((index, _check_button(button))):
+            self.events.append(GamepadEvent("down", index, button))
+
+    def pad_release(self, index: int, button: str) -> None:
+        self._pad(index)
+        if self._pads.up((index, _check_button(button))):
+            self.events.append(GamepadEvent("up", index, button))
+
+    def pad_axis(self, index: int, axis: str, value: float) -> None:
+        """Set an axis of pad ``index`` (sticks: -1..1, y up; triggers: 0..1)."""
+        pad = self._pad(index)
+        v = float(value)
+        lo = 0.0 if axis.endswith("trigger") else -1.0
+        if not lo <= v <= 1.0:  # NaN fails too
+            raise ValidationError(f"gamepad {index} axis {axis!r}: {value!r} not in [{lo}, 1]")
+        pad.axes[_check_axis(axis)] = v
+
+    # -- feeding (window events or tests) ----------------------------------------------
     def press(self, key: int, modifiers: int = 0) -> None:
         """A key goes down (a repeat while held is not a new press)."""
         _check_code(key, "press", "key", "Key.SPACE")
         self.modifiers = integer(modifiers, "Input.press", "modifiers")
-        if key not in self._held:
-            self._held.add(key)
-            self._pressed.add(key)
+        if self._keys.down(key):
             self.events.append(KeyEvent(key, True, modifiers))
 
     def release(self, key: int, modifiers: int = 0) -> None:
         _check_code(key, "release", "key", "Key.SPACE")
         self.modifiers = integer(modifiers, "Input.release", "modifiers")
-        if key in self._held:
-            self._held.discard(key)
-            self._released.add(key)
+        if self._keys.up(key):
             self.events.append(KeyEvent(key, False, modifiers))
+
+    def type_text(self, text: str) -> None:
+        """Characters typed (the window's ``on_text``; tests type with it too)."""
+        if not isinstance(text, str):
+            raise ValidationError(f"Input.type_text needs a str, got {type(text).__name__}")
+        if text:
+            self.text += text
+            self.events.append(TextEvent(text))
 
     def move_mouse(self, x: float, y: float) -> None:
         """The pointer moves to screen pixel (x, y) (origin bottom-left)."""
@@ -151,13 +403,10 @@ class Input:
         if point is not None:
             self.mouse_screen = point
         self.mouse_world = self.screen_to_world(self.mouse_screen)
-        held, edge = (self._buttons, self._buttons_pressed)
-        if kind == "down" and button not in held:
-            held.add(button)
-            edge.add(button)
-        elif kind == "up" and button in held:
-            held.discard(button)
-            self._buttons_released.add(button)
+        if kind == "down":
+            self._buttons.down(button)
+        else:
+            self._buttons.up(button)
         self.events.append(
             MouseEvent(kind, button, self.mouse_screen, self.mouse_world, modifiers=modifiers)
         )
@@ -178,17 +427,64 @@ class Input:
         """Recompute ``mouse_world`` (the camera may have moved under a still pointer)."""
         self.mouse_world = self.screen_to_world(self.mouse_screen)
 
+    def consume_mouse(self, kinds: tuple[str, ...] = ("down", "up", "scroll")) -> None:
+        """Keep this frame's mouse button and wheel events from the game (the UI took them).
+
+        The presses vanish from ``mouse_pressed`` (frame and fixed step) and the events
+        from :attr:`events`, so ``on_mouse_down`` hooks do not see them either.
+        """
+        kept: list[AnyEvent] = []
+        for ev in self.events:
+            if isinstance(ev, MouseEvent) and ev.kind in kinds:
+                if ev.kind == "down":
+                    self._buttons.forget(ev.button)
+                elif ev.kind == "scroll":
+                    self.scroll = (0.0, 0.0)
+                continue
+            kept.append(ev)
+        self.events[:] = kept
+
+    def consume_keys(self, *keys: int) -> None:
+        """Keep these key presses from the game (a focused widget used them)."""
+        drop = set(keys)
+        for k in keys:
+            self._keys.forget(k)
+        self.events[:] = [
+            ev for ev in self.events if not (isinstance(ev, KeyEvent) and ev.key in drop)
+        ]
+
+    def consume_text(self) -> None:
+        """Keep this frame's typed text from the game (a focused text field took it)."""
+        self.text = ""
+        self.events[:] = [ev for ev in self.events if not isinstance(ev, TextEvent)]
+
+    # -- the App's clock -----------------------------------------------------------------
+    def begin_step(self) -> None:
+        """A fixed step starts: its queries see the edges since the previous step began."""
+        for edges in (self._keys, self._buttons, self._pads):
+            edges.begin_step()
+        self._fixed = True
+
+    def end_step(self) -> None:
+        """The fixed step ended: those edges are spent for fixed-step code."""
+        for edges in (self._keys, self._buttons, self._pads):
+            edges.end_step()
+        self._fixed = False
+
     def end_frame(self) -> None:
-        """Forget this frame's edges, events and scroll (the App calls it)."""
-        self._pressed.clear()
-        self._released.clear()
-        self._buttons_pressed.clear()
-        self._buttons_released.clear()
+        """Forget this frame's edges, events, text and scroll (the App calls it)."""
+        self._fixed = False
+        for edges in (self._keys, self._buttons, self._pads):
+            edges.end_frame()
         self.scroll = (0.0, 0.0)
+        self.text = ""
         self.events.clear()
 
     def reset(self) -> None:
         """Release everything (a scene change or a lost window focus)."""
-        self._held.clear()
-        self._buttons.clear()
-        self.end_frame()
+        for edges in (self._keys, self._buttons, self._pads):
+            edges.reset()
+        self._fixed = False
+        self.scroll = (0.0, 0.0)
+        self.text = ""
+        self.events.clear()

@@ -9,7 +9,8 @@ pyglet's, so events pass through untranslated.
 Keys the window itself handles: F11 toggles fullscreen. F1 (the physics debug view)
 and F2 (the stats overlay) are ordinary input, handled by the render plugin's
 :class:`~kge.systems.render.DebugKeys` system, so one path serves windows and tests.
-Losing focus releases every held key, so nothing stays stuck.
+Losing focus releases every held key, so nothing stays stuck. Gamepads join
+through :mod:`kge.render.gamepads` (pyglet's controller API, with hot-plug).
 """
 
 from __future__ import annotations
@@ -63,6 +64,10 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
     @window.event
     def on_key_release(symbol: int, modifiers: int) -> None:
         inp.release(symbol, modifiers)
+
+    @window.event
+    def on_text(text: str) -> None:
+        inp.type_text(text)
 
     @window.event
     def on_mouse_press(x: int, y: int, button: int, modifiers: int) -> None:
@@ -124,6 +129,10 @@ def run_windowed(
     else:
         ensure_renderer(app, window)
     connect(app, window, frames)
+    from kge.render.gamepads import GamepadBridge
+
+    pads = GamepadBridge(app.input)
+    pads.start()
     app._running = True
     queued = pyglet.window.Window._enable_event_queue
     try:
@@ -134,4 +143,5 @@ def run_windowed(
         pyglet.clock.unschedule(pyglet.app.event_loop._redraw_windows)
         pyglet.window.Window._enable_event_queue = queued  # see setup.create_window
         app._running = False
+        pads.stop()
         release(app)

@@ -18,7 +18,7 @@ from typing import Any
 
 from kge.components.behaviour import Behaviour
 from kge.coroutines import Coroutine
-from kge.input import Input, KeyEvent, MouseEvent
+from kge.input import AnyEvent, GamepadEvent, Input, KeyEvent, MouseEvent, TextEvent
 from kge.plugin import Plugin
 from kge.schedule import Stage, System
 from kge.world import World
@@ -130,12 +130,16 @@ class BehaviourRunner:
             return sum(not c.done for c in self._coroutines.get(entity, ()))
         return sum(not c.done for cos in self._coroutines.values() for c in cos)
 
-    def deliver_input(self, events: list[KeyEvent | MouseEvent]) -> None:
+    def deliver_input(self, events: list[AnyEvent]) -> None:
         for ev in events:
             if isinstance(ev, KeyEvent):
                 self.call("on_key_down" if ev.down else "on_key_up", ev.key)
-            else:
+            elif isinstance(ev, MouseEvent):
                 self.call(f"on_mouse_{ev.kind}", ev)
+            elif isinstance(ev, TextEvent):
+                self.call("on_text", ev.text)
+            elif isinstance(ev, GamepadEvent) and ev.kind in ("down", "up"):
+                self.call(f"on_gamepad_{ev.kind}", ev)
 
 
 def runner(world: World) -> BehaviourRunner:
