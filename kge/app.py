@@ -42,6 +42,7 @@ from kge.plugins import default_plugins
 from kge.scene import Scene, SceneLike, Time, as_scene
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
+from kge.transitions import ActiveTransition, Transition
 from kge.validate import boolean, integer, non_negative
 from kge.world import World
 
@@ -96,6 +97,10 @@ class App(Host):
         self.frontend: Frontend | None = None
         self.extra_systems: list[SystemFactory] = []
         self._stack: list[tuple[Scene, World]] = []
+        #: worlds pushed as overlays: True if the scene below keeps running
+        self._overlays: dict[World, bool] = {}
+        self.transition: ActiveTransition | None = None
+        self._swap: Callable[[], None] | None = None
         self._plugins: list[Plugin] = []
         self._scene_ops: list[Callable[[], None]] = []
         self._in_frame = False
@@ -169,25 +174,80 @@ class App(Host):
     def scenes(self) -> list[Scene]:
         return [s for s, _ in self._stack]
 
-    def push_scene(self, scene: SceneLike, **kwargs: Any) -> None:
-        """Put ``scene`` on top (the one below pauses); kwargs go to its setup."""
+    def push_scene(
+        self, scene: SceneLike, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+    ) -> None:
+        """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
+
+        ``overlay=True`` draws it over the scene below (a see-through pause menu);
+        the scene below stays frozen, or keeps running (without input) when
+        ``run_below=True``. Popping returns to it with its state intact.
+        """
         target = as_scene(scene)
-        self._schedule(lambda: self._push(target, kwargs))
+        if run_below and not overlay:
+            raise ValueError("push_scene(run_below=True) needs overlay=True")
+        self._schedule(lambda: self._push(target, kwargs, overlay=(run_below if overlay else None)))
 
     def pop_scene(self) -> None:
         """Close the top scene and resume the one below."""
         self._schedule(self._pop)
 
-    def replace_scene(self, scene: SceneLike, **kwargs: Any) -> None:
-        """Close the top scene and start ``scene`` (with kwargs) in its place."""
+    def replace_scene(
+        self, scene: SceneLike, *, transition: Transition | None = None, **kwargs: Any
+    ) -> None:
+        """Close the top scene and start ``scene`` (with kwargs) in its place.
+
+        ``transition`` (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``,
+        ``Wipe``) plays over the change; the scene changes when it is due.
+        """
         target = as_scene(scene)
+        if transition is not None and not isinstance(transition, Transition):
+            raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
 
         def op() -> None:
             if self._stack:
                 self._close_top()
             self._push(target, kwargs, resume_below=False)
 
-        self._schedule(op)
+        if transition is None:
+            self._schedule(op)
+        else:  # the newest transition wins; the scene changes when it is due
+            self._swap = op
+            self.transition = ActiveTransition(transition)
+
+    def _advance_transition(self, real_dt: float) -> None:
+        """Play the running transition: change the scene when due, end it when done."""
+        active = self.transition
+        if active is None:
+            return
+        active.advance(real_dt)
+        swap = self._swap
+        if active.swap_due and swap is not None:
+            active.swapped = True
+            self._swap = None
+            swap()
+        if active.done:
+            self.transition = None
+
+    def visible_worlds(self) -> list[World]:
+        """The worlds drawn this frame, bottom first: the top one and the scenes below
+        each overlay."""
+        shown = []
+        for _, world in reversed(self._stack):
+            shown.append(world)
+            if world not in self._overlays:
+                break
+        return shown[::-1]
+
+    def _running_worlds(self) -> list[World]:
+        """The top world, then the ones below overlays pushed with ``run_below=True``."""
+        worlds = [self.world]
+        for _, world in reversed(self._stack[:-1]):
+            above = worlds[-1]
+            if not self._overlays.get(above, False):
+                break
+            worlds.append(world)
+        return worlds
 
     def _schedule(self, op: Callable[[], None]) -> None:
         if self._in_frame:
@@ -195,18 +255,27 @@ class App(Host):
         else:
             op()
 
-    def _push(self, scene: Scene, kwargs: dict[str, Any], resume_below: bool = True) -> None:
+    def _push(
+        self,
+        scene: Scene,
+        kwargs: dict[str, Any],
+        resume_below: bool = True,
+        overlay: bool | None = None,
+    ) -> None:
         if self._stack and resume_below:
             below, below_world = self._stack[-1]
             below.on_pause(below_world)
         world = self._make_world(scene)
         self._stack.append((scene, world))
+        if overlay is not None:
+            self._overlays[world] = overlay
         self.input.reset()
         scene.setup(world, **kwargs)
         world.flush()
 
     def _close_top(self) -> None:
         scene, world = self._stack.pop()
+        self._overlays.pop(world, None)
         scene.on_exit(world)
         world.close()
 
@@ -296,6 +365,7 @@ class App(Host):
             raise ValidationError(f"App.step.n must be >= 0, got {count}")
         for _ in range(count):
             self._frame(steps=1, game_dt=self.fixed_dt)
+            self._advance_transition(self.fixed_dt)
 
     def advance(self, frame_dt: float) -> int:
         """Run one frame of ``frame_dt`` real seconds through the accumulator.
@@ -308,6 +378,7 @@ class App(Host):
         if self.paused and steps:
             game_dt = self.fixed_dt * steps  # a single step also advances update time
         self._frame(steps, game_dt)
+        self._advance_transition(min(max(frame_dt, 0.0), self.timestep.max_frame_dt))
         return steps
 
     def _not_reentrant(self, op: str) -> None:
@@ -322,31 +393,38 @@ class App(Host):
     def _frame(self, steps: int, game_dt: float) -> None:
         if not self._stack:
             raise RuntimeError("the App has no scene to run")
-        world = self.world
-        time = world.resource(Time)
         self._in_frame = True
         try:
             self.input.refresh_world_position()
-            world.schedule.run(Stage.INPUT, game_dt)
-            for _ in range(steps):
-                if self._scene_ops:
-                    break  # the scene is changing: do not step a world about to close
-                world.clear_events()
-                self.input.begin_step()  # fixed-step code sees each input edge once
-                world.schedule.run(Stage.FIXED, self.fixed_dt)
-                self.input.end_step()
-                time.step += 1
-                time.fixed_elapsed += self.fixed_dt
-            time.dt = game_dt
-            time.elapsed += game_dt
-            time.frame += 1
-            time.alpha = self.timestep.alpha
-            world.schedule.run(Stage.UPDATE, game_dt)
-            world.schedule.run(Stage.LATE, game_dt)
+            for i, world in enumerate(self._running_worlds()):
+                with self.input.muted(i > 0):  # scenes below an overlay get no input
+                    self._run_world(world, steps, game_dt)
         finally:
             self._in_frame = False
             self.input.end_frame()
             self.frame_count += 1
+        self._run_scene_ops()
+
+    def _run_world(self, world: World, steps: int, game_dt: float) -> None:
+        time = world.resource(Time)
+        world.schedule.run(Stage.INPUT, game_dt)
+        for _ in range(steps):
+            if self._scene_ops:
+                break  # the scene is changing: do not step a world about to close
+            world.clear_events()
+            self.input.begin_step()  # fixed-step code sees each input edge once
+            world.schedule.run(Stage.FIXED, self.fixed_dt)
+            self.input.end_step()
+            time.step += 1
+            time.fixed_elapsed += self.fixed_dt
+        time.dt = game_dt
+        time.elapsed += game_dt
+        time.frame += 1
+        time.alpha = self.timestep.alpha
+        world.schedule.run(Stage.UPDATE, game_dt)
+        world.schedule.run(Stage.LATE, game_dt)
+
+    def _run_scene_ops(self) -> None:
         ops, self._scene_ops = self._scene_ops, []
         for op in ops:
             op()

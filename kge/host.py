@@ -23,6 +23,7 @@ if TYPE_CHECKING:
 
     from kge.input import Input
     from kge.schedule import System
+    from kge.transitions import ActiveTransition
     from kge.world import World
 
 
@@ -48,6 +49,8 @@ class Host:
     background: tuple[int, int, int]
     input: Input
     frontend: Frontend | None
+    #: the scene transition playing now (drawn over the frame), or None
+    transition: ActiveTransition | None
 
     @property
     def fixed_dt(self) -> float:  # pragma: no cover - App overrides
@@ -60,6 +63,10 @@ class Host:
 
     @property
     def world(self) -> World:  # pragma: no cover - App overrides
+        raise NotImplementedError
+
+    def visible_worlds(self) -> list[World]:  # pragma: no cover - App overrides
+        """The worlds drawn this frame, bottom first (scenes below overlays, then the top)."""
         raise NotImplementedError
 
     def add_system_to_all(self, factory: Callable[[], System]) -> None:  # pragma: no cover

@@ -36,7 +36,8 @@ controllers, tests call :meth:`Input.connect_gamepad` and drive the returned pad
 
 from __future__ import annotations
 
-from collections.abc import Callable, Hashable
+from collections.abc import Callable, Hashable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
@@ -108,6 +109,10 @@ class GamepadEvent:
 AnyEvent = KeyEvent | MouseEvent | TextEvent | GamepadEvent
 
 
+_NONE: frozenset[Hashable] = frozenset()
+Codes = set[Hashable] | frozenset[Hashable]
+
+
 class _Edges:
     """Held codes and their edges, per frame and per fixed step (one family of codes)."""
 
@@ -138,7 +143,12 @@ class _Edges:
         self.pending[1].add(code)
         return True
 
-    def edges(self, fixed: bool) -> tuple[set[Hashable], set[Hashable]]:
+    def down_now(self, muted: bool) -> Codes:
+        return _NONE if muted else self.held
+
+    def edges(self, fixed: bool | None) -> tuple[Codes, Codes]:
+        if fixed is None:
+            return _NONE, _NONE
         if fixed:
             return self.step_pressed, self.step_released
         return self.pressed, self.released
@@ -235,6 +245,7 @@ class Input:
     _buttons: _Edges = field(default_factory=_Edges)
     _pads: _Edges = field(default_factory=_Edges)  # codes: (pad index, button)
     _fixed: bool = False
+    _muted: bool = False
     modifiers: int = 0
     mouse_screen: Vec2 = (0.0, 0.0)
     mouse_world: Vec2 = (0.0, 0.0)
@@ -246,24 +257,25 @@ class Input:
 
     # -- keys --------------------------------------------------------------------------
     def held(self, key: int) -> bool:
-        return key in self._keys.held
+        return key in self._keys.down_now(self._muted)
 
     def pressed(self, key: int) -> bool:
-        return key in self._keys.edges(self._fixed)[0]
+        return key in self._keys.edges(self._view)[0]
 
     def released(self, key: int) -> bool:
-        return key in self._keys.edges(self._fixed)[1]
+        return key in self._keys.edges(self._view)[1]
 
     def any_held(self, *keys: int) -> bool:
-        return any(k in self._keys.held for k in keys)
+        held = self._keys.down_now(self._muted)
+        return any(k in held for k in keys)
 
     def any_pressed(self, *keys: int) -> bool:
-        edges = self._keys.edges(self._fixed)[0]
+        edges = self._keys.edges(self._view)[0]
         return any(k in edges for k in keys)
 
     def keys_pressed(self) -> list[int]:
         """Keys that went down (this frame, or this fixed step inside one), sorted."""
-        return sorted(k for k in self._keys.edges(self._fixed)[0] if isinstance(k, int))
+        return sorted(k for k in self._keys.edges(self._view)[0] if isinstance(k, int))
 
     def axis(self, negative: tuple[int, ...], positive: tuple[int, ...]) -> float:
         """-1, 0 or +1 from two groups of keys (e.g. ``(Key.S, Key.DOWN)``, ``(Key.W, Key.UP)``)."""
@@ -271,34 +283,36 @@ class Input:
 
     # -- mouse -------------------------------------------------------------------------
     def mouse_held(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons.held
+        return button in self._buttons.down_now(self._muted)
 
     def mouse_pressed(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons.edges(self._fixed)[0]
+        return button in self._buttons.edges(self._view)[0]
 
     def mouse_released(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons.edges(self._fixed)[1]
+        return button in self._buttons.edges(self._view)[1]
 
     # -- gamepads ----------------------------------------------------------------------
     def pad_held(self, button: str, pad: int | None = None) -> bool:
         """Is ``button`` down on gamepad ``pad`` (any pad when None)?"""
-        return self._pad_in(self._pads.held, button, pad)
+        return self._pad_in(self._pads.down_now(self._muted), button, pad)
 
     def pad_pressed(self, button: str, pad: int | None = None) -> bool:
-        return self._pad_in(self._pads.edges(self._fixed)[0], button, pad)
+        return self._pad_in(self._pads.edges(self._view)[0], button, pad)
 
     def pad_released(self, button: str, pad: int | None = None) -> bool:
-        return self._pad_in(self._pads.edges(self._fixed)[1], button, pad)
+        return self._pad_in(self._pads.edges(self._view)[1], button, pad)
 
     def pad_axis_value(self, axis: str, pad: int | None = None) -> float:
         """The raw value of ``axis`` on ``pad`` (any pad: the one pushed furthest)."""
         _check_axis(axis)
+        if self._muted:
+            return 0.0
         if pad is not None:
             gp = self.gamepads.get(pad)
             return gp.axes[axis] if gp is not None else 0.0
         return max((gp.axes[axis] for gp in self.gamepads.values()), key=abs, default=0.0)
 
-    def _pad_in(self, codes: set[Hashable], button: str, pad: int | None) -> bool:
+    def _pad_in(self, codes: Codes, button: str, pad: int | None) -> bool:
         _check_button(button)
         if pad is not None:
             return (pad, button) in codes
@@ -457,6 +471,20 @@ class Input:
         """Keep this frame's typed text from the game (a focused text field took it)."""
         self.text = ""
         self.events[:] = [ev for ev in self.events if not isinstance(ev, TextEvent)]
+
+    @property
+    def _view(self) -> bool | None:
+        """Which edges queries see: fixed step (True), frame (False), none (muted)."""
+        return None if self._muted else self._fixed
+
+    @contextmanager
+    def muted(self, on: bool = True) -> Iterator[None]:
+        """Inside, every query answers "nothing" (a scene running below an overlay)."""
+        was, self._muted = self._muted, self._muted or on
+        try:
+            yield
+        finally:
+            self._muted = was
 
     # -- the App's clock -----------------------------------------------------------------
     def begin_step(self) -> None:

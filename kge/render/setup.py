@@ -45,6 +45,8 @@ class Renderer:
         self.window = window
         self.owns_window = owns_window
         self.clock = FrameClock()
+        #: False while drawing a world over another (an overlay scene): no clearing
+        self.clear = True
 
     @property
     def size(self) -> tuple[int, int]:
@@ -60,9 +62,10 @@ class Renderer:
         fw, fh = w.get_framebuffer_size()
         gl.glViewport(0, 0, int(fw), int(fh))
         w.projection = pyglet.math.Mat4.orthogonal_projection(0, w.width, 0, w.height, -255, 255)
-        r, g, b = (c / 255.0 for c in background[:3])
-        gl.glClearColor(r, g, b, 1.0)
-        w.clear()
+        if self.clear:
+            r, g, b = (c / 255.0 for c in background[:3])
+            gl.glClearColor(r, g, b, 1.0)
+            w.clear()
 
 
 def create_window(width: int, height: int, **kwargs: Any) -> Any:

@@ -146,9 +146,26 @@ class PygletFrontend:
                 host.add_system_to_all(factory)
 
     def render(self, host: Host) -> None:
+        """Draw the visible worlds bottom first (a frozen one at its last pose), then
+        the scene transition, if one plays."""
+        from kge.render.setup import renderer_for
+
         self._ensure(host)
-        alpha: float = getattr(host, "alpha", 1.0)
-        host.world.schedule.run(Stage.RENDER, alpha)
+        renderer = renderer_for(host)
+        assert renderer is not None
+        top = host.world
+        worlds = host.visible_worlds()
+        try:
+            for i, world in enumerate(worlds):
+                renderer.clear = i == 0
+                alpha = getattr(host, "alpha", 1.0) if world is top else 1.0
+                world.schedule.run(Stage.RENDER, alpha)
+        finally:
+            renderer.clear = True
+        if host.transition is not None:
+            from kge.render.transitions import draw_transition
+
+            draw_transition(renderer, host.transition, host.background)
 
     def screenshot(self, host: Host, path: str) -> None:
         from kge.render.setup import save_color_buffer
