@@ -6,6 +6,7 @@
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
+``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -26,5 +27,13 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.behaviour import BehaviourPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
+    from kge.systems.ui import UIPlugin
 
-    return [BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin(), AnimationPlugin()]
+    return [
+        BehaviourPlugin(),
+        PhysicsPlugin(),
+        AudioPlugin(),
+        RenderPlugin(),
+        AnimationPlugin(),
+        UIPlugin(),
+    ]

@@ -24,6 +24,9 @@ on_animation_end       (event)           a once/hold clip finished
 on_tween_end           (event)           a tween started on this entity ended
 on_text                (text)            characters typed (after the keyboard layout)
 on_gamepad_down/up     (event)           a :class:`kge.input.GamepadEvent`
+on_click               (event)           a UI button of this entity was clicked
+on_value_changed       (event)           a UI toggle/slider/dropdown/list/text changed
+on_text_submitted      (event)           Enter in a UI text field of this entity
 =====================  ================  =======================================
 
 >>> class Spin(Script):
@@ -80,6 +83,9 @@ HOOKS: dict[str, tuple[int, str]] = {
     "on_text": (1, "on_text(text)"),
     "on_gamepad_down": (1, "on_gamepad_down(event)"),
     "on_gamepad_up": (1, "on_gamepad_up(event)"),
+    "on_click": (1, "on_click(event)"),
+    "on_value_changed": (1, "on_value_changed(event)"),
+    "on_text_submitted": (1, "on_text_submitted(event)"),
 }
 
 _hook_cache: dict[type, tuple[str, ...]] = {}

@@ -1,0 +1,104 @@
+"""The UI plugin: screen-space widgets handled before the game sees the input, drawn on top.
+
+:class:`UIInput` (INPUT stage, before behaviours' input hooks) lays the UI out for the
+current window size, turns this frame's pointer, keyboard and gamepad input into
+widget changes (:func:`kge.ui.interact.handle_input`), removes what the UI took from
+the game's view of the input, fills the per-frame :class:`~kge.ui.events.UIEvents`
+resource and calls the widget entities' Behaviour hooks (``on_click``,
+``on_value_changed``, ``on_text_submitted``). The drawing is a render after-pass
+(``kge/render/ui.py``), imported only when a frame is drawn.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from kge.components.ui import UINode
+from kge.errors import ValidationError
+from kge.host import Host
+from kge.input import Input
+from kge.plugin import Plugin
+from kge.render.passes import Frame, passes_for
+from kge.schedule import Stage, System
+from kge.systems.behaviour import BehaviourRunner
+from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
+from kge.ui.interact import UIState, handle_input
+from kge.ui.theme import DEFAULT_THEME, Theme
+from kge.world import World
+
+_HOOKS: dict[type, str] = {
+    ButtonClicked: "on_click",
+    ValueChanged: "on_value_changed",
+    TextSubmitted: "on_text_submitted",
+}
+
+
+class UIInput(System):
+    """Handles the UI's input and emits its events (see the module docstring)."""
+
+    stage = Stage.INPUT
+    order = 50  # before InputBehaviours (100): the game only sees what the UI left
+
+    def process(self, dt: float) -> None:
+        world = self.world
+        events = world.resource(UIEvents)
+        events.clear()
+        inp = world.try_resource(Input)
+        if inp is None or not world.query(UINode):
+            return
+        host = world.try_resource(Host)
+        size = host.size if host is not None else (960, 540)
+        theme = world.try_resource(Theme) or DEFAULT_THEME
+        made = handle_input(world, inp, size, world.resource(UIState), theme)
+        events.items.extend(made)
+        runner = world.try_resource(BehaviourRunner)
+        if runner is None:
+            return
+        for ev in made:
+            hook = _HOOKS.get(type(ev))
+            if hook is not None and world.exists(ev.entity):
+                runner.call_one(ev.entity, hook, ev)
+
+
+def _check_parent(world: World) -> Any:
+    def check(entity: int | None, node: UINode) -> None:
+        p = node.parent
+        if p is None:
+            return
+        if p == entity:
+            raise ValidationError(
+                f"entity {entity}, UINode.parent: a node cannot be its own parent"
+            )
+        if not world.exists(p) or world.try_get(p, UINode) is None:
+            raise ValidationError(
+                f"{'entity ' + str(entity) + ', ' if entity is not None else ''}UINode.parent: "
+                f"entity {p} is not a UI node"
+            )
+
+    return check
+
+
+class UIPlugin(Plugin):
+    """Screen-space UI: layout, widgets, focus, UI events and drawing (docs/ui-scenes-input.md)."""
+
+    def build(self, world: World) -> None:
+        world.insert_resource(UIState())
+        world.insert_resource(UIEvents())
+        if world.try_resource(Theme) is None:
+            world.insert_resource(DEFAULT_THEME)
+        world.validator(UINode, _check_parent(world))
+        world.add_system(UIInput())
+
+        def draw(frame: Frame) -> None:
+            from kge.render.ui import draw_ui
+
+            draw_ui(frame, world)
+
+        passes_for(world).add(draw, phase="after", order=1000)
+
+
+def focus(world: World, entity: int | None) -> None:
+    """Give keyboard/gamepad focus to ``entity`` (a menu's first button), or clear it."""
+    if entity is not None and world.try_get(entity, UINode) is None:
+        raise ValidationError(f"focus: entity {entity} is not a UI node")
+    world.resource(UIState).focused = entity
