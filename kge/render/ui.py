@@ -228,8 +228,11 @@ class UIDrawer:
             for i, (region, part) in enumerate(nine_patch(img, box, p.border)):
                 self.sprite((e, "nine", i), region, part, z, p.color or (255, 255, 255, 255))
             return
-        self.rect((e, "border"), box, th.panel_border, z, p.radius)
-        self.rect((e, "panel"), box.inset(1), p.color or th.panel, z, max(p.radius - 1, 0))
+        color = p.color or th.panel
+        if len(color) == 3 or color[3] == 255:  # a border under a see-through panel would show
+            self.rect((e, "border"), box, th.panel_border, z, p.radius)
+            box = box.inset(1)
+        self.rect((e, "panel"), box, color, z, p.radius)
 
     def slider(self, e: int, box: Box, w: Slider, look: str, z: int) -> None:
         th = self.theme

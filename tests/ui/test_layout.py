@@ -1,0 +1,201 @@
+"""UI layout (anchors, percents, rows, columns, grids, resizes), bad input, and pixels."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+
+from kge import App, World
+from kge.components.ui import Button, Label, Panel, ProgressBar, Slider, TextInput, UINode
+from kge.errors import ValidationError
+from kge.ui import DEFAULT_THEME, Theme, compute_layout
+from kge.ui.layout import Box
+
+from .conftest import SIZE, bbox, mask, pixels
+
+
+def test_anchors_and_offsets_follow_the_window_size() -> None:
+    w = World()
+    corners = {
+        name: w.spawn(UINode(anchor=name, offset=off, width=20, height=10))
+        for name, off in (("top_left", (5, -5)), ("bottom_right", (-5, 5)), ("center", (0, 0)))
+    }
+    for size in ((800, 600), (300, 200)):
+        boxes = compute_layout(w, size).boxes
+        assert boxes[corners["top_left"]] == Box(5, size[1] - 15, 20, 10)
+        assert boxes[corners["bottom_right"]] == Box(size[0] - 25, 5, 20, 10)
+        assert boxes[corners["center"]].center == (size[0] / 2, size[1] / 2)
+
+
+def test_percent_sizes_row_grid_nesting_and_auto_size() -> None:
+    w = World()
+    bar = w.spawn(UINode(anchor="bottom", width="50%", height="10%", layout="row", padding=4,
+                         spacing=2, justify="center", align="center"))  # fmt: skip
+    a = w.spawn(UINode(parent=bar, width=30, height=20))
+    b = w.spawn(UINode(parent=bar, width=40, height="100%"))
+    grid = w.spawn(UINode(anchor="top_left", width=210, layout="grid", columns=3, spacing=5,
+                          padding=0))  # fmt: skip
+    cells = [w.spawn(UINode(parent=grid, height=10, order=-i)) for i in range(5)]
+    auto = w.spawn(UINode(anchor="right", layout="column", padding=3, spacing=1))
+    w.spawn(UINode(parent=auto, width=50, height=10))
+    w.spawn(UINode(parent=auto, width=70, height=10))
+    boxes = compute_layout(w, (400, 300)).boxes
+    assert boxes[bar] == Box(100, 0, 200, 30)
+    # inner 192 wide: 30 + 2 + 40 = 72 centred -> starts at 104 + 60
+    assert boxes[a] == Box(164, 5, 30, 20) and boxes[b] == Box(196, 4, 40, 22)
+    # grid: cells (210 - 2 * 5) / 3 wide plus 5 between; order=-i puts the last spawned first
+    ordered = sorted(cells, key=lambda e: -cells.index(e))
+    xs = [boxes[e].x for e in ordered]
+    ys = [boxes[e].y for e in ordered]
+    step = 200 / 3 + 5
+    assert xs == pytest.approx([0, step, 2 * step, 0, step])
+    assert boxes[ordered[0]].w == pytest.approx(200 / 3)  # "auto" width fills the cell
+    assert ys == [290, 290, 290, 275, 275]
+    assert boxes[auto].w == 76 and boxes[auto].h == 27  # fits its children plus padding
+
+
+def test_percent_layout_survives_a_resize_of_a_running_app() -> None:
+    def scene(world: World) -> None:
+        world.spawn(UINode(anchor="top_right", width="25%", height="25%"), Panel())
+
+    app = App(scene, headless=True, size=(800, 600))
+    app.step()
+    from kge.ui.interact import UIState
+
+    ((e, _),) = app.world.query(UINode)
+    assert app.world.resource(UIState).layout.boxes[e] == Box(600, 450, 200, 150)
+    app.size = (400, 400)  # what the window's on_resize does
+    app.step()
+    assert app.world.resource(UIState).layout.boxes[e] == Box(300, 300, 100, 100)
+
+
+def test_hidden_nodes_missing_parents_and_cycles_are_not_drawn_and_never_hang() -> None:
+    w = World()
+    root = w.spawn(UINode(width=10, height=10, visible=False))
+    child = w.spawn(UINode(parent=root, width=5, height=5))
+    x = w.spawn(UINode(width=10, height=10))
+    y = w.spawn(UINode(parent=x, width=10, height=10))
+    w.get(x, UINode).parent = y  # a cycle written later
+    lay = compute_layout(w, (100, 100))
+    assert root not in lay.boxes and child not in lay.boxes
+    assert x not in lay.boxes and y not in lay.boxes
+
+
+def test_bad_input_is_refused_at_the_call_and_changes_nothing() -> None:
+    w = World()
+    with pytest.raises(ValidationError, match="UINode.width"):
+        UINode(width=-10)
+    with pytest.raises(ValidationError, match="UINode.height"):
+        UINode(height="-5%")
+    with pytest.raises(ValidationError, match="anchor"):
+        UINode(anchor="middle")
+    with pytest.raises(ValidationError, match="layout"):
+        UINode(layout="flex")
+    node = UINode(width=10)
+    with pytest.raises(ValidationError, match="width"):
+        node.width = float("nan")
+    assert node.width == 10
+    with pytest.raises(ValidationError, match=r"min \(5.0\) must be <= max \(1.0\)"):
+        Slider(min=5, max=1)
+    s = Slider(0, 10, 3)
+    with pytest.raises(ValidationError, match="min"):
+        s.min = 20
+    assert (s.min, s.max, s.value) == (0, 10, 3)
+    s.value = 99  # values are clamped into the range
+    assert s.value == 10
+    with pytest.raises(ValidationError, match="more than max_length 3"):
+        TextInput("long", max_length=3)
+    t = TextInput("ab", max_length=3)
+    with pytest.raises(ValidationError, match="more than max_length 3"):
+        t.text = "abcd"
+    assert t.text == "ab"
+    with pytest.raises(ValidationError, match="ProgressBar"):
+        ProgressBar(value=1, max=-1, min=0)
+    from kge.systems.ui import UIPlugin
+
+    w.add_plugins(UIPlugin())
+    before = len(w.query(UINode))
+    with pytest.raises(ValidationError, match="entity 999 is not a UI node"):
+        w.spawn(UINode(parent=999))
+    plain = w.spawn()
+    with pytest.raises(ValidationError, match="is not a UI node"):
+        w.spawn(UINode(parent=plain))
+    assert len(w.query(UINode)) == before
+    with pytest.raises(ValidationError, match="accent"):
+        Theme.from_data({"accent": [1, 2]})
+    with pytest.raises(ValidationError, match="font_size"):
+        Theme(font_size=0)
+
+
+def test_themes_round_trip_as_data() -> None:
+    t = Theme.from_data({"accent": [200, 10, 10, 255], "padding": 4})
+    assert Theme.from_data(t.to_data()) == t and t != DEFAULT_THEME
+
+
+# -- pixels ------------------------------------------------------------------------------------
+ACCENT = DEFAULT_THEME.accent[:3]
+
+
+def menu(world: World) -> None:
+    col = world.spawn(
+        UINode(width=120, layout="column", padding=8, spacing=6, align="stretch"), Panel()
+    )
+    world.spawn(UINode(parent=col, height=30), Button("Play"))
+    world.spawn(UINode(parent=col, height=14), ProgressBar(0.5))
+    world.spawn(UINode(anchor="top_left", offset=(4, -4)), Label("HUD", align="left"))
+
+
+def test_menu_pixels_panel_button_bar_and_corner_hud(make_app: Any) -> None:
+    app = make_app(menu)
+    app.step()
+    px = pixels(app)
+    from kge.ui.interact import UIState
+
+    boxes = app.world.resource(UIState).layout.boxes
+    bar = next(e for e, _ in app.world.query(ProgressBar))
+    button = next(e for e, _ in app.world.query(Button))
+    panel_rgb = np.array(DEFAULT_THEME.panel[:3])
+    col = next(e for e, _ in app.world.query(Panel))
+    pb = boxes[col]
+    # the see-through panel, blended over the black background at its alpha (the
+    # headless pbuffer may hold 5-6 bits per channel: colours match within 8 levels)
+    inside = px[int(pb.y + 3), int(pb.x + pb.w / 2), :3].astype(int)
+    assert np.all(np.abs(inside - panel_rgb * DEFAULT_THEME.panel[3] / 255) <= 8)
+    assert px[int(pb.y) - 2, int(pb.x + pb.w / 2), :3].max() == 0  # just below: background
+    # the bar is half filled with the accent colour
+    x0, x1, y0, y1 = bbox(mask(px, ACCENT, tol=10))
+    b = boxes[bar]
+    assert abs(x0 - b.x) <= 1 and abs((x1 + 1) - (b.x + b.w / 2)) <= 1
+    assert abs(y0 - b.y) <= 1 and abs((y1 + 1) - b.top) <= 1
+    # the button's fill, and white-ish text inside it
+    bb = boxes[button]
+    fill = px[int(bb.y + 2), int(bb.x + bb.w / 2), :3].astype(int)
+    assert np.all(np.abs(fill - np.array(DEFAULT_THEME.button[:3])) <= 8)
+    text = mask(px[int(bb.y) : int(bb.top), int(bb.x) : int(bb.right)], DEFAULT_THEME.text[:3], 40)
+    assert text.sum() > 20
+    # HUD text in the top-left corner
+    assert mask(px[SIZE[1] - 30 :, :60], DEFAULT_THEME.text[:3], 40).sum() > 20
+
+
+def test_hover_and_focus_change_the_drawn_button(make_app: Any) -> None:
+    app = make_app(menu)
+    app.step()
+    from kge.systems.ui import focus
+    from kge.ui.interact import UIState
+
+    button = next(e for e, _ in app.world.query(Button))
+    bb = app.world.resource(UIState).layout.boxes[button]
+    app.input.move_mouse(*bb.center)
+    app.step()
+    px = pixels(app)
+    fill = px[int(bb.y + 2), int(bb.x + bb.w / 2), :3].astype(int)
+    assert np.all(np.abs(fill - np.array(DEFAULT_THEME.button_hover[:3])) <= 8)
+    app.input.move_mouse(1, 1)
+    focus(app.world, button)
+    app.step()
+    px = pixels(app)
+    ring = mask(px, DEFAULT_THEME.focus[:3], tol=10)
+    x0, x1, y0, y1 = bbox(ring)
+    assert x0 < bb.x and x1 >= bb.right and y0 < bb.y and y1 >= bb.top
