@@ -162,7 +162,7 @@ def test_menu_pixels_panel_button_bar_and_corner_hud(make_app: Any) -> None:
     # the see-through panel, blended over the black background at its alpha (the
     # headless pbuffer may hold 5-6 bits per channel: colours match within 8 levels)
     inside = px[int(pb.y + 3), int(pb.x + pb.w / 2), :3].astype(int)
-    assert np.all(np.abs(inside - panel_rgb * DEFAULT_THEME.panel[3] / 255) <= 8)
+    assert np.all(np.abs(inside - panel_rgb * tuple(DEFAULT_THEME.panel)[3] / 255) <= 8)
     assert px[int(pb.y) - 2, int(pb.x + pb.w / 2), :3].max() == 0  # just below: background
     # the bar is half filled with the accent colour
     x0, x1, y0, y1 = bbox(mask(px, ACCENT, tol=10))

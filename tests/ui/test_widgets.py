@@ -71,6 +71,11 @@ def entity_of(app: App, kind: type) -> int:
     return next(e for e, _ in app.world.query(kind))
 
 
+def focused(st: UIState) -> int:
+    assert st.focused is not None
+    return st.focused
+
+
 def centre(app: App, e: int) -> tuple[float, float]:
     return app.world.resource(UIState).layout.boxes[e].center
 
@@ -116,7 +121,7 @@ def test_keyboard_focus_navigation_skips_disabled_widgets_and_enter_clicks() -> 
         app.input.press(Key.TAB)
         app.step()
         app.input.release(Key.TAB)
-        w = st.layout.widget[st.focused]
+        w = st.layout.widget[focused(st)]
         order.append(getattr(w, "text", type(w).__name__) or type(w).__name__)
     # "Off" is disabled: skipped; the fifth Tab wraps around
     assert order == ["Play", "Sound", "Slider", "TextInput", "Play"]
@@ -124,15 +129,15 @@ def test_keyboard_focus_navigation_skips_disabled_widgets_and_enter_clicks() -> 
     app.input.press(Key.TAB, Mod.SHIFT)
     app.step()
     app.input.release(Key.TAB)
-    assert app.world.try_get(st.focused, TextInput) is not None
+    assert app.world.try_get(focused(st), TextInput) is not None
     app.input.press(Key.UP)
     app.step()
     app.input.release(Key.UP)
-    assert app.world.try_get(st.focused, Slider) is not None
+    assert app.world.try_get(focused(st), Slider) is not None
     app.input.press(Key.RIGHT)
     app.step()
     app.input.release(Key.RIGHT)
-    assert app.world.get(st.focused, Slider).value == 6
+    assert app.world.get(focused(st), Slider).value == 6
     focus(app.world, next(e for e, (b,) in app.world.query(Button) if b.text == "Play"))
     app.input.press(Key.ENTER)
     app.step()
@@ -151,16 +156,16 @@ def test_gamepad_focus_navigation_and_activation() -> None:
         app.step()
 
     tap("dpdown")  # nothing focused: focus the first widget
-    play = st.focused
+    play = focused(st)
     assert app.world.get(play, Button).text == "Play"
     tap("dpdown")
-    toggle = st.focused
+    toggle = focused(st)
     assert app.world.try_get(toggle, Toggle) is not None
     tap("a")
     assert app.world.get(toggle, Toggle).value is True
     tap("dpdown")
     tap("dpleft")
-    assert app.world.get(st.focused, Slider).value == 4
+    assert app.world.get(focused(st), Slider).value == 4
     tap("dpup")
     tap("dpup")
     tap("a")
