@@ -99,6 +99,26 @@ from kge.systems.physics import PhysicsPlugin
 from kge.timestep import FixedTimestep
 from kge.world import World
 
+# isort: split
+# -- UI, scenes and input actions (docs/ui-scenes-input.md) --
+from kge.actions import InputMap, UnknownActionError
+from kge.components.ui import (
+    Button,
+    Dropdown,
+    Label,
+    Panel,
+    ProgressBar,
+    ScrollList,
+    Slider,
+    TextInput,
+    Toggle,
+    UIImage,
+    UINode,
+)
+from kge.input import Gamepad, GamepadEvent, TextEvent
+from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
+from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
+
 if TYPE_CHECKING:
     from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
     from kge.audio import Audio, SoundHandle
@@ -106,6 +126,10 @@ if TYPE_CHECKING:
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.render import RenderPlugin
+
+    # isort: split
+    from kge.systems.loading import LoadingScreen
+    from kge.systems.ui import UIPlugin, focus
 
 #: names whose modules load pyglet or the asset store: imported on first use
 _LAZY = {
@@ -124,6 +148,9 @@ _LAZY = {
     "Animations": "kge.systems.animation",
     "shake": "kge.systems.animation",
     "RenderPlugin": "kge.systems.render",
+    "LoadingScreen": "kge.systems.loading",
+    "UIPlugin": "kge.systems.ui",
+    "focus": "kge.systems.ui",
 }
 
 
@@ -134,6 +161,7 @@ def __getattr__(name: str) -> Any:
     value = getattr(import_module(module), name)
     globals()[name] = value  # later lookups skip this function
     return value
+
 
 __version__ = "2.0.0a1"
 
@@ -252,4 +280,37 @@ __all__ = [
     "run",
     "shake",
     "solid",
+]
+
+# UI, scenes and input actions (docs/ui-scenes-input.md)
+__all__ += [
+    "Button",
+    "ButtonClicked",
+    "Crossfade",
+    "Dropdown",
+    "Fade",
+    "Gamepad",
+    "GamepadEvent",
+    "InputMap",
+    "Label",
+    "LoadingScreen",
+    "Panel",
+    "ProgressBar",
+    "ScrollList",
+    "Slide",
+    "Slider",
+    "TextEvent",
+    "TextInput",
+    "TextSubmitted",
+    "Theme",
+    "Toggle",
+    "Transition",
+    "UIEvents",
+    "UIImage",
+    "UINode",
+    "UIPlugin",
+    "UnknownActionError",
+    "ValueChanged",
+    "Wipe",
+    "focus",
 ]

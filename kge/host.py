@@ -16,7 +16,7 @@ without it is headless-only and says so when asked to draw.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -67,6 +67,10 @@ class Host:
 
     def visible_worlds(self) -> list[World]:  # pragma: no cover - App overrides
         """The worlds drawn this frame, bottom first (scenes below overlays, then the top)."""
+        raise NotImplementedError
+
+    def replace_scene(self, scene: Any, *, transition: Any = None, **kwargs: Any) -> None:
+        """Close the top scene and start ``scene`` (App overrides)."""  # pragma: no cover
         raise NotImplementedError
 
     def add_system_to_all(self, factory: Callable[[], System]) -> None:  # pragma: no cover
