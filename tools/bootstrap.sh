@@ -36,6 +36,8 @@ if command -v ldconfig >/dev/null && command -v apt-get >/dev/null; then
   have_lib 'libGL.so.1' || missing+=(libgl1)
   have_lib 'libEGL.so.1' || missing+=(libegl1)
   have_lib 'libfontconfig.so.1' || missing+=(libfontconfig1)
+  command -v Xvfb >/dev/null || missing+=(xvfb)        # the real-window UI smoke test
+  command -v xdotool >/dev/null || missing+=(xdotool)  # drives that window
   if [ ${#missing[@]} -gt 0 ]; then
     apt_install "${missing[@]}" ||
       echo "bootstrap: warning: missing ${missing[*]} (need root to install); rendering tests will fail" >&2

@@ -38,7 +38,7 @@ def test_progress_is_shown_frame_by_frame_then_the_next_scene_fades_in(tmp_path:
     seen = []
     for _ in range(3):
         app.step()
-        (_, (bar,)), = loading.query(ProgressBar)
+        ((_, (bar,)),) = loading.query(ProgressBar)
         seen.append(round(bar.value, 3))
     assert seen == [0.333, 0.667, 1.0]
     assert any(lbl.text == "3 / 3" for _, (lbl,) in loading.query(Label))
