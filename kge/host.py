@@ -73,6 +73,16 @@ class Host:
         """Close the top scene and start ``scene`` (App overrides)."""  # pragma: no cover
         raise NotImplementedError
 
+    def push_scene(
+        self, scene: Any, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+    ) -> None:  # pragma: no cover - App overrides
+        """Put ``scene`` on top (``overlay=True``: drawn over the one below)."""
+        raise NotImplementedError
+
+    def pop_scene(self) -> None:  # pragma: no cover - App overrides
+        """Close the top scene and resume the one below."""
+        raise NotImplementedError
+
     def add_system_to_all(self, factory: Callable[[], System]) -> None:  # pragma: no cover
         """Add a system to every current and future scene world (App overrides)."""
         raise NotImplementedError

@@ -12,4 +12,5 @@ from kge.testbed.samples import (  # noqa: F401
     materials,
     queries,
     stacking,
+    ui,
 )

@@ -1,0 +1,220 @@
+"""UI samples: a widget gallery, layouts that follow the window, a see-through pause
+overlay, and scene transitions."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from kge.components import Behaviour, Script, Transform
+from kge.components.camera import Camera
+from kge.components.drawables import Rect
+from kge.components.ui import (
+    Button,
+    Dropdown,
+    Label,
+    Panel,
+    ProgressBar,
+    ScrollList,
+    Slider,
+    TextInput,
+    Toggle,
+    UINode,
+)
+from kge.host import Host
+from kge.keys import Key
+from kge.testbed.registry import sample
+from kge.testbed.samples.build import box, static_box
+from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
+from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
+from kge.ui.interact import UIState
+from kge.world import World
+
+
+class _Status(Script):
+    """Shows the last UI event in a label (what the gallery reports)."""
+
+    def __init__(self, label: int) -> None:
+        self.label = label
+
+    def on_update(self, dt: float) -> None:
+        for ev in self.world.resource(UIEvents).items:
+            if isinstance(ev, (ButtonClicked, ValueChanged, TextSubmitted)):
+                shown = getattr(ev, "value", getattr(ev, "text", ""))
+                if isinstance(shown, float):
+                    shown = round(shown, 2)
+                self.world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
+
+
+def _column(world: World, **node: Any) -> int:
+    node.setdefault("layout", "column")
+    node.setdefault("padding", 14)
+    node.setdefault("spacing", 8)
+    node.setdefault("align", "stretch")
+    return world.spawn(UINode(**node), Panel())
+
+
+@sample("UI", "Widget Gallery", help="Every widget: click, drag, type, Tab/arrows/Enter, d-pad.")
+def widget_gallery(world: World) -> None:
+    left = _column(world, anchor="left", offset=(20, 0), width=300)
+    world.spawn(UINode(parent=left), Label("Widgets", size=22))
+    world.spawn(UINode(parent=left, height=38), Button("Button"))
+    world.spawn(UINode(parent=left, height=38), Button("Disabled", disabled=True))
+    world.spawn(UINode(parent=left), Toggle(True, "Toggle"))
+    world.spawn(UINode(parent=left, height=26), Slider(0, 100, 40, step=5))
+    world.spawn(UINode(parent=left, height=14), ProgressBar(0.65))
+    world.spawn(UINode(parent=left), TextInput(placeholder="type here", max_length=24))
+    world.spawn(UINode(parent=left), Dropdown(["Easy", "Normal", "Hard"], 1))
+    right = _column(world, anchor="right", offset=(-20, 0), width=260)
+    world.spawn(UINode(parent=right), Label("Scroll list", size=18))
+    world.spawn(UINode(parent=right, height=180), ScrollList([f"Level {i + 1}" for i in range(30)]))
+    status = world.spawn(UINode(anchor="bottom", offset=(0, 16)), Label("Click something"))
+    world.spawn(Behaviour(_Status(status)))
+
+
+@widget_gallery.claim
+def _gallery_reports_a_click(app: Any) -> None:
+    world = app.world
+    button = next(e for e, (b,) in world.query(Button) if b.text == "Button")
+    app.input.click(at=world.resource(UIState).layout.boxes[button].center)
+    app.step()
+    assert any(lbl.text == "ButtonClicked: Button" for _, (lbl,) in world.query(Label))
+
+
+@sample("UI", "Resizing Layout", help="HUD in the corners, a percent-wide bar, a grid: resize!")
+def resizing_layout(world: World) -> None:
+    for name in ("top_left", "top_right", "bottom_left", "bottom_right"):
+        x = 12 if "left" in name else -12
+        y = -12 if "top" in name else 12
+        align = "left" if "left" in name else "right"
+        world.spawn(UINode(anchor=name, offset=(x, y)), Label(name.replace("_", " "), align=align))
+    world.spawn(UINode(anchor="bottom", offset=(0, 48), width="60%", height=18), ProgressBar(0.4))
+    grid = world.spawn(UINode(width="50%", height="40%", layout="grid", columns=3, padding=10,
+                              spacing=8), Panel())  # fmt: skip
+    for i in range(6):
+        world.spawn(UINode(parent=grid, height=40), Button(f"Cell {i + 1}"))
+
+
+@resizing_layout.claim
+def _corners_follow_the_window(app: Any) -> None:
+    world = app.world
+    for size in ((1200, 700), (500, 400)):
+        app.size = size
+        app.step()
+        boxes = world.resource(UIState).layout.boxes
+        (corner,) = [e for e, (node,) in world.query(UINode) if node.anchor == "bottom_right"]
+        b = boxes[corner]
+        assert abs(b.right - (size[0] - 12)) < 1e-6 and abs(b.y - 12) < 1e-6
+        (bar,) = [e for e, _ in world.query(ProgressBar)]
+        assert abs(boxes[bar].w - 0.6 * size[0]) < 1e-6
+
+
+class _Pause(Script):
+    """P or Escape (or the HUD button) opens the see-through pause overlay."""
+
+    def on_update(self, dt: float) -> None:
+        inp = self.world.resource(Host).input
+        clicked = any(b.text == "Pause" for ev in self.world.resource(UIEvents).of(ButtonClicked)
+                      for b in [self.world.get(ev.entity, Button)])  # fmt: skip
+        if inp.pressed(Key.P) or inp.pressed(Key.ESCAPE) or clicked:
+            self.world.resource(Host).push_scene(pause_menu, overlay=True)
+
+
+def pause_menu(world: World) -> None:
+    """A see-through overlay: the game below is frozen and stays visible."""
+    world.spawn(UINode(width="100%", height="100%"), Panel(color=(0, 0, 0, 110), radius=0))
+    menu = _column(world, width=240)
+    world.spawn(UINode(parent=menu), Label("Paused", size=24))
+    resume = world.spawn(UINode(parent=menu, height=40), Button("Resume"))
+    world.spawn(Behaviour(_Resume(resume)))
+    from kge.systems.ui import focus
+
+    focus(world, resume)
+
+
+class _Resume(Script):
+    def __init__(self, button: int) -> None:
+        self.button = button
+
+    def on_update(self, dt: float) -> None:
+        inp = self.world.resource(Host).input
+        if self.world.resource(UIEvents).clicked(self.button) or inp.pressed(Key.ESCAPE):
+            self.world.resource(Host).pop_scene()
+
+
+@sample("UI", "Pause Overlay", help="P, Escape or the button: a see-through pause menu.")
+def pause_overlay(world: World) -> None:
+    world.insert_resource(Camera(center=(0.0, 3.0), pixels_per_meter=40.0))
+    ground = static_box(world, 0.0, -1.0, 30.0, 1.0, name="ground")
+    world.add(ground, Rect(60.0, 2.0, color=(90, 96, 110, 255)))
+    for i in range(12):
+        crate = box(world, -5.5 + i, 2.0 + 1.5 * (i % 4), 0.4, 0.4, density=1.0, name="crate")
+        world.add(crate, Rect(0.8, 0.8, color=(230, 160, 60, 255)))
+    world.spawn(UINode(anchor="top_right", offset=(-12, -12), width=90, height=34), Button("Pause"))
+    world.spawn(Behaviour(_Pause()))
+
+
+@pause_overlay.claim
+def _overlay_freezes_the_game(app: Any) -> None:
+    game = app.world
+    app.input.press(Key.P)
+    app.step()
+    app.input.release(Key.P)
+    assert app.world is not game and app.visible_worlds() == [game, app.world]
+    poses = [(t.x, t.y) for _, (t,) in game.query(Transform)]
+    app.step(30)
+    assert [(t.x, t.y) for _, (t,) in game.query(Transform)] == poses
+    app.input.press(Key.ESCAPE)
+    app.step()
+    assert app.world is game
+
+
+_KINDS: dict[str, Transition] = {
+    "Fade": Fade(0.5),
+    "Crossfade": Crossfade(0.6),
+    "Slide": Slide(0.6, direction="left"),
+    "Wipe": Wipe(0.6, direction="up"),
+}
+
+
+class _Switch(Script):
+    def __init__(self, target: Any) -> None:
+        self.target = target
+
+    def on_update(self, dt: float) -> None:
+        for ev in self.world.resource(UIEvents).of(ButtonClicked):
+            kind = self.world.get(ev.entity, Button).text
+            self.world.resource(Host).replace_scene(self.target, transition=_KINDS[kind])
+
+
+def _room(world: World, title: str, color: tuple[int, int, int, int], target: Any) -> None:
+    world.spawn(UINode(width="100%", height="100%"), Panel(color=color, radius=0))
+    col = _column(world, width=260)
+    world.spawn(UINode(parent=col), Label(title, size=26))
+    for kind in _KINDS:
+        world.spawn(UINode(parent=col, height=36), Button(kind))
+    world.spawn(Behaviour(_Switch(target)))
+
+
+def _blue_room(world: World) -> None:
+    _room(world, "Blue room", (30, 60, 140, 255), _red_room)
+
+
+def _red_room(world: World) -> None:
+    _room(world, "Red room", (140, 40, 40, 255), _blue_room)
+
+
+@sample("UI", "Scene Transitions", help="Fade, crossfade, slide and wipe between two rooms.")
+def scene_transitions(world: World) -> None:
+    _blue_room(world)
+
+
+@scene_transitions.claim
+def _a_button_fades_to_the_other_room(app: Any) -> None:
+    world = app.world
+    fade = next(e for e, (b,) in world.query(Button) if b.text == "Fade")
+    app.input.click(at=world.resource(UIState).layout.boxes[fade].center)
+    app.step()
+    assert app.transition is not None and app.world is world
+    app.step(40)
+    assert app.transition is None and app.world is not world
+    assert any(lbl.text == "Red room" for _, (lbl,) in app.world.query(Label))
