@@ -14,9 +14,9 @@ os.environ.setdefault("PYGLET_HEADLESS", "1")
 os.environ.setdefault("PYGLET_AUDIO", "silent")
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from kge import App, Key  # noqa: E402
-from kge.testbed.samples.ui import pause_overlay, scene_transitions, widget_gallery  # noqa: E402
-from kge.transitions import Wipe  # noqa: E402
+from kge import App, Key
+from kge.testbed.samples.ui import pause_overlay, scene_transitions, widget_gallery
+from kge.transitions import Wipe
 
 OUT = Path(__file__).resolve().parent / "images"
 
