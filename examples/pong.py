@@ -9,7 +9,10 @@ a second. kge adds a menu, a winner at 5 points and a restart, and fixes KGE's
 bugs: the music never stacks on a restart, both W/S and the arrows work (and Z
 for AZERTY players), and assets load wherever the game is started from.
 
-Controls: W / Z / Up and S / Down move; R restarts; Esc returns to the menu.
+Controls: W / Z / Up and S / Down move (or a gamepad's d-pad / left stick); R
+restarts; P, Esc or Start pauses (a see-through menu: resume, settings, main menu).
+The title menu and the settings (volumes, key rebinding) are kge UI, shared with the
+shooter in ``game_menus.py``.
 
 Run: ``python examples/pong.py`` (a window; headless machines get a short
 self-played match and a summary).
@@ -20,6 +23,7 @@ from __future__ import annotations
 import math
 import random
 
+import game_menus as ui  # imports kge_required first
 import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
 
 import kge
@@ -32,7 +36,6 @@ from kge import (
     Box,
     Circle,
     Collider,
-    Input,
     Key,
     Name,
     RigidBody,
@@ -61,21 +64,27 @@ SERVE_DELAY = 1.0
 WINNING_SCORE = 5
 #: a ball meeting a paddle's very edge leaves with vy = 0.75 of its speed (the centre: 0)
 MAX_ENGLISH = 0.75
-UP_KEYS = (Key.W, Key.Z, Key.UP)
-DOWN_KEYS = (Key.S, Key.DOWN)
+#: the actions a player can rebind in the settings, with their default bindings
+ACTIONS: ui.Bindings = {
+    "up": ("key:W", "key:Z", "key:UP", "pad:dpup"),
+    "down": ("key:S", "key:DOWN", "pad:dpdown"),
+}
 
 
 class Score(Script):
-    """Holds one side's points and shows them in its Text."""
+    """Holds one side's points and shows them in its Text and its corner of the HUD."""
 
-    def __init__(self, side: str) -> None:
+    def __init__(self, side: str, hud: int | None = None) -> None:
         self.side = side
         self.points = 0
+        self.hud = hud
 
     def add(self) -> None:
         self.points += 1
         self.get(Text).value = str(self.points)
         self.world.resource(Tweens).start(self.entity, SCORE_POP)  # the number pops
+        if self.hud is not None:
+            self.world.get(self.hud, kge.Label).text = f"{self.side}  {self.points}"
 
 
 #: a point scored: the score grows quickly, then bounces back to its size
@@ -87,8 +96,11 @@ class PlayerPaddle(Script):
     """Moves with the keys at 7 m/s, clamped to the court (a kinematic body)."""
 
     def on_fixed_update(self, dt: float) -> None:
-        over = self.world.has_resource(MatchOver)
-        direction = 0.0 if over else self.world.resource(Input).axis(DOWN_KEYS, UP_KEYS)
+        actions = self.world.resource(kge.InputMap)  # keys, d-pad (rebindable) and stick
+        direction = float(actions.held("up")) - float(actions.held("down"))
+        direction = min(max(direction + actions.axis("paddle_stick"), -1.0), 1.0)
+        if self.world.has_resource(MatchOver):
+            direction = 0.0
         move(self, direction * PADDLE_SPEED, PLAYER_LIMIT, dt)
 
 
@@ -203,19 +215,17 @@ def game_over(world: World, message: str) -> None:
 
 
 class Keys(Script):
-    """R restarts the match (a fresh scene), Esc goes back to the menu."""
+    """R restarts the match (a fresh scene); pausing is the "pause" action (ui.PauseKey)."""
 
     def on_key_down(self, key: int) -> None:
-        app = self.world.resource(App)
         if key == Key.R:
-            app.replace_scene(pong)
-        elif key == Key.ESCAPE:
-            app.replace_scene(menu)
+            self.world.resource(App).replace_scene(pong)
 
 
 def pong(world: World, seed: int | None = None) -> None:
     """The match scene."""
     world.insert_resource(ASSETS)
+    bind_actions(world)
     rng = random.Random(seed)
     world.resource(Audio).play_music("music_loop.wav", volume=0.5)  # keyed: never stacks
     world.spawn(Transform(0.0, 0.0), Sprite("background.png", size=(16.0, 11.0), layer=0,
@@ -233,16 +243,20 @@ def pong(world: World, seed: int | None = None) -> None:
     for y in (6.0, -6.0):  # walls: inner faces at y = +-5.5
         world.spawn(Transform(0.0, y), Collider(Box(10.0, 0.5), friction=0.0, restitution=1.0),
                     Name("wall"))
-    you = world.spawn(Transform(-1.0, 5.0), Text("0", size=15, anchor=(0.0, 0.0), layer=5),
-                      Behaviour(Score("You")), Name("score-player"))
-    ai = world.spawn(Transform(1.0, 5.0), Text("0", size=15, anchor=(0.0, 0.0), layer=5),
-                     Behaviour(Score("The AI")), Name("score-ai"))
+    # the scores show in the HUD's top corners; their Texts keep the numbers (hidden)
+    you_hud = ui.hud_label(world, "top_left", "You  0", size=22)
+    ai_hud = ui.hud_label(world, "top_right", "The AI  0", size=22)
+    you = world.spawn(Transform(-1.0, 5.0), Text("0", visible=False),
+                      Behaviour(Score("You", you_hud)), Name("score-player"))
+    ai = world.spawn(Transform(1.0, 5.0), Text("0", visible=False),
+                     Behaviour(Score("The AI", ai_hud)), Name("score-ai"))
     # A ball in the left goal is a point for the AI; it then serves towards the player.
     world.spawn(Transform(-8.0, 0.0), Collider(Box(0.5, 10.0), sensor=True),
                 Behaviour(Goal(ai, -1.0, rng)), Name("goal-left"))
     world.spawn(Transform(8.0, 0.0), Collider(Box(0.5, 10.0), sensor=True),
                 Behaviour(Goal(you, 1.0, rng)), Name("goal-right"))
     world.spawn(Behaviour(Keys()))
+    world.spawn(Behaviour(ui.PauseKey(menu, tuple(ACTIONS))))
     spawn_ball(world, (10.0, -4.0))
 
 
@@ -256,16 +270,21 @@ class MenuKeys(Script):
             self.world.resource(App).quit()
 
 
+def bind_actions(world: World) -> None:
+    """The game's actions, bound once per App (the settings may rebind them)."""
+    actions = world.resource(kge.InputMap)
+    ui.bind_defaults(actions, ACTIONS)
+    actions.bind_axis("paddle_stick", stick="pad:lefty", dead_zone=0.25)
+
+
 def menu(world: World) -> None:
-    """Title screen: Space starts a match."""
+    """Title screen: Play (fades in), Settings, Quit; Space starts a match at once."""
     world.insert_resource(ASSETS)
+    bind_actions(world)
     world.resource(Audio).play_music("music_loop.wav", volume=0.5)
-    world.spawn(Transform(0.0, 1.5), Text("PONG !", size=64, bold=True))
-    world.spawn(Transform(0.0, -0.5), Text("Press Space to play", size=20))
-    world.spawn(Transform(0.0, -1.5), Text("W/S or the arrows move your paddle. First to 5.",
-                                           size=14, color=(180, 180, 180, 255)))
-    world.spawn(Transform(0.0, -2.3), Text("Aim with where the ball meets your paddle.  Esc: quit",
-                                           size=12, color=(140, 140, 140, 255)))
+    ui.title_menu(world, "PONG !", "Space: play at once.  W/S, the arrows or a gamepad move "
+                  "your paddle; aim with where the ball meets it. First to 5.  Esc: quit",
+                  pong, tuple(ACTIONS))  # fmt: skip
     world.spawn(Behaviour(MenuKeys()))
 
 

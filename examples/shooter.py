@@ -9,7 +9,10 @@ that touches the ship ends the game. Shots leaving the 22 m frame vanish.
 kge fixes KGE's bugs: the music never stacks on restarts, a missing file
 cannot abort the scene half-built, and the ship art points where it shoots.
 
-Controls: mouse to aim, hold the left button to fire, Space starts, R restarts.
+Controls: mouse to aim, hold the left button to fire (or a gamepad: right stick aims,
+A or the right shoulder fires); Space starts, R restarts; P, Esc or Start pauses (a
+see-through menu: resume, settings with volumes and rebinding, main menu). The menus
+are kge UI, shared with Pong in ``game_menus.py``.
 
 Run: ``python examples/shooter.py`` (a window; headless machines get a short
 self-played demo and a summary).
@@ -20,6 +23,7 @@ from __future__ import annotations
 import math
 import random
 
+import game_menus as ui  # imports kge_required first
 import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
 
 import kge
@@ -63,6 +67,8 @@ SPAWN_DISTANCE = 9.0
 FIRST_SPEED = 1.5  # +0.25 at once, so the first enemies move at 1.75 m/s
 FRAME_HALF = 11.0
 BLUE = (0, 0, 125, 255)
+#: the actions a player can rebind in the settings, with their default bindings
+ACTIONS: ui.Bindings = {"fire": ("mouse:LEFT", "pad:a", "pad:rightshoulder")}
 
 
 class ShipTag:
@@ -77,13 +83,15 @@ class Ship(Script):
         self.score = 0
 
     def on_update(self, dt: float) -> None:
-        inp = self.world.resource(Input)
-        mx, my = inp.mouse_world
+        actions = self.world.resource(kge.InputMap)
+        mx, my = actions.vector("aim")  # a gamepad's right stick, when pushed
+        if not (mx or my):
+            mx, my = self.world.resource(Input).mouse_world
         t = self.transform
         if mx or my:
             t.angle = math.atan2(my, mx) - math.pi / 2  # the ship's nose is its local +y
         self.cooldown -= dt
-        if inp.mouse_held(Mouse.LEFT) and self.cooldown <= 0.0:
+        if actions.held("fire") and self.cooldown <= 0.0:
             self.cooldown = 1.0 / FIRE_RATE
             self.fire(t.angle)
 
@@ -253,8 +261,9 @@ def _despawn(world: World, entity: int) -> None:
 class Hud(Script):
     """Keeps the score text current (it stays after the ship dies); R restarts."""
 
-    def __init__(self) -> None:
+    def __init__(self, label: int | None = None) -> None:
         self.score = 0
+        self.label = label  # the HUD corner label that shows it
 
     def on_update(self, dt: float) -> None:
         ships = self.world.query(ShipTag, Behaviour)
@@ -263,6 +272,8 @@ class Hud(Script):
         text = f"Score : {self.score}"
         if self.get(Text).value != text:
             self.get(Text).value = text
+            if self.label is not None:
+                self.world.get(self.label, kge.Label).text = text
 
     def on_key_down(self, key: int) -> None:
         if key == Key.R:
@@ -279,6 +290,7 @@ class Aim(Script):
 def game(world: World, seed: int | None = None) -> None:
     """The game scene (seed the enemy spawner for repeatable tests)."""
     world.insert_resource(ASSETS)
+    bind_actions(world)
     world.resource(Audio).play_music("music_loop.wav", volume=0.5)  # keyed: never stacks
     world.spawn(
         Transform(0.0, 0.0),
@@ -298,8 +310,10 @@ def game(world: World, seed: int | None = None) -> None:
                 Behaviour(Aim()), Name("aim"))
     world.spawn(Behaviour(Spawner(random.Random(seed))), Name("spawner"))
     world.spawn(Behaviour(Referee()))
-    world.spawn(Transform(-4.0, -5.0), Text("Score : 0", size=24, bold=True, color=BLUE,
-                                            anchor=(0.0, 0.0)), Behaviour(Hud()), Name("score"))
+    label = ui.hud_label(world, "top_left", "Score : 0", size=24, color=BLUE)
+    world.spawn(Transform(-4.0, -5.0), Text("Score : 0", visible=False),
+                Behaviour(Hud(label)), Name("score"))  # the number; shown by the HUD label
+    world.spawn(Behaviour(ui.PauseKey(menu, tuple(ACTIONS))))
 
 
 class MenuKeys(Script):
@@ -308,13 +322,22 @@ class MenuKeys(Script):
             self.world.resource(App).replace_scene(game)
 
 
+def bind_actions(world: World) -> None:
+    """The game's actions, bound once per App (the settings may rebind them)."""
+    actions = world.resource(kge.InputMap)
+    ui.bind_defaults(actions, ACTIONS)
+    actions.bind_axis("aim_x", stick="pad:rightx", dead_zone=0.3)
+    actions.bind_axis("aim_y", stick="pad:righty", dead_zone=0.3)
+    actions.bind_vector("aim", "aim_x", "aim_y")
+
+
 def menu(world: World) -> None:
-    """Title screen: Space starts."""
+    """Title screen: Play (fades in), Settings, Quit; Space starts at once."""
     world.insert_resource(ASSETS)
-    world.spawn(Transform(0.0, 0.5), Text("DEFEND THE CENTRE", size=36, bold=True, color=BLUE))
-    world.spawn(Transform(0.0, -0.7), Text("Press Space to start", size=24, color=BLUE))
-    world.spawn(Transform(0.0, -1.6), Text("Aim with the mouse, hold the left button to fire",
-                                           size=14, color=(90, 90, 140, 255)))
+    bind_actions(world)
+    ui.title_menu(world, "DEFEND THE CENTRE", "Space: play at once.  Aim with the mouse "
+                  "(or the right stick), hold the left button (or A) to fire.", game,
+                  tuple(ACTIONS), hint_color=BLUE)  # fmt: skip
     world.spawn(Behaviour(MenuKeys()))
 
 
