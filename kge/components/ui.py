@@ -125,8 +125,17 @@ def _opt_color(value: Any, owner: str, name: str) -> Color | None:
     return None if value is None else rgba(value, owner, name)
 
 
-def _opt_str(value: Any, owner: str, name: str) -> str | None:
-    return None if value is None else text(value, owner, name)
+def image(value: Any, owner: str, name: str) -> Any:
+    """An asset name, a :class:`kge.render.images.PixelImage` or a pyglet image."""
+    if isinstance(value, str) or (hasattr(value, "width") and hasattr(value, "height")):
+        return value
+    raise ComponentTypeError(
+        f"{owner}.{name} must be an asset name, a PixelImage or an image, got {value!r}"
+    )
+
+
+def _opt_image(value: Any, owner: str, name: str) -> Any:
+    return None if value is None else image(value, owner, name)
 
 
 def _strings(value: Any, owner: str, name: str) -> list[str]:
@@ -196,9 +205,9 @@ class Label(Tracked):
 class UIImage(Tracked):
     """An image (asset name) stretched over the node, tinted by ``tint``."""
 
-    _checks: ClassVar[dict[str, Check]] = {"image": text, "tint": rgba}
+    _checks: ClassVar[dict[str, Check]] = {"image": image, "tint": rgba}
 
-    image: str
+    image: Any  #: an asset name, a PixelImage or a pyglet image
     tint: Color = (255, 255, 255, 255)
 
 
@@ -211,12 +220,12 @@ class Panel(Tracked):
     """
 
     _checks: ClassVar[dict[str, Check]] = {
-        "color": _opt_color, "image": _opt_str, "border": non_negative, "radius": non_negative,
+        "color": _opt_color, "image": _opt_image, "border": non_negative, "radius": non_negative,
         "blocks": boolean,
     }  # fmt: skip
 
     color: Color | None = None
-    image: str | None = None
+    image: Any = None  #: a nine-patch image (asset name, PixelImage or pyglet image)
     border: float = 8.0
     radius: float = 8.0
     blocks: bool = True  #: takes clicks over it (keeps them from the game)
@@ -226,10 +235,10 @@ class Panel(Tracked):
 class Button(Tracked):
     """A button with text and/or an image. Clicked: ``ButtonClicked`` and ``on_click``."""
 
-    _checks: ClassVar[dict[str, Check]] = {"text": text, "image": _opt_str, "disabled": boolean}
+    _checks: ClassVar[dict[str, Check]] = {"text": text, "image": _opt_image, "disabled": boolean}
 
     text: str = ""
-    image: str | None = None
+    image: Any = None  #: an icon: asset name, PixelImage or pyglet image
     disabled: bool = False
 
 

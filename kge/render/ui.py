@@ -13,7 +13,6 @@ from typing import Any
 
 import pyglet
 
-from kge.assets.store import assets_for
 from kge.components.ui import (
     Button,
     Dropdown,
@@ -29,6 +28,7 @@ from kge.components.ui import (
 from kge.host import Host
 from kge.render.passes import Frame
 from kge.render.setup import renderer_for
+from kge.render.textures import TextureCache
 from kge.render.ui_parts import ClipGroup, nine_patch
 from kge.ui.interact import UIState, dropdown_rows, list_rows
 from kge.ui.layout import Box, compute_layout
@@ -51,6 +51,7 @@ class UIDrawer:
         self.clips: dict[int, ClipGroup] = {}
         self.theme: Theme = DEFAULT_THEME
         self.time = 0.0
+        self.textures = TextureCache(world)  # asset names, PixelImages, pyglet images
 
     # -- cached primitives -------------------------------------------------------------------
     def group(self, z: int, clip: int | None = None) -> Any:
@@ -191,7 +192,7 @@ class UIDrawer:
                     "pressed": th.button_pressed, "disabled": th.button_disabled}[look]  # fmt: skip
             self.rect((e, "fill"), box, fill, z + 1, th.radius)
             if w.image:
-                img = assets_for(self.world).image(w.image)
+                img = self.textures.texture(w.image)
                 side = min(box.h - 2 * th.padding, box.w - 2 * th.padding)
                 x = box.x + th.padding if w.text else box.center[0] - side / 2
                 self.sprite((e, "img"), img, Box(x, box.center[1] - side / 2, side, side), z + 2,
@@ -219,12 +220,12 @@ class UIDrawer:
         elif isinstance(w, ScrollList):
             self.scroll_list(e, box, w, z)
         elif isinstance(w, UIImage):
-            self.sprite((e,), assets_for(self.world).image(w.image), box, z + 1, w.tint)
+            self.sprite((e,), self.textures.texture(w.image), box, z + 1, w.tint)
 
     def panel(self, e: int, box: Box, p: Panel, z: int) -> None:
         th = self.theme
         if p.image:
-            img = assets_for(self.world).image(p.image)
+            img = self.textures.texture(p.image)
             for i, (region, part) in enumerate(nine_patch(img, box, p.border)):
                 self.sprite((e, "nine", i), region, part, z, p.color or (255, 255, 255, 255))
             return

@@ -199,3 +199,72 @@ def test_hover_and_focus_change_the_drawn_button(make_app: Any) -> None:
     ring = mask(px, DEFAULT_THEME.focus[:3], tol=10)
     x0, x1, y0, y1 = bbox(ring)
     assert x0 < bb.x and x1 >= bb.right and y0 < bb.y and y1 >= bb.top
+
+
+def _frame_image() -> Any:
+    """24 x 24: an 8 px red frame around a green middle (a nine-patch source)."""
+    from kge.render.images import PixelImage
+
+    px = np.zeros((24, 24, 4), np.uint8)
+    px[...] = (255, 0, 0, 255)
+    px[8:16, 8:16] = (0, 255, 0, 255)
+    return PixelImage(24, 24, px.tobytes())
+
+
+def test_nine_patch_panel_keeps_its_corners_and_stretches_the_middle(make_app: Any) -> None:
+    img = _frame_image()
+
+    def scene(world: World) -> None:
+        world.spawn(UINode(width=160, height=100), Panel(image=img, border=8))
+
+    app = make_app(scene)
+    app.step()
+    px = pixels(app)
+    x0, x1, y0, y1 = bbox(mask(px, (0, 255, 0), tol=30))
+    cx, cy = SIZE[0] // 2, SIZE[1] // 2
+    # the frame stays 8 px thick on a 160 x 100 panel: the middle is 144 x 84
+    assert (x1 - x0 + 1, y1 - y0 + 1) == (144, 84)
+    assert (x0, y0) == (cx - 80 + 8, cy - 50 + 8)
+    red = mask(px, (255, 0, 0), tol=30)
+    assert red[cy, cx - 80 + 3] and red[cy - 50 + 3, cx] and not red[cy, cx]
+
+
+def test_image_widget_and_button_icon_draw_their_pixels(make_app: Any) -> None:
+    from kge.components.ui import UIImage
+    from kge.render.images import solid
+
+    def scene(world: World) -> None:
+        world.spawn(UINode(anchor="left", offset=(10, 0), width=40, height=30),
+                    UIImage(solid(4, 4, (0, 0, 255))))  # fmt: skip
+        world.spawn(UINode(anchor="right", offset=(-10, 0), width=60, height=40),
+                    Button(image=solid(2, 2, (255, 255, 0))))  # fmt: skip
+
+    app = make_app(scene)
+    app.step()
+    px = pixels(app)
+    assert bbox(mask(px, (0, 0, 255), tol=10)) == (10, 49, 65, 94)
+    x0, x1, _, _ = bbox(mask(px, (255, 255, 0), tol=10))
+    assert SIZE[0] - 70 < x0 < x1 < SIZE[0] - 10  # the icon sits inside the button
+    with pytest.raises(Exception, match="asset name, a PixelImage or an image"):
+        UIImage(42)
+
+
+def test_scroll_list_rows_are_clipped_to_the_list(make_app: Any) -> None:
+    from kge.components.ui import ScrollList
+
+    def scene(world: World) -> None:
+        world.spawn(UINode(width=120, height=60),
+                    ScrollList([f"row {i}" for i in range(10)], selected=3, scroll=40.0,
+                               row_height=20))  # fmt: skip
+
+    app = make_app(scene)
+    app.step()
+    px = pixels(app)
+    sel = mask(px, DEFAULT_THEME.selection[:3], tol=40)
+    x0, x1, y0, y1 = bbox(sel)
+    # row 3 is the second visible row (scrolled by two rows): 20 px tall, inside the list
+    top = SIZE[1] // 2 + 30
+    assert (y0, y1) == (top - 40, top - 21) and x0 >= SIZE[0] // 2 - 60
+    text = mask(px, DEFAULT_THEME.text[:3], tol=60)
+    ys = np.nonzero(text)[0]
+    assert ys.min() >= SIZE[1] // 2 - 30 and ys.max() < top  # nothing drawn outside
