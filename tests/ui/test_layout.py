@@ -262,6 +262,7 @@ def test_scroll_list_rows_are_clipped_to_the_list(make_app: Any) -> None:
     px = pixels(app)
     sel = mask(px, DEFAULT_THEME.selection[:3], tol=40)
     x0, x1, y0, y1 = bbox(sel)
+    assert x1 < SIZE[0] // 2 + 60
     # row 3 is the second visible row (scrolled by two rows): 20 px tall, inside the list
     top = SIZE[1] // 2 + 30
     assert (y0, y1) == (top - 40, top - 21) and x0 >= SIZE[0] // 2 - 60
