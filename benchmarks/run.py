@@ -310,6 +310,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
                        f" | {r['kge_total']:.3f} | {r['pyglet_sprite']:.3f}"
                        f" | {r['pyglet_sprite'] / r['kge_total']:.0f} | {arcade_cells}"
                        f" | {r['tweens']:.3f} |")
+    if report.get("ui"):
+        from benchmarks.ui import markdown_lines
+
+        out += markdown_lines(report["ui"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -408,6 +412,14 @@ def main(argv: list[str] | None = None) -> int:
 
             print("\nanimation, µs per sprite (tween) and frame (median):")
             print(animation_table(animation))
+    ui_rows: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import ui as ui_bench
+
+        ui_rows, why = ui_bench.bench_section(args.quick, progress)
+        print(why or "\nui, µs per widget and frame (median):\n" + ui_bench.table(
+            {int(n): r for n, r in ui_rows.items()}), file=sys.stderr if why else sys.stdout)
+        skipped += [why] if why else []
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -441,6 +453,7 @@ def main(argv: list[str] | None = None) -> int:
         "breakdown": rows,
         "collision": collision,
         "rl": rl,
+        "ui": ui_rows,
         "targets": goals,
         "skipped": skipped,
     }

@@ -151,8 +151,10 @@ class UIDrawer:
         self.used = set()
         lay = compute_layout(world, frame.viewport, self.theme)
         state.layout = lay
-        for z, e in enumerate(lay.order):
-            self.widget(e, lay.boxes[e], lay.widget.get(e), state, z * 8)
+        for e in lay.order:
+            # one group per nesting level and part, not per widget: siblings share a
+            # level, so a grid of 200 buttons is a handful of draw calls
+            self.widget(e, lay.boxes[e], lay.widget.get(e), state, lay.depth[e] * 8)
         for key in [k for k in self.items if k not in self.used]:
             self.items.pop(key).delete()
         renderer = renderer_for(world.resource(Host))

@@ -83,6 +83,7 @@ class Layout:
     boxes: dict[int, Box] = field(default_factory=dict)
     order: list[int] = field(default_factory=list)
     widget: dict[int, Any] = field(default_factory=dict)  #: entity -> its widget component
+    depth: dict[int, int] = field(default_factory=dict)  #: entity -> nesting depth (roots 0)
 
     def hit(self, point: tuple[float, float], accept: Callable[[int], bool]) -> int | None:
         """The topmost node under ``point`` that ``accept`` takes, or None."""
@@ -194,13 +195,14 @@ class _Solver:
             cw, ch = max(ws), max(hs)
         return (max(cw + 2 * pad, iw), max(ch + 2 * pad, ih))
 
-    def place(self, e: int | None, box: Box, seen: set[int]) -> None:
+    def place(self, e: int | None, box: Box, seen: set[int], depth: int = -1) -> None:
         if e is not None:
             if e in seen:
                 return  # a parent cycle: drawn once, never looped
             seen.add(e)
             self.out.boxes[e] = box
             self.out.order.append(e)
+            self.out.depth[e] = depth
             n = self.nodes[e]
             inner, layout = box.inset(n.padding), n.layout
         else:
@@ -211,11 +213,15 @@ class _Solver:
         sizes = [self.measure(k, inner.w, inner.h) for k in kids]
         if layout == "free":
             for k, (w, h) in zip(kids, sizes, strict=True):
-                self.place(k, self._anchored(self.nodes[k], inner, w, h), seen)
+                self.place(k, self._anchored(self.nodes[k], inner, w, h), seen, depth + 1)
         elif layout == "grid":
-            self._grid(self.nodes[e] if e is not None else None, kids, sizes, inner, seen)
+            self._grid(
+                self.nodes[e] if e is not None else None, kids, sizes, inner, seen, depth + 1
+            )
         else:
-            self._line(self.nodes[e] if e is not None else None, kids, sizes, inner, seen)
+            self._line(
+                self.nodes[e] if e is not None else None, kids, sizes, inner, seen, depth + 1
+            )
 
     @staticmethod
     def _anchored(n: UINode, inner: Box, w: float, h: float) -> Box:
@@ -228,7 +234,7 @@ class _Solver:
         )
 
     def _line(self, parent: UINode | None, kids: list[int], sizes: list[tuple[float, float]],
-              inner: Box, seen: set[int]) -> None:  # fmt: skip
+              inner: Box, seen: set[int], depth: int) -> None:  # fmt: skip
         assert parent is not None
         row = parent.layout == "row"
         sp, align = parent.spacing, parent.align
@@ -252,11 +258,11 @@ class _Solver:
             else:
                 b = Box(inner.x + c, inner.top - pos - m, cross, m)
             b = Box(b.x + node.offset[0], b.y + node.offset[1], b.w, b.h)
-            self.place(k, b, seen)
+            self.place(k, b, seen, depth)
             pos += m + sp
 
     def _grid(self, parent: UINode | None, kids: list[int], sizes: list[tuple[float, float]],
-              inner: Box, seen: set[int]) -> None:  # fmt: skip
+              inner: Box, seen: set[int], depth: int) -> None:  # fmt: skip
         assert parent is not None
         cols, sp = parent.columns, parent.spacing
         cell_w = max((inner.w - sp * (cols - 1)) / cols, 0.0)
@@ -268,12 +274,14 @@ class _Solver:
                 node = self.nodes[k]
                 w = cell_w if node.width == "auto" else min(w, cell_w)
                 b = Box(inner.x + c * (cell_w + sp), top - row_h + (row_h - h) / 2, w, h)
-                self.place(k, Box(b.x + node.offset[0], b.y + node.offset[1], b.w, b.h), seen)
+                self.place(
+                    k, Box(b.x + node.offset[0], b.y + node.offset[1], b.w, b.h), seen, depth
+                )
             top -= row_h + sp
 
 
 def compute_layout(world: World, size: tuple[int, int], theme: Theme = DEFAULT_THEME) -> Layout:
     """Boxes of every visible UI node for a window of ``size`` pixels."""
     solver = _Solver(world, theme)
-    solver.place(None, Box(0.0, 0.0, float(size[0]), float(size[1])), set())
+    solver.place(None, Box(0.0, 0.0, float(size[0]), float(size[1])), set(), -1)
     return solver.out
