@@ -23,6 +23,9 @@ def test_the_sample_is_framed_beside_the_list_and_below_the_help(sample: Sample)
     if sample.camera is not None or sample.follow is not None:
         return  # the sample chose its own view (a 750 m row, a followed car...)
     bounds = scene_bounds(app.world)
+    if bounds is None and sample.category == "UI":  # screen-space UI, no bodies to frame
+        _ui_is_clear_of_the_list_and_help(app)
+        return
     assert bounds is not None
     cam = app.world.resource(Camera)
     left, bottom = cam.world_to_screen((bounds[0], bounds[1]), SIZE)
@@ -33,6 +36,16 @@ def test_the_sample_is_framed_beside_the_list_and_below_the_help(sample: Sample)
     assert (right - left) > 0.3 * (SIZE[0] - LIST_WIDTH) or (top - bottom) > 0.3 * (
         SIZE[1] - HELP_HEIGHT
     )
+
+
+def _ui_is_clear_of_the_list_and_help(app: App) -> None:
+    from kge.ui.interact import UIState
+
+    app.step()
+    boxes = app.world.resource(UIState).layout.boxes
+    assert boxes
+    for box in boxes.values():
+        assert box.x >= LIST_WIDTH - 1 and box.top <= SIZE[1] - HELP_HEIGHT + 1, box
 
 
 def test_the_car_camera_follows_the_car() -> None:
