@@ -398,16 +398,17 @@ class App(Host):
             self.input.refresh_world_position()
             for i, world in enumerate(self._running_worlds()):
                 with self.input.muted(i > 0):  # scenes below an overlay get no input
-                    self._run_world(world, steps, game_dt)
+                    self._run_world(world, steps, game_dt, with_input=i == 0)
         finally:
             self._in_frame = False
             self.input.end_frame()
             self.frame_count += 1
         self._run_scene_ops()
 
-    def _run_world(self, world: World, steps: int, game_dt: float) -> None:
+    def _run_world(self, world: World, steps: int, game_dt: float, with_input: bool) -> None:
         time = world.resource(Time)
-        world.schedule.run(Stage.INPUT, game_dt)
+        if with_input:  # input hooks and the UI
+            world.schedule.run(Stage.INPUT, game_dt)
         for _ in range(steps):
             if self._scene_ops:
                 break  # the scene is changing: do not step a world about to close

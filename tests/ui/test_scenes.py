@@ -63,6 +63,29 @@ def test_overlay_can_keep_the_scene_below_running_without_its_input() -> None:
     assert t.fixed == 4 and t.keys == 0
 
 
+def test_a_running_scene_below_gets_no_clicks_or_key_hooks() -> None:
+    from kge import Button, UINode
+
+    got: list[object] = []
+
+    class Hooks(Script):
+        def on_key_down(self, key: int) -> None:
+            got.append(key)
+
+        def on_click(self, event: object) -> None:
+            got.append(event)
+
+    def below(world: World) -> None:
+        world.spawn(UINode(width=400, height=300), Button("under"), Behaviour(Hooks()))
+
+    app = App(below, headless=True, size=(400, 300))
+    app.push_scene(pause, overlay=True, run_below=True)
+    app.input.click(at=(200, 150))
+    app.input.press(Key.A)
+    app.step(3)
+    assert got == []
+
+
 def test_a_plain_push_hides_the_scene_below() -> None:
     app = App(game, headless=True, ticker=Ticker())
     app.push_scene(pause)
