@@ -269,3 +269,17 @@ def test_scroll_list_rows_are_clipped_to_the_list(make_app: Any) -> None:
     text = mask(px, DEFAULT_THEME.text[:3], tol=60)
     ys = np.nonzero(text)[0]
     assert ys.min() >= SIZE[1] // 2 - 30 and ys.max() < top  # nothing drawn outside
+
+
+def test_a_theme_resource_changes_what_is_drawn(make_app: Any) -> None:
+    orange = (255, 128, 0, 255)
+
+    def scene(world: World) -> None:
+        world.insert_resource(Theme.from_data({"accent": list(orange)}))
+        world.spawn(UINode(width=100, height=20), ProgressBar(1.0))
+
+    app = make_app(scene)
+    app.step()
+    px = pixels(app)
+    assert mask(px, orange[:3], tol=10).sum() > 1500
+    assert mask(px, ACCENT, tol=10).sum() == 0

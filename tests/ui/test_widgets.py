@@ -284,3 +284,26 @@ def test_scroll_list_scrolls_with_the_wheel_and_selects_rows() -> None:
     app.input.scroll_by(0, -100)
     app.step()
     assert lst.scroll == 20 * 25 - 100  # never past the end
+
+
+def test_value_and_text_hooks_run_on_the_widget_entity() -> None:
+    seen: list[tuple[str, Any]] = []
+
+    class Field(Script):
+        def on_value_changed(self, event: ValueChanged) -> None:
+            seen.append(("changed", event.value))
+
+        def on_text_submitted(self, event: TextSubmitted) -> None:
+            seen.append(("submitted", event.text))
+
+    def scene(world: World) -> None:
+        world.spawn(UINode(width=200), TextInput(max_length=10), Behaviour(Field()))
+
+    app = App(scene, headless=True, size=SIZE)
+    field = entity_of(app, TextInput)
+    focus(app.world, field)
+    app.input.type_text("ok")
+    app.step()
+    app.input.press(Key.ENTER)
+    app.step()
+    assert seen == [("changed", "ok"), ("submitted", "ok")]
