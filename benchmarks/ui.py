@@ -63,7 +63,7 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
     world = app.world
     state = world.resource(UIState)
     boxes = list(state.layout.boxes.values())
-    drawer = drawer_for(world)
+    assert drawer_for(world).items, "the drawer holds the widgets' pyglet objects"
     window = renderer_for(world.resource(Host)).window  # type: ignore[union-attr]
     k = 0
 
@@ -106,7 +106,6 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
         for obj in keep:
             obj.delete()
 
-    del drawer
     fns: dict[str, Callable[[], None]] = {
         "layout": layout, "input": input_, "draw": draw, "rebuild": rebuild,
     }  # fmt: skip

@@ -265,7 +265,7 @@ class UIDrawer:
         x0, cy = box.x + th.padding, box.center[1]
         shown = w.text or w.placeholder
         color = th.text if w.text else th.text_muted
-        label = self.text((e,), shown, x0, cy, color, z + 4, anchor_x="left")
+        self.text((e,), shown, x0, cy, color, z + 4, anchor_x="left")
         if not focused or w.disabled:
             return
         fs = th.font_size
@@ -285,7 +285,6 @@ class UIDrawer:
         if int(self.time * 2.0) % 2 == 0:  # blink on game time (deterministic headless)
             cx = x_at(w.caret)
             self.rect((e, "caret"), Box(cx, cy - fs * 0.7, 2, fs * 1.4), th.text, z + 5)
-        del label
 
     def dropdown(self, e: int, box: Box, w: Dropdown, look: str, z: int) -> None:
         th = self.theme

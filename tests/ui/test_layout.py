@@ -283,3 +283,31 @@ def test_a_theme_resource_changes_what_is_drawn(make_app: Any) -> None:
     px = pixels(app)
     assert mask(px, orange[:3], tol=10).sum() > 1500
     assert mask(px, ACCENT, tol=10).sum() == 0
+
+
+def test_text_field_draws_selection_and_caret_where_the_text_ends(make_app: Any) -> None:
+    def scene(world: World) -> None:
+        world.spawn(UINode(width=180, height=34), TextInput("hello world", caret=5, anchor=0))
+
+    app = make_app(scene)
+    app.step()
+    from kge.systems.ui import focus
+
+    (field,) = [e for e, _ in app.world.query(TextInput)]
+    focus(app.world, field)
+    px = pixels(app)
+    sel = mask(px, DEFAULT_THEME.selection[:3], tol=30)
+    x0, x1, _, _ = bbox(sel)
+    left = SIZE[0] // 2 - 90 + DEFAULT_THEME.padding
+    assert abs(x0 - left) <= 2 and 25 < x1 - x0 < 60  # "hello" is selected, not the rest
+    app.world.get(field, TextInput).anchor = -1  # no selection: the caret shows
+    px = pixels(app)
+    assert mask(px, DEFAULT_THEME.selection[:3], tol=30).sum() == 0
+
+    # the caret: a 2 px bright bar just right of "hello", gone without the focus
+    def bright_at_caret(px: np.ndarray) -> int:
+        return int(mask(px, DEFAULT_THEME.text[:3], tol=20)[:, int(x1) - 2 : int(x1) + 4].sum())
+
+    with_caret = bright_at_caret(px)
+    focus(app.world, None)
+    assert with_caret - bright_at_caret(pixels(app)) >= 20
