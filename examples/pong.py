@@ -83,13 +83,16 @@ class Score(Script):
         self.points += 1
         self.get(Text).value = str(self.points)
         self.world.resource(Tweens).start(self.entity, SCORE_POP)  # the number pops
-        if self.hud is not None:
+        if self.hud is not None:  # the HUD corner shows it, and pops the same way
             self.world.get(self.hud, kge.Label).text = f"{self.side}  {self.points}"
+            self.world.resource(Tweens).start(self.hud, HUD_POP)
 
 
 #: a point scored: the score grows quickly, then bounces back to its size
 SCORE_POP = Sequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
                      Tween(Text, "size", 15.0, 0.35, ease="bounce_out"), name="score-pop")
+HUD_POP = Sequence(Tween(kge.Label, "size", 30.0, 0.12, ease="quad_out", start=22.0),
+                   Tween(kge.Label, "size", 22.0, 0.35, ease="bounce_out"), name="hud-pop")
 
 
 class PlayerPaddle(Script):

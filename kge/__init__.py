@@ -116,7 +116,7 @@ from kge.components.ui import (
     UINode,
 )
 from kge.input import Gamepad, GamepadEvent, TextEvent
-from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
+from kge.transitions import Crossfade, Fade, Slide, Wipe  # base class: kge.transitions.Transition
 from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
 
 if TYPE_CHECKING:
@@ -304,7 +304,6 @@ __all__ += [
     "TextSubmitted",
     "Theme",
     "Toggle",
-    "Transition",
     "UIEvents",
     "UIImage",
     "UINode",
