@@ -35,7 +35,7 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
     from benchmarks.scenes import scenes
 
     sparse = next(s for s in scenes() if s.name == "sparse")
-    measured = sparse.engines["kge"](size)
+    measured: Any = sparse.engines["kge"](size)
     app = measured.runner.app
     app.step(10)
     timer = PhaseTimer(app)
@@ -67,7 +67,7 @@ def despawn_costs(count: int, repeats: int) -> dict[str, float]:
     from benchmarks.scenes import scenes
 
     spawn = next(s for s in scenes() if s.name == "spawn")
-    runners = {e: spawn.engines[e](count) for e in ("kge", "pymunk")}
+    runners: dict[str, Any] = {e: spawn.engines[e](count) for e in ("kge", "pymunk")}
     times: dict[str, list[float]] = {e: [] for e in runners}
     gc.collect()
     gc.disable()
@@ -141,7 +141,8 @@ def table(costs: dict[str, float]) -> str:
     return "\n".join([
         f"  sync-out per moved body ({c['bodies']:.0f} moving)  {c['sync_out_us']:.3f} µs",
         f"  sync-in, frame with no writes              {c['sync_in_ms']:.3f} ms",
-        f"  despawn frame, {c['despawn_count']:,.0f} bodies            kge {c['despawn_kge_ms']:.1f} ms"
+        f"  despawn frame, {c['despawn_count']:,.0f} bodies"
+        f"            kge {c['despawn_kge_ms']:.1f} ms"
         f"  pymunk {c['despawn_pymunk_ms']:.1f} ms",
         f"  memory per body (RSS)                      kge {c['bytes_per_body_kge']:.0f} B"
         f"  pymunk {c['bytes_per_body_pymunk']:.0f} B",
