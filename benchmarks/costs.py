@@ -21,6 +21,7 @@ import statistics
 import subprocess
 import sys
 import time
+from collections import deque
 from typing import Any
 
 from benchmarks.breakdown import PhaseTimer
@@ -57,9 +58,34 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
     measured.close()
     return {
         "sync_out_us": statistics.median(per_body) if per_body else float("nan"),
+        "sync_out_floor_us": slot_write_floor(size),
         "sync_in_ms": timer.medians()["sync-in"],
         "bodies": float(size),
     }
+
+
+#: component fields sync-out writes per moved body (Transform x, y, angle;
+#: RigidBody velocity, angular_velocity)
+FIELDS_PER_BODY = 5
+
+
+def slot_write_floor(n: int, repeats: int = 9) -> float:
+    """µs per body of ``FIELDS_PER_BODY`` bare slot stores, the cheapest way Python
+    can write a field of ``n`` slotted objects (each column mapped through the
+    slot's C setter, as sync-out does): the floor of any per-object sync-out."""
+
+    class Slotted:
+        __slots__ = ("v",)
+
+    objs = [Slotted() for _ in range(n)]
+    values = [float(i) for i in range(n)]
+    setter = Slotted.v.__set__  # type: ignore[attr-defined]
+    best = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        deque(map(setter, objs, values), maxlen=0)
+        best.append(time.perf_counter() - t0)
+    return statistics.median(best) * 1e6 / n * FIELDS_PER_BODY
 
 
 def despawn_costs(count: int, repeats: int) -> dict[str, float]:
@@ -140,6 +166,8 @@ def table(costs: dict[str, float]) -> str:
     c = costs
     return "\n".join([
         f"  sync-out per moved body ({c['bodies']:.0f} moving)  {c['sync_out_us']:.3f} µs",
+        f"  floor: {FIELDS_PER_BODY} bare slot stores per body"
+        f"      {c['sync_out_floor_us']:.3f} µs",
         f"  sync-in, frame with no writes              {c['sync_in_ms']:.3f} ms",
         f"  despawn frame, {c['despawn_count']:,.0f} bodies"
         f"            kge {c['despawn_kge_ms']:.1f} ms"
@@ -157,6 +185,8 @@ def markdown(costs: dict[str, float]) -> list[str]:
         "| figure | kge | raw pymunk |", "|---|---:|---:|",
         f"| sync-out per moved body ({c['bodies']:,.0f} moving), µs "
         f"| {c['sync_out_us']:.3f} | - |",
+        f"| floor: {FIELDS_PER_BODY} bare slot stores per body, µs "
+        f"| {c['sync_out_floor_us']:.3f} | - |",
         f"| sync-in of a frame with no writes ({c['bodies']:,.0f} bodies), ms "
         f"| {c['sync_in_ms']:.3f} | - |",
         f"| despawn frame, {c['despawn_count']:,.0f} bodies, ms "
