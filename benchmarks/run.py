@@ -101,18 +101,26 @@ def _median(results: list[Result], scene: str, size: int, engine: str) -> float 
 def targets(results: list[Result], fitting: dict[str, dict[str, float]],
             render: dict[int, dict[str, float]],
             rl: list[dict[str, Any]] | None = None,
-            animation: dict[int, dict[str, float]] | None = None) -> list[dict[str, Any]]:
-    """The issue's targets beside the measured figures (None when not measured)."""
+            animation: dict[int, dict[str, float]] | None = None,
+            costs: dict[str, float] | None = None) -> list[dict[str, Any]]:
+    """The issues' targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
+    c = costs or {}
 
     def add(what: str, value: float | None, goal: float, at_most: bool, unit: str = "") -> None:
         met = None if value is None else (value <= goal if at_most else value >= goal)
         rows.append({"target": what, "value": value, "goal": goal,
                      "at_most": at_most, "unit": unit, "met": met})
 
-    for scene, size in (("pyramid", 40), ("rain", 5000)):
+    # a kge frame at the cost of the pymunk step under it (issue 16)
+    for scene, size, goal in (("pyramid", 40, 1.10), ("rain", 5000, 1.10),
+                              ("dense-pile", 6000, 1.10), ("chain", 200, 1.25),
+                              ("chain", 1000, 1.25), ("joint-grid", 100, 1.25)):
         add(f"kge / raw pymunk, {scene}-{size}", ratio(results, scene, size, "kge", "pymunk"),
-            1.10, True)
+            goal, True)
+    add("sync-out per moved body (sparse field)", c.get("sync_out_us"), 0.10, True, "µs")
+    despawn = c.get("despawn_kge_ms") if c.get("despawn_count") == 1000 else None
+    add("despawning 1,000 bodies in one frame", despawn, 25.0, True, "ms")
     # lunar-lander: Gymnasium's LunarLander on kge.box2d vs on pybox2d (goal: half its speed)
     for scene, size, goal in (("pyramid", 40, 0.80), ("chain", 200, 0.70),
                               ("many-sleeping", 5000, 0.10), ("lunar-lander", 50, 2.0)):
@@ -332,6 +340,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
 
         out += ["", "Gymnasium LunarLander, env steps per second in one process (random "
                 "actions, episodes reset as they end):", "", rl_table(report["rl"], True)]
+    if report.get("costs"):
+        from benchmarks.costs import markdown as costs_markdown
+
+        out += costs_markdown(report["costs"])
     out += ["", "Targets:", "", "| target | measured | goal | |", "|---|---:|---:|---|"]
     for t in report["targets"]:
         out.append("| " + " | ".join(_fmt_target(t)) + " |")
@@ -434,7 +446,16 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
-    goals = targets(results, fitting, render, rl, animation)
+    costs: dict[str, float] = {}
+    if not args.scene:  # per-body costs beside raw pymunk (sync-out, despawn, memory)
+        from benchmarks.costs import measure as costs_measure
+        from benchmarks.costs import table as costs_table
+
+        progress("per-body costs")
+        costs = costs_measure(args.quick)
+        print("\nper-body costs:")
+        print(costs_table(costs))
+    goals = targets(results, fitting, render, rl, animation, costs)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -454,6 +475,7 @@ def main(argv: list[str] | None = None) -> int:
         "collision": collision,
         "rl": rl,
         "ui": ui_rows,
+        "costs": costs,
         "targets": goals,
         "skipped": skipped,
     }

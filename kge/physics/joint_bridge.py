@@ -246,7 +246,8 @@ class JointBridge:
         self._others = [(e, h) for e, h in self.ordered() if e not in self._batched]
         self._batch_epoch = self.types_epoch
 
-    def before_step(self, dt: float) -> None:
+    def before_step(self, dt: float, raw: Any = None) -> None:
+        """``raw``: sync-out's bulk read when nothing touched a body since (or None)."""
         ordered = self.ordered()
         if self._batch_epoch != self.types_epoch:
             for _, h in ordered:
@@ -255,9 +256,9 @@ class JointBridge:
         else:
             for _, h in self._others:
                 h.before_step(dt)
-            if self._batched and self._batch.mass_changed():
+            if self._batched and self._batch.mass_changed(self.sim.mass_epoch):
                 self._batch.refresh_mass()
-        self._batch_live = bool(self._batched) and self._batch.before_step()
+        self._batch_live = bool(self._batched) and self._batch.before_step(raw)
         if self._batched and not self._batch_live:  # a body left the space: per joint
             for e, h in ordered:
                 if e in self._batched:

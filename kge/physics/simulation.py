@@ -91,6 +91,8 @@ class Simulation:
         self._rigidbodies: list[RigidBody | None] = []
         self._tf_objects = component_array([])
         self._rb_objects = component_array([])
+        #: bumped whenever a body's mass data is recomputed (joint batches watch it)
+        self.mass_epoch = 0
         self.joints = JointBridge(self)
         self._applied: tuple[Any, ...] = ()
         self.skin = 0.01
@@ -592,9 +594,11 @@ class Simulation:
         rb = None if rec.implicit else world.try_get(e, RigidBody)
         if rb is None or body.body_type != DYNAMIC:
             rec.mass = MassData(0.0, 0.0, computed.center)
+            self.mass_epoch += 1
             return
         md = dynamic_mass(computed, rb.mass, rb.fixed_rotation)
         rec.mass = md
+        self.mass_epoch += 1
         set_mass(body, md)
 
     def _rebuild_poses(self) -> None:
@@ -640,11 +644,11 @@ class Simulation:
         self.events_step_started()
         n = self.substeps
         h = self.dt / n
-        self.joints.before_step(self.dt)
+        # nothing touched a body since the last sync-out: its bulk read is current
+        last = self.poses.raw if idle and unchanged else None
+        self.joints.before_step(self.dt, last)
         rec = self.recorder
         if self.ccd is not None and not quiet:
-            # nothing touched a body since the last sync-out: its bulk read is current
-            last = self.poses.raw if idle and unchanged else None
             self.ccd.before_step(self.dt, n, last)
         forces = self.forces
         # Box2D's speed caps before every substep (see kge.physics.speed_cap); the
@@ -700,7 +704,10 @@ class Simulation:
         s = self.settings
         vmax = s.max_translation / self.dt
         wmax = s.max_rotation / self.dt
-        for k in clamp(rows[:, 3:6], vmax, wmax).tolist():  # ``rows`` is a gathered copy
+        capped = clamp(rows[:, 3:6], vmax, wmax).tolist()  # ``rows`` is a gathered copy
+        if capped:  # the bulk read no longer holds these bodies' velocities
+            poses.raw = None
+        for k in capped:
             body = poses.bodies[int(slots[k])]
             vx, vy, w = rows[k, 3:6].tolist()
             body.velocity = (vx, vy)

@@ -69,6 +69,21 @@ def test_report_has_breakdown_targets_chart_and_markdown(report: dict) -> None:
     assert {r["row"] for r in report["collision"]} == {"distance", "collide", "tree query"}
 
 
+def test_report_has_per_body_costs_and_their_targets(report: dict) -> None:
+    """Sync-out per moved body, despawn and memory per body are measured beside raw pymunk."""
+    c = report["costs"]
+    assert 0 < c["sync_out_us"] < 1000 and c["sync_in_ms"] >= 0
+    assert c["despawn_kge_ms"] > 0 and c["despawn_pymunk_ms"] > 0
+    assert c["bytes_per_body_kge"] > 0 and c["bytes_per_body_pymunk"] > 0
+    names = {t["target"] for t in report["targets"]}
+    assert {"kge / raw pymunk, chain-200", "kge / raw pymunk, dense-pile-6000",
+            "kge / raw pymunk, joint-grid-100",
+            "sync-out per moved body (sparse field)"} <= names
+    sync = next(t for t in report["targets"] if t["target"].startswith("sync-out"))
+    assert sync["value"] == c["sync_out_us"] and sync["met"] is not None
+    assert "Per-body costs" in report["_md"]
+
+
 def test_ground_pinned_chain_mirrors_on_raw_pymunk() -> None:
     spec = spec_of(get_sample("chains"), count=40, links=40)
     assert sum(j.body_a is None for j in spec.joints) == 1

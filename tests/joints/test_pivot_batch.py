@@ -109,3 +109,32 @@ def test_bulk_read_back_agrees_with_the_poses() -> None:
         assert j.angle == pytest.approx(tb - ta - j.reference_angle, abs=1e-9)
         assert j.motor_torque == 0.0 and j.reaction_torque == 0.0
     app.close()
+
+
+def test_bulk_path_follows_a_mass_change() -> None:
+    """The batch caches masses and centres of gravity; a changed collider reloads them
+    (checked only when the physics system recomputed a mass: ``Simulation.mass_epoch``)."""
+
+    def pendulum(world: World) -> None:
+        bob = world.spawn(Transform(2.0, 8.0, 0.3), RigidBody(),
+                          Collider(Circle(0.3, (0.4, 0.1)), density=10.0))
+        world.spawn(RevoluteJoint(None, bob, anchor=(1.6, 8.0)))
+
+    results = []
+    for batch in (True, False):
+        old = JointBridge.batch_revolutes
+        JointBridge.batch_revolutes = batch
+        try:
+            app = App(pendulum, headless=True)
+            app.step(30)
+            (_, (col,)), = app.world.query(Collider)
+            col.density = 40.0
+            col.shape = Circle(0.3, (-0.2, 0.3))  # the centre of gravity moves too
+            app.step(90)
+            (_, (j,)), = app.world.query(RevoluteJoint)
+            (_, (t, _rb)), = app.world.query(Transform, RigidBody)
+            results.append((t.x, t.y, t.angle, j.angle, j.speed, *j.reaction_force))
+            app.close()
+        finally:
+            JointBridge.batch_revolutes = old
+    assert results[0] == pytest.approx(results[1], rel=1e-9, abs=1e-9)

@@ -105,6 +105,7 @@ class PivotBatch:
         self.ids = np.empty(0, dtype=np.int64)
         self._mapping: tuple[np.ndarray, np.ndarray] | None = None
         self.v0: np.ndarray | None = None
+        self._mass_epoch = -1
 
     # -- structure ------------------------------------------------------------------
     def rebuild(self, handles: list[Revolute]) -> None:
@@ -200,18 +201,33 @@ class PivotBatch:
                 sides,
             ))
 
-    def mass_changed(self) -> bool:
+    def mass_changed(self, epoch: int) -> bool:
+        """Whether a body's mass data was replaced since the last check.
+
+        ``epoch`` counts the physics system's mass updates (any body's): the
+        per-body comparison runs only when it moved, not every step.
+        """
+        if epoch == self._mass_epoch:
+            return False
+        self._mass_epoch = epoch
         return [None if r is None else r.mass for r in self.recs] != self.masses
 
     # -- reading ----------------------------------------------------------------------
-    def read(self) -> np.ndarray | None:
+    def read(self, raw: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray | None:
         """(x, y, angle, vx, vy, w) of every slot (slot 0: the static body), or None
-        when a body is no longer in the space."""
-        buf = self._buffer
-        buf.clear()
-        pb.get_space_bodies(self.space, FIELDS, buf)
-        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
-        rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        when a body is no longer in the space.
+
+        ``raw``: the (ids, rows) of a bulk read of the whole space that is still
+        current (sync-out's, when nothing touched a body since), instead of a new one.
+        """
+        if raw is None:
+            buf = self._buffer
+            buf.clear()
+            pb.get_space_bodies(self.space, FIELDS, buf)
+            ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
+            rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        else:
+            ids, rows = raw
         m = self._mapping
         if m is None or not np.array_equal(ids, m[0]):
             if len(ids) == 0:
@@ -231,9 +247,9 @@ class PivotBatch:
         out[0] = (p.x, p.y, s.angle, 0.0, 0.0, 0.0)
         return out
 
-    def before_step(self) -> bool:
+    def before_step(self, raw: tuple[np.ndarray, np.ndarray] | None = None) -> bool:
         """Remember the velocities (for the reactions' direction); False if stale."""
-        state = self.read()
+        state = self.read(raw)
         if state is None:
             return False
         self.v0 = state[:, 3:]

@@ -1,0 +1,196 @@
+"""Per-body costs beside raw pymunk: sync-out, despawn and memory.
+
+The scene table times whole frames; these figures isolate the per-body parts the
+issue sets targets for, each measured side by side with raw pymunk in one run:
+
+* ``sync_out_us``: sync-out's time per *moved* body (the sparse field, where
+  every body moves every frame), counted from the rows sync-out actually wrote;
+* ``sync_in_ms``: sync-in of a frame with no user writes on the same scene (it
+  should not grow with the body count);
+* ``despawn_ms``: the frame that despawns a 1,000-body wave (the spawn scene's
+  ``prepare``), interleaved with raw pymunk removing the same wave;
+* ``bytes_per_body``: RSS growth per body while building the sparse field of
+  10,000 bodies, each engine in a fresh interpreter (memory a process has freed
+  is not given back, so one process cannot measure both).
+"""
+
+from __future__ import annotations
+
+import gc
+import statistics
+import subprocess
+import sys
+import time
+from collections import deque
+from typing import Any
+
+from benchmarks.breakdown import PhaseTimer
+from kge.systems.physics import PhysicsSystem
+
+#: bodies of the sparse field for the memory figure
+MEMORY_BODIES = 10_000
+
+
+def sync_costs(size: int, frames: int) -> dict[str, float]:
+    """Sync-out µs per moved body and sync-in ms per frame, on the sparse field."""
+    from benchmarks.scenes import scenes
+
+    sparse = next(s for s in scenes() if s.name == "sparse")
+    measured: Any = sparse.engines["kge"](size)
+    app = measured.runner.app
+    app.step(10)
+    timer = PhaseTimer(app)
+    sim = app.world.get_system(PhysicsSystem).sim
+    moved = [0]
+    inner = sim._write_back
+
+    def counted(slots: Any, new: Any, old: Any) -> None:
+        moved[0] += len(slots)
+        inner(slots, new, old)
+
+    sim._write_back = counted
+    per_body = []
+    for _ in range(frames):
+        moved[0] = 0
+        timer.frame()
+        if moved[0]:
+            per_body.append(timer.frames[-1]["sync-out"] * 1000.0 / moved[0])
+    measured.close()
+    return {
+        "sync_out_us": statistics.median(per_body) if per_body else float("nan"),
+        "sync_out_floor_us": slot_write_floor(size),
+        "sync_in_ms": timer.medians()["sync-in"],
+        "bodies": float(size),
+    }
+
+
+#: component fields sync-out writes per moved body (Transform x, y, angle;
+#: RigidBody velocity, angular_velocity)
+FIELDS_PER_BODY = 5
+
+
+def slot_write_floor(n: int, repeats: int = 9) -> float:
+    """µs per body of ``FIELDS_PER_BODY`` bare slot stores, the cheapest way Python
+    can write a field of ``n`` slotted objects (each column mapped through the
+    slot's C setter, as sync-out does): the floor of any per-object sync-out."""
+
+    class Slotted:
+        __slots__ = ("v",)
+
+    objs = [Slotted() for _ in range(n)]
+    values = [float(i) for i in range(n)]
+    setter = Slotted.v.__set__  # type: ignore[attr-defined]
+    best = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        deque(map(setter, objs, values), maxlen=0)
+        best.append(time.perf_counter() - t0)
+    return statistics.median(best) * 1e6 / n * FIELDS_PER_BODY
+
+
+def despawn_costs(count: int, repeats: int) -> dict[str, float]:
+    """Median ms of the frame that despawns ``count`` bodies, kge and raw pymunk."""
+    from benchmarks.scenes import scenes
+
+    spawn = next(s for s in scenes() if s.name == "spawn")
+    runners: dict[str, Any] = {e: spawn.engines[e](count) for e in ("kge", "pymunk")}
+    times: dict[str, list[float]] = {e: [] for e in runners}
+    gc.collect()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            for e, r in runners.items():
+                r.step()  # a new wave (untimed here: the scene table times it)
+                t0 = time.perf_counter()
+                r.prepare()  # despawn the wave and step
+                times[e].append((time.perf_counter() - t0) * 1000.0)
+            gc.collect()
+    finally:
+        gc.enable()
+        for r in runners.values():
+            r.close()
+    out = {f"despawn_{e}_ms": statistics.median(v) for e, v in times.items()}
+    out["despawn_count"] = float(count)
+    return out
+
+
+_MEMORY_SCRIPT = """
+import gc, sys
+from benchmarks.scenes import scenes
+from benchmarks.engines import spec_of, PymunkRunner
+from kge.testbed.registry import get_sample
+
+def rss():
+    with open('/proc/self/statm') as f:
+        return int(f.read().split()[1]) * 4096
+
+engine, n = sys.argv[1], int(sys.argv[2])
+sample = get_sample('sparse-field')
+spec = spec_of(sample, count=n) if engine == 'pymunk' else None
+small = scenes()[0].engines  # imports every engine module before the baseline
+gc.collect()
+before = rss()
+if engine == 'kge':
+    from benchmarks.engines import KgeRunner
+    r = KgeRunner(sample, count=n)
+else:
+    r = PymunkRunner(spec)
+for _ in range(3):
+    r.step()
+gc.collect()
+print((rss() - before) / n)
+"""
+
+
+def memory_per_body(engine: str, bodies: int = MEMORY_BODIES) -> float:
+    """RSS growth per body building the sparse field in a fresh interpreter."""
+    out = subprocess.run(
+        [sys.executable, "-c", _MEMORY_SCRIPT, engine, str(bodies)],
+        capture_output=True, text=True, check=True, timeout=600,
+    )
+    return float(out.stdout.strip().splitlines()[-1])
+
+
+def measure(quick: bool = False) -> dict[str, float]:
+    """Every figure of this module (smaller and fewer when ``quick``)."""
+    out: dict[str, float] = {}
+    out.update(sync_costs(500 if quick else 20_000, 5 if quick else 40))
+    out.update(despawn_costs(100 if quick else 1000, 2 if quick else 9))
+    n = 1000 if quick else MEMORY_BODIES
+    out["bytes_per_body_kge"] = memory_per_body("kge", n)
+    out["bytes_per_body_pymunk"] = memory_per_body("pymunk", n)
+    return out
+
+
+def table(costs: dict[str, float]) -> str:
+    c = costs
+    return "\n".join([
+        f"  sync-out per moved body ({c['bodies']:.0f} moving)  {c['sync_out_us']:.3f} µs",
+        f"  floor: {FIELDS_PER_BODY} bare slot stores per body"
+        f"      {c['sync_out_floor_us']:.3f} µs",
+        f"  sync-in, frame with no writes              {c['sync_in_ms']:.3f} ms",
+        f"  despawn frame, {c['despawn_count']:,.0f} bodies"
+        f"            kge {c['despawn_kge_ms']:.1f} ms"
+        f"  pymunk {c['despawn_pymunk_ms']:.1f} ms",
+        f"  memory per body (RSS)                      kge {c['bytes_per_body_kge']:.0f} B"
+        f"  pymunk {c['bytes_per_body_pymunk']:.0f} B",
+    ])
+
+
+def markdown(costs: dict[str, float]) -> list[str]:
+    """The figures as a markdown table (lines), for the report."""
+    c = costs
+    return [
+        "", "Per-body costs (`benchmarks/costs.py`):", "",
+        "| figure | kge | raw pymunk |", "|---|---:|---:|",
+        f"| sync-out per moved body ({c['bodies']:,.0f} moving), µs "
+        f"| {c['sync_out_us']:.3f} | - |",
+        f"| floor: {FIELDS_PER_BODY} bare slot stores per body, µs "
+        f"| {c['sync_out_floor_us']:.3f} | - |",
+        f"| sync-in of a frame with no writes ({c['bodies']:,.0f} bodies), ms "
+        f"| {c['sync_in_ms']:.3f} | - |",
+        f"| despawn frame, {c['despawn_count']:,.0f} bodies, ms "
+        f"| {c['despawn_kge_ms']:.1f} | {c['despawn_pymunk_ms']:.1f} |",
+        f"| memory per body (RSS growth, sparse field), bytes "
+        f"| {c['bytes_per_body_kge']:,.0f} | {c['bytes_per_body_pymunk']:,.0f} |",
+    ]
