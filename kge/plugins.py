@@ -5,6 +5,7 @@
 ``PhysicsPlugin``      Box2D-style physics on pymunk, contact events, joints, queries
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
+``ParticlesPlugin``    particle emitters: numpy particles, bursts on hits, drawn per layer
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -22,7 +23,10 @@ def default_plugins() -> list[Plugin]:
     """A fresh instance of every default plugin, in build order."""
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
 
-    return [BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin()]
+    return [
+        BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin(), ParticlesPlugin(),
+    ]

@@ -1,0 +1,242 @@
+"""Drawing particles: one vertex list per emitter, written with numpy each frame.
+
+Each particle is a quad of 4 vertices whose corners are fixed (``corner``,
+written once); each frame the emitter's live particles write their centre,
+size and angle, and RGBA colour into the vertex buffers of the world's batch
+with one numpy ``repeat`` per attribute, and the shader turns corner, size and
+angle into the quad. Quads past the live count get size 0. The vertex list sits
+under the emitter's layer group, so particles sort with sprites of that layer.
+
+The list grows (by re-allocation) with the emitter's pool, which is capped by
+``max_particles``; it never shrinks while the emitter lives.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import pyglet
+from pyglet import gl
+
+from kge.components.particles import ParticleEmitter
+from kge.particles.emitter import EmitterState, Particles
+from kge.render.groups import WORLD, Groups
+from kge.render.images import PixelImage
+from kge.render.textures import TextureCache
+
+_VERTEX = """#version 150 core
+in vec2 center;
+in vec2 corner;
+in vec2 size_angle;
+in vec4 colors;
+out vec4 vertex_colors;
+out vec2 uv;
+uniform WindowBlock
+{
+    mat4 projection;
+    mat4 view;
+} window;
+void main()
+{
+    float c = cos(size_angle.y);
+    float s = sin(size_angle.y);
+    vec2 p = corner * size_angle.x;
+    vec2 w = center + vec2(c * p.x - s * p.y, s * p.x + c * p.y);
+    gl_Position = window.projection * window.view * vec4(w, 0.0, 1.0);
+    vertex_colors = colors;
+    uv = corner + 0.5;
+}
+"""
+
+_FRAGMENT = """#version 150 core
+in vec4 vertex_colors;
+in vec2 uv;
+out vec4 final_colors;
+uniform sampler2D particle_texture;
+void main()
+{
+    final_colors = texture(particle_texture, uv) * vertex_colors;
+}
+"""
+
+_CORNERS = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]], np.float32)
+_QUAD = np.array([0, 1, 2, 0, 2, 3], np.intp)
+_BLEND = {
+    "alpha": (gl.GL_SRC_ALPHA, gl.GL_ONE_MINUS_SRC_ALPHA),
+    "additive": (gl.GL_SRC_ALPHA, gl.GL_ONE),
+}
+
+
+def soft_dot(size: int = 64) -> PixelImage:
+    """A white disc whose alpha falls smoothly from the centre to the rim."""
+    ys, xs = np.mgrid[0:size, 0:size]
+    r = np.hypot(xs + 0.5 - size / 2, ys + 0.5 - size / 2) / (size / 2)
+    alpha = np.clip(1.0 - r, 0.0, 1.0) ** 1.5
+    rgba = np.empty((size, size, 4), np.uint8)
+    rgba[..., :3] = 255
+    rgba[..., 3] = np.rint(alpha * 255).astype(np.uint8)
+    return PixelImage(size, size, rgba.tobytes())
+
+
+SOFT_DOT = soft_dot()
+SQUARE = PixelImage(1, 1, b"\xff\xff\xff\xff")
+
+_program: Any = None
+
+
+def particle_program() -> Any:
+    global _program
+    if _program is None:
+        _program = pyglet.graphics.shader.ShaderProgram(
+            pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
+            pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
+        )
+    return _program
+
+
+class ParticleGroup(pyglet.graphics.Group):
+    """Texture, blend mode and shader of particles in one layer."""
+
+    def __init__(self, texture: Any, blend: str, program: Any, parent: Any) -> None:
+        super().__init__(order=0, parent=parent)
+        self.texture = texture
+        self.blend = blend
+        self.program = program
+
+    def set_state(self) -> None:
+        self.program.use()
+        gl.glActiveTexture(gl.GL_TEXTURE0)
+        gl.glBindTexture(self.texture.target, self.texture.id)
+        gl.glEnable(gl.GL_BLEND)
+        gl.glBlendFunc(*_BLEND[self.blend])
+
+    def unset_state(self) -> None:
+        gl.glDisable(gl.GL_BLEND)
+        self.program.stop()
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, ParticleGroup)
+            and self.texture.id == other.texture.id
+            and self.blend == other.blend
+            and self.parent is other.parent
+        )
+
+    def __hash__(self) -> int:
+        return hash((self.texture.id, self.blend, id(self.parent)))
+
+
+class _EmitterMesh:
+    """The vertex list of one emitter and what it was made for."""
+
+    __slots__ = ("capacity", "key", "vertex_list", "written")
+
+    def __init__(self, vertex_list: Any, capacity: int, key: tuple[Any, ...]) -> None:
+        self.vertex_list = vertex_list
+        self.capacity = capacity
+        self.key = key
+        self.written = 0  #: quads with a non-zero size after the last frame
+
+
+def _view(vertex_list: Any, name: str) -> tuple[np.ndarray, Any]:
+    buf = vertex_list.domain.attrib_name_buffers[name]
+    arr = np.ctypeslib.as_array(buf.data).reshape(-1, buf.count)
+    return arr, buf
+
+
+class ParticleDrawer:
+    """Uploads every emitter's particles into the world's batch (a before-pass)."""
+
+    def __init__(self, world: Any, batch: Any, groups: Groups) -> None:
+        self.world = world
+        self.batch = batch
+        self.groups = groups
+        self.program = particle_program()
+        self.textures = TextureCache(world)
+        self.meshes: dict[int, _EmitterMesh] = {}
+        self._smooth: set[int] = set()
+
+    def _texture(self, em: ParticleEmitter) -> Any:
+        image = SQUARE if em.flat else (SOFT_DOT if em.texture is None else em.texture)
+        tex = self.textures.texture(image)
+        if image is SOFT_DOT and tex.id not in self._smooth:  # a blurred dot wants LINEAR
+            gl.glBindTexture(tex.target, tex.id)
+            gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MAG_FILTER, gl.GL_LINEAR)
+            gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MIN_FILTER, gl.GL_LINEAR)
+            self._smooth.add(tex.id)
+        return tex
+
+    def _mesh(self, entity: int, em: ParticleEmitter, capacity: int) -> _EmitterMesh:
+        tex = self._texture(em)
+        key = (tex.id, em.blend, em.layer, em.order)
+        mesh = self.meshes.get(entity)
+        if mesh is not None and mesh.key == key and mesh.capacity >= capacity:
+            return mesh
+        if mesh is not None:
+            mesh.vertex_list.delete()
+        parent = self.groups.get(em.layer, WORLD, em.order)
+        group = ParticleGroup(tex, em.blend, self.program, parent)
+        indices = (np.arange(capacity)[:, None] * 4 + _QUAD).ravel().tolist()
+        vl = self.program.vertex_list_indexed(
+            capacity * 4, gl.GL_TRIANGLES, indices, batch=self.batch, group=group,
+            center=("f", np.zeros(capacity * 8, np.float32)),
+            corner=("f", np.tile(_CORNERS.ravel(), capacity)),
+            size_angle=("f", np.zeros(capacity * 8, np.float32)),
+            colors=("Bn", np.zeros(capacity * 16, np.uint8)),
+        )  # fmt: skip
+        mesh = self.meshes[entity] = _EmitterMesh(vl, capacity, key)
+        return mesh
+
+    def draw(self, frame: Any) -> None:
+        particles = self.world.try_resource(Particles)
+        if particles is None:
+            return
+        for entity in [e for e in self.meshes if e not in particles.states]:
+            self.meshes.pop(entity).vertex_list.delete()
+        for entity, st in particles.states.items():
+            em = self.world.try_get(entity, ParticleEmitter)
+            if em is None:
+                continue
+            self.upload(entity, em, st)
+
+    def upload(self, entity: int, em: ParticleEmitter, st: EmitterState) -> None:
+        """Write the emitter's live particles into its vertex list."""
+        pool = st.pool
+        n = pool.count if em.visible else 0
+        if pool.capacity == 0 and entity not in self.meshes:
+            return
+        mesh = self._mesh(entity, em, max(pool.capacity, 1))
+        vl = mesh.vertex_list
+        lo = vl.start
+        if n:
+            centers = pool.pos[:n]
+            angles = pool.angle[:n]
+            if em.space == "local":
+                x, y, a = st.pose
+                c, s = math.cos(a), math.sin(a)
+                centers = np.empty((n, 2), np.float32)
+                centers[:, 0] = x + c * pool.pos[:n, 0] - s * pool.pos[:n, 1]
+                centers[:, 1] = y + s * pool.pos[:n, 0] + c * pool.pos[:n, 1]
+                angles = angles + np.float32(a)
+            sizes, colors = st.looks()
+            arr, buf = _view(vl, "center")
+            arr[lo : lo + 4 * n] = np.repeat(centers, 4, axis=0)
+            buf.invalidate_region(lo, 4 * n)
+            arr, buf = _view(vl, "size_angle")
+            arr[lo : lo + 4 * n] = np.repeat(np.stack([sizes, angles], axis=1), 4, axis=0)
+            buf.invalidate_region(lo, 4 * n)
+            arr, buf = _view(vl, "colors")
+            arr[lo : lo + 4 * n] = np.repeat(colors, 4, axis=0)
+            buf.invalidate_region(lo, 4 * n)
+        if mesh.written > n:  # quads that died since: size 0
+            arr, buf = _view(vl, "size_angle")
+            arr[lo + 4 * n : lo + 4 * mesh.written, 0] = 0.0
+            buf.invalidate_region(lo + 4 * n, 4 * (mesh.written - n))
+        mesh.written = n
+
+    def close(self) -> None:
+        for mesh in self.meshes.values():
+            mesh.vertex_list.delete()
+        self.meshes.clear()
