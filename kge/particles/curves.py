@@ -48,5 +48,8 @@ def color_table(colors: Sequence[Sequence[int]], alphas: Sequence[float]) -> np.
 
 def life_index(age: np.ndarray, life: np.ndarray) -> np.ndarray:
     """Table row of each particle from its age and lifetime."""
-    t = np.minimum(age / life, 1.0)
-    return (t * (STEPS - 1) + 0.5).astype(np.intp)
+    t = age / life
+    np.minimum(t, 1.0, out=t)
+    t *= STEPS - 1
+    t += 0.5
+    return t.astype(np.intp)

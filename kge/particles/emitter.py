@@ -72,10 +72,15 @@ class EmitterState:
             self.pool.set_max(em.max_particles)
 
     def looks(self) -> tuple[np.ndarray, np.ndarray]:
-        """(sizes, RGBA bytes) of the live particles from their life fractions."""
+        """(sizes, RGBA) of the live particles from their life fractions.
+
+        The colours come back as one uint32 per particle (its 4 RGBA bytes): a
+        gather of 4-byte words is several times faster than of (n, 4) bytes.
+        ``.view(np.uint8).reshape(-1, 4)`` gives the channels.
+        """
         p = self.pool
         idx = life_index(p.age[: p.count], p.life[: p.count])
-        return self.sizes[idx], self.colors[idx]
+        return self.sizes[idx], self.colors.view(np.uint32)[idx, 0]
 
     # -- emission -------------------------------------------------------------------------------
     def continuous(self, em: ParticleEmitter) -> bool:

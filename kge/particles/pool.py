@@ -37,44 +37,68 @@ F = np.float32
 
 
 class ParticlePool:
-    """Structure-of-arrays storage and integration of one emitter's particles."""
+    """Structure-of-arrays storage and integration of one emitter's particles.
 
-    FIELDS = ("pos", "vel", "age", "life", "angle", "spin")
+    One float32 array ``data`` of shape (8, capacity) holds a row per field
+    (x, y, vx, vy, age, life, angle, spin), so every field of the live
+    particles is a contiguous run and removing the dead moves all fields in one
+    fancy-indexed copy. ``pos``, ``vel``, ``age``... are views of it.
+    """
+
+    ROWS = 8
 
     def __init__(self, max_particles: int) -> None:
         self.max_particles = int(max_particles)
         self.count = 0
         self.dropped = 0  #: particles refused because the pool was full
-        self.capacity = 0
-        self.pos = np.zeros((0, 2), F)
-        self.vel = np.zeros((0, 2), F)
-        self.age = np.zeros(0, F)
-        self.life = np.zeros(0, F)
-        self.angle = np.zeros(0, F)
-        self.spin = np.zeros(0, F)
+        self.data = np.zeros((self.ROWS, 0), F)
+
+    @property
+    def capacity(self) -> int:
+        return int(self.data.shape[1])
+
+    @property
+    def pos(self) -> np.ndarray:
+        """(capacity, 2) view of the positions (rows past ``count`` are stale)."""
+        return self.data[0:2].T
+
+    @property
+    def vel(self) -> np.ndarray:
+        return self.data[2:4].T
+
+    @property
+    def age(self) -> np.ndarray:
+        return self.data[4]
+
+    @property
+    def life(self) -> np.ndarray:
+        return self.data[5]
+
+    @property
+    def angle(self) -> np.ndarray:
+        return self.data[6]
+
+    @property
+    def spin(self) -> np.ndarray:
+        return self.data[7]
 
     def _reserve(self, need: int) -> None:
         """Grow the arrays (doubling, capped at ``max_particles``) to hold ``need`` rows."""
         if need <= self.capacity:
             return
         cap = min(self.max_particles, max(64, 1 << (need - 1).bit_length()))
-        for name in self.FIELDS:
-            old = getattr(self, name)
-            new = np.zeros((cap, *old.shape[1:]), F)
-            new[: self.count] = old[: self.count]
-            setattr(self, name, new)
-        self.capacity = cap
+        new = np.zeros((self.ROWS, cap), F)
+        new[:, : self.count] = self.data[:, : self.count]
+        self.data = new
 
     def set_max(self, max_particles: int) -> None:
-        """Change the cap; live particles past a lower cap are dropped (oldest kept)."""
+        """Change the cap; live particles past a lower cap are dropped."""
         self.max_particles = int(max_particles)
         if self.count > self.max_particles:
             self.dropped += self.count - self.max_particles
             self.count = self.max_particles
         if self.capacity > self.max_particles:
-            for name in self.FIELDS:
-                setattr(self, name, getattr(self, name)[: self.max_particles].copy())
-            self.capacity = self.max_particles
+            self.data = self.data[:, : self.max_particles].copy()
 
     def add(
         self,
@@ -91,13 +115,13 @@ class ParticlePool:
         if n <= 0:
             return 0
         self._reserve(self.count + n)
-        s = slice(self.count, self.count + n)
-        self.pos[s] = pos[:n]
-        self.vel[s] = vel[:n]
-        self.life[s] = life[:n]
-        self.angle[s] = angle[:n]
-        self.spin[s] = spin[:n]
-        self.age[s] = 0.0 if age is None else age[:n]
+        d = self.data[:, self.count : self.count + n]
+        d[0:2] = pos[:n].T
+        d[2:4] = vel[:n].T
+        d[4] = 0.0 if age is None else age[:n]
+        d[5] = life[:n]
+        d[6] = angle[:n]
+        d[7] = spin[:n]
         self.count += n
         return n
 
@@ -113,35 +137,40 @@ class ParticlePool:
 
         ``grid`` collides particles with static geometry: ``bounce=None`` kills
         those that enter a solid cell, a number reflects them with that
-        restitution.
+        restitution. The dead are replaced by live particles from the end of
+        the pool (swap-remove), so the cost is the number of deaths, not the count.
         """
         n = self.count
         if n == 0 or dt <= 0.0:
             return
-        pos, vel = self.pos[:n], self.vel[:n]
-        age = self.age[:n]
-        age += F(dt)
+        d = self.data[:, :n]
+        fdt = F(dt)
+        d[4] += fdt
         ax, ay = acceleration
-        if ax or ay:
-            vel += np.array((ax * dt, ay * dt), F)
+        if ax:
+            d[2] += F(ax * dt)
+        if ay:
+            d[3] += F(ay * dt)
         if drag > 0.0:
-            vel *= F(math.exp(-drag * dt))
+            d[2:4] *= F(math.exp(-drag * dt))
         if grid is not None:
-            old = pos.copy()
-            pos += vel * F(dt)
+            old = d[0:2].T.copy()
+            d[0:2] += d[2:4] * fdt
+            pos, vel = d[0:2].T, d[2:4].T
             hit = grid.collide(old, pos, vel, bounce)
             if bounce is None and hit is not None:
-                age[hit] = np.inf  # dies below
+                d[4, hit] = np.inf  # dies below
         else:
-            pos += vel * F(dt)
-        self.angle[:n] += self.spin[:n] * F(dt)
-        alive = age < self.life[:n]
-        if not alive.all():
-            k = int(np.count_nonzero(alive))
-            for name in self.FIELDS:
-                arr = getattr(self, name)
-                arr[:k] = arr[:n][alive]
-            self.count = k
+            d[0:2] += d[2:4] * fdt
+        d[6] += d[7] * fdt
+        alive = d[4] < d[5]
+        dead = np.flatnonzero(~alive)
+        if len(dead):
+            m = n - len(dead)
+            holes = dead[dead < m]
+            if len(holes):
+                self.data[:, holes] = self.data[:, np.flatnonzero(alive[m:]) + m]
+            self.count = m
 
     def clear(self) -> None:
         self.count = 0

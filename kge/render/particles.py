@@ -2,7 +2,7 @@
 
 Each particle is a quad of 4 vertices whose corners are fixed (``corner``,
 written once); each frame the emitter's live particles write their centre,
-size and angle, and RGBA colour into the vertex buffers of the world's batch
+size and angle (one vec4) and RGBA colour into the vertex buffers of the world's batch
 with one numpy ``repeat`` per attribute, and the shader turns corner, size and
 angle into the quad. Quads past the live count get size 0. The vertex list sits
 under the emitter's layer group, so particles sort with sprites of that layer.
@@ -27,9 +27,8 @@ from kge.render.images import PixelImage
 from kge.render.textures import TextureCache
 
 _VERTEX = """#version 150 core
-in vec2 center;
+in vec4 particle;
 in vec2 corner;
-in vec2 size_angle;
 in vec4 colors;
 out vec4 vertex_colors;
 out vec2 uv;
@@ -40,10 +39,10 @@ uniform WindowBlock
 } window;
 void main()
 {
-    float c = cos(size_angle.y);
-    float s = sin(size_angle.y);
-    vec2 p = corner * size_angle.x;
-    vec2 w = center + vec2(c * p.x - s * p.y, s * p.x + c * p.y);
+    float c = cos(particle.w);
+    float s = sin(particle.w);
+    vec2 p = corner * particle.z;
+    vec2 w = particle.xy + vec2(c * p.x - s * p.y, s * p.x + c * p.y);
     gl_Position = window.projection * window.view * vec4(w, 0.0, 1.0);
     vertex_colors = colors;
     uv = corner + 0.5;
@@ -181,9 +180,8 @@ class ParticleDrawer:
         indices = (np.arange(capacity)[:, None] * 4 + _QUAD).ravel().tolist()
         vl = self.program.vertex_list_indexed(
             capacity * 4, gl.GL_TRIANGLES, indices, batch=self.batch, group=group,
-            center=("f", np.zeros(capacity * 8, np.float32)),
+            particle=("f", np.zeros(capacity * 16, np.float32)),
             corner=("f", np.tile(_CORNERS.ravel(), capacity)),
-            size_angle=("f", np.zeros(capacity * 8, np.float32)),
             colors=("Bn", np.zeros(capacity * 16, np.uint8)),
         )  # fmt: skip
         mesh = self.meshes[entity] = _EmitterMesh(vl, capacity, key)
@@ -211,28 +209,28 @@ class ParticleDrawer:
         vl = mesh.vertex_list
         lo = vl.start
         if n:
-            centers = pool.pos[:n]
-            angles = pool.angle[:n]
+            rows = np.empty((n, 4), np.float32)  # x, y, size, angle
+            sizes, colors = st.looks()
+            rows[:, 2] = sizes
             if em.space == "local":
                 x, y, a = st.pose
                 c, s = math.cos(a), math.sin(a)
-                centers = np.empty((n, 2), np.float32)
-                centers[:, 0] = x + c * pool.pos[:n, 0] - s * pool.pos[:n, 1]
-                centers[:, 1] = y + s * pool.pos[:n, 0] + c * pool.pos[:n, 1]
-                angles = angles + np.float32(a)
-            sizes, colors = st.looks()
-            arr, buf = _view(vl, "center")
-            arr[lo : lo + 4 * n] = np.repeat(centers, 4, axis=0)
+                px, py = pool.pos[:n, 0], pool.pos[:n, 1]
+                rows[:, 0] = x + c * px - s * py
+                rows[:, 1] = y + s * px + c * py
+                rows[:, 3] = pool.angle[:n] + np.float32(a)
+            else:
+                rows[:, 0:2] = pool.pos[:n]
+                rows[:, 3] = pool.angle[:n]
+            arr, buf = _view(vl, "particle")
+            arr[lo : lo + 4 * n] = np.repeat(rows, 4, axis=0)
             buf.invalidate_region(lo, 4 * n)
-            arr, buf = _view(vl, "size_angle")
-            arr[lo : lo + 4 * n] = np.repeat(np.stack([sizes, angles], axis=1), 4, axis=0)
-            buf.invalidate_region(lo, 4 * n)
-            arr, buf = _view(vl, "colors")
-            arr[lo : lo + 4 * n] = np.repeat(colors, 4, axis=0)
+            arr, buf = _view(vl, "colors")  # 4 bytes per vertex, written as one uint32
+            arr.view(np.uint32)[lo : lo + 4 * n, 0] = np.repeat(colors, 4)
             buf.invalidate_region(lo, 4 * n)
         if mesh.written > n:  # quads that died since: size 0
-            arr, buf = _view(vl, "size_angle")
-            arr[lo + 4 * n : lo + 4 * mesh.written, 0] = 0.0
+            arr, buf = _view(vl, "particle")
+            arr[lo + 4 * n : lo + 4 * mesh.written, 2] = 0.0
             buf.invalidate_region(lo + 4 * n, 4 * (mesh.written - n))
         mesh.written = n
 
