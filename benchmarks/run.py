@@ -99,7 +99,8 @@ def _median(results: list[Result], scene: str, size: int, engine: str) -> float 
 
 
 def targets(results: list[Result], fitting: dict[str, dict[str, float]],
-            render: dict[int, dict[str, float]]) -> list[dict[str, Any]]:
+            render: dict[int, dict[str, float]],
+            game: dict[str, Any] | None = None) -> list[dict[str, Any]]:
     """The issue's targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
 
@@ -124,6 +125,11 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     add("sparse bodies at 60 Hz (sparse)", fitting.get("sparse", {}).get("kge"), 20000, False)
     add("spawning 1,000 bodies in one frame", _median(results, "spawn", 1000, "kge"),
         25.0, True, "ms")
+    if game is not None:
+        from benchmarks.particles_lights import game_targets
+
+        for what, value, goal, unit in game_targets(game):
+            add(what, value, goal, True, unit)
     return rows
 
 
@@ -257,6 +263,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         for n, r in sorted(report["render"].items(), key=lambda kv: int(kv[0])):
             out.append(f"| {n} | {r['blend']:.3f} | {r['bulk_write']:.3f} | {r['kge_sync']:.3f}"
                        f" | {r['record']:.3f} | {r['sprite_update']:.3f} | {r['frame']:.3f} |")
+    if report.get("game"):
+        from benchmarks.particles_lights import game_lines
+
+        out += game_lines(report["game"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -286,6 +296,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", default="out", help="folder for bench.json/.png/.md")
     parser.add_argument("--no-chart", action="store_true")
     parser.add_argument("--no-render", action="store_true", help="skip the render sync section")
+    parser.add_argument("--no-game", action="store_true", help="skip particles and lights")
     parser.add_argument("--breakdown", action="store_true",
                         help="also time kge's phases (sync-in, step, sync-out, events)")
     args = parser.parse_args(argv)
@@ -320,6 +331,18 @@ def main(argv: list[str] | None = None) -> int:
         else:
             print("\nrender sync, µs per sprite (median):")
             print(render_table(render))
+    game: dict[str, Any] = {}
+    if not args.no_game and not args.scene:
+        from benchmarks.particles_lights import run_game
+
+        game, why = run_game(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        else:
+            from benchmarks.particles_lights import game_lines
+
+            print("\n".join(game_lines(game)))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -334,7 +357,7 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
-    goals = targets(results, fitting, render)
+    goals = targets(results, fitting, render, game if game else None)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -351,6 +374,7 @@ def main(argv: list[str] | None = None) -> int:
         "render": {str(n): r for n, r in render.items()},
         "breakdown": rows,
         "collision": collision,
+        "game": game,
         "targets": goals,
         "skipped": skipped,
     }
