@@ -55,6 +55,8 @@ class EmitterState:
         self.prev: Pose | None = None
         self.pending: list[Burst] = []
         self.finished = False
+        self.born = 0  #: particles emitted so far (dropped ones not counted)
+        self.bursts = 0  #: bursts fired so far (the emitter's own and requested ones)
         self.pose: Pose = (0.0, 0.0, 0.0)  #: the entity pose at the last update
         self._style: tuple[Any, ...] = ()
         self.sizes = size_table((0.1,))
@@ -149,7 +151,7 @@ class EmitterState:
         theta = base + jitter
         vel = np.stack([np.cos(theta) * speed, np.sin(theta) * speed], axis=1) + carried
         pos = pos + vel * age[:, None]
-        self.pool.add(pos, vel, life, theta, spin, age)
+        self.born += self.pool.add(pos, vel, life, theta, spin, age)
 
     def advance(
         self,
@@ -184,6 +186,7 @@ class EmitterState:
             if n:
                 self.spawn(em, n, pose, prev, velocity, collider, dt)
         pending, self.pending = self.pending, []
+        self.bursts += len(pending)
         for b in pending:
             self.spawn(em, b.count, pose, pose, velocity, collider, 0.0, b.position, b.direction)
         if dt > 0:

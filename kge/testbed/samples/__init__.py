@@ -9,6 +9,7 @@ from kge.testbed.samples import (  # noqa: F401
     joints,
     large,
     materials,
+    particles,
     queries,
     stacking,
 )
