@@ -56,10 +56,10 @@ class _Exploder(Script):
         self.timer = self.period
         x = (-4.0, 0.0, 4.0)[self.count % 3]
         self.count += 1
-        flash = dict(one_shot=True, spread=2 * math.pi, blend="additive", seed=self.count)
         self.world.spawn(Transform(x, 4.0), Name("explosion"), ParticleEmitter(
             burst=250, lifetime=(0.4, 0.9), speed=(2.0, 9.0), drag=2.5, size=(0.25, 0.05),
-            color=((255, 255, 200), (255, 160, 40), (200, 40, 0)), alpha=(1.0, 0.0), **flash,
+            color=((255, 255, 200), (255, 160, 40), (200, 40, 0)), alpha=(1.0, 0.0),
+            one_shot=True, spread=2 * math.pi, blend="additive", seed=self.count,
         ))  # fmt: skip
         self.world.spawn(Transform(x, 4.0), Name("smoke"), ParticleEmitter(
             burst=60, lifetime=(1.0, 1.6), speed=(0.5, 2.0), drag=1.0, size=(0.3, 1.2),
