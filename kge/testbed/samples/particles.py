@@ -19,7 +19,7 @@ from kge.world import World
 
 def _live(app, name: str) -> np.ndarray:  # type: ignore[no-untyped-def]
     """World positions of the particles of the emitter named ``name``."""
-    return app.world.resource(Particles).positions(named(app.world, name)[0])  # type: ignore[no-any-return]
+    return app.world.resource(Particles).positions(named(app.world, name)[0])
 
 
 @sample("Particles", "Fountain", help="Water arcs up, falls under gravity and bounces off the "
