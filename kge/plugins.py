@@ -6,6 +6,7 @@
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``ParticlesPlugin``    particle emitters: numpy particles, bursts on hits, drawn per layer
+``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -23,10 +24,12 @@ def default_plugins() -> list[Plugin]:
     """A fresh instance of every default plugin, in build order."""
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
 
     return [
         BehaviourPlugin(), PhysicsPlugin(), AudioPlugin(), RenderPlugin(), ParticlesPlugin(),
+        LightingPlugin(),
     ]
