@@ -45,6 +45,19 @@ from kge.components import drawables as draw
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+
+# particles and lights (issue 18): components here, plugins and the resource on first use
+from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.particles import (
+    BurstOnHit,
+    EmitBox,
+    EmitCircle,
+    EmitCollider,
+    EmitLine,
+    EmitPoint,
+    ParticleBurst,
+    ParticleEmitter,
+)
 from kge.components.sprite import Sprite
 from kge.components.text import Text
 from kge.coroutines import Coroutine, Wait, WaitFrames
@@ -89,8 +102,11 @@ from kge.world import World
 if TYPE_CHECKING:
     from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
     from kge.audio import Audio, SoundHandle
+    from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
     from kge.systems.audio import AudioPlugin
+    from kge.systems.lighting import LightingPlugin
+    from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
 
 #: names whose modules load pyglet or the asset store: imported on first use
@@ -107,6 +123,9 @@ _LAZY = {
     "solid": "kge.render.images",
     "AudioPlugin": "kge.systems.audio",
     "RenderPlugin": "kge.systems.render",
+    "Particles": "kge.particles",
+    "ParticlesPlugin": "kge.systems.particles",
+    "LightingPlugin": "kge.systems.lighting",
 }
 
 
@@ -134,6 +153,7 @@ __all__ = [
     "BehaviourPlugin",
     "BodyType",
     "Box",
+    "BurstOnHit",
     "Camera",
     "Chain",
     "Circle",
@@ -145,6 +165,11 @@ __all__ = [
     "DebugDraw",
     "DistanceJoint",
     "Edge",
+    "EmitBox",
+    "EmitCircle",
+    "EmitCollider",
+    "EmitLine",
+    "EmitPoint",
     "EntityNotFoundError",
     "Filter",
     "FixedTimestep",
@@ -161,6 +186,9 @@ __all__ = [
     "Key",
     "KeyEvent",
     "KgeError",
+    "Light",
+    "Lighting",
+    "LightingPlugin",
     "MassData",
     "MissingComponentError",
     "MissingResourceError",
@@ -171,6 +199,10 @@ __all__ = [
     "MouseJoint",
     "Name",
     "OneWayPlatform",
+    "ParticleBurst",
+    "ParticleEmitter",
+    "Particles",
+    "ParticlesPlugin",
     "Physics",
     "PhysicsEvents",
     "PhysicsPlugin",
@@ -193,6 +225,7 @@ __all__ = [
     "Script",
     "SensorBegin",
     "SensorEnd",
+    "ShadowCaster",
     "SoundData",
     "SoundHandle",
     "Sprite",
