@@ -8,6 +8,7 @@ from kge.testbed.samples import (  # noqa: F401
     determinism,
     joints,
     large,
+    lights,
     materials,
     particles,
     queries,
