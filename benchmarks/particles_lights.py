@@ -8,6 +8,13 @@
   ``app.render()`` for reference (llvmpipe rasterising N quads; a GPU does that
   part in hardware). The goal is update + upload <= 5 ms at 50,000.
 
+* ``shadows``: shadow geometry for 16 shadowed lights over 300 occluder edges
+  (75 boxes), per frame: ``static`` gathers the cached static edges and
+  extrudes them for every light (the goal: <= 2 ms); ``casters`` does the same
+  with the 75 boxes marked ``ShadowCaster``, so their edges are re-gathered at
+  their current pose every frame; ``render`` is a whole headless frame with the
+  light map.
+
 Timings are medians of interleaved repetitions, reported, never asserted. Run
 ``python benchmarks/particles_lights.py`` for the table; :func:`measure_particles`
 with a small N is what the test suite calls.
@@ -27,7 +34,17 @@ os.environ.setdefault("PYGLET_HEADLESS", "1")
 if __package__ in (None, ""):  # run as a script: make the repository importable
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
+import numpy as np
+
+from kge.components.transform import Transform
+
 PARTICLE_SIZES = (10_000, 50_000)
+
+
+def _finish() -> None:
+    from pyglet import gl
+
+    gl.glFinish()
 
 
 def _particle_app(n: int) -> tuple[Any, int]:
@@ -80,12 +97,74 @@ def measure_particles(n: int, repeats: int = 30) -> dict[str, float]:
         live.append(state.pool.count)
         t0 = time.perf_counter()
         app.render()
+        _finish()  # llvmpipe draws on worker threads: let it end before the next timing
         samples["render"].append((time.perf_counter() - t0) * 1e3)
     drawer.close()
     app.close()
     out = {k: statistics.median(v) for k, v in samples.items()}
     out["live"] = float(statistics.median(live))
     out["us_per_particle"] = out["total"] * 1e3 / max(out["live"], 1.0)
+    return out
+
+
+SHADOW_LIGHTS, SHADOW_BOXES = 16, 75
+
+
+def _shadow_app(casters: bool) -> Any:
+    from kge import App, Collider, Transform
+    from kge.components.camera import Camera
+    from kge.components.lights import Light, Lighting, ShadowCaster
+    from kge.components.shapes import Box
+
+    rng = np.random.default_rng(3)
+
+    def scene(world: Any) -> None:
+        world.insert_resource(Camera(pixels_per_meter=16))
+        world.insert_resource(Lighting(ambient=(30, 30, 40)))
+        for x, y, a in rng.uniform((-14, -8, 0), (14, 8, 3), (SHADOW_BOXES, 3)):
+            extra = (ShadowCaster(),) if casters else ()
+            world.spawn(Transform(float(x), float(y), float(a)), Collider(Box(0.4, 0.3)), *extra)
+        for x, y in rng.uniform((-14, -8), (14, 8), (SHADOW_LIGHTS, 2)):
+            world.spawn(Transform(float(x), float(y)), Light(radius=8.0, shadows=True))
+
+    return App(scene, headless=True, size=(480, 270))
+
+
+def measure_shadows(repeats: int = 30) -> dict[str, float]:
+    """Median ms per frame of the shadow geometry (static and caster occluders), a render."""
+    from kge.components.lights import Light
+    from kge.lighting import Occluders, shadow_quads
+    from kge.lighting.shadows import quads_to_triangles
+
+    out: dict[str, float] = {}
+    for name in ("static", "casters"):
+        app = _shadow_app(casters=name == "casters")
+        app.step(1)
+        world = app.world
+        occluders = world.resource(Occluders)
+        lights = [(t, light) for _, (t, light) in world.query(Transform, Light)]
+        times, quads_seen = [], 0
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            edges, closed = occluders.edges(world, True)
+            centers = np.array([(t.x, t.y) for t, _ in lights])
+            radii = np.array([light.radius for _, light in lights])
+            quads, _owner = shadow_quads(centers, radii, edges, closed)
+            quads_to_triangles(quads)
+            times.append((time.perf_counter() - t0) * 1e3)
+            quads_seen = len(quads)
+        out[name] = statistics.median(times)
+        out[f"{name}_edges"] = float(len(edges))
+        out[f"{name}_quads"] = float(quads_seen)
+        if name == "static":
+            renders = []
+            for _ in range(max(3, repeats // 5)):
+                t0 = time.perf_counter()
+                app.render()
+                _finish()
+                renders.append((time.perf_counter() - t0) * 1e3)
+            out["render"] = statistics.median(renders)
+        app.close()
     return out
 
 
@@ -101,6 +180,8 @@ def run_game(quick: bool, progress: Any) -> tuple[dict[str, dict[str, Row]], str
         for n in sizes:
             progress(f"particles [{n}]")
             out["particles"][str(n)] = measure_particles(n, repeats)
+        progress(f"shadows [{SHADOW_LIGHTS} lights, {SHADOW_BOXES * 4} edges]")
+        out["shadows"] = {str(SHADOW_LIGHTS): measure_shadows(repeats)}
         return out, None
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
         return {}, f"particles/lights skipped: {type(err).__name__}: {err}"
@@ -115,15 +196,32 @@ def game_lines(game: dict[str, dict[str, Row]]) -> list[str]:
     for _, r in sorted(game.get("particles", {}).items(), key=lambda kv: int(kv[0])):
         out.append(f"| {r['live']:,.0f} | {r['update']:.2f} | {r['upload']:.2f} | {r['total']:.2f}"
                    f" | {r['us_per_particle']:.3f} | {r['render']:.1f} |")  # fmt: skip
+    for lights, r in game.get("shadows", {}).items():
+        out += [
+            "",
+            f"Shadow geometry, {lights} shadowed lights over {r['static_edges']:.0f} "
+            "occluder edges, median ms per frame (gather edges + extrude for every light):",
+            "",
+            "| occluders | ms | shadow quads |",
+            "|---|---:|---:|",
+            f"| static colliders (cached) | {r['static']:.3f} | {r['static_quads']:.0f} |",
+            f"| ShadowCaster bodies (gathered every frame) | {r['casters']:.3f} "
+            f"| {r['casters_quads']:.0f} |",
+            "",
+            f"Whole headless frame with the light map (llvmpipe): {r['render']:.1f} ms.",
+        ]
     return out
 
 
 def game_targets(game: dict[str, dict[str, Row]]) -> list[tuple[str, float | None, float, str]]:
     """(target, measured, goal, unit) rows, all "at most"."""
     big = game.get("particles", {}).get(str(max(PARTICLE_SIZES)))
+    shadows = game.get("shadows", {}).get(str(SHADOW_LIGHTS))
     return [
         ("50,000 live particles, update + upload per frame",
          None if big is None else big["total"], 5.0, "ms"),
+        (f"shadow geometry, {SHADOW_LIGHTS} lights over {SHADOW_BOXES * 4} edges per frame",
+         None if shadows is None else shadows["static"], 2.0, "ms"),
     ]  # fmt: skip
 
 
@@ -132,12 +230,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=list(PARTICLE_SIZES))
     parser.add_argument("--repeats", type=int, default=30)
     args = parser.parse_args(argv)
-    print("particles, median ms per frame")
-    cols = ("live", "update", "upload", "total", "us_per_particle", "render")
-    print(f"{'n':>8} " + " ".join(f"{c:>16}" for c in cols))
+    game: dict[str, dict[str, Row]] = {"particles": {}}
     for n in args.sizes:
-        r = measure_particles(n, args.repeats)
-        print(f"{n:>8} " + " ".join(f"{r[c]:>16.3f}" for c in cols))
+        game["particles"][str(n)] = measure_particles(n, args.repeats)
+    game["shadows"] = {str(SHADOW_LIGHTS): measure_shadows(args.repeats)}
+    print("\n".join(game_lines(game)))
+    for what, value, goal, unit in game_targets(game):
+        shown = "not measured" if value is None else f"{value:.3f} {unit}"
+        print(f"{what}: {shown} (goal <= {goal:g} {unit})")
     return 0
 
 

@@ -63,6 +63,18 @@ class Occluders:
     def __init__(self) -> None:
         self.dirty = True
         self._static = (np.zeros((0, 2, 2)), np.zeros(0, bool))
+        #: body-local outlines by shape (shapes are frozen values: equal shapes share one)
+        self._outlines: dict[Any, tuple[np.ndarray, np.ndarray]] = {}
+
+    def _outline(self, shape: Any) -> tuple[np.ndarray, np.ndarray]:
+        """The shape's local edges and a per-edge ``closed`` flag, cached."""
+        found = self._outlines.get(shape)
+        if found is None:
+            if len(self._outlines) > 4096:  # many distinct shapes: keep the cache bounded
+                self._outlines.clear()
+            edges, closed = shape_outline(shape)
+            found = self._outlines[shape] = (edges, np.full(len(edges), closed))
+        return found
 
     def _body(self, entity: int, col: Collider) -> int:
         return entity if col.body is None else col.body
@@ -101,6 +113,7 @@ class Occluders:
             flags.append(static_closed)
         casters = {e for e, (sc,) in world.query(ShadowCaster) if sc.enabled}
         if casters:
+            local, closed_flags, owners, poses = [], [], [], []
             for e, (col,) in world.query(Collider):
                 body = self._body(e, col)
                 if col.sensor or (e not in casters and body not in casters):
@@ -109,9 +122,20 @@ class Occluders:
                 if pose is None:
                     t = world.try_get(body, Transform)
                     pose = (0.0, 0.0, 0.0) if t is None else (t.x, t.y, t.angle)
-                edges, closed = shape_outline(col.shape)
-                parts.append(_place(edges, pose))
-                flags.append(np.full(len(edges), closed))
+                edges, closed = self._outline(col.shape)
+                local.append(edges)
+                closed_flags.append(closed)
+                owners.append(len(edges))
+                poses.append(pose)
+            if local:  # every caster placed at its pose in one numpy pass
+                p = np.repeat(np.asarray(poses, float), owners, axis=0)[:, None, :]
+                e = np.concatenate(local)
+                c, s = np.cos(p[..., 2]), np.sin(p[..., 2])
+                placed = np.empty_like(e)
+                placed[..., 0] = p[..., 0] + c * e[..., 0] - s * e[..., 1]
+                placed[..., 1] = p[..., 1] + s * e[..., 0] + c * e[..., 1]
+                parts.append(placed)
+                flags.append(np.concatenate(closed_flags))
         return _joined(parts, flags)
 
 
