@@ -21,6 +21,7 @@ import pyglet
 from pyglet import gl
 
 from kge.components.particles import ParticleEmitter
+from kge.errors import KgeError, ValidationError
 from kge.particles.emitter import EmitterState, Particles
 from kge.render.groups import WORLD, Groups
 from kge.render.images import PixelImage
@@ -207,7 +208,12 @@ class ParticleDrawer:
         return tex
 
     def _mesh(self, entity: int, em: ParticleEmitter, capacity: int) -> _EmitterMesh:
-        tex = self._texture(em)
+        try:
+            tex = self._texture(em)
+        except (KgeError, OSError) as exc:  # a texture name written after the spawn check
+            raise ValidationError(
+                f"entity {entity}, ParticleEmitter.texture {em.texture!r}: {exc}"
+            ) from exc
         key = (tex.id, em.blend, em.layer, em.order)
         mesh = self.meshes.get(entity)
         if mesh is not None and mesh.key == key and mesh.capacity >= capacity:

@@ -101,3 +101,18 @@ def test_dead_particles_leave_no_pixels_and_the_soft_dot_is_round(make_app) -> N
     app.step(40)
     assert app.world.resource(Particles).total() == 0
     assert int(pixels(app)[..., :3].max()) == 0
+
+
+def test_a_texture_renamed_after_spawn_fails_naming_the_entity(make_app) -> None:
+    import pytest
+
+    from kge.errors import ValidationError
+
+    def scene(world):
+        world.spawn(Transform(), ParticleEmitter(burst=3))
+
+    app = make_app(scene)
+    app.step(1)
+    app.world.get(1, ParticleEmitter).texture = "missing.png"
+    with pytest.raises(ValidationError, match="entity 1, ParticleEmitter.texture 'missing.png'"):
+        pixels(app)
