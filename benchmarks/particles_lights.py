@@ -15,6 +15,12 @@
   their current pose every frame; ``render`` is a whole headless frame with the
   light map.
 
+* ``arcade``: Arcade 3's particle system on the same workload at 5,000
+  particles (its own virtual environment, ``KGE_ARCADE_PYTHON`` names its
+  interpreter; :mod:`benchmarks.arcade_particles` runs there), beside kge at
+  5,000 measured in the same run: the ratio is Arcade's update + vertex write
+  over kge's (goal >= 20x). Without that variable the row says why it is missing.
+
 Timings are medians of interleaved repetitions, reported, never asserted. Run
 ``python benchmarks/particles_lights.py`` for the table; :func:`measure_particles`
 with a small N is what the test suite calls.
@@ -168,6 +174,34 @@ def measure_shadows(repeats: int = 30) -> dict[str, float]:
     return out
 
 
+ARCADE_SIZE = 5_000
+
+
+def measure_arcade(n: int, repeats: int) -> dict[str, float] | str:
+    """Arcade's row (run in its own venv) next to kge's at ``n``, or why it could not run."""
+    import json
+    import subprocess
+
+    python = os.environ.get("KGE_ARCADE_PYTHON")
+    if not python:
+        return "KGE_ARCADE_PYTHON is not set (Arcade 3 lives in a venv of its own)"
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "arcade_particles.py")
+    env = {**os.environ, "PYGLET_HEADLESS": "1", "ARCADE_HEADLESS": "1"}
+    env.pop("PYTHONPATH", None)
+    done = subprocess.run([python, script, str(n), str(repeats)], capture_output=True,
+                          text=True, env=env, timeout=600, check=False)  # fmt: skip
+    if done.returncode != 0:
+        return f"arcade run failed: {done.stderr.strip().splitlines()[-1:]}"
+    arcade = json.loads(done.stdout)
+    kge = measure_particles(n, repeats)
+    return {
+        "arcade_update": arcade["update"], "arcade_upload": arcade["upload"],
+        "arcade_total": arcade["total"], "arcade_live": arcade["live"],
+        "kge_total": kge["total"], "kge_live": kge["live"],
+        "ratio": arcade["total"] / kge["total"],
+    }  # fmt: skip
+
+
 Row = dict[str, float]
 
 
@@ -182,6 +216,12 @@ def run_game(quick: bool, progress: Any) -> tuple[dict[str, dict[str, Row]], str
             out["particles"][str(n)] = measure_particles(n, repeats)
         progress(f"shadows [{SHADOW_LIGHTS} lights, {SHADOW_BOXES * 4} edges]")
         out["shadows"] = {str(SHADOW_LIGHTS): measure_shadows(repeats)}
+        arcade_n = 500 if quick else ARCADE_SIZE
+        progress(f"arcade 3 particles [{arcade_n}]")
+        arcade = measure_arcade(arcade_n, repeats)
+        if isinstance(arcade, str):
+            return out, f"arcade comparison skipped: {arcade}"
+        out["arcade"] = {str(arcade_n): arcade}
         return out, None
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
         return {}, f"particles/lights skipped: {type(err).__name__}: {err}"
@@ -210,6 +250,22 @@ def game_lines(game: dict[str, dict[str, Row]]) -> list[str]:
             "",
             f"Whole headless frame with the light map (llvmpipe): {r['render']:.1f} ms.",
         ]
+    return out + arcade_lines(game)
+
+
+def arcade_lines(game: dict[str, dict[str, Row]]) -> list[str]:
+    out = []
+    for n, r in game.get("arcade", {}).items():
+        out += [
+            "",
+            f"Arcade 3 particles beside kge, {int(n):,} live, same workload, same run "
+            "(update + vertex write, median ms per frame):",
+            "",
+            "| engine | live | ms | |",
+            "|---|---:|---:|---:|",
+            f"| Arcade 3 | {r['arcade_live']:,.0f} | {r['arcade_total']:.2f} | |",
+            f"| kge | {r['kge_live']:,.0f} | {r['kge_total']:.2f} | {r['ratio']:.0f}x |",
+        ]
     return out
 
 
@@ -225,6 +281,19 @@ def game_targets(game: dict[str, dict[str, Row]]) -> list[tuple[str, float | Non
     ]  # fmt: skip
 
 
+def game_ratios(game: dict[str, dict[str, Row]]) -> list[tuple[str, float | None, float, str]]:
+    """(target, measured, goal, unit) rows, all "at least"."""
+    arcade = game.get("arcade", {}).get(str(ARCADE_SIZE))
+    return [
+        (
+            f"Arcade 3 / kge particles at {ARCADE_SIZE:,} (update + upload)",
+            None if arcade is None else arcade["ratio"],
+            20.0,
+            "x",
+        )
+    ]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=list(PARTICLE_SIZES))
@@ -234,6 +303,11 @@ def main(argv: list[str] | None = None) -> int:
     for n in args.sizes:
         game["particles"][str(n)] = measure_particles(n, args.repeats)
     game["shadows"] = {str(SHADOW_LIGHTS): measure_shadows(args.repeats)}
+    arcade = measure_arcade(ARCADE_SIZE, args.repeats)
+    if isinstance(arcade, str):
+        print(f"arcade comparison skipped: {arcade}")
+    else:
+        game["arcade"] = {str(ARCADE_SIZE): arcade}
     print("\n".join(game_lines(game)))
     for what, value, goal, unit in game_targets(game):
         shown = "not measured" if value is None else f"{value:.3f} {unit}"

@@ -126,10 +126,12 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     add("spawning 1,000 bodies in one frame", _median(results, "spawn", 1000, "kge"),
         25.0, True, "ms")
     if game is not None:
-        from benchmarks.particles_lights import game_targets
+        from benchmarks.particles_lights import game_ratios, game_targets
 
         for what, value, goal, unit in game_targets(game):
             add(what, value, goal, True, unit)
+        for what, value, goal, unit in game_ratios(game):
+            add(what, value, goal, False, unit)
     return rows
 
 
@@ -339,7 +341,7 @@ def main(argv: list[str] | None = None) -> int:
         if why:
             skipped.append(why)
             print(why, file=sys.stderr)
-        else:
+        if game:
             from benchmarks.particles_lights import game_lines
 
             print("\n".join(game_lines(game)))

@@ -21,3 +21,16 @@ def test_the_section_reaches_the_report_and_its_targets() -> None:
     row = next(t for t in rows if t["target"].startswith("50,000 live particles"))
     assert row["value"] == 2.0 and row["met"] is True
     assert game_targets({})[0][1] is None
+
+
+def test_without_an_arcade_venv_the_comparison_says_why(monkeypatch) -> None:
+    from benchmarks.particles_lights import game_ratios, measure_arcade
+
+    monkeypatch.delenv("KGE_ARCADE_PYTHON", raising=False)
+    why = measure_arcade(100, 2)
+    assert isinstance(why, str) and "KGE_ARCADE_PYTHON" in why
+    assert game_ratios({})[0][1] is None
+    game = {"arcade": {"5000": {"arcade_live": 5e3, "arcade_total": 50.0, "kge_live": 5e3,
+                                "kge_total": 0.5, "ratio": 100.0}}}  # fmt: skip
+    assert "| kge | 5,000 | 0.50 | 100x |" in "\n".join(game_lines(game))
+    assert game_ratios(game)[0][1] == 100.0
