@@ -305,7 +305,7 @@ class Particles:
             )
         return pts
 
-    def check_max(self, entity: int | None, em: ParticleEmitter) -> None:
+    def check(self, entity: int | None, em: ParticleEmitter) -> None:
         """Refuse settings no state could honour (called by the plugin's validator)."""
         if em.collide != "none" and em.space == "local":
             raise ValidationError(

@@ -18,7 +18,10 @@ from kge.components.rigidbody import RigidBody
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
+from kge.snapshot import keep_resource
 from kge.world import World
+
+keep_resource(Lighting)  # scene settings: snapshots carry the ambient light
 
 
 class LightingPlugin(Plugin):

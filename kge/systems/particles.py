@@ -196,7 +196,7 @@ class ParticlesPlugin(Plugin):
         world.add_system(ParticleTriggers())
 
         def check(entity: int | None, em: ParticleEmitter) -> None:
-            particles.check_max(entity, em)
+            particles.check(entity, em)
             tex = em.texture
             if isinstance(tex, str) and not (assets_for(world).exists(tex) or os.path.isfile(tex)):
                 raise ValidationError(

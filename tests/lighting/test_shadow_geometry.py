@@ -129,3 +129,15 @@ def test_bad_lighting_settings() -> None:
     with pytest.raises(ValidationError, match="Light.radius"):
         w.get(e, Light).radius = 0.0
     assert w.get(e, Light).radius == 5.0
+
+
+def test_snapshots_keep_the_lighting_settings() -> None:
+    w = World()
+    w.add_plugins(LightingPlugin())
+    w.insert_resource(Lighting(ambient=(10, 20, 30), unlit_layer=7))
+    w.spawn(Transform(1.0, 2.0), Light(radius=3.0, cone=1.0, shadows=True))
+    copy = World.restore(w.snapshot())
+    assert copy.resource(Lighting).ambient == (10, 20, 30)
+    assert copy.resource(Lighting).unlit_layer == 7
+    (light,) = [lt for _, (lt,) in copy.query(Light)]
+    assert (light.radius, light.cone, light.shadows) == (3.0, 1.0, True)
