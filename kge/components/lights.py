@@ -11,7 +11,8 @@ sprites, glowing particles.
   ``(1 - d / radius)``: 0 a hard disc, 1 linear, 2 a soft glow). A ``cone`` below
   2 pi makes a spot light pointing along the entity's angle plus ``direction``;
   ``softness`` (0..1) is the share of the cone's half-angle that fades out at its
-  edges. ``shadows=True``: colliders block it.
+  edges. ``shadows=True``: colliders block it; ``shadow_softness`` (metres, the
+  size of the light's bulb) gives the shadows soft edges (0: hard).
 * Shadows are cast by static colliders (``Lighting.static_shadows``, on by
   default) and by any entity carrying :class:`ShadowCaster` (moving bodies: their
   shadows move with them). No extra authoring: the colliders' shapes are the
@@ -38,7 +39,7 @@ from typing import Any, ClassVar
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ValidationError
-from kge.validate import Vec2, boolean, finite, in_range, integer, vec2
+from kge.validate import Vec2, boolean, finite, in_range, integer, non_negative, vec2
 
 TAU = 2.0 * math.pi
 #: the brightest a light may be (intensity multiplies its colour)
@@ -64,6 +65,13 @@ def _falloff(value: Any, owner: str, field: str) -> float:
     return in_range(value, 0.0, 16.0, owner, field)
 
 
+def _softness_size(value: Any, owner: str, field: str) -> float:
+    v = non_negative(value, owner, field)
+    if v > MAX_RADIUS:
+        raise ValidationError(f"{owner}.{field} must be <= {MAX_RADIUS:g} m, got {v!r}")
+    return v
+
+
 def _cone(value: Any, owner: str, field: str) -> float:
     return in_range(value, 0.0, TAU, owner, field)
 
@@ -85,6 +93,7 @@ class Light(Tracked):
         "direction": finite,
         "softness": _unit,
         "shadows": boolean,
+        "shadow_softness": _softness_size,
         "offset": vec2,
         "enabled": boolean,
     }
@@ -97,6 +106,7 @@ class Light(Tracked):
     direction: float = 0.0
     softness: float = 0.2
     shadows: bool = False
+    shadow_softness: float = 0.0
     offset: Vec2 = (0.0, 0.0)
     enabled: bool = True
 

@@ -195,8 +195,21 @@ class CompositeGroup(pyglet.graphics.Group):
         self.light_map.composite.stop()
 
 
+#: shadow samples of a light with ``shadow_softness`` > 0 (each adds 1/N of its light)
+SOFT_SAMPLES = 8
+_GOLDEN = math.pi * (3.0 - math.sqrt(5.0))
+
+
+def soft_offsets(radius: float, n: int = SOFT_SAMPLES) -> np.ndarray:
+    """``n`` points spread evenly over a disc of ``radius`` (a sunflower pattern)."""
+    k = np.arange(n)
+    r = radius * np.sqrt((k + 0.5) / n)
+    return np.stack([r * np.cos(k * _GOLDEN), r * np.sin(k * _GOLDEN)], axis=1)
+
+
 def light_rows(
     lights: list[tuple[Light, tuple[float, float, float]]],
+    weights: list[float] | None = None,
 ) -> np.ndarray:
     """(L * 6, 12) light vertices: a quad around each light's radius (pure numpy)."""
     if not lights:
@@ -204,7 +217,7 @@ def light_rows(
     rows = np.empty((len(lights), 6, _LIGHT_FLOATS), np.float32)
     corners = np.array([[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]], np.float32)
     for i, (light, (x, y, a)) in enumerate(lights):
-        k = light.intensity / 255.0
+        k = light.intensity / 255.0 * (1.0 if weights is None else weights[i])
         r = light.radius
         rows[i, :, 0:2] = (x, y) + corners * r
         rows[i, :, 2:4] = (x, y)
@@ -299,14 +312,25 @@ class LightMap:
         ]  # fmt: skip
         shadowed = [f for f in found if f[1].shadows]
         plain = [f for f in found if not f[1].shadows]
-        ordered = shadowed + plain
-        rows = light_rows([(light, pose) for _, light, pose in ordered])
+        # a soft-shadowed light is drawn as several samples, each shadowed from a point
+        # of its disc and adding a share of its light: the penumbra is where they differ
+        samples: list[tuple[Light, tuple[float, float, float], float, float, float]] = []
+        for _, light, (x, y, a) in shadowed:
+            if light.shadow_softness > 0.0:
+                for dx, dy in soft_offsets(light.shadow_softness):
+                    samples.append((light, (x, y, a), x + dx, y + dy, 1.0 / SOFT_SAMPLES))
+            else:
+                samples.append((light, (x, y, a), x, y, 1.0))
+        rows = light_rows(
+            [(s[0], s[1]) for s in samples] + [(light, pose) for _, light, pose in plain],
+            [s[4] for s in samples] + [1.0] * len(plain),
+        )
         tris = np.zeros((0, 2))
         owner = np.zeros(0, np.intp)
-        if shadowed:
+        if samples:
             edges, closed = self.occluders.edges(self.world, lighting.static_shadows, frame.pose)
-            centers = np.array([p[:2] for _, _, p in shadowed], float)
-            radii = np.array([light.radius for _, light, _ in shadowed], float)
+            centers = np.array([(s[2], s[3]) for s in samples], float)
+            radii = np.array([s[0].radius for s in samples], float)
             quads, owner = shadow_quads(centers, radii, edges, closed)
             tris = quads_to_triangles(quads)
         self.stats = {"lights": len(found), "shadowed": len(shadowed), "shadow_quads": len(owner)}
@@ -326,10 +350,10 @@ class LightMap:
             self.lights.upload(rows)
             gl.glEnable(gl.GL_BLEND)
             gl.glBlendFunc(gl.GL_ONE, gl.GL_ONE)
-            if shadowed:
-                self._shadowed(len(shadowed), tris, owner)
+            if samples:
+                self._shadowed(len(samples), tris, owner)
             self.light_program.use()
-            self.lights.draw(6 * len(shadowed), 6 * len(plain))
+            self.lights.draw(6 * len(samples), 6 * len(plain))
             self.light_program.stop()
             gl.glDisable(gl.GL_BLEND)
         finally:

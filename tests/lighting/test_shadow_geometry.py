@@ -105,6 +105,8 @@ def test_occluders_static_by_default_casters_follow_their_body() -> None:
         ({"softness": 1.5}, "Light.softness must be in"),
         ({"falloff": -1.0}, "Light.falloff must be in"),
         ({"offset": (0.0, math.inf)}, r"Light.offset\[1\] must be finite"),
+        ({"shadow_softness": -0.5}, "Light.shadow_softness must be >= 0"),
+        ({"shadow_softness": math.nan}, "Light.shadow_softness must be finite"),
     ],
 )
 def test_bad_lights_are_refused_at_construction_and_writes(kwargs, message) -> None:

@@ -114,3 +114,22 @@ def test_unlit_layers_and_switching_lighting_off(make_app) -> None:
     assert tuple(px_at(px, -3.0, -3.0)) == (255, 0, 0)
     app.world.resource(Lighting).enabled = True
     assert tuple(px_at(pixels(app), -3.0, -3.0)) == (0, 0, 0)
+
+
+def test_shadow_softness_makes_a_penumbra(make_app) -> None:
+    # a wall edge at y = 0 from x = 0 to 0.5 (a box); the light 3 m left of it. Along
+    # x = 4 the hard shadow edge is a step; a 0.8 m bulb spreads it into a gradient.
+    box = (Transform(0.25, -1.0), Collider(Box(0.25, 1.0)))
+    profiles = {}
+    for soft in (0.0, 0.8):
+        light = (Transform(-3.0, 0.0), Light(radius=12.0, falloff=0.0, shadows=True,
+                                             shadow_softness=soft))  # fmt: skip
+        app = make_app(lit_scene(box, light, ambient=(0, 0, 0)))
+        app.step(1)
+        px = pixels(app)
+        profiles[soft] = np.array([px_at(px, 4.0, y)[0] for y in np.linspace(-1.5, 1.5, 31)])
+    hard, soft_profile = profiles[0.0], profiles[0.8]
+    assert set(np.unique(hard)) <= {0, 255}, "without softness the edge is a step"
+    between = (soft_profile > 20) & (soft_profile < 235)
+    assert between.sum() >= 4, f"a penumbra of several pixels: {soft_profile}"
+    assert soft_profile[0] <= 8 and soft_profile[-1] >= 247, "umbra and full light remain"

@@ -40,7 +40,7 @@ def _room(world: World, half_width: float, height: float) -> None:
 
 
 @sample("Lights", "Lit Room", help="A lamp under the ceiling lights a room; a pyramid of boxes "
-        "(shadow casters) throws shadows on the back wall. Ambient light fills the rest.",
+        "(shadow casters) throws soft shadows on the back wall. Ambient light fills the rest.",
         camera=(0.0, 6.0, 0.75))
 def lit_room(world: World, rows: int = 6) -> None:
     world.insert_resource(Lighting(ambient=(35, 35, 55)))
@@ -53,7 +53,7 @@ def lit_room(world: World, rows: int = 6) -> None:
                         Rect(1.0, 1.0, color=(180, 120, 60), layer=1))  # fmt: skip
     world.spawn(Transform(-1.5, 11.0), Name("lamp"), Disc(0.3, color=(255, 240, 200), layer=100),
                 Light(radius=16.0, color=(255, 235, 190), intensity=1.2, falloff=1.2,
-                      shadows=True))  # fmt: skip
+                      shadows=True, shadow_softness=0.3))  # fmt: skip
     world.spawn(Transform(8.0, 2.0), Light(radius=4.0, color=(80, 140, 255), falloff=2.0))
 
 
