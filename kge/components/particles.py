@@ -63,6 +63,10 @@ from kge.validate import (
 )
 
 TAU = 2.0 * math.pi
+#: the largest magnitude of speeds (m/s), accelerations (m/s^2), spins (rad/s), drag
+#: (1/s), lifetimes (s) and sizes (m): particles are float32, and larger values would
+#: overflow them to infinity within a few frames
+LIMIT = 1e6
 #: the largest ``max_particles`` an emitter may ask for (arrays are allocated up to it)
 MAX_PARTICLES = 1_000_000
 BLENDS = ("alpha", "additive")
@@ -134,12 +138,20 @@ def span(value: Range) -> tuple[float, float]:
     return (value, value) if isinstance(value, (int, float)) else value
 
 
+def _limited(v: float, owner: str, field: str) -> float:
+    if abs(v) > LIMIT:
+        raise ValidationError(f"{owner}.{field} must be within +-{LIMIT:g}, got {v!r}")
+    return v
+
+
 def _range(value: Any, owner: str, field: str) -> Vec2:
     """A (low, high) pair of finite numbers, or one number meaning (v, v)."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        v = finite(value, owner, field)
+        v = _limited(finite(value, owner, field), owner, field)
         return (v, v)
     lo, hi = vec2(value, owner, field)
+    _limited(lo, owner, field)
+    _limited(hi, owner, field)
     if lo > hi:
         raise ValidationError(
             f"{owner}.{field} must be (low, high) with low <= high, got {value!r}"
@@ -169,13 +181,15 @@ def _keys(value: Any, owner: str, field: str) -> list[Any]:
     return list(value)
 
 
+def _size(value: Any, owner: str, field: str) -> float:
+    return _limited(non_negative(value, owner, field), owner, field)
+
+
 def _sizes(value: Any, owner: str, field: str) -> tuple[float, ...]:
     """Size over life: one size or evenly spaced keys, metres >= 0."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return (non_negative(value, owner, field),)
-    return tuple(
-        non_negative(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field))
-    )
+        return (_size(value, owner, field),)
+    return tuple(_size(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field)))
 
 
 def _alphas(value: Any, owner: str, field: str) -> tuple[float, ...]:
@@ -271,6 +285,19 @@ def _int(value: Any, owner: str, field: str) -> int:
     return integer(value, owner, field)
 
 
+def _vector(value: Any, owner: str, field: str) -> Vec2:
+    x, y = vec2(value, owner, field)
+    return (_limited(x, owner, f"{field}[0]"), _limited(y, owner, f"{field}[1]"))
+
+
+def _drag(value: Any, owner: str, field: str) -> float:
+    return _limited(non_negative(value, owner, field), owner, field)
+
+
+def _inherit(value: Any, owner: str, field: str) -> float:
+    return in_range(value, -100.0, 100.0, owner, field)
+
+
 def _rate(value: Any, owner: str, field: str) -> float:
     v = non_negative(value, owner, field)
     if v > 1e7:
@@ -291,14 +318,14 @@ class ParticleEmitter(Tracked):
         "one_shot": boolean,
         "prewarm": _prewarm,
         "shape": _shape,
-        "offset": vec2,
+        "offset": _vector,
         "lifetime": _lifetime,
         "speed": _non_negative_range,
         "direction": finite,
         "spread": _spread,
-        "inherit_velocity": finite,
-        "acceleration": vec2,
-        "drag": non_negative,
+        "inherit_velocity": _inherit,
+        "acceleration": _vector,
+        "drag": _drag,
         "spin": _range,
         "size": _sizes,
         "color": _colors,

@@ -44,6 +44,12 @@ NAN = float("nan")
         ("seed", -1, "seed must be >= 0"),
         ("acceleration", (0.0, NAN), "acceleration[1] must be finite"),
         ("texture", "", "texture must not be an empty string"),
+        ("speed", (0.0, 1e30), "speed must be within"),
+        ("acceleration", (0.0, -1e300), "acceleration[1] must be within"),
+        ("size", 1e9, "size must be within"),
+        ("lifetime", 1e12, "lifetime must be within"),
+        ("drag", 1e300, "drag must be within"),
+        ("inherit_velocity", 1e6, "inherit_velocity must be in"),
     ],
 )
 def test_bad_values_are_refused_at_construction_and_at_writes(field, value, message) -> None:
