@@ -265,6 +265,7 @@ class LightMap:
         self.quad: Any = None
         self.quad_layer: int | None = None
         self.stats = {"lights": 0, "shadowed": 0, "shadow_quads": 0}
+        self.window: Any = groups.state.window  #: whose context owns the GL objects
 
     def _target(self, size: tuple[int, int]) -> None:
         if size == self.size:
@@ -380,9 +381,18 @@ class LightMap:
         gl.glDisable(gl.GL_STENCIL_TEST)
 
     def close(self) -> None:
+        """Free the GL objects now, in this map's own context (framebuffers and vertex
+        arrays belong to one context: deleting them from another, or leaving them to
+        the garbage collector, frees objects of the wrong context)."""
+        if self.window is None or getattr(self.window, "context", None) is None:
+            return  # the window (and its context, with every object in it) is gone
+        self.window.switch_to()
         self._composite_quad(None)
         self.lights.delete()
         self.shadows.delete()
         if self.fbo is not None:
             self.fbo.delete()
             self.stencil.delete()
+            self.texture.delete()
+            self.fbo = self.stencil = self.texture = None
+        self.size = (0, 0)

@@ -18,6 +18,7 @@ from kge.components.rigidbody import RigidBody
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
+from kge.schedule import Stage, System
 from kge.snapshot import keep_resource
 from kge.world import World
 
@@ -59,6 +60,26 @@ class LightingPlugin(Plugin):
             lm.draw(frame, lighting)
 
         passes_for(world).add(draw, phase="before", order=200)
+        world.add_system(_LightMapOwner(holder))
+
+
+class _LightMapOwner(System):
+    """Frees the world's light map when the world closes (its GL objects belong to one
+    window's context, so they are deleted there and then, not by the garbage collector)."""
+
+    stage = Stage.RENDER
+    order = 1_000_000
+
+    def __init__(self, holder: dict[str, Any]) -> None:
+        self.holder = holder
+
+    def process(self, dt: float) -> None:
+        """Nothing per frame: the light map is drawn by the render pass."""
+
+    def detach(self) -> None:
+        lm = self.holder.pop("map", None)
+        if lm is not None:
+            lm.close()
 
 
 __all__ = ["Light", "Lighting", "LightingPlugin", "ShadowCaster"]

@@ -72,6 +72,7 @@ class _Exploder(Script):
         "smoke puff, each an entity that despawns itself when its particles are gone.",
         camera=(0.0, 4.0, 1.0))
 def explosion(world: World) -> None:
+    static_box(world, 0.0, -0.5, 8.0, 0.5, name="ground")
     world.spawn(Name("exploder"), Behaviour(_Exploder()))
 
 
@@ -124,6 +125,7 @@ class _Orbit(Script):
 @sample("Particles", "Smoke Trail", help="A body circling at 6 m/s leaves a smoke trail: "
         "20 puffs per metre travelled that grow, rise and fade.", camera=(0.0, 4.0, 1.0))
 def smoke_trail(world: World) -> None:
+    static_box(world, 0.0, -0.5, 8.0, 0.5, name="ground")
     world.spawn(Transform(3.0, 4.0, math.pi / 2), Name("smoker"),
                 RigidBody(type=BodyType.KINEMATIC), Collider(Box(0.3, 0.15)),
                 Behaviour(_Orbit(3.0, 6.0)), ParticleEmitter(
