@@ -102,7 +102,8 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
             render: dict[int, dict[str, float]],
             rl: list[dict[str, Any]] | None = None,
             animation: dict[int, dict[str, float]] | None = None,
-            costs: dict[str, float] | None = None) -> list[dict[str, Any]]:
+            costs: dict[str, float] | None = None,
+            game: dict[str, Any] | None = None) -> list[dict[str, Any]]:
     """The issues' targets beside the measured figures (None when not measured)."""
     rows: list[dict[str, Any]] = []
     c = costs or {}
@@ -148,6 +149,13 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
         anim["arcade_sprite"] / anim["kge_total"] if "arcade_sprite" in anim else None,
         10.0, False)
     add("live tweens per tween and frame (largest N)", anim.get("tweens"), 0.5, True, "µs")
+    if game is not None:
+        from benchmarks.particles_lights import game_ratios, game_targets
+
+        for what, value, goal, unit in game_targets(game):
+            add(what, value, goal, True, unit)
+        for what, value, goal, unit in game_ratios(game):
+            add(what, value, goal, False, unit)
     return rows
 
 
@@ -322,6 +330,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.ui import markdown_lines
 
         out += markdown_lines(report["ui"])
+    if report.get("game"):
+        from benchmarks.particles_lights import game_lines
+
+        out += game_lines(report["game"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -362,6 +374,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-render", action="store_true", help="skip the render sync section")
     parser.add_argument("--no-rl", action="store_true",
                         help="skip the Gymnasium LunarLander throughput section")
+    parser.add_argument("--no-game", action="store_true", help="skip particles and lights")
     parser.add_argument("--breakdown", action="store_true",
                         help="also time kge's phases (sync-in, step, sync-out, events)")
     args = parser.parse_args(argv)
@@ -432,6 +445,18 @@ def main(argv: list[str] | None = None) -> int:
         print(why or "\nui, µs per widget and frame (median):\n" + ui_bench.table(
             {int(n): r for n, r in ui_rows.items()}), file=sys.stderr if why else sys.stdout)
         skipped += [why] if why else []
+    game: dict[str, Any] = {}
+    if not args.no_game and not args.scene:
+        from benchmarks.particles_lights import run_game
+
+        game, why = run_game(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        if game:
+            from benchmarks.particles_lights import game_lines
+
+            print("\n".join(game_lines(game)))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -455,7 +480,7 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
-    goals = targets(results, fitting, render, rl, animation, costs)
+    goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -476,6 +501,7 @@ def main(argv: list[str] | None = None) -> int:
         "rl": rl,
         "ui": ui_rows,
         "costs": costs,
+        "game": game,
         "targets": goals,
         "skipped": skipped,
     }

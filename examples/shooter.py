@@ -166,7 +166,26 @@ def spawn_enemy(world: World, x: float, y: float, speed: float) -> int:
         Sprite("enemy.png", size=(ENEMY_SCALE, ENEMY_SCALE), layer=1),
         Behaviour(Enemy(speed)),
         Name("enemy"),
+        engine_trail(),
     )
+
+
+def engine_trail() -> kge.ParticleEmitter:
+    """Hot exhaust behind an enemy (local -y): 25 puffs per metre flown, fading red."""
+    return kge.ParticleEmitter(
+        rate_per_metre=25.0, offset=(0.0, -ENEMY_SCALE / 2), direction=-math.pi / 2, spread=0.6,
+        speed=(0.2, 0.6), lifetime=(0.25, 0.5), size=(0.14, 0.02), alpha=(0.9, 0.0),
+        color=((255, 220, 120), (255, 90, 20), (90, 20, 10)), blend="additive", max_particles=64,
+    )  # fmt: skip
+
+
+def explosion(world: World, at: tuple[float, float]) -> int:
+    """A one-shot burst of sparks where an enemy died; the entity despawns itself when done."""
+    return world.spawn(Transform(*at), Name("explosion"), kge.ParticleEmitter(
+        burst=60, one_shot=True, spread=2 * math.pi, speed=(1.0, 4.0), drag=3.0,
+        lifetime=(0.3, 0.7), size=(0.18, 0.03), alpha=(1.0, 0.0), blend="additive",
+        color=((255, 255, 200), (255, 150, 40), (160, 30, 0)),
+    ))  # fmt: skip
 
 
 class Referee(Script):
@@ -190,7 +209,8 @@ class Referee(Script):
         if not (self.world.exists(enemy) and self.world.exists(shot)):
             return
         t = self.world.get(enemy, Transform)
-        explode(self.world, t.x, t.y)
+        explode(self.world, t.x, t.y)  # the animated blast
+        explosion(self.world, t.position)  # and its particles
         shake(self.world, 0.3)  # the camera shakes on a hit
         _despawn(self.world, enemy)
         _despawn(self.world, shot)

@@ -56,6 +56,19 @@ from kge.components.animation import Animator, Clip, FrameRef, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+
+# particles and lights (issue 18): components here, plugins and the resource on first use
+from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.particles import (
+    BurstOnHit,
+    EmitBox,
+    EmitCircle,
+    EmitCollider,
+    EmitLine,
+    EmitPoint,
+    ParticleBurst,
+    ParticleEmitter,
+)
 from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
@@ -122,9 +135,12 @@ from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
 if TYPE_CHECKING:
     from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
     from kge.audio import Audio, SoundHandle
+    from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
+    from kge.systems.lighting import LightingPlugin
+    from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
 
     # isort: split
@@ -151,6 +167,9 @@ _LAZY = {
     "LoadingScreen": "kge.systems.loading",
     "UIPlugin": "kge.systems.ui",
     "focus": "kge.systems.ui",
+    "Particles": "kge.particles",
+    "ParticlesPlugin": "kge.systems.particles",
+    "LightingPlugin": "kge.systems.lighting",
 }
 
 
@@ -185,6 +204,7 @@ __all__ = [
     "BehaviourPlugin",
     "BodyType",
     "Box",
+    "BurstOnHit",
     "Camera",
     "CameraShake",
     "Chain",
@@ -199,6 +219,11 @@ __all__ = [
     "Delay",
     "DistanceJoint",
     "Edge",
+    "EmitBox",
+    "EmitCircle",
+    "EmitCollider",
+    "EmitLine",
+    "EmitPoint",
     "EntityNotFoundError",
     "Filter",
     "FixedTimestep",
@@ -216,6 +241,9 @@ __all__ = [
     "Key",
     "KeyEvent",
     "KgeError",
+    "Light",
+    "Lighting",
+    "LightingPlugin",
     "MassData",
     "MissingComponentError",
     "MissingResourceError",
@@ -227,6 +255,10 @@ __all__ = [
     "Name",
     "OneWayPlatform",
     "Parallel",
+    "ParticleBurst",
+    "ParticleEmitter",
+    "Particles",
+    "ParticlesPlugin",
     "Physics",
     "PhysicsEvents",
     "PhysicsPlugin",
@@ -250,6 +282,7 @@ __all__ = [
     "SensorBegin",
     "SensorEnd",
     "Sequence",
+    "ShadowCaster",
     "SoundData",
     "SoundHandle",
     "Sprite",

@@ -6,6 +6,8 @@
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
+``ParticlesPlugin``    particle emitters: numpy particles, bursts on hits, drawn per layer
+``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
 =====================  =================================================================
 
@@ -25,6 +27,8 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.animation import AnimationPlugin
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.lighting import LightingPlugin
+    from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.ui import UIPlugin
@@ -35,5 +39,7 @@ def default_plugins() -> list[Plugin]:
         AudioPlugin(),
         RenderPlugin(),
         AnimationPlugin(),
+        ParticlesPlugin(),
+        LightingPlugin(),
         UIPlugin(),
     ]

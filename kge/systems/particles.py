@@ -1,0 +1,220 @@
+"""The particle systems and ``ParticlesPlugin``.
+
+* :class:`ParticleSystem` (UPDATE stage, order 300, after behaviours and
+  animation): one vectorised update per emitter per frame on game time (so
+  ``App.time_scale``, pause and single-stepping apply), births, bursts,
+  one-shot clean-up, and collision with static colliders through the grid of
+  :mod:`kge.particles.grid` (rebuilt only when a collider or body is added or
+  removed).
+* :class:`ParticleTriggers` (FIXED stage, order 350, after physics and contact
+  delivery): turns each fixed step's physics ``Hit`` / ``ContactBegin`` on
+  colliders with :class:`~kge.components.particles.BurstOnHit`, and
+  :class:`~kge.components.particles.ParticleBurst` events, into pending bursts,
+  so no step's events are lost when a frame runs several steps.
+* Drawing is a before-pass (:mod:`kge.render.passes`) that uploads each
+  emitter's particles into one vertex list in the emitter's layer; it imports
+  pyglet only when a frame is drawn.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from typing import Any
+
+import numpy as np
+
+from kge.assets import assets_for
+from kge.components.collider import Collider
+from kge.components.particles import BurstOnHit, EmitCollider, ParticleBurst, ParticleEmitter
+from kge.components.rigidbody import BodyType, RigidBody
+from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
+from kge.components.transform import Transform
+from kge.errors import ValidationError, where
+from kge.particles.emitter import Particles
+from kge.particles.grid import StaticGrid
+from kge.physics.events import PhysicsEvents
+from kge.plugin import Plugin
+from kge.render.passes import passes_for
+from kge.schedule import Stage, System
+from kge.world import World
+
+
+def _is_static(world: World, entity: int, col: Collider) -> bool:
+    body = entity if col.body is None else col.body
+    rb = world.try_get(body, RigidBody)
+    return rb is None or rb.type is BodyType.STATIC
+
+
+def _body_pose(world: World, entity: int, col: Collider) -> tuple[float, float, float]:
+    body = entity if col.body is None else col.body
+    t = world.try_get(body, Transform)
+    return (0.0, 0.0, 0.0) if t is None else (t.x, t.y, t.angle)
+
+
+def _to_world(points: Any, pose: tuple[float, float, float]) -> np.ndarray:
+    pts = np.asarray(points, float).reshape(-1, 2)
+    x, y, a = pose
+    c, s = math.cos(a), math.sin(a)
+    return np.stack([x + c * pts[:, 0] - s * pts[:, 1], y + s * pts[:, 0] + c * pts[:, 1]], 1)
+
+
+def static_geometry(
+    world: World,
+) -> tuple[list[np.ndarray], list[tuple[float, float, float]], list[np.ndarray]]:
+    """World-space (polygons, circles, segments) of every non-sensor static collider."""
+    polys: list[np.ndarray] = []
+    circles: list[tuple[float, float, float]] = []
+    segs: list[np.ndarray] = []
+    for e, (col,) in world.query(Collider):
+        if col.sensor or not _is_static(world, e, col):
+            continue
+        pose = _body_pose(world, e, col)
+        shape = col.shape
+        if isinstance(shape, Circle):
+            cx, cy = _to_world([shape.center], pose)[0]
+            circles.append((float(cx), float(cy), shape.radius))
+        elif isinstance(shape, Box):
+            polys.append(_to_world(shape.vertices(), pose))
+        elif isinstance(shape, Polygon):
+            polys.append(_to_world(shape.vertices, pose))
+        elif isinstance(shape, Edge):
+            segs.append(_to_world([shape.v1, shape.v2], pose))
+        elif isinstance(shape, Chain):
+            segs.extend(_to_world(s, pose) for s in shape.segments())
+    return polys, circles, segs
+
+
+class ParticleSystem(System):
+    """Updates and emits every emitter's particles (UPDATE stage). See the module docstring."""
+
+    stage = Stage.UPDATE
+    order = 300
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self.particles = world.try_resource(Particles) or world.insert_resource(Particles(world))
+        world.on_remove(ParticleEmitter, self._emitter_removed)
+        for ctype in (Collider, RigidBody):
+            world.on_add(ctype, self._geometry_changed)
+            world.on_remove(ctype, self._geometry_changed)
+
+    def _emitter_removed(self, entity: int, em: Any) -> None:
+        self.particles.states.pop(entity, None)
+
+    def _geometry_changed(self, entity: int, comp: Any) -> None:
+        self.particles.grid_dirty = True
+
+    def _grid(self) -> StaticGrid | None:
+        p = self.particles
+        if p.grid_dirty:
+            p.grid = StaticGrid.from_geometry(*static_geometry(self.world), cell=p.cell)
+            p.grid_dirty = False
+        return p.grid
+
+    def process(self, dt: float) -> None:
+        world = self.world
+        particles = self.particles
+        take_events(world, particles)
+        emitters = world.query(ParticleEmitter, Transform)
+        grid = None
+        if any(em.collide != "none" for _, (em, _t) in emitters):
+            grid = self._grid()
+        finished = []
+        for e, (em, t) in emitters:
+            st = particles.state(e)
+            rb = world.try_get(e, RigidBody)
+            velocity = rb.velocity if rb is not None else (0.0, 0.0)
+            collider = None
+            if isinstance(em.shape, EmitCollider):
+                col = world.try_get(e, Collider)
+                collider = col.shape if col is not None else None
+            st.advance(em, dt, (t.x, t.y, t.angle), velocity, collider, grid)
+            if st.finished:
+                finished.append(e)
+        for e in finished:
+            world.despawn(e)
+
+
+def take_events(world: World, particles: Particles) -> None:
+    """Queue this step's ParticleBurst events (and consume them: each fires once)."""
+    events = world.events(ParticleBurst)
+    for ev in events:
+        if world.exists(ev.emitter) and world.has(ev.emitter, ParticleEmitter):
+            particles.burst(ev.emitter, ev.count, ev.position, ev.direction)
+    events.clear()
+
+
+class ParticleTriggers(System):
+    """Physics hits and burst events of each fixed step -> pending bursts (FIXED stage)."""
+
+    stage = Stage.FIXED
+    order = 350
+
+    def process(self, dt: float) -> None:
+        world = self.world
+        particles = world.resource(Particles)
+        take_events(world, particles)
+        ev = world.try_resource(PhysicsEvents)
+        if ev is None or not world.query(BurstOnHit):
+            return
+        for hit in ev.hits:
+            self._fire(hit.collider_a, hit.collider_b, hit.point, hit.normal, hit.approach_speed)
+        for c in ev.contact_begin:
+            if c.points:
+                self._fire(c.collider_a, c.collider_b, c.points[0], c.normal, c.approach_speed,
+                           contact=True)  # fmt: skip
+
+    def _fire(
+        self,
+        a: int,
+        b: int,
+        point: tuple[float, float],
+        normal: tuple[float, float],
+        speed: float,
+        contact: bool = False,
+    ) -> None:
+        world = self.world
+        particles = world.resource(Particles)
+        for mine, sign in ((a, 1.0), (b, -1.0)):
+            trig = world.try_get(mine, BurstOnHit)
+            if trig is None or (contact and not trig.contacts) or speed < trig.min_speed:
+                continue
+            if not world.exists(trig.emitter) or not world.has(trig.emitter, ParticleEmitter):
+                continue
+            # the normal points from A to B: away from A's surface, towards B
+            direction = math.atan2(sign * normal[1], sign * normal[0])
+            particles.burst(trig.emitter, trig.count, point, direction)
+
+
+class ParticlesPlugin(Plugin):
+    """Particles: the ``Particles`` resource, the systems, validation and the draw pass."""
+
+    def build(self, world: World) -> None:
+        particles = world.insert_resource(Particles(world))
+        world.add_system(ParticleSystem())
+        world.add_system(ParticleTriggers())
+
+        def check(entity: int | None, em: ParticleEmitter) -> None:
+            particles.check(entity, em)
+            tex = em.texture
+            if isinstance(tex, str) and not (assets_for(world).exists(tex) or os.path.isfile(tex)):
+                raise ValidationError(
+                    f"{where(entity, 'ParticleEmitter', 'texture')}: unknown texture {tex!r} "
+                    "(not in the asset store, not a file)"
+                )
+
+        world.validator(ParticleEmitter, check)
+        drawer: dict[str, Any] = {}
+
+        def draw(frame: Any) -> None:
+            from kge.render.particles import ParticleDrawer
+
+            d = drawer.get("d")
+            if d is None or d.batch is not frame.batch:
+                if d is not None:
+                    d.close()
+                d = drawer["d"] = ParticleDrawer(world, frame.batch, frame.groups)
+            d.draw(frame)
+
+        passes_for(world).add(draw, phase="before", order=100)

@@ -1,0 +1,135 @@
+"""Lights on screen: ambient only, a lit pixel near a light, darkness behind a box, spots,
+moving shadow casters, unlit layers and switching lighting off."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from kge import Collider, RigidBody, Transform
+from kge.components.camera import Camera
+from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.shapes import Box
+from kge.components.sprite import Sprite
+from kge.render.images import solid
+
+from .conftest import SIZE, pixels
+
+PPM = 20.0
+TOL = 9  # the headless pbuffer is RGB565: steps of 8 in red and blue
+
+
+def px_at(px: np.ndarray, x: float, y: float) -> np.ndarray:
+    sx, sy = SIZE[0] / 2 + x * PPM, SIZE[1] / 2 + y * PPM
+    return px[int(sy), int(sx), :3].astype(int)
+
+
+def lit_scene(*extra, ambient=(40, 40, 40), white=(255, 255, 255)):
+    def scene(world):
+        world.insert_resource(Camera(pixels_per_meter=PPM))
+        world.insert_resource(Lighting(ambient=ambient))
+        world.spawn(Transform(), Sprite(solid(2, 2, white), size=(12.0, 10.0)))
+        for components in extra:
+            world.spawn(*components)
+
+    return scene
+
+
+def test_ambient_only_scene_matches_the_ambient_colour(make_app) -> None:
+    app = make_app(lit_scene(ambient=(96, 160, 200)))
+    app.step(1)
+    px = pixels(app)
+    region = px[20:140, 20:180, :3].reshape(-1, 3).astype(int)
+    assert np.all(np.abs(region - (96, 160, 200)) <= TOL)
+
+
+def test_a_pixel_near_a_light_is_lit_and_light_falls_off(make_app) -> None:
+    light = (Transform(-2.0, 0.0), Light(radius=4.0, color=(255, 128, 0), falloff=1.0))
+    app = make_app(lit_scene(light))
+    app.step(1)
+    px = pixels(app)
+    near, mid, far = px_at(px, -2.0, 0.1), px_at(px, 0.0, 0.0), px_at(px, 3.0, 0.0)
+    assert near[0] >= 250 and abs(near[1] - (40 + 128)) <= TOL
+    # linear falloff: half-way out the light adds half its colour to the ambient
+    assert abs(mid[0] - (40 + 128)) <= TOL and abs(mid[1] - (40 + 64)) <= TOL
+    assert np.all(np.abs(far - 40) <= TOL), "past its radius a light adds nothing"
+
+
+def test_the_pixel_behind_a_box_is_dark(make_app) -> None:
+    box = (Transform(0.0, 0.0), Collider(Box(0.5, 0.5)))
+    for shadows in (True, False):
+        light = (Transform(-3.0, 0.0), Light(radius=8.0, falloff=0.0, shadows=shadows))
+        app = make_app(lit_scene(box, light))
+        app.step(1)
+        px = pixels(app)
+        behind, front, beside = px_at(px, 2.0, 0.0), px_at(px, -1.0, 0.0), px_at(px, 2.0, 2.5)
+        assert np.all(front >= 250) and np.all(beside >= 250)
+        if shadows:
+            assert np.all(np.abs(behind - 40) <= TOL), f"behind the box: {behind}"
+            assert np.all(px_at(px, 0.0, 0.0) >= 250), "the occluder itself is lit"
+        else:
+            assert np.all(behind >= 250)
+
+
+def test_a_spot_light_lights_its_cone_only(make_app) -> None:
+    spot = (Transform(0.0, 0.0, math.pi / 2), Light(radius=5.0, falloff=0.0, cone=1.0,
+                                                    softness=0.0))  # fmt: skip
+    app = make_app(lit_scene(spot, ambient=(0, 0, 0)))
+    app.step(1)
+    px = pixels(app)
+    assert np.all(px_at(px, 0.0, 2.0) >= 250)  # straight up the cone
+    assert np.all(px_at(px, 0.0, -2.0) <= TOL)  # behind it
+    assert np.all(px_at(px, 2.0, 1.0) <= TOL)  # 63 degrees off axis, the cone is +-28.6
+    assert np.all(px_at(px, 0.5, 2.0) >= 250)  # 14 degrees off axis
+
+
+def test_a_moving_shadow_caster_moves_its_shadow(make_app) -> None:
+    # a dynamic crate 4 m right of the light: its shadow at x = 3 is at 7/4 of its height
+    crate = (Transform(0.0, 1.0), RigidBody(gravity_scale=0.0), Collider(Box(0.5, 0.5)),
+             ShadowCaster())  # fmt: skip
+    light = (Transform(-4.0, 0.0), Light(radius=9.0, falloff=0.0, shadows=True))
+    app = make_app(lit_scene(crate, light))
+    app.step(1)
+    px = pixels(app)
+    assert np.all(px_at(px, 3.0, 1.75) <= 40 + TOL)
+    assert np.all(px_at(px, 3.0, -1.75) >= 250)
+    body = next(e for e, _ in app.world.query(ShadowCaster))
+    app.world.get(body, Transform).y = -1.0
+    app.step(1)
+    px = pixels(app)
+    assert np.all(px_at(px, 3.0, 1.75) >= 250), "the old shadow is gone"
+    assert np.all(px_at(px, 3.0, -1.75) <= 40 + TOL), "the shadow followed the crate"
+
+
+def test_unlit_layers_and_switching_lighting_off(make_app) -> None:
+    hud = (Transform(3.0, 3.0), Sprite(solid(2, 2, (0, 255, 0)), size=(1.0, 1.0), layer=100))
+    app = make_app(lit_scene(hud, ambient=(0, 0, 0), white=(255, 0, 0)))
+    app.step(1)
+    px = pixels(app)
+    assert tuple(px_at(px, 3.0, 3.0)) == (0, 255, 0), "layer 100 is drawn after the light map"
+    assert tuple(px_at(px, -3.0, -3.0)) == (0, 0, 0), "layer 0 is dark under black ambient"
+    app.world.resource(Lighting).enabled = False
+    px = pixels(app)
+    assert tuple(px_at(px, -3.0, -3.0)) == (255, 0, 0)
+    app.world.resource(Lighting).enabled = True
+    assert tuple(px_at(pixels(app), -3.0, -3.0)) == (0, 0, 0)
+
+
+def test_shadow_softness_makes_a_penumbra(make_app) -> None:
+    # a wall edge at y = 0 from x = 0 to 0.5 (a box); the light 3 m left of it. Along
+    # x = 4 the hard shadow edge is a step; a 0.8 m bulb spreads it into a gradient.
+    box = (Transform(0.25, -1.0), Collider(Box(0.25, 1.0)))
+    profiles = {}
+    for soft in (0.0, 0.8):
+        light = (Transform(-3.0, 0.0), Light(radius=12.0, falloff=0.0, shadows=True,
+                                             shadow_softness=soft))  # fmt: skip
+        app = make_app(lit_scene(box, light, ambient=(0, 0, 0)))
+        app.step(1)
+        px = pixels(app)
+        profiles[soft] = np.array([px_at(px, 4.0, y)[0] for y in np.linspace(-1.5, 1.5, 31)])
+    hard, soft_profile = profiles[0.0], profiles[0.8]
+    assert set(np.unique(hard)) <= {0, 255}, "without softness the edge is a step"
+    between = (soft_profile > 20) & (soft_profile < 235)
+    assert between.sum() >= 4, f"a penumbra of several pixels: {soft_profile}"
+    assert soft_profile[0] <= 8 and soft_profile[-1] >= 247, "umbra and full light remain"
