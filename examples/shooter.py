@@ -181,7 +181,7 @@ def engine_trail() -> kge.ParticleEmitter:
 
 def explosion(world: World, at: tuple[float, float]) -> int:
     """A one-shot burst of sparks where an enemy died; the entity despawns itself when done."""
-    return world.spawn(Transform(*at), Name("explosion"), kge.ParticleEmitter(
+    return world.spawn(Transform(*at), Name("sparks"), kge.ParticleEmitter(
         burst=60, one_shot=True, spread=2 * math.pi, speed=(1.0, 4.0), drag=3.0,
         lifetime=(0.3, 0.7), size=(0.18, 0.03), alpha=(1.0, 0.0), blend="additive",
         color=((255, 255, 200), (255, 150, 40), (160, 30, 0)),

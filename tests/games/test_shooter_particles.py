@@ -29,7 +29,7 @@ def test_enemies_trail_exhaust_and_kills_explode() -> None:
             if not app.input.mouse_held(Mouse.LEFT):
                 app.input.mouse_down(Mouse.LEFT)
         app.step()
-        booms = named(app.world, "explosion")
+        booms = named(app.world, "sparks")
         if booms:
             explosions = len(booms)
             app.step()

@@ -57,8 +57,8 @@ def test_a_pixel_near_a_light_is_lit_and_light_falls_off(make_app) -> None:
 
 
 def test_the_pixel_behind_a_box_is_dark(make_app) -> None:
-    box = (Transform(0.0, 0.0), Collider(Box(0.5, 0.5)))
     for shadows in (True, False):
+        box = (Transform(0.0, 0.0), Collider(Box(0.5, 0.5)))  # one instance, one entity
         light = (Transform(-3.0, 0.0), Light(radius=8.0, falloff=0.0, shadows=shadows))
         app = make_app(lit_scene(box, light))
         app.step(1)
@@ -119,9 +119,9 @@ def test_unlit_layers_and_switching_lighting_off(make_app) -> None:
 def test_shadow_softness_makes_a_penumbra(make_app) -> None:
     # a wall edge at y = 0 from x = 0 to 0.5 (a box); the light 3 m left of it. Along
     # x = 4 the hard shadow edge is a step; a 0.8 m bulb spreads it into a gradient.
-    box = (Transform(0.25, -1.0), Collider(Box(0.25, 1.0)))
     profiles = {}
     for soft in (0.0, 0.8):
+        box = (Transform(0.25, -1.0), Collider(Box(0.25, 1.0)))  # one instance, one entity
         light = (Transform(-3.0, 0.0), Light(radius=12.0, falloff=0.0, shadows=True,
                                              shadow_softness=soft))  # fmt: skip
         app = make_app(lit_scene(box, light, ambient=(0, 0, 0)))
