@@ -97,6 +97,10 @@ from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
 from kge.timestep import FixedTimestep
+
+# tile maps (docs/tilemaps.md)
+from kge.components.tilemap import MapObject, TileCollider
+from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.world import World
 
 # isort: split
@@ -126,6 +130,7 @@ if TYPE_CHECKING:
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.render import RenderPlugin
+    from kge.systems.tilemap import TilemapPlugin
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -151,6 +156,7 @@ _LAZY = {
     "LoadingScreen": "kge.systems.loading",
     "UIPlugin": "kge.systems.ui",
     "focus": "kge.systems.ui",
+    "TilemapPlugin": "kge.systems.tilemap",
 }
 
 
@@ -172,6 +178,16 @@ __all__ = [
     "AnimationPlugin",
     "Animations",
     "Animator",
+    # tile maps
+    "MapObject",
+    "Spawn",
+    "Spawners",
+    "TileCollider",
+    "TileMap",
+    "TilemapError",
+    "TilemapPlugin",
+    "TilemapWarning",
+    "load_map",
     "App",
     "AssetDecodeError",
     "AssetError",

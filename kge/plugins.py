@@ -7,6 +7,7 @@
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
+``TilemapPlugin``      Tiled maps loaded with ``kge.load_map`` are drawn (chunked, culled)
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -27,6 +28,7 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.behaviour import BehaviourPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
+    from kge.systems.tilemap import TilemapPlugin
     from kge.systems.ui import UIPlugin
 
     return [
@@ -36,4 +38,5 @@ def default_plugins() -> list[Plugin]:
         RenderPlugin(),
         AnimationPlugin(),
         UIPlugin(),
+        TilemapPlugin(),
     ]
