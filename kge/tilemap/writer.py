@@ -234,7 +234,8 @@ def write_json_map(
     if chunk:
         layer["chunks"] = [
             {"x": c, "y": r, "width": chunk, "height": chunk,
-             "data": [int(grid[rr][cc]) for rr in range(r, r + chunk) for cc in range(c, c + chunk)]}
+             "data": [int(grid[rr][cc]) if rr < rows and cc < cols else 0
+                      for rr in range(r, r + chunk) for cc in range(c, c + chunk)]}
             for r in range(0, rows, chunk) for c in range(0, cols, chunk)
         ]
         layer.update(startx=0, starty=0, width=cols, height=rows)
