@@ -12,5 +12,6 @@ from kge.testbed.samples import (  # noqa: F401
     materials,
     queries,
     stacking,
+    tilemaps,
     ui,
 )

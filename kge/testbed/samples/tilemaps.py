@@ -1,0 +1,136 @@
+"""Tile map samples: levels written by code as Tiled maps, loaded with ``load_map``.
+
+:func:`write_levels` writes the two platformer levels (generated tiles only)
+that ``examples/platformer.py`` plays: a floor with gaps, one-way ledges, coins
+and a door leading to the second level.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from kge.components import Transform
+from kge.components.collider import Collider
+from kge.components.rigidbody import RigidBody
+from kge.components.shapes import Box, Circle
+from kge.testbed import png
+from kge.testbed.registry import sample
+from kge.tilemap import load_map
+from kge.tilemap.writer import ObjectLayerSpec, TileLayerSpec, TilesetSpec, write_map
+from kge.world import World
+
+T = 16
+ROCK, LEDGE, COIN, DOOR, GRASS = 1, 2, 3, 4, 5  # gids
+
+
+def _sheet() -> np.ndarray:
+    img = np.zeros((T, 5 * T, 4), np.uint8)
+    img[:, 0:T] = (110, 80, 50, 255)  # rock
+    img[2:6, T : 2 * T] = (230, 200, 90, 255)  # ledge: a plank at the top
+    yy, xx = np.mgrid[0:T, 0:T]
+    ring = (xx - 7.5) ** 2 + (yy - 7.5) ** 2 < 30
+    img[:, 2 * T : 3 * T][ring] = (250, 220, 40, 255)  # coin
+    img[:, 3 * T : 4 * T] = (70, 40, 20, 255)  # door
+    img[:, 4 * T : 5 * T] = (110, 80, 50, 255)
+    img[0:4, 4 * T : 5 * T] = (60, 170, 60, 255)  # grass on rock
+    return img
+
+
+def _tileset() -> TilesetSpec:
+    return TilesetSpec(
+        "platformer", "platformer.png", T, T, columns=5, count=5, image_size=(5 * T, T),
+        tiles={
+            0: {"properties": {"solid": True, "friction": 0.8}},
+            1: {"properties": {"one_way": True},
+                "collision": [{"kind": "rectangle", "x": 0, "y": 2, "width": 16, "height": 4}]},
+            2: {"class": "Coin", "properties": {"value": 1}},
+            3: {"class": "Door"},
+            4: {"properties": {"solid": True, "friction": 0.8}},
+        },
+    )
+
+
+def _level(cols: int, gaps: list[tuple[int, int]], ledges: list[tuple[int, int, int]]) -> np.ndarray:
+    g = np.zeros((15, cols), np.int64)
+    g[12, :] = GRASS
+    g[13:, :] = ROCK
+    for a, b in gaps:
+        g[12:, a:b] = 0
+    g[:, 0] = ROCK
+    g[:, -1] = ROCK
+    for row, a, b in ledges:
+        g[row, a:b] = LEDGE
+    return g
+
+
+def write_levels(folder: Path) -> tuple[Path, Path]:
+    """Write level1.tmx and level2.tmx (and the tile sheet) into ``folder``."""
+    folder.mkdir(parents=True, exist_ok=True)
+    png.write(folder / "platformer.png", _sheet())
+    paths = []
+    specs = [
+        (40, [(12, 14)], [(9, 5, 10), (7, 16, 22), (5, 25, 30)], "level2.tmx"),
+        (60, [(18, 21), (35, 38)], [(9, 8, 13), (7, 14, 18), (9, 24, 30), (6, 40, 46)], "level1.tmx"),
+    ]
+    for i, (cols, gaps, ledges, target) in enumerate(specs):
+        grid = _level(cols, gaps, ledges)
+        objects: list[dict[str, Any]] = [
+            {"id": 1, "name": "start", "class": "PlayerStart", "kind": "point", "x": 3 * T, "y": 11 * T},
+            {"id": 2, "name": "door", "gid": DOOR, "x": (cols - 3) * T, "y": 12 * T,
+             "width": T, "height": 2 * T, "properties": {"collider": True, "sensor": True, "to": target}},
+        ]
+        for k, (row, a, b) in enumerate(ledges):
+            for c in range(a, b, 2):
+                objects.append({"id": 10 + 10 * k + c, "name": "coin", "gid": COIN, "x": c * T,
+                                "y": row * T, "width": T, "height": T,
+                                "properties": {"collider": True, "sensor": True}})
+        name = "level1.tmx" if i == 0 else "level2.tmx"
+        path = folder / name
+        write_map(path, T, T, [_tileset()],
+                  [TileLayerSpec("Ground", grid), ObjectLayerSpec("Objects", objects)])
+        paths.append(path)
+    return paths[0], paths[1]
+
+
+_FOLDER: list[Path] = []
+
+
+def levels() -> tuple[Path, Path]:
+    """The levels, written once per process into a temporary folder."""
+    if not _FOLDER:
+        _FOLDER.append(Path(tempfile.mkdtemp(prefix="kge-levels-")))
+        write_levels(_FOLDER[0])
+    return _FOLDER[0] / "level1.tmx", _FOLDER[0] / "level2.tmx"
+
+
+@sample("Tilemaps", "Platformer Level",
+        help="A Tiled level: merged ground outlines, one-way ledges, coins and a door (sensors).",
+        camera=(20.0, 7.0, 0.5))
+def platformer_level(world: World) -> None:
+    m = load_map(world, levels()[0], unknown="ignore")
+    for x in (6.0, 12.5, 20.0):
+        world.spawn(Transform(x, 10.0), RigidBody(), Collider(Box(0.4, 0.4), friction=0.3))
+    assert m.collider_entities
+
+
+@sample("Tilemaps", "Caves",
+        help="A generated 100x100 cave map (one outline per region) with balls raining in.",
+        camera=(50.0, 50.0, 0.12))
+def caves(world: World) -> None:
+    folder = Path(tempfile.mkdtemp(prefix="kge-caves-"))
+    rng = np.random.default_rng(4)
+    g = rng.random((100, 100)) < 0.5
+    for _ in range(4):
+        p = np.pad(g, 1, constant_values=True).astype(np.int8)
+        s = sum(p[1 + dy : 101 + dy, 1 + dx : 101 + dx] for dy in (-1, 0, 1) for dx in (-1, 0, 1))
+        g = s >= 5
+    png.write(folder / "platformer.png", _sheet())
+    write_map(folder / "caves.tmx", T, T, [_tileset()], [TileLayerSpec("Rock", np.where(g, ROCK, 0))])
+    load_map(world, folder / "caves.tmx")
+    for i in range(60):
+        x, y = 5.0 + (i % 10) * 9.0, 60.0 + (i // 10) * 6.0
+        world.spawn(Transform(x, y), RigidBody(), Collider(Circle(0.3), restitution=0.2))
