@@ -31,18 +31,8 @@ os.environ.setdefault("PYGLET_HEADLESS", "1")
 import numpy as np
 
 from kge.testbed import png
+from kge.testbed.samples.tilemaps import cave_cells
 from kge.tilemap.writer import TileLayerSpec, TilesetSpec, write_map
-
-
-def caves(n: int, seed: int = 1, fill: float = 0.52) -> np.ndarray:
-    """Cellular-automaton caves: about 60 % of the cells solid after smoothing."""
-    rng = np.random.default_rng(seed)
-    g = rng.random((n, n)) < fill
-    for _ in range(4):
-        p = np.pad(g, 1, constant_values=True).astype(np.int8)
-        s = sum(p[1 + dy : 1 + dy + n, 1 + dx : 1 + dx + n] for dy in (-1, 0, 1) for dx in (-1, 0, 1))
-        g = s >= 5
-    return g
 
 
 def write_cave_map(folder: Path, n: int) -> Path:
@@ -50,9 +40,17 @@ def write_cave_map(folder: Path, n: int) -> Path:
     img[:, :16] = (90, 70, 50, 255)
     img[:, 16:] = (60, 120, 60, 255)
     png.write(folder / "cave.png", img)
-    ts = TilesetSpec("cave", "cave.png", 16, 16, columns=2, count=2, image_size=(32, 16),
-                     tiles={0: {"properties": {"solid": True}}})
-    grid = np.where(caves(n), 1, 0)
+    ts = TilesetSpec(
+        "cave",
+        "cave.png",
+        16,
+        16,
+        columns=2,
+        count=2,
+        image_size=(32, 16),
+        tiles={0: {"properties": {"solid": True}}},
+    )
+    grid = np.where(cave_cells(n), 1, 0)
     path = folder / f"caves{n}.tmx"
     write_map(path, 16, 16, [ts], [TileLayerSpec("Rock", grid)])
     return path

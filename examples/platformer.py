@@ -13,7 +13,6 @@ Keys: left/right (or A/D) run, space/up jumps. Run it:
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -122,8 +121,10 @@ def level(world: World, path: Path | None = None, score: Score | None = None) ->
     player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
     world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
     world.spawn(Behaviour(Referee()))
-    world.spawn(Transform(0.0, 0.0), Text("", size=16, color=(255, 255, 255, 255), screen_space=True,
-                                          anchor=(0.0, 1.0)))
+    world.spawn(
+        Transform(0.0, 0.0),
+        Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0)),
+    )
     _hud(world)
 
 
@@ -160,4 +161,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

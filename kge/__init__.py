@@ -59,6 +59,7 @@ from kge.components.debug import DebugDraw
 from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
+from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
 from kge.components.tween import Delay, Parallel, Sequence, Tween
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
@@ -96,11 +97,8 @@ from kge.schedule import Stage, System
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
-from kge.timestep import FixedTimestep
-
-# tile maps (docs/tilemaps.md)
-from kge.components.tilemap import MapObject, TileCollider
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
+from kge.timestep import FixedTimestep
 from kge.world import World
 
 # isort: split
@@ -178,16 +176,6 @@ __all__ = [
     "AnimationPlugin",
     "Animations",
     "Animator",
-    # tile maps
-    "MapObject",
-    "Spawn",
-    "Spawners",
-    "TileCollider",
-    "TileMap",
-    "TilemapError",
-    "TilemapPlugin",
-    "TilemapWarning",
-    "load_map",
     "App",
     "AssetDecodeError",
     "AssetError",
@@ -232,6 +220,7 @@ __all__ = [
     "Key",
     "KeyEvent",
     "KgeError",
+    "MapObject",
     "MassData",
     "MissingComponentError",
     "MissingResourceError",
@@ -268,10 +257,17 @@ __all__ = [
     "Sequence",
     "SoundData",
     "SoundHandle",
+    "Spawn",
+    "Spawners",
     "Sprite",
     "Stage",
     "System",
     "Text",
+    "TileCollider",
+    "TileMap",
+    "TilemapError",
+    "TilemapPlugin",
+    "TilemapWarning",
     "Time",
     "Transform",
     "Transition",
@@ -293,6 +289,7 @@ __all__ = [
     "from_array",
     "gif_clip",
     "has_display",
+    "load_map",
     "run",
     "shake",
     "solid",

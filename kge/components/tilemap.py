@@ -27,7 +27,9 @@ class MapObject:
     kind: str  #: "rectangle", "ellipse", "polygon", "polyline", "point", "tile" or "text"
     properties: dict[str, Any] = field(default_factory=dict)
     size: tuple[float, float] = (0.0, 0.0)  #: width, height in metres (rectangles, ellipses, tiles)
-    points: tuple[tuple[float, float], ...] = ()  #: polygon/polyline points relative to the Transform, metres
+    points: tuple[
+        tuple[float, float], ...
+    ] = ()  #: polygon/polyline points relative to the Transform, metres
 
 
 @dataclass(slots=True)

@@ -53,10 +53,12 @@ _program_cache: list[Any] = []
 
 def tile_program() -> Any:
     if not _program_cache:
-        _program_cache.append(pyglet.graphics.shader.ShaderProgram(
-            pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
-            pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
-        ))
+        _program_cache.append(
+            pyglet.graphics.shader.ShaderProgram(
+                pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
+                pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
+            )
+        )
     return _program_cache[0]
 
 
@@ -95,7 +97,12 @@ _SX = np.array([0.0, 1.0, 1.0, 0.0])
 _SY = np.array([1.0, 1.0, 0.0, 0.0])
 
 
-def tile_uvs(data: MapData, gids: np.ndarray, flags: np.ndarray, bounds: list[tuple[float, float, float, float]]) -> np.ndarray:
+def tile_uvs(
+    data: MapData,
+    gids: np.ndarray,
+    flags: np.ndarray,
+    bounds: list[tuple[float, float, float, float]],
+) -> np.ndarray:
     """(n, 4, 2) texture coordinates of n tiles (corners BL, BR, TR, TL), flips applied.
 
     ``bounds[i]`` is image i's (u0, v0, u1, v1) inside its texture. Tiled flips
@@ -166,7 +173,9 @@ class MapDrawing:
         for g in data.tiles.animations:
             self.animated[g] = True
 
-    def group(self, frame: Frame, li: int, image: int, texture: Any, draw_layer: int, order: int) -> LayerGroup:
+    def group(
+        self, frame: Frame, li: int, image: int, texture: Any, draw_layer: int, order: int
+    ) -> LayerGroup:
         g = self.groups.get((li, image))
         if g is None:
             parent = frame.groups.get(draw_layer, WORLD, order)
@@ -205,7 +214,9 @@ class MapDrawing:
         layer = props.get("layer", self.map.draw_layer)
         return int(layer), index - 1000
 
-    def _visible(self, frame: Frame, li: int, shift: tuple[float, float]) -> list[tuple[int, int, int]]:
+    def _visible(
+        self, frame: Frame, li: int, shift: tuple[float, float]
+    ) -> list[tuple[int, int, int]]:
         data = self.map.data
         u = data.units
         tw, th = u.tile_size
@@ -221,7 +232,9 @@ class MapDrawing:
             return []
         return [(li, cr, cc) for cr in range(cr0, cr1 + 1) for cc in range(cc0, cc1 + 1)]
 
-    def _anim_key(self, layer: TileLayerData, key: tuple[int, int, int], time: float) -> tuple[int, ...]:
+    def _anim_key(
+        self, layer: TileLayerData, key: tuple[int, int, int], time: float
+    ) -> tuple[int, ...]:
         if not len(self.map.data.tiles.animations):
             return ()
         _, cr, cc = key
@@ -230,8 +243,16 @@ class MapDrawing:
         tiles = self.map.data.tiles
         return tuple(tiles.frame_at(int(g), time) for g in found)
 
-    def _build(self, frame: Frame, li: int, layer: TileLayerData, key: tuple[int, int, int],
-               anim: tuple[int, ...], draw_layer: int, order: int) -> _Chunk:
+    def _build(
+        self,
+        frame: Frame,
+        li: int,
+        layer: TileLayerData,
+        key: tuple[int, int, int],
+        anim: tuple[int, ...],
+        draw_layer: int,
+        order: int,
+    ) -> _Chunk:
         data = self.map.data
         _, cr, cc = key
         r0, c0 = cr * CHUNK, cc * CHUNK
@@ -256,8 +277,13 @@ class MapDrawing:
             idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
             g = self.group(frame, li, image, self.tex[image], draw_layer, order)
             vl = self.program.vertex_list_indexed(
-                n * 4, gl.GL_TRIANGLES, idx.tolist(), batch=frame.batch, group=g,
-                position=("f", quads[sel].ravel()), tex_coords=("f", uvs[sel].ravel()),
+                n * 4,
+                gl.GL_TRIANGLES,
+                idx.tolist(),
+                batch=frame.batch,
+                group=g,
+                position=("f", quads[sel].ravel()),
+                tex_coords=("f", uvs[sel].ravel()),
             )
             chunk.lists.append(vl)
         return chunk
@@ -285,8 +311,13 @@ class MapDrawing:
                 b = _tex_bounds(tex)
                 uv = np.array([b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[3]], np.float32)
                 vl = self.program.vertex_list_indexed(
-                    4, gl.GL_TRIANGLES, [0, 1, 2, 0, 2, 3], batch=frame.batch, group=g,
-                    position=("f", pos), tex_coords=("f", uv),
+                    4,
+                    gl.GL_TRIANGLES,
+                    [0, 1, 2, 0, 2, 3],
+                    batch=frame.batch,
+                    group=g,
+                    position=("f", pos),
+                    tex_coords=("f", uv),
                 )
                 entry = self.images[i] = (vl, g)
             entry[1].shift = _shift(frame, data, layer.style)

@@ -160,7 +160,7 @@ class LayerCollision:
         row = self.kind[r] == ONE_WAY
         mats = self.material[r]
         units = self.data.units
-        tw, th = units.tile_size
+        tw = units.tile_size[0]
         out = []
         c = 0
         n = len(row)
@@ -241,7 +241,9 @@ class LayerCollision:
         new_kind, new_mat = int(self.kind[r, c]), int(self.material[r, c])
         gone: list[Piece] = []
         born: list[Piece] = []
-        for mat in {old_mat if old_kind == SOLID else -1, new_mat if new_kind == SOLID else -1} - {-1}:
+        for mat in {old_mat if old_kind == SOLID else -1, new_mat if new_kind == SOLID else -1} - {
+            -1
+        }:
             g, b = self._retrace(mat, c, r)
             gone += g
             born += b
@@ -263,8 +265,10 @@ class LayerCollision:
         hit = np.zeros(len(pieces), bool)
         while True:
             now = (
-                (boxes[:, 0] <= hi[0]) & (boxes[:, 2] >= lo[0])
-                & (boxes[:, 1] <= hi[1]) & (boxes[:, 3] >= lo[1])
+                (boxes[:, 0] <= hi[0])
+                & (boxes[:, 2] >= lo[0])
+                & (boxes[:, 1] <= hi[1])
+                & (boxes[:, 3] >= lo[1])
             )
             if np.array_equal(now, hit):
                 break
@@ -308,11 +312,18 @@ def _outline(s: TileShape) -> list[tuple[float, float]]:
     if s.kind == "ellipse":
         n = 12
         return [
-            (s.x + s.width / 2 * (1 + math.cos(2 * math.pi * i / n)),
-             s.y + s.height / 2 * (1 + math.sin(2 * math.pi * i / n)))
+            (
+                s.x + s.width / 2 * (1 + math.cos(2 * math.pi * i / n)),
+                s.y + s.height / 2 * (1 + math.sin(2 * math.pi * i / n)),
+            )
             for i in range(n)
         ]
-    return [(s.x, s.y), (s.x + s.width, s.y), (s.x + s.width, s.y + s.height), (s.x, s.y + s.height)]
+    return [
+        (s.x, s.y),
+        (s.x + s.width, s.y),
+        (s.x + s.width, s.y + s.height),
+        (s.x, s.y + s.height),
+    ]
 
 
 def _flip(x: float, y: float, w: float, h: float, flags: int) -> tuple[float, float]:
@@ -334,8 +345,11 @@ def _shape(s: TileShape, local: list[tuple[float, float]]) -> Any:
     if s.kind == "ellipse" and abs(s.width - s.height) < 1e-9:
         return Circle((max(xs) - min(xs)) / 2, ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2))
     if s.kind == "rectangle":
-        return Box((max(xs) - min(xs)) / 2, (max(ys) - min(ys)) / 2,
-                   ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2))
+        return Box(
+            (max(xs) - min(xs)) / 2,
+            (max(ys) - min(ys)) / 2,
+            ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2),
+        )
     area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(local, local[1:] + local[:1], strict=True))
     pts = local if area > 0 else local[::-1]
     try:

@@ -191,8 +191,15 @@ def _components(
             points = tuple(units.vector(float(p.x), float(p.y)) for p in obj.points)
     transform = Transform(ax + off[0], ay + off[1], angle)
     mobj = MapObject(
-        map=str(data.path), layer=layer.name, id=int(obj.id), name=obj.name or "", cls=cls,
-        kind=kind, properties=props, size=(w, h), points=points,
+        map=str(data.path),
+        layer=layer.name,
+        id=int(obj.id),
+        name=obj.name or "",
+        cls=cls,
+        kind=kind,
+        properties=props,
+        size=(w, h),
+        points=points,
     )
     comps: list[Any] = [transform, mobj]
     if tile:
@@ -203,8 +210,12 @@ def _components(
         if body != "static":
             types = {"dynamic": BodyType.DYNAMIC, "kinematic": BodyType.KINEMATIC}
             if body not in types:
-                raise TilemapError(f"{where}: property body must be static, dynamic or kinematic, got {body!r}")
-            comps.append(RigidBody(types[body], fixed_rotation=_truthy(props.get("fixed_rotation"))))
+                raise TilemapError(
+                    f"{where}: property body must be static, dynamic or kinematic, got {body!r}"
+                )
+            comps.append(
+                RigidBody(types[body], fixed_rotation=_truthy(props.get("fixed_rotation")))
+            )
     if entry is None or entry.fn is None:
         return comps
     spawn = Spawn(mobj, transform, comps)
@@ -212,7 +223,9 @@ def _components(
         extra = entry.fn(spawn)
     except Exception as exc:
         name = getattr(entry.fn, "__qualname__", repr(entry.fn))
-        raise TilemapError(f"{where}: spawner {name} for class {cls!r} raised {type(exc).__name__}: {exc}") from exc
+        raise TilemapError(
+            f"{where}: spawner {name} for class {cls!r} raised {type(exc).__name__}: {exc}"
+        ) from exc
     if extra is None:
         return spawn.components
     out = {type(c): c for c in spawn.components}
@@ -221,19 +234,28 @@ def _components(
     return list(out.values())
 
 
-def _sprite(data: MapData, obj: Any, tile: int, w: float, h: float, layer: int, index: int) -> Sprite:
+def _sprite(
+    data: MapData, obj: Any, tile: int, w: float, h: float, layer: int, index: int
+) -> Sprite:
     table = data.tiles
     img = table.images[int(table.image[tile])]
     x, y, tw, th = (int(v) for v in table.rect[tile])
     iw, ih = table.image_sizes[int(table.image[tile])]
     region = None if (x, y, tw, th) == (0, 0, iw, ih) else (x, y, tw, th)
     return Sprite(
-        str(img), layer=layer, order=index - 1000, region=region, size=(w, h),
-        flip_x=bool(int(obj.gid) & TILED_FLIP_H), flip_y=bool(int(obj.gid) & TILED_FLIP_V),
+        str(img),
+        layer=layer,
+        order=index - 1000,
+        region=region,
+        size=(w, h),
+        flip_x=bool(int(obj.gid) & TILED_FLIP_H),
+        flip_y=bool(int(obj.gid) & TILED_FLIP_V),
     )
 
 
-def _collider(kind: str, w: float, h: float, points: tuple[tuple[float, float], ...], props: dict[str, Any]) -> Collider:
+def _collider(
+    kind: str, w: float, h: float, points: tuple[tuple[float, float], ...], props: dict[str, Any]
+) -> Collider:
     shape: Any
     if kind in ("rectangle", "tile", "text"):
         shape = Box(w / 2, h / 2)
@@ -242,7 +264,12 @@ def _collider(kind: str, w: float, h: float, points: tuple[tuple[float, float], 
             shape = Circle(w / 2)
         else:
             n = 12
-            shape = Polygon([(w / 2 * math.cos(2 * math.pi * i / n), h / 2 * math.sin(2 * math.pi * i / n)) for i in range(n)])
+            shape = Polygon(
+                [
+                    (w / 2 * math.cos(2 * math.pi * i / n), h / 2 * math.sin(2 * math.pi * i / n))
+                    for i in range(n)
+                ]
+            )
     elif kind == "polygon":
         pts = list(points)
         area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1], strict=True))

@@ -52,9 +52,19 @@ def read_map(
     try:
         tmap = pytiled_parser.parse_map(p)
     except FileNotFoundError as exc:
-        raise TilemapError(f"{p}: file {exc.filename or exc} not found (a tileset or template)") from exc
-    except (ValueError, KeyError, TypeError, AttributeError, IndexError, OSError,
-            ElementTree.ParseError, json.JSONDecodeError) as exc:
+        raise TilemapError(
+            f"{p}: file {exc.filename or exc} not found (a tileset or template)"
+        ) from exc
+    except (
+        ValueError,
+        KeyError,
+        TypeError,
+        AttributeError,
+        IndexError,
+        OSError,
+        ElementTree.ParseError,
+        json.JSONDecodeError,
+    ) as exc:
         raise TilemapError(f"{p}: cannot read the map ({type(exc).__name__}: {exc})") from exc
     if tmap.orientation not in SUPPORTED_ORIENTATIONS:
         raise TilemapError(
@@ -63,7 +73,9 @@ def read_map(
     tw, th = int(tmap.tile_size.width), int(tmap.tile_size.height)
     ppm = float(pixels_per_meter) if pixels_per_meter is not None else float(tw)
     if not np.isfinite(ppm) or ppm <= 0:
-        raise TilemapError(f"{p}: pixels_per_meter must be a positive number, got {pixels_per_meter!r}")
+        raise TilemapError(
+            f"{p}: pixels_per_meter must be a positive number, got {pixels_per_meter!r}"
+        )
     tilesets, table = _tilesets(p, tmap.tilesets)
     flat = list(_flatten(tmap.layers, LayerStyle(), ""))
     col0, row0, cols, rows = _extent(tmap, flat)
@@ -104,7 +116,9 @@ def read_map(
                             f"{p}: layer {name!r}: object {obj.id} ({obj.name!r}): tile id {g} "
                             "is in no tileset"
                         )
-            object_layers.append(ObjectLayerData(name, index, list(layer.tiled_objects), style, props))
+            object_layers.append(
+                ObjectLayerData(name, index, list(layer.tiled_objects), style, props)
+            )
     bg = tmap.background_color
     return MapData(
         path=p,
@@ -131,13 +145,17 @@ def _style(layer: Any) -> LayerStyle:
     return LayerStyle(
         opacity=float(layer.opacity),
         visible=bool(layer.visible),
-        tint=(255, 255, 255, 255) if tint is None else (tint.red, tint.green, tint.blue, tint.alpha),
+        tint=(255, 255, 255, 255)
+        if tint is None
+        else (tint.red, tint.green, tint.blue, tint.alpha),
         offset=(float(layer.offset.x), float(layer.offset.y)),
         parallax=(float(layer.parallax_factor.x), float(layer.parallax_factor.y)),
     )
 
 
-def _flatten(layers: list[Any], outer: LayerStyle, prefix: str) -> Iterator[tuple[str, Any, LayerStyle]]:
+def _flatten(
+    layers: list[Any], outer: LayerStyle, prefix: str
+) -> Iterator[tuple[str, Any, LayerStyle]]:
     """Leaf layers in draw order, each with its name path and combined style."""
     import pytiled_parser
 
@@ -173,7 +191,9 @@ def _grid(p: Path, name: str, layer: Any, col0: int, row0: int, cols: int, rows:
     try:
         if layer.chunks:
             for ch in layer.chunks:
-                data = np.asarray(ch.data, np.int64).reshape(int(ch.size.height), int(ch.size.width))
+                data = np.asarray(ch.data, np.int64).reshape(
+                    int(ch.size.height), int(ch.size.width)
+                )
                 y, x = int(ch.coordinates.y) - row0, int(ch.coordinates.x) - col0
                 out[y : y + data.shape[0], x : x + data.shape[1]] = data
         elif layer.data:
@@ -212,35 +232,53 @@ def _tilesets(p: Path, raw: dict[int, Any]) -> tuple[list[TilesetData], GidTable
 
     for index, (firstgid, ts) in enumerate(sorted(raw.items())):
         count = max([int(ts.tile_count or 0), *(int(i) + 1 for i in (ts.tiles or {}))])
-        offset = (0, 0) if ts.tile_offset is None else (int(ts.tile_offset.x), int(ts.tile_offset.y))
+        offset = (
+            (0, 0) if ts.tile_offset is None else (int(ts.tile_offset.x), int(ts.tile_offset.y))
+        )
         tw, th = int(ts.tile_width), int(ts.tile_height)
         sheet = None if ts.image is None else Path(ts.image)
         sets.append(
-            TilesetData(ts.name, firstgid, count, tw, th, int(ts.columns or 0), int(ts.spacing or 0),
-                        int(ts.margin or 0), sheet, offset)
+            TilesetData(
+                ts.name,
+                firstgid,
+                count,
+                tw,
+                th,
+                int(ts.columns or 0),
+                int(ts.spacing or 0),
+                int(ts.margin or 0),
+                sheet,
+                offset,
+            )
         )
         span = slice(firstgid, firstgid + count)
         table.offset[span] = offset
         if sheet is not None:
-            img = image_id(sheet, int(ts.image_width or 0), int(ts.image_height or 0),
-                           f"tileset {ts.name!r}: image")
+            img = image_id(
+                sheet,
+                int(ts.image_width or 0),
+                int(ts.image_height or 0),
+                f"tileset {ts.name!r}: image",
+            )
             cols = max(int(ts.columns or 1), 1)
             local = np.arange(int(ts.tile_count or 0))
-            g = firstgid + local
-            table.tileset[g] = index
-            table.image[g] = img
-            table.rect[g, 0] = int(ts.margin or 0) + (local % cols) * (tw + int(ts.spacing or 0))
-            table.rect[g, 1] = int(ts.margin or 0) + (local // cols) * (th + int(ts.spacing or 0))
-            table.rect[g, 2] = tw
-            table.rect[g, 3] = th
+            sheet_gids = firstgid + local
+            table.tileset[sheet_gids] = index
+            table.image[sheet_gids] = img
+            step_x, step_y = tw + int(ts.spacing or 0), th + int(ts.spacing or 0)
+            table.rect[sheet_gids, 0] = int(ts.margin or 0) + (local % cols) * step_x
+            table.rect[sheet_gids, 1] = int(ts.margin or 0) + (local // cols) * step_y
+            table.rect[sheet_gids, 2] = tw
+            table.rect[sheet_gids, 3] = th
         tileset_props = dict(ts.properties or {})
         for tid, tile in (ts.tiles or {}).items():
             g = firstgid + int(tid)
             table.tileset[g] = index
             if tile.image is not None:
                 w, h = int(tile.image_width or tw), int(tile.image_height or th)
-                table.image[g] = image_id(Path(tile.image), w, h,
-                                          f"tileset {ts.name!r}: tile {tid} image")
+                table.image[g] = image_id(
+                    Path(tile.image), w, h, f"tileset {ts.name!r}: tile {tid} image"
+                )
                 if tile.width and tile.height:  # a sub-rectangle of the image (Tiled 1.9+)
                     table.rect[g] = (int(tile.x), int(tile.y), int(tile.width), int(tile.height))
                 else:

@@ -72,7 +72,12 @@ class TileMap:
         """(left, bottom, right, top) of the tile grid in metres: clamp the camera to it."""
         u = self.data.units
         w, h = u.tile_size
-        return (u.origin[0], u.origin[1], u.origin[0] + self.data.cols * w, u.origin[1] + self.data.rows * h)
+        return (
+            u.origin[0],
+            u.origin[1],
+            u.origin[0] + self.data.cols * w,
+            u.origin[1] + self.data.rows * h,
+        )
 
     def cell_at(self, point: tuple[float, float]) -> tuple[int, int] | None:
         """The (column, row) under a world point (row 0 at the top), or None outside the map."""
@@ -123,8 +128,15 @@ class TileMap:
 
     # -- edits -----------------------------------------------------------------------------
     def set_tile(
-        self, layer: str, col: int, row: int, gid: int, *,
-        flip_x: bool = False, flip_y: bool = False, flip_diagonal: bool = False,
+        self,
+        layer: str,
+        col: int,
+        row: int,
+        gid: int,
+        *,
+        flip_x: bool = False,
+        flip_y: bool = False,
+        flip_diagonal: bool = False,
     ) -> None:
         """Put tile ``gid`` (0 clears) at (col, row): its chunk redraws, its colliders rebuild."""
         lay = self.layer(layer)
@@ -135,7 +147,9 @@ class TileMap:
             raise TilemapError(f"{self.path}: set_tile: tile id {gid} is in no tileset")
         old = (int(lay.gids[row, col]), int(lay.flags[row, col]))
         lay.gids[row, col] = gid
-        lay.flags[row, col] = (FLIP_H if flip_x else 0) | (FLIP_V if flip_y else 0) | (FLIP_D if flip_diagonal else 0)
+        lay.flags[row, col] = (
+            (FLIP_H if flip_x else 0) | (FLIP_V if flip_y else 0) | (FLIP_D if flip_diagonal else 0)
+        )
         coll = self.collision.get(lay.name)
         if coll is not None:
             try:
@@ -153,7 +167,8 @@ class TileMap:
         for v, n, what in ((col, self.data.cols, "col"), (row, self.data.rows, "row")):
             if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 0 <= v < n:
                 raise TilemapError(
-                    f"{self.path}: {op} on layer {lay.name!r}: {what} must be an int in [0, {n}), got {v!r}"
+                    f"{self.path}: {op} on layer {lay.name!r}: "
+                    f"{what} must be an int in [0, {n}), got {v!r}"
                 )
 
     def _swap(self, gone: list[Piece], born: list[Piece]) -> None:
@@ -218,7 +233,9 @@ def load_map(
     nothing of the map is left in the world.
     """
     if unknown not in ("warn", "error", "ignore"):
-        raise TilemapError(f"load_map: unknown must be 'warn', 'error' or 'ignore', got {unknown!r}")
+        raise TilemapError(
+            f"load_map: unknown must be 'warn', 'error' or 'ignore', got {unknown!r}"
+        )
     reg = spawners if isinstance(spawners, Spawners) else Spawners(spawners)
     data = read_map(path, pixels_per_meter=pixels_per_meter, origin=origin)
     solid_names = set(solid_layers)
@@ -226,12 +243,14 @@ def load_map(
     missing = solid_names - known
     if missing:
         raise TilemapError(f"{data.path}: solid_layers names no tile layer: {sorted(missing)!r}")
-    base: Material = (float(friction), float(restitution), *DEFAULT_MATERIAL[2:])  # type: ignore[assignment]
+    base: Material = (float(friction), float(restitution), *DEFAULT_MATERIAL[2:])
     tmap = TileMap(world, data, int(layer))
     pieces: list[Piece] = []
     try:
         for lay in data.tile_layers:
-            solid = lay.name in solid_names or str(lay.properties.get("solid", "")).lower() == "true"
+            solid = (
+                lay.name in solid_names or str(lay.properties.get("solid", "")).lower() == "true"
+            )
             coll = LayerCollision(data, lay, solid, base)
             tmap.collision[lay.name] = coll
             pieces.extend(coll.build())
@@ -254,7 +273,8 @@ def load_map(
             p.entity = world.spawn(*p.components)
             spawned.append(p.entity)
             tmap._live[p.entity] = p
-        for what, comps in objects:
+        for label, comps in objects:
+            what = label  # named in the error if this spawn is refused
             e = world.spawn(*comps)
             spawned.append(e)
             tmap.objects.append(e)

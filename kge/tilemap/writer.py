@@ -90,7 +90,7 @@ def _props(props: dict[str, Any]) -> str:
     if not props:
         return ""
     items = "".join(
-        f"<property name={quoteattr(k)} type=\"{_ptype(v)}\" "
+        f'<property name={quoteattr(k)} type="{_ptype(v)}" '
         f"value={quoteattr(str(v).lower() if isinstance(v, bool) else str(v))}/>"
         for k, v in props.items()
     )
@@ -117,7 +117,7 @@ def _object(o: dict[str, Any]) -> str:
     return f"<object{attrs}>{inner}</object>"
 
 
-def _tileset_body(ts: TilesetSpec) -> str:
+def _tileset_body(ts: TilesetSpec) -> tuple[str, str]:
     head = (
         f'name={quoteattr(ts.name)} tilewidth="{ts.tile_w}" tileheight="{ts.tile_h}" '
         f'tilecount="{ts.count}" columns="{ts.columns}"'
@@ -139,7 +139,7 @@ def _tileset_body(ts: TilesetSpec) -> str:
             frames = "".join(f'<frame tileid="{i}" duration="{ms}"/>' for i, ms in t["animation"])
             inner += f"<animation>{frames}</animation>"
         body += f'<tile id="{tid}"{cls}>{inner}</tile>'
-    return head, body  # type: ignore[return-value]
+    return head, body
 
 
 def _layer(spec: Any, ids: list[int]) -> str:
@@ -157,18 +157,22 @@ def _layer(spec: Any, ids: list[int]) -> str:
             extra += f' tintcolor="{spec.tint}"'
         return (
             f'<layer id="{lid}" name={quoteattr(spec.name)} width="{w}" height="{h}"{extra}>'
-            f'{_props(spec.properties)}<data encoding="csv">\n' + ",\n".join(rows) + "\n</data></layer>"
+            f'{_props(spec.properties)}<data encoding="csv">\n'
+            + ",\n".join(rows)
+            + "\n</data></layer>"
         )
     if isinstance(spec, ObjectLayerSpec):
         objs = "".join(_object(o) for o in spec.objects)
-        return f'<objectgroup id="{lid}" name={quoteattr(spec.name)}>{_props(spec.properties)}{objs}</objectgroup>'
+        head = f'<objectgroup id="{lid}" name={quoteattr(spec.name)}>'
+        return f"{head}{_props(spec.properties)}{objs}</objectgroup>"
     if isinstance(spec, ImageLayerSpec):
         extra = f' opacity="{spec.opacity}"' if spec.opacity != 1 else ""
         if spec.parallax != (1.0, 1.0):
             extra += f' parallaxx="{spec.parallax[0]}" parallaxy="{spec.parallax[1]}"'
         return (
             f'<imagelayer id="{lid}" name={quoteattr(spec.name)} offsetx="{spec.offset[0]}" '
-            f'offsety="{spec.offset[1]}"{extra}><image source={quoteattr(spec.image)}/></imagelayer>'
+            f'offsety="{spec.offset[1]}"{extra}>'
+            f"<image source={quoteattr(spec.image)}/></imagelayer>"
         )
     inner = "".join(_layer(s, ids) for s in spec.layers)
     return (
@@ -199,7 +203,8 @@ def write_map(
         head, body = _tileset_body(ts)
         if ts.external:
             (path.parent / ts.external).write_text(
-                f'<?xml version="1.0" encoding="UTF-8"?>\n<tileset version="1.10" {head}>{body}</tileset>\n'
+                '<?xml version="1.0" encoding="UTF-8"?>\n'
+                f'<tileset version="1.10" {head}>{body}</tileset>\n'
             )
             sets += f'<tileset firstgid="{first}" source={quoteattr(ts.external)}/>'
         else:
@@ -209,9 +214,11 @@ def write_map(
     body = "".join(_layer(s, ids) for s in layers)
     path.write_text(
         '<?xml version="1.0" encoding="UTF-8"?>\n'
-        f'<map version="1.10" tiledversion="1.10.2" orientation="{orientation}" renderorder="right-down" '
+        f'<map version="1.10" tiledversion="1.10.2" orientation="{orientation}" '
+        'renderorder="right-down" '
         f'width="{cols}" height="{rows}" tilewidth="{tile_w}" tileheight="{tile_h}" infinite="0" '
-        f'nextlayerid="{ids[0] + 1}" nextobjectid="1000">{_props(properties or {})}{sets}{body}</map>\n'
+        f'nextlayerid="{ids[0] + 1}" nextobjectid="1000">'
+        f"{_props(properties or {})}{sets}{body}</map>\n"
     )
 
 
@@ -223,34 +230,73 @@ def _leaves(layers: Sequence[Any]) -> list[Any]:
 
 
 def write_json_map(
-    path: str | Path, tile_w: int, tile_h: int, tileset: TilesetSpec, grid: Any,
-    *, chunk: int | None = None, layer_name: str = "Ground",
+    path: str | Path,
+    tile_w: int,
+    tile_h: int,
+    tileset: TilesetSpec,
+    grid: Any,
+    *,
+    chunk: int | None = None,
+    layer_name: str = "Ground",
 ) -> None:
     """A minimal JSON map with one embedded tileset and one tile layer (``chunk``: infinite)."""
     rows, cols = len(grid), len(grid[0])
     layer: dict[str, Any] = {
-        "id": 1, "name": layer_name, "type": "tilelayer", "opacity": 1, "visible": True, "x": 0, "y": 0,
+        "id": 1,
+        "name": layer_name,
+        "type": "tilelayer",
+        "opacity": 1,
+        "visible": True,
+        "x": 0,
+        "y": 0,
     }
     if chunk:
         layer["chunks"] = [
-            {"x": c, "y": r, "width": chunk, "height": chunk,
-             "data": [int(grid[rr][cc]) if rr < rows and cc < cols else 0
-                      for rr in range(r, r + chunk) for cc in range(c, c + chunk)]}
-            for r in range(0, rows, chunk) for c in range(0, cols, chunk)
+            {
+                "x": c,
+                "y": r,
+                "width": chunk,
+                "height": chunk,
+                "data": [
+                    int(grid[rr][cc]) if rr < rows and cc < cols else 0
+                    for rr in range(r, r + chunk)
+                    for cc in range(c, c + chunk)
+                ],
+            }
+            for r in range(0, rows, chunk)
+            for c in range(0, cols, chunk)
         ]
         layer.update(startx=0, starty=0, width=cols, height=rows)
     else:
         layer.update(width=cols, height=rows, data=[int(v) for row in grid for v in row])
     ts: dict[str, Any] = {
-        "firstgid": 1, "name": tileset.name, "tilewidth": tileset.tile_w, "tileheight": tileset.tile_h,
-        "tilecount": tileset.count, "columns": tileset.columns, "margin": 0, "spacing": 0,
+        "firstgid": 1,
+        "name": tileset.name,
+        "tilewidth": tileset.tile_w,
+        "tileheight": tileset.tile_h,
+        "tilecount": tileset.count,
+        "columns": tileset.columns,
+        "margin": 0,
+        "spacing": 0,
     }
     if tileset.image:
-        ts.update(image=tileset.image, imagewidth=tileset.image_size[0], imageheight=tileset.image_size[1])
+        ts.update(
+            image=tileset.image, imagewidth=tileset.image_size[0], imageheight=tileset.image_size[1]
+        )
     doc = {
-        "type": "map", "version": "1.10", "tiledversion": "1.10.2", "orientation": "orthogonal",
-        "renderorder": "right-down", "width": cols, "height": rows, "tilewidth": tile_w,
-        "tileheight": tile_h, "infinite": bool(chunk), "nextlayerid": 2, "nextobjectid": 1,
-        "layers": [layer], "tilesets": [ts],
+        "type": "map",
+        "version": "1.10",
+        "tiledversion": "1.10.2",
+        "orientation": "orthogonal",
+        "renderorder": "right-down",
+        "width": cols,
+        "height": rows,
+        "tilewidth": tile_w,
+        "tileheight": tile_h,
+        "infinite": bool(chunk),
+        "nextlayerid": 2,
+        "nextobjectid": 1,
+        "layers": [layer],
+        "tilesets": [ts],
     }
     Path(path).write_text(json.dumps(doc))

@@ -13,8 +13,14 @@ from kge.tilemap.writer import ObjectLayerSpec, TileLayerSpec, TilesetSpec, writ
 T = 16  # tile pixels
 #: one flat colour per tile of the 4x2 sheet (local ids 0..7)
 COLORS = [
-    (200, 60, 40), (40, 200, 60), (40, 60, 200), (220, 220, 40),
-    (200, 40, 200), (40, 200, 200), (120, 120, 120), (250, 250, 250),
+    (200, 60, 40),
+    (40, 200, 60),
+    (40, 60, 200),
+    (220, 220, 40),
+    (200, 40, 200),
+    (40, 200, 200),
+    (120, 120, 120),
+    (250, 250, 250),
 ]
 GROUND, ONE_WAY, SLOPE, COIN, ANIM_A, ANIM_B, DECOR, MARK = range(1, 9)  # gids (firstgid 1)
 
@@ -31,12 +37,22 @@ def sheet() -> np.ndarray:
 
 def tileset(external: str | None = None) -> TilesetSpec:
     return TilesetSpec(
-        "tiles", "tiles.png", T, T, columns=4, count=8, image_size=(4 * T, 2 * T),
+        "tiles",
+        "tiles.png",
+        T,
+        T,
+        columns=4,
+        count=8,
+        image_size=(4 * T, 2 * T),
         external=external,
         tiles={
             0: {"properties": {"solid": True, "friction": 0.6}},
             1: {"properties": {"one_way": True}},
-            2: {"collision": [{"kind": "polygon", "x": 0, "y": 0, "points": [(0, 16), (16, 0), (16, 16)]}]},
+            2: {
+                "collision": [
+                    {"kind": "polygon", "x": 0, "y": 0, "points": [(0, 16), (16, 0), (16, 16)]}
+                ]
+            },
             3: {"class": "Coin", "properties": {"value": 5}},
             4: {"animation": [(4, 100), (5, 100)]},
         },
@@ -44,8 +60,12 @@ def tileset(external: str | None = None) -> TilesetSpec:
 
 
 def write_level(
-    folder: Path, grid: np.ndarray, objects: list[dict[str, Any]] | None = None,
-    name: str = "level.tmx", external: str | None = None, extra_layers: list[Any] | None = None,
+    folder: Path,
+    grid: np.ndarray,
+    objects: list[dict[str, Any]] | None = None,
+    name: str = "level.tmx",
+    external: str | None = None,
+    extra_layers: list[Any] | None = None,
 ) -> Path:
     png.write(folder / "tiles.png", sheet())
     layers: list[Any] = [TileLayerSpec("Ground", grid)]

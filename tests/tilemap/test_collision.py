@@ -14,6 +14,7 @@ from kge.components.shapes import Box, Chain, Circle, Polygon
 from kge.components.tilemap import TileCollider
 from kge.components.transform import Transform
 from kge.physics.resource import Physics
+from kge.testbed.samples.tilemaps import cave_cells
 from kge.tilemap import load_map
 from kge.tilemap.outline import trace_loops
 
@@ -27,13 +28,7 @@ def _signed_area(loop: np.ndarray) -> float:
 
 
 def caves(n: int, seed: int) -> np.ndarray:
-    rng = np.random.default_rng(seed)
-    g = rng.random((n, n)) < 0.5
-    for _ in range(4):
-        p = np.pad(g, 1, constant_values=True).astype(np.int8)
-        s = sum(p[1 + dy : 1 + dy + n, 1 + dx : 1 + dx + n] for dy in (-1, 0, 1) for dx in (-1, 0, 1))
-        g = s >= 5
-    return g
+    return cave_cells(n, seed, fill=0.5)
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -70,7 +65,9 @@ def test_box_slides_across_fifty_tiles_without_a_bump(tmp_path: Path, sim: Stepp
         worst = max(worst, abs(sim.world.get(box, RigidBody).velocity[1]))
     assert sim.world.get(box, Transform).x > 52.0
     assert sim.world.get(box, RigidBody).velocity[0] == pytest.approx(5.0, abs=0.01)
-    assert worst < 0.05  # the tolerance of kge's own chain test (tests/physics/test_edges_chains.py)
+    assert (
+        worst < 0.05
+    )  # the tolerance of kge's own chain test (tests/physics/test_edges_chains.py)
 
 
 def test_one_way_tiles_are_merged_runs_with_a_platform(tmp_path: Path, sim: Stepper) -> None:
@@ -84,7 +81,9 @@ def test_one_way_tiles_are_merged_runs_with_a_platform(tmp_path: Path, sim: Step
     widths = sorted(sim.world.get(e, Collider).shape.half_width * 2 for e in runs)  # type: ignore[union-attr]
     assert widths == [1.0, 5.0]
     # a ball shot up from below passes through the run and comes to rest on top of it
-    ball = sim.world.spawn(Transform(5.0, 2.0), RigidBody(velocity=(0.0, 9.0)), Collider(Circle(0.25)))
+    ball = sim.world.spawn(
+        Transform(5.0, 2.0), RigidBody(velocity=(0.0, 9.0)), Collider(Circle(0.25))
+    )
     sim.step(240)
     assert sim.world.get(ball, Transform).y == pytest.approx(5.25, abs=0.05)
 

@@ -42,11 +42,13 @@ def render(apps: list[App], setup: Any) -> tuple[App, np.ndarray]:
     return app, frame_pixels(app)
 
 
-class Near(tuple):  # type: ignore[type-arg]
+class Near(tuple):
     """A colour that equals any colour within 10 per channel (PNG decoding rounds)."""
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, tuple) and all(abs(int(a) - int(b)) <= 10 for a, b in zip(self, other, strict=True))
+        return isinstance(other, tuple) and all(
+            abs(int(a) - int(b)) <= 10 for a, b in zip(self, other, strict=True)
+        )
 
     def __hash__(self) -> int:
         return hash(tuple(self))

@@ -43,7 +43,9 @@ def test_unsupported_orientation(tmp_path: Path, sim: Stepper) -> None:
     ts = TilesetSpec("t", "tiles.png", 16, 16, columns=4, count=8, image_size=(64, 32))
     from kge.tilemap.writer import TileLayerSpec
 
-    write_map(tmp_path / "iso.tmx", 16, 16, [ts], [TileLayerSpec("L", floor())], orientation="isometric")
+    write_map(
+        tmp_path / "iso.tmx", 16, 16, [ts], [TileLayerSpec("L", floor())], orientation="isometric"
+    )
     with pytest.raises(TilemapError, match="orientation 'isometric' is not supported"):
         load_map(sim.world, tmp_path / "iso.tmx")
 
@@ -61,14 +63,19 @@ def test_unsupported_encoding(tmp_path: Path, sim: Stepper) -> None:
 def test_tile_id_in_no_tileset(tmp_path: Path, sim: Stepper) -> None:
     g = floor()
     g[2, 7] = 99
-    with pytest.raises(TilemapError, match=r"layer 'Ground': tile id 99 at column 7, row 2 is in no tileset"):
+    with pytest.raises(
+        TilemapError, match=r"layer 'Ground': tile id 99 at column 7, row 2 is in no tileset"
+    ):
         load_map(sim.world, write_level(tmp_path, g))
 
 
 def test_unknown_class_as_error(tmp_path: Path, sim: Stepper) -> None:
     objs = [{"id": 4, "name": "boss", "class": "Dragon", "x": 0, "y": 0, "width": 16, "height": 16}]
     before = _count(sim)
-    with pytest.raises(TilemapError, match=r"layer 'Objects': object 4 \('boss'\): class 'Dragon' has no registered spawner"):
+    with pytest.raises(
+        TilemapError,
+        match=r"layer 'Objects': object 4 \('boss'\): class 'Dragon' has no registered spawner",
+    ):
         load_map(sim.world, write_level(tmp_path, floor(), objs), unknown="error")
     assert _count(sim) == before
 
@@ -83,9 +90,15 @@ def test_a_raising_spawner_leaves_nothing(tmp_path: Path, sim: Stepper) -> None:
         raise KeyError("damage")
 
     before = _count(sim)
-    with pytest.raises(TilemapError, match=r"level.tmx: layer 'Objects': object 2 \('bad'\): spawner .*trap.* raised KeyError"):
-        load_map(sim.world, write_level(tmp_path, floor(), objs),
-                 spawners=Spawners({"Coin": lambda s: None, "Trap": trap}))
+    with pytest.raises(
+        TilemapError,
+        match=r"level.tmx: layer 'Objects': object 2 \('bad'\): spawner .*trap.* raised KeyError",
+    ):
+        load_map(
+            sim.world,
+            write_level(tmp_path, floor(), objs),
+            spawners=Spawners({"Coin": lambda s: None, "Trap": trap}),
+        )
     assert _count(sim) == before
 
 
@@ -96,8 +109,11 @@ def test_a_component_refused_at_spawn_leaves_nothing(tmp_path: Path, sim: Steppe
     objs = [{"id": 1, "name": "rope", "class": "Rope", "x": 0, "y": 0, "width": 16, "height": 16}]
     before = _count(sim)
     with pytest.raises(TilemapError, match=r"level.tmx: layer 'Objects': object 1 \('rope'\)"):
-        load_map(sim.world, write_level(tmp_path, floor(), objs),
-                 spawners={"Rope": lambda s: [DistanceJoint(10**9, 10**9 + 1)]})
+        load_map(
+            sim.world,
+            write_level(tmp_path, floor(), objs),
+            spawners={"Rope": lambda s: [DistanceJoint(10**9, 10**9 + 1)]},
+        )
     assert _count(sim) == before
 
 

@@ -51,8 +51,14 @@ def test_image_collection_tileset(tmp_path: Path, sim: Stepper) -> None:
     img = np.zeros((32, 16, 4), np.uint8)
     img[...] = (10, 20, 30, 255)
     png.write(tmp_path / "tall.png", img)
-    coll = TilesetSpec("things", None, 16, 32, count=1,
-                       tiles={0: {"image": "tall.png", "image_size": (16, 32), "properties": {"solid": True}}})
+    coll = TilesetSpec(
+        "things",
+        None,
+        16,
+        32,
+        count=1,
+        tiles={0: {"image": "tall.png", "image_size": (16, 32), "properties": {"solid": True}}},
+    )
     g = np.zeros((4, 4), np.int64)
     g[3, 1] = 1
     write_map(tmp_path / "c.tmx", 16, 16, [coll], [TileLayerSpec("L", g)])
@@ -66,8 +72,13 @@ def test_image_collection_tileset(tmp_path: Path, sim: Stepper) -> None:
 def test_group_layers_combine_style(tmp_path: Path, sim: Stepper) -> None:
     png.write(tmp_path / "tiles.png", sheet())
     inner = TileLayerSpec("Deco", floor(10, 5), opacity=0.5, offset=(4, 0))
-    write_map(tmp_path / "g.tmx", 16, 16, [tileset()],
-              [GroupSpec("Back", [inner], opacity=0.5, offset=(8, 16))])
+    write_map(
+        tmp_path / "g.tmx",
+        16,
+        16,
+        [tileset()],
+        [GroupSpec("Back", [inner], opacity=0.5, offset=(8, 16))],
+    )
     m = load_map(sim.world, tmp_path / "g.tmx")
     lay = m.layer("Back/Deco")
     assert lay.style.opacity == pytest.approx(0.25)
@@ -75,7 +86,9 @@ def test_group_layers_combine_style(tmp_path: Path, sim: Stepper) -> None:
 
 
 def test_pixels_per_meter_and_origin(tmp_path: Path, sim: Stepper) -> None:
-    m = load_map(sim.world, write_level(tmp_path, floor(20, 10)), pixels_per_meter=32, origin=(-5.0, 2.0))
+    m = load_map(
+        sim.world, write_level(tmp_path, floor(20, 10)), pixels_per_meter=32, origin=(-5.0, 2.0)
+    )
     assert m.bounds == (-5.0, 2.0, 5.0, 7.0)  # 20 tiles of 16 px at 32 px/m = 10 m
     assert m.cell_at((-4.9, 2.1)) == (0, 9)
     assert m.tile_at((-4.9, 2.1)) == GROUND and m.tile_at((-4.9, 2.6)) == 0

@@ -22,16 +22,53 @@ from .maps import COIN, floor, write_level
 
 OBJECTS: list[dict[str, Any]] = [
     {"id": 1, "name": "start", "class": "PlayerStart", "kind": "point", "x": 48, "y": 120},
-    {"id": 2, "name": "gold", "class": "Coin", "x": 64, "y": 32, "width": 16, "height": 16,
-     "properties": {"value": 7}},
-    {"id": 3, "name": "crate", "x": 96, "y": 64, "width": 32, "height": 16,
-     "properties": {"collider": True, "body": "dynamic", "friction": 0.4}},
-    {"id": 4, "name": "ball", "kind": "ellipse", "x": 0, "y": 0, "width": 16, "height": 16,
-     "properties": {"collider": True, "sensor": True}},
-    {"id": 5, "name": "wedge", "kind": "polygon", "x": 160, "y": 80,
-     "points": [(0, 0), (32, 0), (0, -16)], "properties": {"collider": True}},
-    {"id": 6, "name": "rail", "kind": "polyline", "x": 16, "y": 16,
-     "points": [(0, 0), (16, 0), (32, 16)], "properties": {"collider": True}},
+    {
+        "id": 2,
+        "name": "gold",
+        "class": "Coin",
+        "x": 64,
+        "y": 32,
+        "width": 16,
+        "height": 16,
+        "properties": {"value": 7},
+    },
+    {
+        "id": 3,
+        "name": "crate",
+        "x": 96,
+        "y": 64,
+        "width": 32,
+        "height": 16,
+        "properties": {"collider": True, "body": "dynamic", "friction": 0.4},
+    },
+    {
+        "id": 4,
+        "name": "ball",
+        "kind": "ellipse",
+        "x": 0,
+        "y": 0,
+        "width": 16,
+        "height": 16,
+        "properties": {"collider": True, "sensor": True},
+    },
+    {
+        "id": 5,
+        "name": "wedge",
+        "kind": "polygon",
+        "x": 160,
+        "y": 80,
+        "points": [(0, 0), (32, 0), (0, -16)],
+        "properties": {"collider": True},
+    },
+    {
+        "id": 6,
+        "name": "rail",
+        "kind": "polyline",
+        "x": 16,
+        "y": 16,
+        "points": [(0, 0), (16, 0), (32, 16)],
+        "properties": {"collider": True},
+    },
     {"id": 7, "name": "tilted", "x": 0, "y": 160, "width": 32, "height": 16, "rotation": 90},
     {"id": 8, "name": "coin tile", "gid": COIN, "x": 128, "y": 48, "width": 16, "height": 16},
 ]
@@ -98,5 +135,9 @@ def test_spawners_receive_properties_and_add_components(tmp_path: Path, sim: Ste
 
 def test_a_class_without_spawner_warns_once(tmp_path: Path, sim: Stepper) -> None:
     with pytest.warns(TilemapWarning, match="class 'Coin' has no registered spawner") as rec:
-        load_map(sim.world, write_level(tmp_path, floor(20), OBJECTS), spawners={"PlayerStart": lambda s: None})
+        load_map(
+            sim.world,
+            write_level(tmp_path, floor(20), OBJECTS),
+            spawners={"PlayerStart": lambda s: None},
+        )
     assert sum("'Coin'" in str(r.message) for r in rec) == 1

@@ -42,11 +42,19 @@ def _sheet() -> np.ndarray:
 
 def _tileset() -> TilesetSpec:
     return TilesetSpec(
-        "platformer", "platformer.png", T, T, columns=5, count=5, image_size=(5 * T, T),
+        "platformer",
+        "platformer.png",
+        T,
+        T,
+        columns=5,
+        count=5,
+        image_size=(5 * T, T),
         tiles={
             0: {"properties": {"solid": True, "friction": 0.8}},
-            1: {"properties": {"one_way": True},
-                "collision": [{"kind": "rectangle", "x": 0, "y": 2, "width": 16, "height": 4}]},
+            1: {
+                "properties": {"one_way": True},
+                "collision": [{"kind": "rectangle", "x": 0, "y": 2, "width": 16, "height": 4}],
+            },
             2: {"class": "Coin", "properties": {"value": 1}},
             3: {"class": "Door"},
             4: {"properties": {"solid": True, "friction": 0.8}},
@@ -54,7 +62,9 @@ def _tileset() -> TilesetSpec:
     )
 
 
-def _level(cols: int, gaps: list[tuple[int, int]], ledges: list[tuple[int, int, int]]) -> np.ndarray:
+def _level(
+    cols: int, gaps: list[tuple[int, int]], ledges: list[tuple[int, int, int]]
+) -> np.ndarray:
     g = np.zeros((15, cols), np.int64)
     g[12, :] = GRASS
     g[13:, :] = ROCK
@@ -74,26 +84,74 @@ def write_levels(folder: Path) -> tuple[Path, Path]:
     paths = []
     specs = [
         (40, [(12, 14)], [(9, 5, 10), (7, 16, 22), (5, 25, 30)], "level2.tmx"),
-        (60, [(18, 21), (35, 38)], [(9, 8, 13), (7, 14, 18), (9, 24, 30), (6, 40, 46)], "level1.tmx"),
+        (
+            60,
+            [(18, 21), (35, 38)],
+            [(9, 8, 13), (7, 14, 18), (9, 24, 30), (6, 40, 46)],
+            "level1.tmx",
+        ),
     ]
     for i, (cols, gaps, ledges, target) in enumerate(specs):
         grid = _level(cols, gaps, ledges)
         objects: list[dict[str, Any]] = [
-            {"id": 1, "name": "start", "class": "PlayerStart", "kind": "point", "x": 3 * T, "y": 11 * T},
-            {"id": 2, "name": "door", "gid": DOOR, "x": (cols - 3) * T, "y": 12 * T,
-             "width": T, "height": 2 * T, "properties": {"collider": True, "sensor": True, "to": target}},
+            {
+                "id": 1,
+                "name": "start",
+                "class": "PlayerStart",
+                "kind": "point",
+                "x": 3 * T,
+                "y": 11 * T,
+            },
+            {
+                "id": 2,
+                "name": "door",
+                "gid": DOOR,
+                "x": (cols - 3) * T,
+                "y": 12 * T,
+                "width": T,
+                "height": 2 * T,
+                "properties": {"collider": True, "sensor": True, "to": target},
+            },
         ]
         for k, (row, a, b) in enumerate(ledges):
             for c in range(a, b, 2):
-                objects.append({"id": 10 + 10 * k + c, "name": "coin", "gid": COIN, "x": c * T,
-                                "y": row * T, "width": T, "height": T,
-                                "properties": {"collider": True, "sensor": True}})
+                objects.append(
+                    {
+                        "id": 10 + 10 * k + c,
+                        "name": "coin",
+                        "gid": COIN,
+                        "x": c * T,
+                        "y": row * T,
+                        "width": T,
+                        "height": T,
+                        "properties": {"collider": True, "sensor": True},
+                    }
+                )
         name = "level1.tmx" if i == 0 else "level2.tmx"
         path = folder / name
-        write_map(path, T, T, [_tileset()],
-                  [TileLayerSpec("Ground", grid), ObjectLayerSpec("Objects", objects)])
+        write_map(
+            path,
+            T,
+            T,
+            [_tileset()],
+            [TileLayerSpec("Ground", grid), ObjectLayerSpec("Objects", objects)],
+        )
         paths.append(path)
     return paths[0], paths[1]
+
+
+def cave_cells(n: int, seed: int = 1, fill: float = 0.52) -> np.ndarray:
+    """An n x n boolean grid of cellular-automaton caves (``fill`` 0.52: ~60 % solid)."""
+    rng = np.random.default_rng(seed)
+    g: np.ndarray = rng.random((n, n)) < fill
+    for _ in range(4):
+        p = np.pad(g, 1, constant_values=True).astype(np.int8)
+        s = np.zeros((n, n), np.int8)
+        for dy in (-1, 0, 1):
+            for dx in (-1, 0, 1):
+                s += p[1 + dy : 1 + dy + n, 1 + dx : 1 + dx + n]
+        g = s >= 5
+    return g
 
 
 _FOLDER: list[Path] = []
@@ -107,9 +165,12 @@ def levels() -> tuple[Path, Path]:
     return _FOLDER[0] / "level1.tmx", _FOLDER[0] / "level2.tmx"
 
 
-@sample("Tilemaps", "Platformer Level",
-        help="A Tiled level: merged ground outlines, one-way ledges, coins and a door (sensors).",
-        camera=(20.0, 7.0, 0.5))
+@sample(
+    "Tilemaps",
+    "Platformer Level",
+    help="A Tiled level: merged ground outlines, one-way ledges, coins and a door (sensors).",
+    camera=(20.0, 7.0, 0.5),
+)
 def platformer_level(world: World) -> None:
     m = load_map(world, levels()[0], unknown="ignore")
     for x in (6.0, 12.5, 20.0):
@@ -117,19 +178,19 @@ def platformer_level(world: World) -> None:
     assert m.collider_entities
 
 
-@sample("Tilemaps", "Caves",
-        help="A generated 100x100 cave map (one outline per region) with balls raining in.",
-        camera=(50.0, 50.0, 0.12))
+@sample(
+    "Tilemaps",
+    "Caves",
+    help="A generated 100x100 cave map (one outline per region) with balls raining in.",
+    camera=(50.0, 50.0, 0.12),
+)
 def caves(world: World) -> None:
     folder = Path(tempfile.mkdtemp(prefix="kge-caves-"))
-    rng = np.random.default_rng(4)
-    g = rng.random((100, 100)) < 0.5
-    for _ in range(4):
-        p = np.pad(g, 1, constant_values=True).astype(np.int8)
-        s = sum(p[1 + dy : 101 + dy, 1 + dx : 101 + dx] for dy in (-1, 0, 1) for dx in (-1, 0, 1))
-        g = s >= 5
+    g = cave_cells(100, seed=4)
     png.write(folder / "platformer.png", _sheet())
-    write_map(folder / "caves.tmx", T, T, [_tileset()], [TileLayerSpec("Rock", np.where(g, ROCK, 0))])
+    write_map(
+        folder / "caves.tmx", T, T, [_tileset()], [TileLayerSpec("Rock", np.where(g, ROCK, 0))]
+    )
     load_map(world, folder / "caves.tmx")
     for i in range(60):
         x, y = 5.0 + (i % 10) * 9.0, 60.0 + (i // 10) * 6.0
