@@ -434,7 +434,18 @@ def main(argv: list[str] | None = None) -> int:
         collision = collision_measure(args.quick)
         print("\nkge.collision, queries per second:")
         print(collision_table(collision))
+    tiles: dict[str, float] = {}
+    if not args.scene:
+        from benchmarks import tilemap
+
+        tiles, why = tilemap.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\ntile map:", tilemap.table(tiles))
     goals = targets(results, fitting, render, rl, animation)
+    if tiles:
+        goals += tilemap.targets(tiles)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -454,6 +465,7 @@ def main(argv: list[str] | None = None) -> int:
         "collision": collision,
         "rl": rl,
         "ui": ui_rows,
+        "tilemap": tiles,
         "targets": goals,
         "skipped": skipped,
     }

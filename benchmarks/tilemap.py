@@ -57,6 +57,8 @@ def write_cave_map(folder: Path, n: int) -> Path:
 
 
 def load_once(path: Path) -> dict[str, float]:
+    from kge.components.collider import Collider
+    from kge.components.shapes import Chain
     from kge.schedule import Stage
     from kge.systems.physics import PhysicsPlugin
     from kge.tilemap import load_map
@@ -69,12 +71,20 @@ def load_once(path: Path) -> dict[str, float]:
     world.schedule.run(Stage.FIXED, 1 / 60)
     load_s = time.perf_counter() - t0
     solid = int(np.count_nonzero(m.layer("Rock").gids))
-    out = {"load_s": load_s, "colliders": float(len(m.collider_entities)), "solid": float(solid)}
+    shapes = [world.get(e, Collider).shape for e in m.collider_entities]
+    segments = sum(len(s.vertices) for s in shapes if isinstance(s, Chain))
+    out = {
+        "load_s": load_s,
+        "colliders": float(len(m.collider_entities)),
+        "solid": float(solid),
+        "segments": float(segments),
+    }
     world.close()
     return out
 
 
-def frame_ms(path: Path, frames: int) -> float:
+def frame_ms(path: Path, frames: int) -> tuple[float, int]:
+    """(median ms of a steady frame, tile chunks in the batch) for a fixed view."""
     from kge import App
     from kge.components.camera import Camera
     from kge.tilemap import load_map
@@ -85,26 +95,35 @@ def frame_ms(path: Path, frames: int) -> float:
 
     app = App(setup, headless=True, size=(800, 640))
     try:
-        app.render()  # the first frame builds the visible chunks
+        for _ in range(10):  # the first frame builds the visible chunks; then settle
+            app.render()
         times = []
         for _ in range(frames):
             t0 = time.perf_counter()
             app.render()
             times.append((time.perf_counter() - t0) * 1000)
-        return statistics.median(times)
+        from kge.render.passes import RenderPasses
+
+        (draw,) = [
+            p for p in app.world.resource(RenderPasses).before() if p.__name__ == "draw_maps"
+        ]
+        chunks = draw.state["renderer"].chunk_count  # type: ignore[attr-defined]
+        return statistics.median(times), chunks
     finally:
         app.close()
 
 
-def measure(n: int = 1000, frames: int = 30) -> dict[str, float]:
+def measure(n: int = 1000, frames: int = 60) -> dict[str, float]:
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         big = write_cave_map(folder, n)
         small = write_cave_map(folder, 100)
         out = load_once(big)
         try:
-            out["frame_ms"] = frame_ms(big, frames)
-            out["frame_ms_100"] = frame_ms(small, frames)
+            frame_ms(small, frames)  # warm-up: the first App pays for GL start-up
+            out["frame_ms"], chunks = frame_ms(big, frames)
+            out["frame_ms_100"], chunks_100 = frame_ms(small, frames)
+            out["chunks"], out["chunks_100"] = float(chunks), float(chunks_100)
         except Exception as err:  # no GL: the load figures still stand
             out["frame_error"] = float("nan")
             print(f"tilemap frame timing skipped: {type(err).__name__}: {err}", file=sys.stderr)
@@ -125,3 +144,49 @@ def main(argv: list[str] | None = None) -> int:
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+# -- the `kge bench` section (called from benchmarks/run.py) -----------------------------------
+def run_section(quick: bool, progress: Any) -> tuple[dict[str, float], str | None]:
+    """The figures for ``kge bench`` (200 x 200 with --quick), or why they are missing."""
+    n = 200 if quick else 1000
+    progress(f"tilemap [{n} x {n} caves]")
+    try:
+        return measure(n, frames=20 if quick else 60), None
+    except Exception as err:  # report, never fail the whole run
+        return {}, f"tilemap skipped: {type(err).__name__}: {err}"
+
+
+def targets(r: dict[str, float]) -> list[dict[str, Any]]:
+    """The issue's tile map targets beside the measured figures."""
+    n = int(r.get("size", 0))
+
+    def row(what: str, value: float | None, goal: float, unit: str = "") -> dict[str, Any]:
+        met = None if value is None or value != value else value <= goal
+        return {
+            "target": what,
+            "value": value,
+            "goal": goal,
+            "at_most": True,
+            "unit": unit,
+            "met": met,
+        }
+
+    ratio = None
+    if r.get("frame_ms") and r.get("frame_ms_100"):
+        ratio = r["frame_ms"] / r["frame_ms_100"]
+    return [
+        row(f"tilemap {n}x{n} caves: load + collision + first step", r.get("load_s"), 3.0, "s"),
+        row(
+            f"tilemap {n}x{n}: static colliders / solid tiles",
+            r["colliders"] / r["solid"] if r.get("solid") else None,
+            0.05,
+        ),
+        row(f"tilemap frame, fixed view: {n}x{n} map / 100x100 map", ratio, 1.25),
+    ]
+
+
+def table(r: dict[str, float]) -> str:
+    keys = ("size", "solid", "colliders", "segments", "load_s", "frame_ms", "frame_ms_100",
+            "chunks", "chunks_100")  # fmt: skip
+    return "  ".join(f"{k} {r[k]:.4g}" for k in keys if k in r)
