@@ -340,12 +340,13 @@ def _shift(frame: Frame, data: MapData, style: LayerStyle) -> tuple[float, float
     """Where a layer is drawn relative to its map position: its offset plus parallax.
 
     A parallax factor p moves the layer with the camera by (1 - p) of the camera's
-    travel from the map's origin, so p = 0 stays on screen and p = 1 is the map.
+    travel from the map's parallax origin (Tiled's, by default the map's top-left
+    corner), so p = 0 stays on screen and p = 1 is the map.
     """
     ox, oy = data.units.vector(*style.offset)
     px, py = style.parallax
     cx, cy = frame.center
-    o = data.units.origin
+    o = data.parallax_origin
     return (ox + (cx - o[0]) * (1.0 - px), oy + (cy - o[1]) * (1.0 - py))
 
 

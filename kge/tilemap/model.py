@@ -173,6 +173,9 @@ class MapData:
     object_layers: list[ObjectLayerData]
     properties: dict[str, Any]
     background: RGBA | None = None
+    #: where the camera centre must be for parallax layers to sit at their map position
+    #: (Tiled's parallax origin, default the map's top-left corner), world metres
+    parallax_origin: tuple[float, float] = (0.0, 0.0)
 
     def layer(self, name: str) -> TileLayerData:
         for layer in self.tile_layers:

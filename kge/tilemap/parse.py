@@ -120,6 +120,7 @@ def read_map(
                 ObjectLayerData(name, index, list(layer.tiled_objects), style, props)
             )
     bg = tmap.background_color
+    po = tmap.parallax_origin
     return MapData(
         path=p,
         units=units,
@@ -132,6 +133,7 @@ def read_map(
         object_layers=object_layers,
         properties=dict(tmap.properties or {}),
         background=None if bg is None else (bg.red, bg.green, bg.blue, bg.alpha),
+        parallax_origin=units.point(float(po.x), float(po.y)),
     )
 
 

@@ -141,3 +141,47 @@ def test_only_visible_chunks_are_in_the_batch(tmp_path: Path, apps: list[App]) -
     app.world.resource(Camera).center = (20.0, 180.0)
     app.render()
     assert 1 <= renderer.chunk_count <= 4
+
+
+def test_tint_offset_parallax_and_image_layers(tmp_path: Path, apps: list[App]) -> None:
+    from kge.testbed import png
+    from kge.tilemap.writer import ImageLayerSpec
+
+    g = np.zeros((8, 10), np.int64)
+    tinted = np.zeros((8, 10), np.int64)
+    tinted[2, 2] = MARK  # white tile (its black quarter aside) tinted red: x [2, 3), y [5, 6)
+    moved = np.zeros((8, 10), np.int64)
+    moved[5, 2] = GROUND  # drawn 16 px (1 m) right and 16 px (1 m) down: x [3, 4), y [1, 2)
+    fixed = np.zeros((8, 10), np.int64)
+    # parallax 0: drawn moved by the camera's offset from the parallax origin (the map's
+    # top-left, (0, 8)): with the camera at (5, 4) this tile at (2.5, 6.5) shows at (7.5, 2.5)
+    fixed[1, 2] = ONE_WAY
+    png.write(tmp_path / "sun.png", np.full((16, 32, 4), (20, 60, 250, 255), np.uint8))
+    path = write_level(
+        tmp_path,
+        g,
+        extra_layers=[
+            ImageLayerSpec("Sun", "sun.png", offset=(128, 0)),  # x [8, 10), y [7, 8)
+            TileLayerSpec("Tinted", tinted, tint="#ff0000"),
+            TileLayerSpec("Moved", moved, offset=(16, 16)),
+            TileLayerSpec("Fixed", fixed, parallax=(0.0, 0.0)),
+        ],
+    )
+
+    def setup(world: Any) -> None:
+        world.insert_resource(Camera(center=(5.0, 4.0), pixels_per_meter=PPM))
+        load_map(world, path)
+
+    app, px = render(apps, setup)
+    assert at(px, 2.75, 5.75) == (250, 0, 0)
+    assert at(px, 3.5, 1.5) == COLORS[0] and at(px, 2.5, 2.5) == (0, 0, 0)
+    assert at(px, 9.5, 7.5) == (20, 60, 250) and at(px, 7.5, 7.5) == (0, 0, 0)
+    assert at(px, 7.5, 2.5) == COLORS[1]
+    from kge.render.setup import frame_pixels
+
+    # the camera moves 2 m right: the map moves 2 m left on screen, the parallax-0 layer does not
+    app.world.resource(Camera).center = (7.0, 4.0)
+    app.render()
+    px = frame_pixels(app)
+    assert at(px, 7.5, 2.5) == COLORS[1]  # same screen spot as before (at() assumes centre 5, 4)
+    assert at(px, 1.5, 1.5) == COLORS[0]  # the offset tile, 2 m to the left on screen
