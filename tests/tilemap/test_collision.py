@@ -147,3 +147,21 @@ def test_local_rebuilds_match_a_full_trace(tmp_path: Path, sim: Stepper) -> None
         x, y = u.corners(lp[:, 0].astype(float), lp[:, 1].astype(float))
         expected.add(tuple(zip(x.tolist(), y.tolist(), strict=True)))
     assert now == expected
+
+
+def test_layer_and_tile_properties_set_material_and_filter(tmp_path: Path, sim: Stepper) -> None:
+    from kge.tilemap.writer import TileLayerSpec
+
+    g = floor(10)
+    walls = np.zeros_like(g)
+    walls[:, 0] = GROUND
+    layer = TileLayerSpec(
+        "Walls", walls, properties={"category_bits": 4, "mask_bits": 2, "restitution": 0.5}
+    )
+    m = load_map(sim.world, write_level(tmp_path, g, extra_layers=[layer]))
+    by_layer = {sim.world.get(e, TileCollider).layer: e for e in m.collider_entities}
+    wall = sim.world.get(by_layer["Walls"], Collider)
+    assert (wall.filter.category_bits, wall.filter.mask_bits) == (4, 2)
+    assert wall.restitution == 0.5 and wall.friction == pytest.approx(0.6)  # tile overrides
+    ground = sim.world.get(by_layer["Ground"], Collider)
+    assert ground.filter.category_bits == 1 and ground.restitution == 0.0
