@@ -12,6 +12,10 @@ What is timed, in one run:
   on the N x N map and on a 100 x 100 map of the same caves, headless EGL:
   their ratio shows the frame cost does not grow with the map.
 
+* ``arcade_s`` (only when ``KGE_ARCADE_PYTHON`` names a Python with Arcade 3):
+  Arcade's ``load_tilemap`` on the same file, in its own virtual environment
+  (see ``benchmarks/arcade_tilemap.py``); it builds one sprite per tile.
+
 Run ``python benchmarks/tilemap.py --size 1000`` for the figures.
 """
 
@@ -113,12 +117,29 @@ def frame_ms(path: Path, frames: int) -> tuple[float, int]:
         app.close()
 
 
+def arcade_seconds(path: Path, layer: str = "Rock") -> float | None:
+    """Arcade 3's load_tilemap time on ``path``, or None when no Arcade Python is set."""
+    import subprocess
+
+    python = os.environ.get("KGE_ARCADE_PYTHON")
+    if not python:
+        return None
+    script = Path(__file__).with_name("arcade_tilemap.py")
+    done = subprocess.run(
+        [python, str(script), str(path), layer], capture_output=True, text=True, check=True
+    )
+    return float(done.stdout.split()[0])
+
+
 def measure(n: int = 1000, frames: int = 60) -> dict[str, float]:
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         big = write_cave_map(folder, n)
         small = write_cave_map(folder, 100)
         out = load_once(big)
+        arcade = arcade_seconds(big)
+        if arcade is not None:
+            out["arcade_s"] = arcade
         try:
             frame_ms(small, frames)  # warm-up: the first App pays for GL start-up
             out["frame_ms"], chunks = frame_ms(big, frames)
@@ -183,10 +204,15 @@ def targets(r: dict[str, float]) -> list[dict[str, Any]]:
             0.05,
         ),
         row(f"tilemap frame, fixed view: {n}x{n} map / 100x100 map", ratio, 1.25),
+        row(
+            f"tilemap {n}x{n} load: kge / Arcade 3 load_tilemap",
+            r["load_s"] / r["arcade_s"] if r.get("arcade_s") else None,
+            1.0,
+        ),
     ]
 
 
 def table(r: dict[str, float]) -> str:
-    keys = ("size", "solid", "colliders", "segments", "load_s", "frame_ms", "frame_ms_100",
-            "chunks", "chunks_100")  # fmt: skip
+    keys = ("size", "solid", "colliders", "segments", "load_s", "arcade_s", "frame_ms",
+            "frame_ms_100", "chunks", "chunks_100")  # fmt: skip
     return "  ".join(f"{k} {r[k]:.4g}" for k in keys if k in r)
