@@ -279,10 +279,11 @@ def load_map(
             spawned.append(e)
             tmap.objects.append(e)
     except (KgeError, ValueError, TypeError) as exc:
-        for e in spawned:
-            if world.exists(e):
-                world.despawn(e)
-        world.flush()
+        if spawned:  # (nothing was spawned when the world itself refused, e.g. locked)
+            for e in spawned:
+                if world.exists(e):
+                    world.despawn(e)
+            world.flush()
         raise TilemapError(f"{data.path}: {what}: {exc}") from exc
     tmap.colliders = list(tmap._live)
     maps_in(world).maps.append(tmap)

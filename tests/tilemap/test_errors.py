@@ -129,3 +129,11 @@ def test_bad_edits_change_nothing(tmp_path: Path, sim: Stepper) -> None:
         with pytest.raises(TilemapError, match=msg):
             m.set_tile(*args)
     assert np.array_equal(m.layer("Ground").gids, grid)
+
+
+def test_loading_inside_a_locked_world_is_refused_cleanly(tmp_path: Path, sim: Stepper) -> None:
+    path = write_level(tmp_path, floor())
+    before = _count(sim)
+    with sim.world.locked(), pytest.raises(TilemapError, match="inside a physics callback"):
+        load_map(sim.world, path)
+    assert _count(sim) == before

@@ -13,12 +13,13 @@ from typing import Any
 
 import numpy as np
 
-from kge.components import Transform
+from kge.components import Name, Transform
 from kge.components.collider import Collider
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle
 from kge.testbed import png
 from kge.testbed.registry import sample
+from kge.testbed.samples.build import named
 from kge.tilemap import load_map
 from kge.tilemap.writer import ObjectLayerSpec, TileLayerSpec, TilesetSpec, write_map
 from kge.world import World
@@ -172,10 +173,24 @@ def levels() -> tuple[Path, Path]:
     camera=(20.0, 7.0, 0.5),
 )
 def platformer_level(world: World) -> None:
-    m = load_map(world, levels()[0], unknown="ignore")
-    for x in (6.0, 12.5, 20.0):
-        world.spawn(Transform(x, 10.0), RigidBody(), Collider(Box(0.4, 0.4), friction=0.3))
-    assert m.collider_entities
+    load_map(world, levels()[0], unknown="ignore")
+    for i, x in enumerate((3.0, 6.5, 12.5)):
+        world.spawn(
+            Transform(x, 10.0),
+            RigidBody(),
+            Collider(Box(0.4, 0.4), friction=0.3),
+            Name(f"crate {i}"),
+        )
+
+
+@platformer_level.claim
+def _crates_land_on_ground_plank_and_through_a_gap(app: Any) -> None:
+    world = app.world
+    y = [world.get(named(world, f"crate {i}")[0], Transform).y for i in range(3)]
+    assert abs(y[0] - 3.4) < 0.05, f"the first crate rests on the ground (top y = 3): {y[0]}"
+    # the plank's collision band is 4 px under a 2 px gap: its top is 6 - 2/16 m
+    assert abs(y[1] - (6.0 - 2 / 16 + 0.4)) < 0.05, f"the second rests on the plank: {y[1]}"
+    assert y[2] < 0.0, f"the third falls through the gap in the ground: {y[2]}"
 
 
 @sample(
@@ -194,4 +209,14 @@ def caves(world: World) -> None:
     load_map(world, folder / "caves.tmx")
     for i in range(60):
         x, y = 5.0 + (i % 10) * 9.0, 60.0 + (i // 10) * 6.0
-        world.spawn(Transform(x, y), RigidBody(), Collider(Circle(0.3), restitution=0.2))
+        world.spawn(
+            Transform(x, y), RigidBody(), Collider(Circle(0.3), restitution=0.2), Name("ball")
+        )
+
+
+@caves.claim
+def _balls_stay_inside_the_cave_outlines(app: Any) -> None:
+    world = app.world
+    for e in named(world, "ball"):
+        x, y = world.get(e, Transform).position
+        assert 0.0 < x < 100.0 and 0.0 < y < 100.0, f"a ball left the map through a wall: {x, y}"
