@@ -8,7 +8,7 @@ resource, which the tile renderer draws from.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -27,6 +27,19 @@ if TYPE_CHECKING:
 
 #: tiles per side of a drawing chunk
 CHUNK = 32
+
+
+@dataclass(slots=True)
+class MapFiles:
+    """How a world turns a map name into a file (a resource; TilemapPlugin inserts one).
+
+    ``resolve(name)`` returns the map's path. Without this resource a name is a
+    plain path; ``TilemapPlugin`` resolves names through the world's asset store,
+    so ``load_map(world, "levels/one.tmx")`` finds the map next to the game like any
+    other asset, whatever the working directory.
+    """
+
+    resolve: Callable[[str | Path], Path]
 
 
 @dataclass(slots=True)
@@ -237,6 +250,9 @@ def load_map(
             f"load_map: unknown must be 'warn', 'error' or 'ignore', got {unknown!r}"
         )
     reg = spawners if isinstance(spawners, Spawners) else Spawners(spawners)
+    files = world.try_resource(MapFiles)
+    if files is not None:
+        path = files.resolve(path)
     data = read_map(path, pixels_per_meter=pixels_per_meter, origin=origin)
     solid_names = set(solid_layers)
     known = {t.name for t in data.tile_layers}

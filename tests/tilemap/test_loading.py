@@ -104,3 +104,21 @@ def test_unload_removes_everything(tmp_path: Path, sim: Stepper) -> None:
     m.unload()
     sim.world.flush()
     assert set(sim.world.entities()) == before
+
+
+def test_with_the_plugin_map_names_resolve_through_the_asset_store(tmp_path: Path) -> None:
+    from kge.assets import Assets
+    from kge.systems.physics import PhysicsPlugin
+    from kge.systems.tilemap import TilemapPlugin
+    from kge.tilemap import TilemapError
+    from kge.world import World
+
+    (tmp_path / "levels").mkdir()
+    write_level(tmp_path / "levels", floor(12), name="one.tmx")
+    world = World()
+    world.insert_resource(Assets(tmp_path))
+    world.add_plugins(PhysicsPlugin(), TilemapPlugin())
+    m = load_map(world, "levels/one.tmx")  # not relative to the working directory
+    assert m.path == tmp_path / "levels" / "one.tmx" and m.data.cols == 12
+    with pytest.raises(TilemapError, match=r"map file 'levels/two.tmx' not found: .*"):
+        load_map(world, "levels/two.tmx")
