@@ -40,6 +40,7 @@ from kge import (
 from kge.components import drawables as draw
 from kge.testbed.samples.tilemaps import levels
 
+WIDTH, HEIGHT = 960, 600
 RUN_SPEED = 6.0
 JUMP_SPEED = 11.0
 
@@ -121,10 +122,9 @@ def level(world: World, path: Path | None = None, score: Score | None = None) ->
     player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
     world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
     world.spawn(Behaviour(Referee()))
-    world.spawn(
-        Transform(0.0, 0.0),
-        Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0)),
-    )
+    hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
+    hud.offset = (12.0, float(HEIGHT - 10))
+    world.spawn(Transform(), hud)
     _hud(world)
 
 
@@ -150,7 +150,7 @@ def _door_x(world: World) -> float:
 
 
 def main() -> None:
-    app = App(level, title="kge platformer", size=(960, 600), background=(90, 140, 200))
+    app = App(level, title="kge platformer", size=(WIDTH, HEIGHT), background=(90, 140, 200))
     if not app.headless:
         app.run()
         return
