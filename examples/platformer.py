@@ -17,6 +17,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
+
 import kge
 from kge import (
     App,
