@@ -109,7 +109,9 @@ def frame_ms(path: Path, frames: int) -> tuple[float, int]:
         from kge.render.passes import RenderPasses
 
         (draw,) = [
-            p for p in app.world.resource(RenderPasses).before() if p.__name__ == "draw_maps"
+            p
+            for p in app.world.resource(RenderPasses).before()
+            if getattr(p, "__name__", "") == "draw_maps"
         ]
         chunks = draw.state["renderer"].chunk_count  # type: ignore[attr-defined]
         return statistics.median(times), chunks

@@ -134,7 +134,11 @@ def test_only_visible_chunks_are_in_the_batch(tmp_path: Path, apps: list[App]) -
     app, _ = render(apps, setup)
     from kge.render.passes import RenderPasses
 
-    (draw,) = [p for p in app.world.resource(RenderPasses).before() if p.__name__ == "draw_maps"]
+    (draw,) = [
+        p
+        for p in app.world.resource(RenderPasses).before()
+        if getattr(p, "__name__", "") == "draw_maps"
+    ]
     renderer = draw.state["renderer"]  # type: ignore[attr-defined]
     # a 10 x 8 m view touches at most 2 x 2 chunks of 32 tiles (70 chunks in the map)
     assert 1 <= renderer.chunk_count <= 4
