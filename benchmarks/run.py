@@ -480,7 +480,18 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
+    tiles: dict[str, float] = {}
+    if not args.scene:
+        from benchmarks import tilemap
+
+        tiles, why = tilemap.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\ntile map:", tilemap.table(tiles))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
+    if tiles:
+        goals += tilemap.targets(tiles)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -502,6 +513,7 @@ def main(argv: list[str] | None = None) -> int:
         "ui": ui_rows,
         "costs": costs,
         "game": game,
+        "tilemap": tiles,
         "targets": goals,
         "skipped": skipped,
     }

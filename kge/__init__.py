@@ -72,6 +72,7 @@ from kge.components.particles import (
 from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
+from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
 from kge.components.tween import Delay, Parallel, Sequence, Tween
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
@@ -109,6 +110,7 @@ from kge.schedule import Stage, System
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
+from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
 from kge.world import World
 
@@ -142,6 +144,7 @@ if TYPE_CHECKING:
     from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
+    from kge.systems.tilemap import TilemapPlugin
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -170,6 +173,7 @@ _LAZY = {
     "Particles": "kge.particles",
     "ParticlesPlugin": "kge.systems.particles",
     "LightingPlugin": "kge.systems.lighting",
+    "TilemapPlugin": "kge.systems.tilemap",
 }
 
 
@@ -244,6 +248,7 @@ __all__ = [
     "Light",
     "Lighting",
     "LightingPlugin",
+    "MapObject",
     "MassData",
     "MissingComponentError",
     "MissingResourceError",
@@ -285,10 +290,17 @@ __all__ = [
     "ShadowCaster",
     "SoundData",
     "SoundHandle",
+    "Spawn",
+    "Spawners",
     "Sprite",
     "Stage",
     "System",
     "Text",
+    "TileCollider",
+    "TileMap",
+    "TilemapError",
+    "TilemapPlugin",
+    "TilemapWarning",
     "Time",
     "Transform",
     "Transition",
@@ -310,6 +322,7 @@ __all__ = [
     "from_array",
     "gif_clip",
     "has_display",
+    "load_map",
     "run",
     "shake",
     "solid",

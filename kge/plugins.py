@@ -9,6 +9,7 @@
 ``ParticlesPlugin``    particle emitters: numpy particles, bursts on hits, drawn per layer
 ``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
+``TilemapPlugin``      Tiled maps loaded with ``kge.load_map`` are drawn (chunked, culled)
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -31,6 +32,7 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
+    from kge.systems.tilemap import TilemapPlugin
     from kge.systems.ui import UIPlugin
 
     return [
@@ -42,4 +44,5 @@ def default_plugins() -> list[Plugin]:
         ParticlesPlugin(),
         LightingPlugin(),
         UIPlugin(),
+        TilemapPlugin(),
     ]

@@ -49,7 +49,7 @@ from kge.physics.events import PhysicsEvents
 from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
-from kge.physics.shapes import apply_material, build_shapes
+from kge.physics.shapes import apply_material, build_shapes, spread
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one
 from kge.physics.sync import PoseTable, rows_differ
 from kge.physics.tiny import flush
@@ -370,7 +370,7 @@ class Simulation:
             shapes = build_shapes(rec.body, col, c, rec.kge_body, self.skin)
             self._configure_shapes(c, col, shapes, fresh=True)
             if rec.in_space:
-                to_add.extend(shapes)
+                to_add.extend(shapes if len(shapes) < 64 else spread(shapes))
             self.colliders[c] = ColliderRecord(c, owner, shapes, col.shape)
             rec.colliders.add(c)
             self.mass_dirty.add(owner)

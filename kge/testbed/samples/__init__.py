@@ -14,5 +14,6 @@ from kge.testbed.samples import (  # noqa: F401
     particles,
     queries,
     stacking,
+    tilemaps,
     ui,
 )

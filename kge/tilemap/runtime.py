@@ -1,0 +1,306 @@
+"""``load_map``: one call from a Tiled file to entities, static colliders and drawable layers.
+
+The returned :class:`TileMap` is the run-time handle: tile queries, tile edits
+(drawing and collision rebuilt locally), the map's bounds for the camera, and
+``unload``. Every loaded map is listed in the world's :class:`TileMaps`
+resource, which the tile renderer draws from.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from kge.errors import KgeError
+from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
+from kge.tilemap.errors import TilemapError
+from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, MapData, TileLayerData
+from kge.tilemap.objects import Spawners, SpawnFn, Unknown, object_components
+from kge.tilemap.parse import read_map
+
+if TYPE_CHECKING:
+    from kge.world import World
+
+#: tiles per side of a drawing chunk
+CHUNK = 32
+
+
+@dataclass(slots=True)
+class MapFiles:
+    """How a world turns a map name into a file (a resource; TilemapPlugin inserts one).
+
+    ``resolve(name)`` returns the map's path. Without this resource a name is a
+    plain path; ``TilemapPlugin`` resolves names through the world's asset store,
+    so ``load_map(world, "levels/one.tmx")`` finds the map next to the game like any
+    other asset, whatever the working directory.
+    """
+
+    resolve: Callable[[str | Path], Path]
+
+
+@dataclass(slots=True)
+class TileMaps:
+    """The maps loaded into one world (a resource)."""
+
+    maps: list[TileMap] = field(default_factory=list)
+
+
+def maps_in(world: World) -> TileMaps:
+    found = world.try_resource(TileMaps)
+    if found is None:
+        found = world.insert_resource(TileMaps())
+    return found
+
+
+class TileMap:
+    """A loaded map: its data, the entities made from it, and run-time edits."""
+
+    def __init__(self, world: World, data: MapData, draw_layer: int) -> None:
+        self.world = world
+        self.data = data
+        self.draw_layer = draw_layer
+        self.collision: dict[str, LayerCollision] = {}
+        self.objects: list[int] = []  #: entities spawned from map objects
+        self.colliders: list[int] = []  #: static collider entities from tile layers (initial)
+        self._live: dict[int, Piece] = {}  #: collider entity -> piece
+        #: (tile layer position, chunk row, chunk column) whose drawing is stale
+        self.dirty: set[tuple[int, int, int]] = set()
+        self.loaded = True
+
+    # -- geometry ------------------------------------------------------------------------
+    @property
+    def path(self) -> Path:
+        return self.data.path
+
+    @property
+    def units(self) -> Any:
+        return self.data.units
+
+    @property
+    def bounds(self) -> tuple[float, float, float, float]:
+        """(left, bottom, right, top) of the tile grid in metres: clamp the camera to it."""
+        u = self.data.units
+        w, h = u.tile_size
+        return (
+            u.origin[0],
+            u.origin[1],
+            u.origin[0] + self.data.cols * w,
+            u.origin[1] + self.data.rows * h,
+        )
+
+    def cell_at(self, point: tuple[float, float]) -> tuple[int, int] | None:
+        """The (column, row) under a world point (row 0 at the top), or None outside the map."""
+        col, row = self.data.units.cell_at(float(point[0]), float(point[1]))
+        if 0 <= col < self.data.cols and 0 <= row < self.data.rows:
+            return col, row
+        return None
+
+    def cell_center(self, col: int, row: int) -> tuple[float, float]:
+        """World centre of a grid cell."""
+        x, y = self.data.units.corner(col + 0.5, row + 0.5)
+        return (x, y)
+
+    # -- queries -------------------------------------------------------------------------
+    def layer(self, name: str) -> TileLayerData:
+        return self.data.layer(name)
+
+    def tile_at(self, point: tuple[float, float], layer: str | None = None) -> int:
+        """The gid under a world point (0 when empty or outside); ``layer=None``: the topmost."""
+        cell = self.cell_at(point)
+        if cell is None:
+            return 0
+        col, row = cell
+        layers = [self.layer(layer)] if layer is not None else self.data.tile_layers[::-1]
+        for lay in layers:
+            gid = int(lay.gids[row, col])
+            if gid:
+                return gid
+        return 0
+
+    def tile(self, layer: str, col: int, row: int) -> int:
+        lay = self.layer(layer)
+        self._check_cell(lay, col, row, "tile")
+        return int(lay.gids[row, col])
+
+    def properties(self, gid: int) -> dict[str, Any]:
+        """The custom properties of a tile (its tileset's, overridden by its own)."""
+        return dict(self.data.tiles.properties.get(int(gid), {}))
+
+    def gid(self, tileset: str, local_id: int) -> int:
+        """The global id of tile ``local_id`` of the tileset named ``tileset``."""
+        for ts in self.data.tilesets:
+            if ts.name == tileset:
+                if not 0 <= local_id < ts.count:
+                    raise TilemapError(f"{self.path}: tileset {tileset!r} has no tile {local_id}")
+                return ts.firstgid + local_id
+        raise TilemapError(f"{self.path}: no tileset {tileset!r}")
+
+    # -- edits -----------------------------------------------------------------------------
+    def set_tile(
+        self,
+        layer: str,
+        col: int,
+        row: int,
+        gid: int,
+        *,
+        flip_x: bool = False,
+        flip_y: bool = False,
+        flip_diagonal: bool = False,
+    ) -> None:
+        """Put tile ``gid`` (0 clears) at (col, row): its chunk redraws, its colliders rebuild."""
+        lay = self.layer(layer)
+        self._check_cell(lay, col, row, "set_tile")
+        if isinstance(gid, bool) or not isinstance(gid, (int, np.integer)) or gid < 0:
+            raise TilemapError(f"{self.path}: set_tile: gid must be an int >= 0, got {gid!r}")
+        if not self.data.tiles.known(np.array([gid])).all():
+            raise TilemapError(f"{self.path}: set_tile: tile id {gid} is in no tileset")
+        old = (int(lay.gids[row, col]), int(lay.flags[row, col]))
+        lay.gids[row, col] = gid
+        lay.flags[row, col] = (
+            (FLIP_H if flip_x else 0) | (FLIP_V if flip_y else 0) | (FLIP_D if flip_diagonal else 0)
+        )
+        coll = self.collision.get(lay.name)
+        if coll is not None:
+            try:
+                gone, born = coll.update_cell(col, row)
+                self._swap(gone, born)
+            except (KgeError, ValueError) as exc:  # pragma: no cover - defensive
+                lay.gids[row, col], lay.flags[row, col] = old
+                raise TilemapError(f"{self.path}: set_tile on layer {layer!r}: {exc}") from exc
+        self.dirty.add((self.data.tile_layers.index(lay), row // CHUNK, col // CHUNK))
+
+    def clear_tile(self, layer: str, col: int, row: int) -> None:
+        self.set_tile(layer, col, row, 0)
+
+    def _check_cell(self, lay: TileLayerData, col: int, row: int, op: str) -> None:
+        for v, n, what in ((col, self.data.cols, "col"), (row, self.data.rows, "row")):
+            if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 0 <= v < n:
+                raise TilemapError(
+                    f"{self.path}: {op} on layer {lay.name!r}: "
+                    f"{what} must be an int in [0, {n}), got {v!r}"
+                )
+
+    def _swap(self, gone: list[Piece], born: list[Piece]) -> None:
+        for p in gone:
+            if p.entity is not None and self.world.exists(p.entity):
+                self.world.despawn(p.entity)
+            self._live.pop(p.entity or -1, None)
+            p.entity = None
+        for p in born:
+            p.entity = self.world.spawn(*p.components)
+            self._live[p.entity] = p
+
+    @property
+    def collider_entities(self) -> list[int]:
+        """The static collider entities of the tile layers now."""
+        return list(self._live)
+
+    def unload(self) -> None:
+        """Despawn everything the map made and stop drawing it."""
+        if not self.loaded:
+            return
+        for e in [*self.objects, *self._live]:
+            if self.world.exists(e):
+                self.world.despawn(e)
+        self.objects.clear()
+        self._live.clear()
+        self.loaded = False
+        maps = self.world.try_resource(TileMaps)
+        if maps is not None and self in maps.maps:
+            maps.maps.remove(self)
+
+    def __repr__(self) -> str:
+        return f"TileMap({str(self.path)!r}, {self.data.cols}x{self.data.rows})"
+
+
+def load_map(
+    world: World,
+    path: str | Path,
+    *,
+    pixels_per_meter: float | None = None,
+    origin: tuple[float, float] = (0.0, 0.0),
+    solid_layers: Iterable[str] = (),
+    spawners: Spawners | Mapping[str, SpawnFn] | None = None,
+    unknown: Unknown = "warn",
+    layer: int = 0,
+    friction: float = DEFAULT_MATERIAL[0],
+    restitution: float = DEFAULT_MATERIAL[1],
+) -> TileMap:
+    """Load a Tiled map into ``world`` in one call and return its :class:`TileMap`.
+
+    ``pixels_per_meter`` defaults to the map's tile width (a tile is 1 m wide);
+    the map's bottom-left corner lands at ``origin``. ``solid_layers`` names tile
+    layers whose every tile is solid (a layer property ``solid: true`` does the
+    same). ``spawners`` maps object classes to spawn functions; an object whose
+    class has none is spawned with the default components and a
+    :class:`~kge.tilemap.errors.TilemapWarning` (``unknown="error"`` raises,
+    ``"ignore"`` stays silent). ``layer`` is the draw layer of the map's tiles
+    (tile layers sort below sprites of the same layer; a layer property
+    ``layer`` overrides it).
+
+    On any error a :class:`TilemapError` names the file, layer and object, and
+    nothing of the map is left in the world.
+    """
+    if unknown not in ("warn", "error", "ignore"):
+        raise TilemapError(
+            f"load_map: unknown must be 'warn', 'error' or 'ignore', got {unknown!r}"
+        )
+    reg = spawners if isinstance(spawners, Spawners) else Spawners(spawners)
+    files = world.try_resource(MapFiles)
+    if files is not None:
+        path = files.resolve(path)
+    data = read_map(path, pixels_per_meter=pixels_per_meter, origin=origin)
+    solid_names = set(solid_layers)
+    known = {t.name for t in data.tile_layers}
+    missing = solid_names - known
+    if missing:
+        raise TilemapError(f"{data.path}: solid_layers names no tile layer: {sorted(missing)!r}")
+    base: Material = (float(friction), float(restitution), *DEFAULT_MATERIAL[2:])
+    tmap = TileMap(world, data, int(layer))
+    pieces: list[Piece] = []
+    try:
+        for lay in data.tile_layers:
+            solid = (
+                lay.name in solid_names or str(lay.properties.get("solid", "")).lower() == "true"
+            )
+            coll = LayerCollision(data, lay, solid, base)
+            tmap.collision[lay.name] = coll
+            pieces.extend(coll.build())
+    except (KgeError, ValueError) as exc:
+        if isinstance(exc, TilemapError):
+            raise
+        raise TilemapError(f"{data.path}: building tile colliders: {exc}") from exc
+    objects: list[tuple[str, list[Any]]] = []
+    warned: set[str] = set()
+    for olayer in data.object_layers:
+        for obj in olayer.objects:
+            comps = object_components(data, olayer, obj, reg, unknown, warned, int(layer))
+            if comps is not None:
+                objects.append((f"layer {olayer.name!r}: object {obj.id} ({obj.name!r})", comps))
+    # everything is built: spawn it all, or nothing
+    spawned: list[int] = []
+    what = "tile colliders"
+    try:
+        for p in pieces:
+            p.entity = world.spawn(*p.components)
+            spawned.append(p.entity)
+            tmap._live[p.entity] = p
+        for label, comps in objects:
+            what = label  # named in the error if this spawn is refused
+            e = world.spawn(*comps)
+            spawned.append(e)
+            tmap.objects.append(e)
+    except (KgeError, ValueError, TypeError) as exc:
+        if spawned:  # (nothing was spawned when the world itself refused, e.g. locked)
+            for e in spawned:
+                if world.exists(e):
+                    world.despawn(e)
+            world.flush()
+        raise TilemapError(f"{data.path}: {what}: {exc}") from exc
+    tmap.colliders = list(tmap._live)
+    maps_in(world).maps.append(tmap)
+    return tmap

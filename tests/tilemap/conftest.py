@@ -1,0 +1,27 @@
+"""A physics world stepped by hand, for the tilemap tests."""
+
+from __future__ import annotations
+
+import pytest
+
+from kge.schedule import Stage
+from kge.systems.physics import PhysicsPlugin
+from kge.world import World
+
+DT = 1.0 / 60.0
+
+
+class Stepper:
+    def __init__(self) -> None:
+        self.world = World()
+        self.world.add_plugins(PhysicsPlugin())
+
+    def step(self, n: int = 1) -> None:
+        for _ in range(n):
+            self.world.clear_events()
+            self.world.schedule.run(Stage.FIXED, DT)
+
+
+@pytest.fixture
+def sim() -> Stepper:
+    return Stepper()
