@@ -66,7 +66,7 @@ LEG_MOTOR_SPEED = 0.3  # rad/s, slow enough not to hop the lander back up
 #: legs hop on the ground and the lander never falls asleep. Heuristic pilot, seeds 0-9,
 #: g = -10, landings that came to rest: 4 x 10 (kge's default) 0, 8 x 15 1, 8 x 23
 #: (Gymnasium's 6 * 30 velocity iterations as kge.box2d maps them) 9, 8 x 40 10; at
-#: g = -5, seeds 0-2: 8 x 23 none, 8 x 40 all. A step costs about 2-3x a 4 x 10 step.
+#: g = -5, seeds 0-2: 8 x 23 none, 8 x 40 all. It costs throughput: see docs/rl.md.
 SOLVER = (8, 40)
 
 
