@@ -11,7 +11,7 @@ import pytest
 from gymnasium.utils.env_checker import check_env
 
 import kge.gym
-from kge import Box, Collider, RigidBody, Transform, World
+from kge import BodyType, Box, Collider, RevoluteJoint, RigidBody, Transform, World
 from kge.gym import (
     CARTPOLE,
     LUNAR_LANDER,
@@ -122,10 +122,37 @@ def test_continuous_throttles_follow_gymnasium(action, powers):
     assert env.throttle(np.array(action, np.float32)) == pytest.approx(powers)
 
 
+def _leg_joints(env):
+    world = env.unwrapped.world
+    joints = {j.body_b: j for _, (j,) in world.query(RevoluteJoint)}
+    return [joints[leg] for leg in env.unwrapped.legs]
+
+
+def test_lunar_lander_legs_are_hinged_and_held_on_their_limits():
+    env = make(LUNAR_LANDER)
+    _, term, info, _ = _episode(env, lunar_lander.heuristic, 0, 1000)
+    assert term and not info["game_over"] and not info["awake"]
+    world = env.unwrapped.world
+    for i, (leg, joint) in zip((-1, 1), zip(env.unwrapped.legs, _leg_joints(env), strict=True),
+                               strict=True):
+        assert world.get(leg, RigidBody).type == BodyType.DYNAMIC
+        assert joint.body_a == env.unwrapped.lander
+        assert joint.enable_motor and joint.enable_limit
+        # the motor presses each leg outwards onto its 0.4 rad stop, under the hull's weight
+        assert joint.angle == pytest.approx(-i * 0.4, abs=0.04)
+
+
 def test_lunar_lander_doing_nothing_crashes():
     env = make(LUNAR_LANDER)
-    total, term, info, _ = _episode(env, lambda obs: lunar_lander.NOOP, 0, 1000)
-    assert term and info["game_over"] and total < -100
+    env.reset(seed=0)
+    folded = 0.0
+    while True:
+        _, total, term, _, info = env.step(lunar_lander.NOOP)
+        folded = max(folded, *(abs(j.angle) for j in _leg_joints(env)))
+        if term:
+            break
+    assert info["game_over"] and total == -100.0
+    assert folded > 0.5  # the legs gave way towards their 0.9 rad stop before the hull hit
 
 
 def test_lunar_lander_main_engine_lifts_and_costs_fuel():
