@@ -309,6 +309,9 @@ def _rate(value: Any, owner: str, field: str) -> float:
 class ParticleEmitter(Tracked):
     """Sprays particles from the entity. See the module docstring."""
 
+    #: a texture name is looked up in the world's asset store at every write
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"texture"})
+
     _checks: ClassVar[dict[str, Check]] = {
         "rate": _rate,
         "rate_per_metre": _rate,

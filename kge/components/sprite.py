@@ -106,6 +106,9 @@ def _int(value: Any, owner: str, field: str) -> int:
 class Sprite(Tracked):
     """An image drawn at the entity's (interpolated) pose. See the module docstring."""
 
+    #: an image name is looked up in the world's asset store at every write
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})
+
     _checks: ClassVar[dict[str, Check]] = {
         "image": _image,
         "layer": _int,

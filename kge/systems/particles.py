@@ -29,6 +29,7 @@ from kge.components.collider import Collider
 from kge.components.particles import BurstOnHit, EmitCollider, ParticleBurst, ParticleEmitter
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
+from kge.components.tracked import validate_writes
 from kge.components.transform import Transform
 from kge.errors import ValidationError, where
 from kge.particles.emitter import Particles
@@ -205,6 +206,7 @@ class ParticlesPlugin(Plugin):
                 )
 
         world.validator(ParticleEmitter, check)
+        validate_writes(world, ParticleEmitter)
         drawer: dict[str, Any] = {}
 
         def draw(frame: Any) -> None:

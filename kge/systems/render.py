@@ -24,6 +24,7 @@ from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
+from kge.components.tracked import validate_writes
 from kge.components.transform import Transform
 from kge.errors import DisplayError, where
 from kge.host import Host
@@ -208,6 +209,7 @@ class RenderPlugin(Plugin):
         world.add_system(CameraFollow())
         world.add_system(DebugKeys())
         world.validator(Sprite, functools.partial(_check_sprite_image, world))
+        validate_writes(world, Sprite)
 
 
 def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:

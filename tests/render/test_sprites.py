@@ -296,3 +296,14 @@ def test_sprites_keep_moving_after_a_neighbour_is_despawned(make_app):
     cy = SIZE[1] // 2
     assert m[cy + 40, SIZE[0] // 2 - 60] and m[cy + 40, SIZE[0] // 2 + 60]
     assert not m[cy, SIZE[0] // 2] and not m[cy, SIZE[0] // 2 - 60]
+
+
+def test_renaming_an_image_to_a_missing_file_is_refused_at_the_write(make_app, tmp_path):
+    from kge.assets import AssetNotFoundError
+
+    app = make_app(lambda world: None)
+    e = app.world.spawn(Transform(), Sprite(solid(2, 2, RED)))
+    sprite = app.world.get(e, Sprite)
+    with pytest.raises(AssetNotFoundError, match=f"entity {e}, Sprite.image"):
+        sprite.image = str(tmp_path / "missing.png")
+    assert sprite.image is not None and not isinstance(sprite.image, str)  # unchanged
