@@ -37,7 +37,7 @@ from kge.components.tracked import Tracked, raw_set
 from kge.components.transform import Transform
 from kge.components.tween import Delay, Parallel, Sequence, Tween
 from kge.errors import ComponentTypeError, ValidationError, where
-from kge.validate import finite
+from kge.validate import MAX_COORDINATE, coordinate, finite
 
 WIDTH = 4  # widest value: an RGBA colour
 _binding = attrgetter("_binding")
@@ -283,7 +283,11 @@ class TweenTable:
             kind, axis = 2, _AXES[spec.field]
         elif kind == 0:
             check = getattr(ctype, "_checks", {}).get(spec.field)
-            if isinstance(obj, Tracked) and check is finite:
+            ends = [*now, *to, *(start or ())]
+            # a coordinate between ends within a quarter of the world bound stays inside it
+            # whatever the easing's overshoot (Penner's curves stay within -0.5..1.5)
+            inside = check is coordinate and max(map(abs, ends)) <= MAX_COORDINATE / 4
+            if isinstance(obj, Tracked) and (check is finite or inside):
                 kind = 3  # plain finite float of a tracked component: the raw write
         return (obj, spec.field, len(now), start, to, kind, entity, axis)
 

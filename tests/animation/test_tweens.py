@@ -300,3 +300,17 @@ def test_text_colour_and_size_tween() -> None:
     _run(w, 0.5)
     t = w.get(e, Text)
     assert t.color == (128, 128, 128, 128) and t.size == pytest.approx(12.5)
+
+
+def test_an_overshooting_tween_near_the_world_bound_never_leaves_it() -> None:
+    """Ends near the 1e7 m bound take the checked path: back easing's overshoot is clamped,
+    never written as an out-of-world coordinate."""
+    from kge.validate import MAX_COORDINATE
+
+    w, tweens = _world()
+    e = w.spawn(Transform(MAX_COORDINATE * 0.5, 0.0))
+    tweens.to(e, Transform, "x", MAX_COORDINATE, 1.0, ease="back_out")
+    for _ in range(12):
+        _run(w, 0.1)
+        assert w.get(e, Transform).x <= MAX_COORDINATE
+    assert w.get(e, Transform).x == pytest.approx(MAX_COORDINATE)
