@@ -167,7 +167,23 @@ class b2FrictionJointDef(b2JointDef):
         self.localAnchorB = b.GetLocalPoint(anchor)
 
 
-class b2PrismaticJointDef(b2JointDef):
+class _AnchorAxisDef(b2JointDef):
+    """Defs initialised from one world anchor and one world axis (prismatic, wheel)."""
+
+    INIT_KEYS = ("anchor", "axis")
+
+    def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor, axis)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+        self.localAxisA = a.GetLocalVector(axis)
+
+
+class b2PrismaticJointDef(_AnchorAxisDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
               "referenceAngle": ("reference_angle", 0.0, float),
@@ -179,21 +195,14 @@ class b2PrismaticJointDef(b2JointDef):
               "maxMotorForce": ("max_motor_force", 0.0, float)}
     COMPONENT = kj.PrismaticJoint
     TYPE = c.e_prismaticJoint
-    INIT_KEYS = ("anchor", "axis")
-
-    def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
-        self.Initialize(self.bodyA, self.bodyB, anchor, axis)
 
     def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
-        self.bodyA, self.bodyB = bodyA, bodyB
+        super().Initialize(bodyA, bodyB, anchor, axis)
         a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchor)
-        self.localAnchorB = b.GetLocalPoint(anchor)
-        self.localAxisA = a.GetLocalVector(axis)
         self.referenceAngle = b.angle - a.angle
 
 
-class b2WheelJointDef(b2JointDef):
+class b2WheelJointDef(_AnchorAxisDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
               "enableMotor": ("enable_motor", False, bool),
@@ -203,17 +212,6 @@ class b2WheelJointDef(b2JointDef):
               "dampingRatio": ("damping_ratio", 0.7, float)}
     COMPONENT = kj.WheelJoint
     TYPE = c.e_wheelJoint
-    INIT_KEYS = ("anchor", "axis")
-
-    def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
-        self.Initialize(self.bodyA, self.bodyB, anchor, axis)
-
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
-        self.bodyA, self.bodyB = bodyA, bodyB
-        a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchor)
-        self.localAnchorB = b.GetLocalPoint(anchor)
-        self.localAxisA = a.GetLocalVector(axis)
 
 
 class b2DistanceJointDef(b2JointDef):
