@@ -28,6 +28,35 @@ Bus = str
 BUSES = ("sfx", "music")
 
 
+def _from_player_worker(err: BaseException) -> bool:
+    """True when ``err`` was raised inside pyglet's media player worker thread module."""
+    tb = err.__traceback__
+    last = None
+    while tb is not None:
+        last, tb = tb, tb.tb_next
+    return last is not None and last.tb_frame.f_code.co_filename.endswith(
+        "player_worker_thread.py"
+    )
+
+
+def pump_posted_events(loop: Any, attempts: int = 64) -> None:
+    """Dispatch pyglet's posted events (end of stream drives looping and "finished").
+
+    pyglet 2.1's ``PlayerWorkerThread.remove`` checks ``player in self.players`` and
+    then removes it under a lock its own thread also takes: when a sound ends just as
+    the worker drops it, the second removal raises ``KeyError``. The player is gone
+    either way, so that one error is dropped and the rest of the queue is pumped;
+    any other error is raised.
+    """
+    for _ in range(attempts):
+        try:
+            loop.dispatch_posted_events()
+            return
+        except KeyError as err:
+            if not _from_player_worker(err):
+                raise
+
+
 class Mixer:
     """Owns the players. See the module docstring."""
 
@@ -212,7 +241,7 @@ class Mixer:
         if self._media is not None:
             app_mod = sys.modules.get("pyglet.app")
             if app_mod is not None:
-                app_mod.platform_event_loop.dispatch_posted_events()
+                pump_posted_events(app_mod.platform_event_loop)
         for h in list(self._handles):
             h.update(dt)
             if h.finished:
