@@ -113,7 +113,22 @@ class b2JointDef:
         return joint
 
 
-class b2RevoluteJointDef(b2JointDef):
+class _AnchorDef(b2JointDef):
+    """Defs initialised from one world anchor (revolute, weld, friction)."""
+
+    INIT_KEYS = ("anchor",)
+
+    def _initialize(self, anchor: Any = None, **_: Any) -> None:
+        self.Initialize(self.bodyA, self.bodyB, anchor)
+
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
+        self.bodyA, self.bodyB = bodyA, bodyB
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(anchor)
+        self.localAnchorB = b.GetLocalPoint(anchor)
+
+
+class b2RevoluteJointDef(_AnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "enableLimit": ("enable_limit", False, bool),
@@ -124,47 +139,29 @@ class b2RevoluteJointDef(b2JointDef):
               "maxMotorTorque": ("max_motor_torque", 0.0, float)}
     COMPONENT = kj.RevoluteJoint
     TYPE = c.e_revoluteJoint
-    INIT_KEYS = ("anchor",)
-
-    def _initialize(self, anchor: Any = None, **_: Any) -> None:
-        self.Initialize(self.bodyA, self.bodyB, anchor)
 
     def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
-        self.bodyA, self.bodyB = bodyA, bodyB
+        super().Initialize(bodyA, bodyB, anchor)
         a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchor)
-        self.localAnchorB = b.GetLocalPoint(anchor)
         self.referenceAngle = b.angle - a.angle
 
 
-class b2WeldJointDef(b2JointDef):
+class b2WeldJointDef(_AnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "frequencyHz": ("frequency_hz", 0.0, float),
               "dampingRatio": ("damping_ratio", 0.0, float)}
     COMPONENT = kj.WeldJoint
     TYPE = c.e_weldJoint
-    INIT_KEYS = ("anchor",)
-    _initialize = b2RevoluteJointDef._initialize
     Initialize = b2RevoluteJointDef.Initialize
 
 
-class b2FrictionJointDef(b2JointDef):
+class b2FrictionJointDef(_AnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "maxForce": ("max_force", 0.0, float),
               "maxTorque": ("max_torque", 0.0, float)}
     COMPONENT = kj.FrictionJoint
     TYPE = c.e_frictionJoint
-    INIT_KEYS = ("anchor",)
-
-    def _initialize(self, anchor: Any = None, **_: Any) -> None:
-        self.Initialize(self.bodyA, self.bodyB, anchor)
-
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
-        self.bodyA, self.bodyB = bodyA, bodyB
-        a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchor)
-        self.localAnchorB = b.GetLocalPoint(anchor)
 
 
 class _AnchorAxisDef(b2JointDef):
