@@ -25,7 +25,7 @@ from collections import deque
 from typing import Any
 
 from benchmarks.breakdown import PhaseTimer
-from kge.systems.physics import PhysicsSystem
+from kge.physics import simulation
 
 #: bodies of the sparse field for the memory figure
 MEMORY_BODIES = 10_000
@@ -40,22 +40,24 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
     app = measured.runner.app
     app.step(10)
     timer = PhaseTimer(app)
-    sim = app.world.get_system(PhysicsSystem).sim
     moved = [0]
-    inner = sim._write_back
+    inner = simulation.write_rows
 
-    def counted(slots: Any, new: Any, old: Any) -> None:
-        moved[0] += len(slots)
-        inner(slots, new, old)
+    def counted(targets: Any, slots: Any, new: Any) -> None:
+        moved[0] += len(new)
+        inner(targets, slots, new)
 
-    sim._write_back = counted
+    simulation.write_rows = counted  # type: ignore[assignment]  # the module's name, which sync-out calls
     per_body = []
-    for _ in range(frames):
-        moved[0] = 0
-        timer.frame()
-        if moved[0]:
-            per_body.append(timer.frames[-1]["sync-out"] * 1000.0 / moved[0])
-    measured.close()
+    try:
+        for _ in range(frames):
+            moved[0] = 0
+            timer.frame()
+            if moved[0]:
+                per_body.append(timer.frames[-1]["sync-out"] * 1000.0 / moved[0])
+    finally:
+        simulation.write_rows = inner
+        measured.close()
     return {
         "sync_out_us": statistics.median(per_body) if per_body else float("nan"),
         "sync_out_floor_us": slot_write_floor(size),

@@ -167,8 +167,14 @@ class ContactRecorder:
         self._pre_cache: dict[tuple[int, int], PreSolve] = {}
         self._post_acc: dict[tuple[int, int], list[Any]] = {}
         self._shape_ptrs = (_ffi.new("cpShape *[1]"), _ffi.new("cpShape *[1]"))
+        self._errors = errors
+        self.bind(space)
+
+    def bind(self, space: pymunk.Space) -> None:
+        """Register the handlers on ``space`` (a new, empty one replaces the first)."""
+        self.space = space
         # an exception in a handler (a WorldLockedError from a hook) is raised after the step
-        guard = errors.guard
+        guard = self._errors.guard
         space.on_collision(None, None, begin=guard(self._begin), separate=guard(self._separate))
         space.on_collision(
             HOOKED, None, pre_solve=guard(self._pre_solve), post_solve=guard(self._post_solve)

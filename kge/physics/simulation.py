@@ -29,6 +29,7 @@ from kge.components.platform import OneWayPlatform
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import bind, raw_set, unbind
 from kge.components.transform import Transform
+from kge.errors import ValidationError
 from kge.physics.bodies import (
     DYNAMIC,
     PYMUNK_TYPE,
@@ -50,10 +51,10 @@ from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes, spread
-from kge.physics.speed_cap import SpeedCap, clamp, clamp_one
+from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
 from kge.physics.sync import PoseTable, rows_differ
 from kge.physics.tiny import flush
-from kge.physics.writeback import component_array, write_rows
+from kge.physics.writeback import Targets, write_rows
 from kge.world import World
 
 
@@ -72,6 +73,9 @@ class Simulation:
         self.events = events
         self.dt = dt
         self.space = pymunk.Space()
+        self._threads = 1
+        self._hash_cell: float | None = None
+        self._hash_count = 0
         #: exceptions raised inside pymunk callbacks during a step, raised after it
         self.errors = CallbackErrors()
         self.recorder = ContactRecorder(world, self.space, events, self.errors)
@@ -89,8 +93,7 @@ class Simulation:
         self.poses_stale = True
         self._transforms: list[Transform | None] = []
         self._rigidbodies: list[RigidBody | None] = []
-        self._tf_objects = component_array([])
-        self._rb_objects = component_array([])
+        self._targets = Targets([], [])
         #: bumped whenever a body's mass data is recomputed (joint batches watch it)
         self.mass_epoch = 0
         self.joints = JointBridge(self)
@@ -181,9 +184,18 @@ class Simulation:
         key = (
             s.gravity, s.iterations, s.collision_slop, s.sleep, s.time_to_sleep,
             s.sleep_speed, s.substeps, s.velocity_threshold, s.polygon_radius,
+            s.threads, s.spatial_hash,
         )
         if key == self._applied:
             return
+        if (s.threads, s.spatial_hash) != (self._threads, self._hash_cell):
+            try:
+                self._choose_space(s.threads, s.spatial_hash)
+            except ValidationError:
+                # the settings keep what the space is, so the world stays as it was
+                object.__setattr__(s, "threads", self._threads)
+                object.__setattr__(s, "spatial_hash", self._hash_cell)
+                raise
         space = self.space
         if self._applied and s.gravity != self._applied[0]:
             for e in sorted(self.bodies):  # a new gravity concerns resting bodies too
@@ -211,6 +223,48 @@ class Simulation:
             for c in self.colliders:
                 self.collider_struct.add(c)
         self._applied = key
+
+    def _choose_space(self, threads: int, cell: float | None) -> None:
+        """Apply ``PhysicsSettings.threads`` and ``spatial_hash`` (see there).
+
+        A threaded space is another kind of pymunk Space, so it replaces the
+        empty one this simulation started with: everything that registered on it
+        (contact handlers, continuous collision, joints) moves to the new one.
+        Both choices are made before the first body arrives, which is when a
+        scene inserts its settings; later they raise instead of changing a
+        running simulation's results.
+        """
+        space = self.space
+        if threads != self._threads:
+            if self.steps or space.bodies or space.shapes or space.constraints:
+                raise ValidationError(
+                    f"PhysicsSettings.threads: set it before the first step (it was "
+                    f"{self._threads}, now {threads}); pymunk's threaded space is a "
+                    "different kind of space"
+                )
+            space = pymunk.Space(threaded=threads > 1)
+            if threads > 1:
+                space.threads = threads
+            self.space = space
+            self.recorder.bind(space)
+            self.ccd = _make_ccd(space, self.errors)
+            self.joints.space = space
+            self._threads = threads
+            self._hash_cell = None  # a fresh space has the tree again
+        if cell != self._hash_cell:
+            if cell is None:
+                raise ValidationError(
+                    "PhysicsSettings.spatial_hash: Chipmunk cannot go back from its "
+                    "spatial hash to its tree; choose the broad phase before the first step"
+                )
+            self._use_hash(cell)
+
+    def _use_hash(self, cell: float) -> None:
+        """Chipmunk's spatial hash of ``cell`` metres, with about ten cells per shape."""
+        shapes = len(self.space.shapes) + len(self.pending) + len(self.collider_struct)
+        self._hash_count = max(1024, 10 * shapes)
+        self.space.use_spatial_hash(cell, self._hash_count)
+        self._hash_cell = cell
 
     def sync_in(self) -> None:
         self._apply_settings()
@@ -379,6 +433,8 @@ class Simulation:
         if to_add:
             space.add(*to_add)  # one call, same order as shape by shape
         self.pending.difference_update(attached)
+        if self._hash_cell is not None and 5 * len(space.shapes) > self._hash_count:
+            self._use_hash(self._hash_cell)  # grown: a larger table (fewer false pairs)
 
     def _configure_shapes(
         self, c: int, col: Collider, shapes: list[pymunk.Shape], fresh: bool = False
@@ -612,8 +668,7 @@ class Simulation:
         ents = self.poses.entities.tolist()
         self._transforms = [world.try_get(e, Transform) for e in ents]
         self._rigidbodies = [world.try_get(e, RigidBody) for e in ents]
-        self._tf_objects = component_array(self._transforms)
-        self._rb_objects = component_array(self._rigidbodies)
+        self._targets = Targets(self._transforms, self._rigidbodies)
         self.poses_stale = False
 
     # -- step ------------------------------------------------------------------------------
@@ -694,6 +749,13 @@ class Simulation:
 
     # -- sync-out -------------------------------------------------------------------------
     def sync_out(self) -> None:
+        """Read every moving body once and write the ones that changed to their components.
+
+        Its fixed cost is a few dozen numpy calls, which is what a small world (a
+        Gymnasium lander) pays per step, so the common cases take the short way:
+        the exact speed cap only after a cheap bound says a body may be over it,
+        and when every tracked body moved (an awake world) no mask and no gather.
+        """
         if self.poses_stale:
             self._rebuild_poses()
         poses = self.poses
@@ -704,22 +766,30 @@ class Simulation:
         s = self.settings
         vmax = s.max_translation / self.dt
         wmax = s.max_rotation / self.dt
-        capped = clamp(rows[:, 3:6], vmax, wmax).tolist()  # ``rows`` is a gathered copy
-        if capped:  # the bulk read no longer holds these bodies' velocities
-            poses.raw = None
-        for k in capped:
-            body = poses.bodies[int(slots[k])]
-            vx, vy, w = rows[k, 3:6].tolist()
-            body.velocity = (vx, vy)
-            body.angular_velocity = w
-        poses.prev[:] = poses.state[:, :3]
-        old = poses.state[slots]
+        if maybe_over(rows[:, 3:6], vmax, wmax):
+            self._cap_rows(slots, rows, vmax, wmax)
+        state = poses.state
+        if poses.full:
+            # ``rows`` is a fresh gather in slot order: it becomes the state as it is
+            poses.prev[:] = state[:, :3]
+            old = state
+            poses.state = rows
+        else:
+            poses.prev[:] = state[:, :3]
+            old = state[slots]
+            state[slots] = rows
         changed = rows_differ(rows, old)
-        poses.state[slots] = rows
-        if changed.all():  # everything moved (rain, a sparse field): no gathers
-            self._write_back(slots, rows, old)
-        elif changed.any():
-            self._write_back(slots[changed], rows[changed], old[changed])
+        if poses.full and changed.all():  # everything moved (rain, a lander): no gathers
+            write_rows(self._targets, None, rows)
+            if poses.asleep.any():
+                self._woke(slots)
+            self.all_asleep = False
+            return
+        if changed.any():
+            moved = slots[changed]
+            write_rows(self._targets, moved, rows[changed])
+            if poses.asleep.any():
+                self._woke(moved)
         still = slots[~changed & ~poses.asleep[slots] & poses.dynamic[slots]]
         if len(still):
             for i in still.tolist():
@@ -734,11 +804,21 @@ class Simulation:
                         raw_set(rb, "angular_velocity", 0.0)
         self.all_asleep = bool(poses.dynamic.all() and poses.asleep.all())
 
-    def _write_back(self, moved: np.ndarray, new: np.ndarray, old: np.ndarray) -> None:
-        """Write the changed rows to the components; wake the RigidBodies of moved sleepers."""
+    def _cap_rows(self, slots: np.ndarray, rows: np.ndarray, vmax: float, wmax: float) -> None:
+        """Box2D's speed caps on the rows read (a gathered copy) and on their bodies."""
+        capped = clamp(rows[:, 3:6], vmax, wmax).tolist()
+        if capped:  # the bulk read no longer holds these bodies' velocities
+            self.poses.raw = None
+        for k in capped:
+            body = self.poses.bodies[int(slots[k])]
+            vx, vy, w = rows[k, 3:6].tolist()
+            body.velocity = (vx, vy)
+            body.angular_velocity = w
+
+    def _woke(self, moved: np.ndarray) -> None:
+        """The RigidBodies of sleepers that moved are awake again."""
         poses = self.poses
-        write_rows(self._tf_objects, self._rb_objects, moved, new, old)
-        rbs, has_rb = self._rb_objects
+        rbs, has_rb = self._targets.rigidbodies
         for i in moved[has_rb[moved] & poses.asleep[moved]].tolist():
             poses.asleep[i] = False
             raw_set(rbs[i], "awake", True)

@@ -36,8 +36,12 @@ import pymunk
 import pymunk.batch as pb
 from pymunk._chipmunk import lib as _lib
 
+from kge.physics.bulk import BodyReader
+
 _VELOCITIES = pb.BodyFields.VELOCITY | pb.BodyFields.ANGULAR_VELOCITY
 _SQRT_HALF = math.sqrt(0.5)
+_MAX = np.maximum.reduce
+_ABS = np.absolute
 
 
 def clamp(v: np.ndarray, vmax: float, wmax: float) -> np.ndarray:
@@ -111,10 +115,14 @@ def clamp_velocity(
 
 
 class SpeedCap:
-    """The before-substep limit of one space (keeps its read buffer)."""
+    """The before-substep limit of one space (keeps its read buffers)."""
+
+    #: below this many floats (a few dozen bodies), Python's max/min beat numpy's
+    SMALL = 192
 
     def __init__(self) -> None:
-        self._buffer = pb.Buffer()
+        self._velocities = BodyReader(_VELOCITIES)
+        self._ids = BodyReader(pb.BodyFields.BODY_ID)
 
     def before_substep(
         self,
@@ -133,21 +141,25 @@ class SpeedCap:
 
         Runs every substep, so the common case is kept to a bulk read of the
         velocities alone (ids are read only when a body is over) and one
-        ``max``/``min`` over all of them.
+        ``max``/``min`` over all of them: in plain Python for a few bodies, in
+        numpy for many.
         """
-        buf = self._buffer
-        buf.clear()
-        pb.get_space_bodies(space, _VELOCITIES, buf)
-        v = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 3)
-        if len(v) == 0 or not _maybe_over(v, vmax, wmax):
-            return 0
+        bound = min(vmax * _SQRT_HALF, wmax)
+        flat = self._velocities.floats(space)
+        if len(flat) < self.SMALL:
+            if not flat or (max(flat) <= bound and min(flat) >= -bound):
+                return 0
+            v = np.array(flat).reshape(-1, 3)
+        else:
+            v = np.asarray(flat).reshape(-1, 3)  # a view of the buffer
+            if not maybe_over(v, vmax, wmax):
+                return 0
         capped = v.copy()  # ``v`` views the buffer
         over = clamp(capped, vmax, wmax)
         if len(over) == 0:
             return 0
-        buf.clear()
-        pb.get_space_bodies(space, pb.BodyFields.BODY_ID, buf)  # same order: no step between
-        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)[over]
+        ids, _ = self._ids.read(space)  # same order: no step between
+        ids = ids[over]
         known_ids, bodies = known
         at = np.searchsorted(known_ids, ids)
         n = 0
@@ -162,16 +174,20 @@ class SpeedCap:
         return n
 
 
-def _maybe_over(v: np.ndarray, vmax: float, wmax: float) -> bool:
+def maybe_over(v: np.ndarray, vmax: float, wmax: float) -> bool:
     """A conservative test, 6x faster than the exact one: could any row be over a limit?
 
     No component beyond ``vmax / sqrt(2)`` means no speed beyond ``vmax``; one
-    bound for all three columns keeps it to a ``max`` and a ``min`` of the array.
+    bound for all three columns keeps it to one ``max`` of ``|v|``.
 
-    >>> _maybe_over(np.array([[80.0, -80.0, 80.0]]), 120.0, 94.0)
+    >>> maybe_over(np.array([[80.0, -80.0, 80.0]]), 120.0, 94.0)
     False
-    >>> _maybe_over(np.array([[90.0, 0.0, 0.0]]), 120.0, 94.0)
+    >>> maybe_over(np.array([[90.0, 0.0, 0.0]]), 120.0, 94.0)
     True
     """
+    if v.size == 0:
+        return False
     bound = min(vmax * _SQRT_HALF, wmax)
-    return bool(v.max() > bound or v.min() < -bound)
+    # the ufuncs themselves: ndarray.max/min add a Python wrapper each, a third of the
+    # cost for a few bodies; one |v| pass is also faster than a max and a min for many
+    return bool(_MAX(_ABS(v), axis=None) > bound)

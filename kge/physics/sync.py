@@ -20,6 +20,8 @@ import pymunk
 import pymunk.batch as pb
 from pymunk._chipmunk import lib as _lib
 
+from kge.physics.bulk import BodyReader
+
 FIELDS = (
     pb.BodyFields.BODY_ID
     | pb.BodyFields.POSITION
@@ -80,11 +82,13 @@ class PoseTable:
         self.dynamic = np.empty(0, dtype=bool)  # kinematic bodies never sleep in pymunk
         self.slot: dict[int, int] = {}
         self.bodies: list[pymunk.Body] = []
-        self._buffer = pb.Buffer()
+        self._reader = BodyReader(FIELDS)
         # the last row-to-slot mapping: pymunk keeps its row order from step to step
         # unless bodies are added, removed, or fall asleep, so it is usually reused
-        self._row_ids = np.empty(0, dtype=np.int64)
+        self._row_ids = b""
         self._mapping: tuple[np.ndarray, np.ndarray] | None = None
+        #: the last read returned every slot, in slot order (``slots`` is an arange)
+        self.full = False
         #: (ids, rows) of the last bulk read, every body of the space (views of the
         #: buffer, valid until the next read); continuous collision reuses them when
         #: nothing changed the bodies between the end of a step and the next one
@@ -143,22 +147,25 @@ class PoseTable:
             self.prev[i] = (x, y, angle)
 
     def read(self, space: pymunk.Space) -> tuple[np.ndarray, np.ndarray]:
-        """Fetch all rows; returns (slots, rows) of the tracked bodies, in slot order."""
-        buf = self._buffer
-        buf.clear()
-        pb.get_space_bodies(space, FIELDS, buf)
-        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
-        rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        """Fetch all rows; returns (slots, rows) of the tracked bodies, in slot order.
+
+        ``rows`` is a fresh array (a gather), owned by the caller. :attr:`full`
+        tells whether ``slots`` is every slot, i.e. ``arange(len(ids))``.
+        """
+        ids, rows = self._reader.read(space)
         self.raw = (ids, rows)
         if len(self.ids) == 0 or len(ids) == 0:
+            self.full = False
             return np.empty(0, dtype=np.int64), np.empty((0, 6))
-        if self._mapping is None or not np.array_equal(ids, self._row_ids):
+        key = ids.tobytes()  # one memcmp: cheaper than np.array_equal for any size
+        if self._mapping is None or key != self._row_ids:
             idx = np.searchsorted(self.ids, ids)
             idx[idx >= len(self.ids)] = 0
             hit = self.ids[idx] == ids
             slots = idx[hit]
             order = np.argsort(slots, kind="stable")
             self._mapping = (np.flatnonzero(hit)[order], slots[order])
-            self._row_ids = ids.copy()  # ``ids`` views the buffer, which the next read reuses
+            self._row_ids = key
+            self.full = len(slots) == len(self.ids)  # sorted, unique: every slot once
         rows_of_slots, slots = self._mapping  # slots is shared: callers must not write to it
         return slots, rows[rows_of_slots]

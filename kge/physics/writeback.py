@@ -6,8 +6,10 @@ Transform and RigidBody components is the part of a step that grows with the
 number of moving bodies in Python, so it is done a column at a time: each
 column goes through the component slot's own C setter mapped over the
 objects (no Python frame per body, about 2x faster than a loop), bypassing
-the change tracking that marks user writes (these are physics' own values), and
-only the half of a row that changed (pose or velocities) is written.
+the change tracking that marks user writes (these are physics' own values).
+Five slot stores per body are the floor of this design (0.19 us per body,
+docs/benchmarks.md); when every tracked body moved (a falling crowd) the
+columns go from one ``tolist`` straight to the setters, with no gather.
 """
 
 from __future__ import annotations
@@ -22,30 +24,49 @@ import numpy as np
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
 from kge.components.transform import Transform
-from kge.physics.sync import columns_differ
 
 #: (components as an object array indexed by slot, mask of the slots that have one)
 Components = tuple[np.ndarray, np.ndarray]
 
 
-def write_rows(
-    transforms: Components, rigidbodies: Components,
-    moved: np.ndarray, new: np.ndarray, old: np.ndarray,
-) -> None:
-    """Write rows ``new`` of the ``moved`` slots where they differ from ``old``."""
-    tfs, has_tf = transforms
-    sel = has_tf[moved] & columns_differ(new, old, 0, 3)
-    if sel.any():
-        objs, (x, y, a) = _pick(tfs, moved, new, sel, 0)
-        _set_all(_SET_X, objs, x)
-        _set_all(_SET_Y, objs, y)
-        _set_all(_SET_ANGLE, objs, a)
-    rbs, has_rb = rigidbodies
-    sel = has_rb[moved] & columns_differ(new, old, 3, 6)
-    if sel.any():
-        objs, (vx, vy, w) = _pick(rbs, moved, new, sel, 3)
-        _set_all(_SET_VELOCITY, objs, zip(vx, vy, strict=True))
-        _set_all(_SET_ANGULAR_VELOCITY, objs, w)
+class Targets:
+    """The Transform and RigidBody of every pose-table slot (rebuilt with the table)."""
+
+    __slots__ = ("_lists", "complete", "rigidbodies", "transforms")
+
+    def __init__(self, transforms: list[Any], rigidbodies: list[Any]) -> None:
+        self._lists = (list(transforms), list(rigidbodies))
+        self.transforms = component_array(transforms)
+        self.rigidbodies = component_array(rigidbodies)
+        #: every slot has both components: the all-moved write needs no gather at all
+        self.complete = bool(self.transforms[1].all() and self.rigidbodies[1].all())
+
+
+def write_rows(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:
+    """Write rows ``new`` to the components of the ``moved`` slots (None: every slot).
+
+    Pose and velocity are both written for every row given: the caller passes
+    only rows that changed, and splitting the halves cost more numpy calls than
+    the stores it saved.
+    """
+    if moved is None and targets.complete:
+        x, y, a, vx, vy, w = new.T.tolist()
+        tfs, rbs = targets._lists
+    else:
+        if moved is None:
+            moved = np.arange(len(new))
+        (tf_objs, has_tf), (rb_objs, has_rb) = targets.transforms, targets.rigidbodies
+        sel = has_tf[moved]
+        tfs = tf_objs[moved[sel]].tolist()
+        x, y, a = new[sel, :3].T.tolist()
+        sel = has_rb[moved]
+        rbs = rb_objs[moved[sel]].tolist()
+        vx, vy, w = new[sel, 3:6].T.tolist()
+    _set_all(_SET_X, tfs, x)
+    _set_all(_SET_Y, tfs, y)
+    _set_all(_SET_ANGLE, tfs, a)
+    _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
+    _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
 
 
 def component_array(items: list[Any]) -> Components:
@@ -68,21 +89,6 @@ def _slot_setter(cls: type, name: str) -> Callable[[Any, Any], None]:
         if isinstance(d, types.MemberDescriptorType):
             return d.__set__
     return lambda obj, value: raw_set(obj, name, value)
-
-
-def _pick(
-    objects: np.ndarray, moved: np.ndarray, rows: np.ndarray, sel: np.ndarray, first: int
-) -> tuple[list[Any], list[list[float]]]:
-    """The selected components and their three columns from ``first`` on, as lists.
-
-    The boolean gathers are skipped when every row is selected (a moving crowd),
-    where they would cost as much as the writes.
-    """
-    if sel.all():
-        # ``moved`` is sorted and unique: all of them means every slot, in order
-        chosen = objects if len(moved) == len(objects) else objects[moved]
-        return chosen.tolist(), rows[:, first:first + 3].T.tolist()
-    return objects[moved[sel]].tolist(), rows[sel, first:first + 3].T.tolist()
 
 
 def _set_all(setter: Callable[[Any, Any], None], objs: list[Any], values: Any) -> None:

@@ -17,11 +17,12 @@ import pymunk
 import pymunk.batch
 
 from kge.errors import ComponentTypeError, ValidationError
+from kge.physics.bulk import BodyReader
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.ccd.obstacles import Obstacles
 from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
-from kge.physics.speed_cap import clamp_one
+from kge.physics.speed_cap import clamp_one, maybe_over
 from kge.validate import boolean, integer, non_negative, positive
 
 #: ``pair_filter(moving_shape, other_shape) -> bool``: False = they never touch.
@@ -104,11 +105,11 @@ class ContinuousCollision:
         self._movers: dict[int, pymunk.Body] = {}  # moving untracked (kinematic) bodies seen
         self._boosted: list[Tracked] = []
         self._armed: dict[int, Tracked] = {}  # id(info) -> info
-        self._buffer = pymunk.batch.Buffer()
+        self._reader = BodyReader(_FIELDS)
         self._index: Index | None = None
         #: the last bulk read's body ids and their rows in the index (reused while unchanged)
         self._rows: (
-            tuple[np.ndarray, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
+            tuple[bytes, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
         ) = None
         self._generation = 0  # bumped whenever _rows is recomputed
         self._obstacles = Obstacles(space)
@@ -374,16 +375,14 @@ class ContinuousCollision:
 
     def _read(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Every body's id, pose (x, y, angle) and velocity (vx, vy, w), in one bulk read."""
-        buf = self._buffer
-        buf.clear()
-        pymunk.batch.get_space_bodies(self.space, _FIELDS, buf)
-        ids = np.frombuffer(buf.int_buf(), dtype=np.int64)
-        data = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
+        ids, data = self._reader.read(self.space)
         return ids, data[:, :3], data[:, 3:]
 
     def _clamp(self, ids: np.ndarray, vel: np.ndarray, dt: float) -> np.ndarray:
         max_v = self.max_translation / dt
         max_w = self.max_rotation / dt
+        if not maybe_over(vel, max_v, max_w):  # two reductions; errstate alone costs more
+            return vel
         with np.errstate(over="ignore"):  # inf is over the limit; clamp_one is overflow-safe
             speed2 = vel[:, 0] ** 2 + vel[:, 1] ** 2
         over = (speed2 > max_v * max_v) | (np.abs(vel[:, 2]) > max_w)
@@ -424,11 +423,12 @@ class ContinuousCollision:
         """
         index = self._lookup_index()
         cached = self._rows
-        if cached is not None and cached[1] is index and np.array_equal(cached[0], ids):
+        key = ids.tobytes()  # one memcmp, cheaper than np.array_equal
+        if cached is not None and cached[1] is index and cached[0] == key:
             return cached[2:]
         pos = np.minimum(np.searchsorted(index.ids, ids), len(index.ids) - 1)
         self._rows = (
-            ids.copy(),
+            key,
             index,
             pos,
             index.ids[pos] == ids,
