@@ -26,6 +26,7 @@ from typing import Any
 
 from benchmarks.breakdown import PhaseTimer
 from kge.physics import simulation
+from kge.systems.physics import PhysicsSystem
 
 #: bodies of the sparse field for the memory figure
 MEMORY_BODIES = 10_000
@@ -153,9 +154,82 @@ def memory_per_body(engine: str, bodies: int = MEMORY_BODIES) -> float:
     return float(out.stdout.strip().splitlines()[-1])
 
 
+#: kge variants of one scene, each a change made before the first step
+VARIANTS: dict[str, dict[str, Any]] = {
+    "default": {},
+    "no-ccd": {"ccd": False},
+    "spatial-hash": {"spatial_hash": 1.0},
+    "threads-2": {"threads": 2},
+}
+
+
+def _variant(scene: Any, size: int, change: dict[str, Any]) -> Any:
+    from kge.physics.settings import PhysicsSettings
+
+    measured = scene.engines["kge"](size)
+    app = measured.runner.app
+    settings = dict(change)
+    if not settings.pop("ccd", True):
+        app.world.get_system(PhysicsSystem).sim.ccd = None  # continuous collision absent
+    for name, value in settings.items():
+        setattr(app.world.resource(PhysicsSettings), name, value)
+    return measured
+
+
+def variant_costs(quick: bool = False, blocks: int = 7) -> dict[str, float]:
+    """Frame ms of rain and the dense pile in kge's variants (:data:`VARIANTS`), interleaved.
+
+    Continuous collision's cost when nothing moves fast is ``default`` against
+    ``no-ccd``; the broad phase and the threaded solver against ``default`` are what
+    ``PhysicsSettings.spatial_hash`` and ``threads`` win or lose.
+    """
+    from benchmarks.scenes import scenes
+
+    table = {s.name: s for s in scenes()}
+    out: dict[str, float] = {}
+    frames = 3 if quick else 6
+    for name, size in (("rain", 1000 if quick else 5000), ("dense-pile", 2000 if quick else 6000)):
+        scene = table[name]
+        runners = {v: _variant(scene, size, change) for v, change in VARIANTS.items()}
+        times: dict[str, list[float]] = {v: [] for v in runners}
+        try:
+            for r in runners.values():
+                for _ in range(scene.warmup):
+                    r.step()
+            for _ in range(2 if quick else blocks):
+                for v, r in runners.items():
+                    t0 = time.perf_counter()
+                    for _ in range(frames):
+                        r.step()
+                    times[v].append((time.perf_counter() - t0) * 1000.0 / frames)
+        finally:
+            for r in runners.values():
+                r.close()
+        for v, ts in times.items():
+            out[f"variant_{name}_{v}_ms"] = statistics.median(ts)
+        out[f"variant_{name}_size"] = float(size)
+    return out
+
+
+def variant_lines(c: dict[str, float]) -> list[str]:
+    """One line per scene: each variant's frame ms and its ratio to the default."""
+    lines = []
+    for name in ("rain", "dense-pile"):
+        base = c.get(f"variant_{name}_default_ms")
+        if not base:
+            continue
+        cells = "  ".join(
+            f"{v} {c[f'variant_{name}_{v}_ms']:.2f} ms ({c[f'variant_{name}_{v}_ms'] / base:.2f}x)"
+            for v in VARIANTS
+        )
+        lines.append(f"  {name}-{c[f'variant_{name}_size']:.0f}: {cells}")
+    return lines
+
+
 def measure(quick: bool = False) -> dict[str, float]:
     """Every figure of this module (smaller and fewer when ``quick``)."""
     out: dict[str, float] = {}
+    out.update(variant_costs(quick))
     out.update(sync_costs(500 if quick else 20_000, 5 if quick else 40))
     out.update(despawn_costs(100 if quick else 1000, 2 if quick else 9))
     n = 1000 if quick else MEMORY_BODIES
@@ -176,6 +250,8 @@ def table(costs: dict[str, float]) -> str:
         f"  pymunk {c['despawn_pymunk_ms']:.1f} ms",
         f"  memory per body (RSS)                      kge {c['bytes_per_body_kge']:.0f} B"
         f"  pymunk {c['bytes_per_body_pymunk']:.0f} B",
+        "  kge variants, frame ms (x default; threads-2 is not deterministic):",
+        *variant_lines(c),
     ])
 
 
@@ -195,4 +271,13 @@ def markdown(costs: dict[str, float]) -> list[str]:
         f"| {c['despawn_kge_ms']:.1f} | {c['despawn_pymunk_ms']:.1f} |",
         f"| memory per body (RSS growth, sparse field), bytes "
         f"| {c['bytes_per_body_kge']:,.0f} | {c['bytes_per_body_pymunk']:,.0f} |",
+        "", "kge variants, frame ms (ratio to the default; `threads-2` is not deterministic):",
+        "", "| scene | " + " | ".join(VARIANTS) + " |", "|---|" + "---:|" * len(VARIANTS),
+        *[
+            f"| {name}-{c[f'variant_{name}_size']:.0f} | " + " | ".join(
+                f"{c[f'variant_{name}_{v}_ms']:.2f} "
+                f"({c[f'variant_{name}_{v}_ms'] / c[f'variant_{name}_default_ms']:.2f}x)"
+                for v in VARIANTS) + " |"
+            for name in ("rain", "dense-pile") if f"variant_{name}_default_ms" in c
+        ],
     ]
