@@ -291,6 +291,12 @@ def wake_neighbours(body: pymunk.Body) -> None:
     """
     space = body.space
     if body.body_type == DYNAMIC:
+        if not body.is_sleeping:
+            # Nothing around an awake dynamic body sleeps: the step that made a contact
+            # or a joint's island woke both sides (cpSpaceProcessComponents), and waking
+            # a sleeper wakes its whole island. Walking the arbiters in Python was most
+            # of a despawn; Box2D's SetAwake(true) leaves awake bodies' timers alone too.
+            return
         body.activate()
     if space is None:
         return
