@@ -52,6 +52,10 @@ def write_rows(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> N
     if moved is None and targets.complete:
         x, y, a, vx, vy, w = new.T.tolist()
         tfs, rbs = targets._lists
+    elif targets.complete:  # some moved: gather their components, no masks
+        x, y, a, vx, vy, w = new.T.tolist()
+        tfs = targets.transforms[0][moved].tolist()
+        rbs = targets.rigidbodies[0][moved].tolist()
     else:
         if moved is None:
             moved = np.arange(len(new))
