@@ -30,6 +30,9 @@ PairFilter = Callable[[pymunk.Shape, pymunk.Shape], bool]
 _ALL = pymunk.ShapeFilter()
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
+_SQRT2 = math.sqrt(2.0)
+_MAX = np.maximum.reduce
+_ABS = np.absolute
 _FIELDS = (
     pymunk.batch.BodyFields.BODY_ID
     | pymunk.batch.BodyFields.POSITION
@@ -42,7 +45,9 @@ _FIELDS = (
 class Index:
     """The tracked bodies sorted by id, with their radii as arrays (rebuilt on track/untrack)."""
 
-    __slots__ = ("bullets", "core", "extent", "ids", "infos", "max_extent", "reach")
+    __slots__ = (
+        "bullets", "core", "extent", "ids", "infos", "max_extent", "max_reach", "min_core", "reach",
+    )
 
     def __init__(self, infos: list[Tracked]) -> None:
         self.infos = infos
@@ -51,6 +56,8 @@ class Index:
         self.reach = np.array([t.reach for t in infos], dtype=np.float64)
         self.extent = np.array([t.extent for t in infos], dtype=np.float64)
         self.max_extent = float(self.extent.max()) if infos else 0.0
+        self.max_reach = float(self.reach.max()) if infos else 0.0
+        self.min_core = float(self.core.min()) if infos else 0.0
         self.bullets = any(t.bullet for t in infos)
 
 
@@ -111,6 +118,7 @@ class ContinuousCollision:
         self._rows: (
             tuple[bytes, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
         ) = None
+        self._untracked = np.empty(0, dtype=np.int64)  # rows of _rows not tracked
         self._generation = 0  # bumped whenever _rows is recomputed
         self._obstacles = Obstacles(space)
         #: this step's answers of near_obstacles(cap) for neighbours of fast bodies
@@ -209,14 +217,26 @@ class ContinuousCollision:
         if not self._tracked:
             return 0
         pos, known, core, reach = self._rows_of(ids)
-        speed = np.hypot(vel[:, 0], vel[:, 1])
-        motion = (speed + np.abs(vel[:, 2]) * reach) * dt
-        fast = np.flatnonzero(known & (motion > self.threshold * n * core))
+        index = self._lookup_index()
         want: dict[int, Tracked] = {}
-        if len(fast):
-            self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
-        moving = ~known & ((speed > 0.0) | (vel[:, 2] != 0.0))
-        if moving.any() or self._movers:
+        # one bound screens every body: no component of any velocity above ``top``
+        # means no tracked body moves more than (sqrt 2 + its reach) * top * dt, and
+        # when that is under the smallest threshold none is fast (a settled or slow
+        # world then skips the per-body arrays below; a NaN fails the test)
+        top = float(_MAX(_ABS(vel), axis=None)) if len(vel) else 0.0
+        bound = (_SQRT2 + index.max_reach) * top * dt
+        speed: np.ndarray | None = None
+        if not bound <= self.threshold * n * index.min_core:
+            speed = np.hypot(vel[:, 0], vel[:, 1])
+            motion = (speed + np.abs(vel[:, 2]) * reach) * dt
+            fast = np.flatnonzero(known & (motion > self.threshold * n * core))
+            if len(fast):
+                self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
+        untracked = self._untracked
+        if self._movers or (len(untracked) and _MAX(_ABS(vel[untracked]), axis=None) > 0.0):
+            if speed is None:
+                speed = np.hypot(vel[:, 0], vel[:, 1])
+            moving = ~known & ((speed > 0.0) | (vel[:, 2] != 0.0))
             self._boost_near_movers(ids, moving, vel, dt, n, want)
         for key in [k for k in self._armed if k not in want]:
             self._disarm(self._armed.pop(key))
@@ -427,14 +447,9 @@ class ContinuousCollision:
         if cached is not None and cached[1] is index and cached[0] == key:
             return cached[2:]
         pos = np.minimum(np.searchsorted(index.ids, ids), len(index.ids) - 1)
-        self._rows = (
-            key,
-            index,
-            pos,
-            index.ids[pos] == ids,
-            index.core[pos],
-            index.reach[pos],
-        )
+        known = index.ids[pos] == ids
+        self._rows = (key, index, pos, known, index.core[pos], index.reach[pos])
+        self._untracked = np.flatnonzero(~known)  # static and kinematic rows
         self._generation += 1
         return self._rows[2:]
 
