@@ -25,8 +25,10 @@ from collections import deque
 from typing import Any
 
 from benchmarks.breakdown import PhaseTimer
+from benchmarks.engines import PymunkRunner, spec_of
 from kge.physics import simulation
 from kge.systems.physics import PhysicsSystem
+from kge.testbed.registry import get_sample
 
 #: bodies of the sparse field for the memory figure
 MEMORY_BODIES = 10_000
@@ -176,6 +178,12 @@ def _variant(scene: Any, size: int, change: dict[str, Any]) -> Any:
     return measured
 
 
+#: testbed samples of the variant scenes (their size parameter is ``count``)
+_SLUGS: dict[str, tuple[str, dict[str, Any]]] = {
+    "rain": ("rain", {}), "dense-pile": ("box-pile", {"sleep": False}),
+}
+
+
 def variant_costs(quick: bool = False, blocks: int = 7) -> dict[str, float]:
     """Frame ms of rain and the dense pile in kge's variants (:data:`VARIANTS`), interleaved.
 
@@ -191,6 +199,10 @@ def variant_costs(quick: bool = False, blocks: int = 7) -> dict[str, float]:
     for name, size in (("rain", 1000 if quick else 5000), ("dense-pile", 2000 if quick else 6000)):
         scene = table[name]
         runners = {v: _variant(scene, size, change) for v, change in VARIANTS.items()}
+        slug, extra = _SLUGS[name]
+        spec = spec_of(get_sample(slug), count=size, **extra)
+        runners["pymunk"] = PymunkRunner(spec)  # the floor of the step alone
+        runners["pymunk-events"] = PymunkRunner(spec, events=True)  # + no-op begin/separate
         times: dict[str, list[float]] = {v: [] for v in runners}
         try:
             for r in runners.values():
@@ -223,6 +235,11 @@ def variant_lines(c: dict[str, float]) -> list[str]:
             for v in VARIANTS
         )
         lines.append(f"  {name}-{c[f'variant_{name}_size']:.0f}: {cells}")
+        raw, raw_events = c[f"variant_{name}_pymunk_ms"], c[f"variant_{name}_pymunk-events_ms"]
+        lines.append(
+            f"    raw pymunk {raw:.2f} ms, with no-op begin/separate callbacks {raw_events:.2f} ms:"
+            f" kge / raw {base / raw:.2f}, kge / raw with callbacks {base / raw_events:.2f}"
+        )
     return lines
 
 
@@ -278,6 +295,17 @@ def markdown(costs: dict[str, float]) -> list[str]:
                 f"{c[f'variant_{name}_{v}_ms']:.2f} "
                 f"({c[f'variant_{name}_{v}_ms'] / c[f'variant_{name}_default_ms']:.2f}x)"
                 for v in VARIANTS) + " |"
+            for name in ("rain", "dense-pile") if f"variant_{name}_default_ms" in c
+        ],
+        "", "Raw pymunk beside them (same run): the step alone, and with no-op begin/separate "
+        "callbacks, the floor of delivering Box2D's contact events through pymunk:", "",
+        "| scene | raw pymunk ms | with callbacks ms | kge / raw | kge / raw with callbacks |",
+        "|---|---:|---:|---:|---:|",
+        *[
+            f"| {name}-{c[f'variant_{name}_size']:.0f} | {c[f'variant_{name}_pymunk_ms']:.2f} "
+            f"| {c[f'variant_{name}_pymunk-events_ms']:.2f} "
+            f"| {c[f'variant_{name}_default_ms'] / c[f'variant_{name}_pymunk_ms']:.2f} "
+            f"| {c[f'variant_{name}_default_ms'] / c[f'variant_{name}_pymunk-events_ms']:.2f} |"
             for name in ("rain", "dense-pile") if f"variant_{name}_default_ms" in c
         ],
     ]
