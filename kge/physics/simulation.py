@@ -57,6 +57,8 @@ from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_rows
 from kge.world import World
 
+_EQUAL = np.equal
+
 
 class Simulation:
     """pymunk mirror of one World's physics components."""
@@ -518,6 +520,10 @@ class Simulation:
                 body.velocity = (vx, vy)
             if body.angular_velocity != w:
                 body.angular_velocity = w
+            i = self.poses.slot.get(e)
+            if i is not None and not self.poses_stale:
+                # sync-out writes what changed since this: the component now holds it
+                self.poses.state[i, 3:6] = (vx, vy, w)
         configure_dynamics(body, rb, self.dt, self.substeps)
         body.kge_bullet = rb.bullet
         self.mass_dirty.add(e)
@@ -779,15 +785,18 @@ class Simulation:
             old = state[slots]
             state[slots] = rows
         changed = rows_differ(rows, old)
+        # a drifting crowd (no gravity) keeps its velocities: its RigidBodies are not
+        # written at all (one compare; -0.0 == 0.0 is the only change it ignores)
+        velocities = not bool(_EQUAL(rows[:, 3:6], old[:, 3:6]).all())
         if poses.full and changed.all():  # everything moved (rain, a lander): no gathers
-            write_rows(self._targets, None, rows)
+            write_rows(self._targets, None, rows, velocities)
             if poses.asleep.any():
                 self._woke(slots)
             self.all_asleep = False
             return
         if changed.any():
             moved = slots[changed]
-            write_rows(self._targets, moved, rows[changed])
+            write_rows(self._targets, moved, rows[changed], velocities)
             if poses.asleep.any():
                 self._woke(moved)
         still = slots[~changed & ~poses.asleep[slots] & poses.dynamic[slots]]

@@ -42,20 +42,26 @@ class Targets:
         self.complete = bool(self.transforms[1].all() and self.rigidbodies[1].all())
 
 
-def write_rows(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:
+def write_rows(
+    targets: Targets, moved: np.ndarray | None, new: np.ndarray, velocities: bool = True
+) -> None:
     """Write rows ``new`` to the components of the ``moved`` slots (None: every slot).
 
-    Pose and velocity are both written for every row given: the caller passes
-    only rows that changed, and splitting the halves cost more numpy calls than
-    the stores it saved.
+    The caller passes only rows that changed, and ``velocities=False`` when no
+    velocity among them did (bodies drifting at constant velocity, with no
+    gravity): then only the Transforms are written. Finer masks per half cost
+    more numpy calls than the stores they would save.
     """
-    if moved is None and targets.complete:
-        x, y, a, vx, vy, w = new.T.tolist()
-        tfs, rbs = targets._lists
-    elif targets.complete:  # some moved: gather their components, no masks
-        x, y, a, vx, vy, w = new.T.tolist()
-        tfs = targets.transforms[0][moved].tolist()
-        rbs = targets.rigidbodies[0][moved].tolist()
+    if targets.complete:
+        if moved is None:
+            tfs, rbs = targets._lists
+        else:
+            tfs = targets.transforms[0][moved].tolist()
+            rbs = targets.rigidbodies[0][moved].tolist() if velocities else []
+        if velocities:
+            x, y, a, vx, vy, w = new.T.tolist()
+        else:
+            x, y, a = new[:, :3].T.tolist()
     else:
         if moved is None:
             moved = np.arange(len(new))
@@ -63,14 +69,16 @@ def write_rows(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> N
         sel = has_tf[moved]
         tfs = tf_objs[moved[sel]].tolist()
         x, y, a = new[sel, :3].T.tolist()
-        sel = has_rb[moved]
-        rbs = rb_objs[moved[sel]].tolist()
-        vx, vy, w = new[sel, 3:6].T.tolist()
+        if velocities:
+            sel = has_rb[moved]
+            rbs = rb_objs[moved[sel]].tolist()
+            vx, vy, w = new[sel, 3:6].T.tolist()
     _set_all(_SET_X, tfs, x)
     _set_all(_SET_Y, tfs, y)
     _set_all(_SET_ANGLE, tfs, a)
-    _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
-    _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
+    if velocities:
+        _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
+        _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
 
 
 def component_array(items: list[Any]) -> Components:
