@@ -794,7 +794,15 @@ class Simulation:
                 self._woke(slots)
             self.all_asleep = False
             return
-        if changed.any():
+        if poses.full and not velocities and 4 * np.count_nonzero(changed) > 3 * len(changed):
+            # Transforms only, most of them moved: rewriting the few unchanged ones with
+            # their own values costs less than gathering the moved ones (not so for
+            # velocities: a sleeper's RigidBody holds zero, its row the speed it fell
+            # asleep at)
+            write_rows(self._targets, None, rows, velocities)
+            if poses.asleep.any():
+                self._woke(slots[changed])
+        elif changed.any():
             moved = slots[changed]
             write_rows(self._targets, moved, rows[changed], velocities)
             if poses.asleep.any():
