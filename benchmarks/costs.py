@@ -46,9 +46,9 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
     moved = [0]
     inner = simulation.write_rows
 
-    def counted(targets: Any, slots: Any, new: Any) -> None:
+    def counted(targets: Any, slots: Any, new: Any, velocities: bool = True) -> None:
         moved[0] += len(new)
-        inner(targets, slots, new)
+        inner(targets, slots, new, velocities)
 
     simulation.write_rows = counted  # type: ignore[assignment]  # the module's name, which sync-out calls
     per_body = []
