@@ -24,9 +24,9 @@ register_envs()
 
 __all__ = [
     "CARTPOLE",
-    "BatchVectorEnv",
     "LUNAR_LANDER",
     "LUNAR_LANDER_CONTINUOUS",
+    "BatchVectorEnv",
     "CartPole",
     "EnvError",
     "InvalidActionError",

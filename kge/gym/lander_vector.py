@@ -47,13 +47,13 @@ from kge.components.camera import Camera
 from kge.gym.env import env_plugins
 from kge.gym.lunar_lander import (
     FPS,
-    H,
     SCALE,
     VIEWPORT_H,
     VIEWPORT_W,
-    W,
+    H,
     LanderScene,
     LunarLander,
+    W,
     fire,
     observations,
     rewards,
@@ -266,7 +266,7 @@ class LunarLanderVector(BatchVectorEnv):
                 "awake": self.awake.copy(), "_awake": every.copy()}
 
     # -- rendering ---------------------------------------------------------------------------
-    def render(self) -> tuple[np.ndarray, ...] | None:
+    def render(self) -> tuple[Any, ...] | None:
         """One (h, w, 3) frame per env: the camera visits each scene in turn."""
         if self.render_mode is None:
             import gymnasium as gym

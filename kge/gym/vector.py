@@ -32,7 +32,10 @@ class BatchVectorEnv(VectorEnv[Any, Any, Any]):
     """What every kge vector env shares: argument checks, batched spaces, the result
     arrays, Gymnasium's seeding rule, the action check and the time limit."""
 
-    def _setup_batch(self, label: str, num_envs: Any, max_episode_steps: Any,
+    #: the name every error uses: "<id or class> (vector of N)"
+    env_name: str = "KgeVectorEnv"
+
+    def _setup_batch(self, label: Any, num_envs: Any, max_episode_steps: Any,
                      render_mode: str | None) -> None:
         if isinstance(num_envs, bool) or not isinstance(num_envs, int) or num_envs < 1:
             raise ValueError(f"{label}: num_envs must be an int >= 1, got {num_envs!r}")
