@@ -55,6 +55,7 @@ from kge.gym.lunar_lander import (
     LunarLander,
     W,
     fire,
+    give_push,
     observations,
     rewards,
     solver_settings,
@@ -147,8 +148,15 @@ class LunarLanderVector(BatchVectorEnv):
         self._rbs = [RigidBody() for _ in range(self.num_envs)]
         return self._app.world
 
-    def _respawn(self, world: World, i: int) -> None:
-        """Replace env i's moon and lander with a new episode's (drawn from its rng)."""
+    def _respawn(self, world: World, envs: list[int]) -> None:
+        """Replace these envs' moons and landers with new episodes' (drawn from their rngs)."""
+        scenes = [self._respawn_one(world, i) for i in envs]
+        give_push(world, scenes)
+        for i in envs:
+            self._tfs[i] = world.get(self._landers[i], Transform)
+            self._rbs[i] = world.get(self._landers[i], RigidBody)
+
+    def _respawn_one(self, world: World, i: int) -> LanderScene:
         old = self._scenes[i]
         if old is not None:
             for e in old.entities:
@@ -165,11 +173,10 @@ class LunarLanderVector(BatchVectorEnv):
         self._parts[scene.lander] = (i, HULL)
         self._parts[scene.legs[0]] = (i, 0)
         self._parts[scene.legs[1]] = (i, 1)
-        self._tfs[i] = world.get(scene.lander, Transform)
-        self._rbs[i] = world.get(scene.lander, RigidBody)
         self.game_over[i] = False
         self.leg_contact[i] = 0.0
         self.prev_shaping[i] = np.nan
+        return scene
 
     # -- Gymnasium protocol -----------------------------------------------------------------
     def reset(
@@ -186,8 +193,7 @@ class LunarLanderVector(BatchVectorEnv):
             if s is not None:
                 self._rngs[i] = seeding.np_random(s)[0]
         world = self._new_world()
-        for i in range(self.num_envs):
-            self._respawn(world, i)
+        self._respawn(world, list(range(self.num_envs)))
         every = np.ones(self.num_envs, np.bool_)
         self._advance(world, np.zeros((self.num_envs, 0)), every)
         self._autoreset[:] = False
@@ -201,8 +207,8 @@ class LunarLanderVector(BatchVectorEnv):
         batch = self._check_actions(actions)
         world = self.world
         resetting = self._autoreset.copy()
-        for i in np.flatnonzero(resetting).tolist():
-            self._respawn(world, i)
+        if resetting.any():
+            self._respawn(world, np.flatnonzero(resetting).tolist())
         self._advance(world, batch.reshape(self.num_envs, -1), resetting)
         self._truncations[:] = False
         self._time_limit(~resetting)

@@ -141,6 +141,7 @@ class LunarLander(KgeEnv):
         world.insert_resource(solver_settings(self.gravity))
         world.insert_resource(Camera(center=(W / 2, H / 2), pixels_per_meter=SCALE))
         scene = spawn_scene(world, rng, (0.0, 0.0), drawn=True)
+        give_push(world, [scene])
         self.lander, self.legs, self.helipad_y = scene.lander, scene.legs, scene.helipad_y
         self.helipad_x = scene.helipad_x
 
@@ -225,11 +226,14 @@ class LanderScene:
     helipad_x: tuple[float, float]
     helipad_y: float
     entities: list[int]
+    #: the random force of the first step, N
+    push: tuple[float, float]
 
 
 def spawn_scene(world: World, rng: np.random.Generator, origin: tuple[float, float],
                 drawn: bool) -> LanderScene:
-    """Spawn a moon and a lander with its origin at ``origin`` and give it the random push.
+    """Spawn a moon and a lander with its origin at ``origin``; draw its random push
+    (:func:`give_push` applies it).
 
     ``rng`` draws the terrain and the push (in Gymnasium's order). ``drawn`` adds the
     drawables (terrain quads, flags, hull and legs); an env that never renders skips them.
@@ -285,10 +289,17 @@ def spawn_scene(world: World, rng: np.random.Generator, origin: tuple[float, flo
         )
         joints.append(world.spawn(leg_joint(lander, leg, i)))
         legs.append(leg)
-    push = rng.uniform(-INITIAL_RANDOM, INITIAL_RANDOM, size=2)
-    world.resource(Physics).apply_force(lander, (float(push[0]), float(push[1])))
+    px, py = rng.uniform(-INITIAL_RANDOM, INITIAL_RANDOM, size=2).tolist()
     return LanderScene(lander, (legs[0], legs[1]), helipad_x, helipad_y,
-                       [*joints, *made, lander, *legs])
+                       [*joints, *made, lander, *legs], (px, py))
+
+
+def give_push(world: World, scenes: list[LanderScene]) -> None:
+    """Apply each new lander's random push (a force for the first step). After all the
+    spawns: the first force makes the physics build the bodies, once for all scenes."""
+    physics = world.resource(Physics)
+    for scene in scenes:
+        physics.apply_force(scene.lander, scene.push)
 
 
 def throttles(actions: np.ndarray, continuous: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -180,3 +180,17 @@ def test_refused_arguments_and_order():
     with pytest.raises(ResetNeededError):
         envs.step(np.array([0, 0]))
     assert envs.origins.tolist() == [0.0, SPACING]
+
+
+def test_the_batched_example_lands_most_episodes() -> None:
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "rl" / "batched.py"
+    spec = importlib.util.spec_from_file_location("rl_batched", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    result = module.fly(num_envs=4, episodes=6, seed=0)
+    assert result["episodes"] >= 6 and result["landed"] >= 5
+    assert result["mean_return"] > 200.0 and result["steps_per_s"] > 0
