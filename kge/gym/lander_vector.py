@@ -45,6 +45,7 @@ from kge.app import App
 from kge.components import RigidBody, Transform
 from kge.components.camera import Camera
 from kge.gym.env import env_plugins
+from kge.gym.errors import ObservationError, ResetNeededError
 from kge.gym.lunar_lander import (
     FPS,
     SCALE,
@@ -121,8 +122,6 @@ class LunarLanderVector(BatchVectorEnv):
     @property
     def app(self) -> App:
         if self._app is None:
-            from kge.gym.errors import ResetNeededError
-
             raise ResetNeededError(f"{self.env_name}: call reset() before using the App")
         return self._app
 
@@ -237,6 +236,10 @@ class LunarLanderVector(BatchVectorEnv):
                           for t, r in zip(tfs, rbs, strict=True)])
         state[:, 0] -= self.origins
         obs = observations(state, self.leg_contact, H / 4)
+        if not np.isfinite(obs).all():
+            rows = np.flatnonzero(~np.isfinite(obs).all(axis=1)).tolist()
+            raise ObservationError(f"{self.env_name}: a non-finite observation in env(s) "
+                                   f"{rows}: {obs[rows]!r}")
         self.awake = np.array([r.awake for r in rbs], np.bool_)
         reward, shaping = rewards(obs, self.prev_shaping, m_power, s_power, self.game_over,
                                   self.awake)

@@ -9,8 +9,14 @@ import numpy as np
 import pytest
 
 from kge.components import Collider
-from kge.gym import LUNAR_LANDER, LUNAR_LANDER_CONTINUOUS, LunarLanderVector, lunar_lander
-from kge.gym.errors import InvalidActionError, ResetNeededError
+from kge.gym import (
+    LUNAR_LANDER,
+    LUNAR_LANDER_CONTINUOUS,
+    LunarLanderVector,
+    lander_vector,
+    lunar_lander,
+)
+from kge.gym.errors import InvalidActionError, ObservationError, ResetNeededError
 from kge.gym.lander_vector import SPACING
 from kge.physics.events import PhysicsEvents
 
@@ -194,3 +200,28 @@ def test_the_batched_example_lands_most_episodes() -> None:
     result = module.fly(num_envs=4, episodes=6, seed=0)
     assert result["episodes"] >= 6 and result["landed"] >= 5
     assert result["mean_return"] > 200.0 and result["steps_per_s"] > 0
+
+
+def test_a_non_finite_observation_names_the_env_and_row(monkeypatch) -> None:
+    envs = make_vec(LUNAR_LANDER, num_envs=3)
+    envs.reset(seed=0)
+
+    def broken(state, legs, helipad_y):
+        out = lunar_lander.observations(state, legs, helipad_y)
+        out[1, 2] = np.nan
+        return out
+
+    monkeypatch.setattr(lander_vector, "observations", broken)
+    with pytest.raises(ObservationError, match=r"kge/LunarLander-v0 \(vector of 3\).*\[1\]"):
+        envs.step(np.array([0, 0, 0]))
+
+
+def test_time_limit_truncates_and_the_next_step_resets() -> None:
+    envs = make_vec(LUNAR_LANDER, num_envs=2, max_episode_steps=3)
+    envs.reset(seed=0)
+    for _ in range(2):
+        assert not envs.step(np.array([2, 2]))[3].any()
+    _, _, term, trunc, _ = envs.step(np.array([2, 2]))
+    assert trunc.all() and not term.any()
+    obs, rew, _, trunc, _ = envs.step(np.array([2, 2]))  # the reset step
+    assert not trunc.any() and (rew == 0.0).all() and (obs[:, 1] > 1.0).all()
