@@ -149,6 +149,16 @@ class LunarLanderVector(BatchVectorEnv):
 
     def _respawn(self, world: World, envs: list[int]) -> None:
         """Replace these envs' moons and landers with new episodes' (drawn from their rngs)."""
+        for i in envs:
+            old = self._scenes[i]
+            if old is not None:
+                for e in old.entities:
+                    self._parts.pop(e, None)
+                    if world.exists(e):
+                        world.despawn(e)
+        # despawns land now, so the physics takes the old scenes out and the new ones in
+        # with one sync (the push below makes it), not one for each
+        world.flush()
         scenes = [self._respawn_one(world, i) for i in envs]
         give_push(world, scenes)
         for i in envs:
@@ -156,12 +166,6 @@ class LunarLanderVector(BatchVectorEnv):
             self._rbs[i] = world.get(self._landers[i], RigidBody)
 
     def _respawn_one(self, world: World, i: int) -> LanderScene:
-        old = self._scenes[i]
-        if old is not None:
-            for e in old.entities:
-                self._parts.pop(e, None)
-                if world.exists(e):
-                    world.despawn(e)
         rng = self._rngs[i]
         if rng is None:
             rng = self._rngs[i] = seeding.np_random(None)[0]
