@@ -199,6 +199,7 @@ def measure(sizes: tuple[int, ...] = SIZES, env_steps: int = 4000,
     """
     chosen = variants(sizes)
     samples: dict[tuple[str, str, int], list[float]] = {v: [] for v in chosen}
+    before = os.getloadavg()[0]
     for r in range(repeats):
         for v in chosen:
             env = None if v[1] == "floor" else _make(*v)
@@ -208,8 +209,9 @@ def measure(sizes: tuple[int, ...] = SIZES, env_steps: int = 4000,
             finally:
                 if env is not None:
                     env.close()
-    return [{"engine": e, "mode": m, "n": n, "steps_per_s": statistics.median(samples[(e, m, n)])}
-            for e, m, n in chosen]
+    load = (before, os.getloadavg()[0])  # the machine is shared: say how busy it was
+    return [{"engine": e, "mode": m, "n": n, "steps_per_s": statistics.median(samples[(e, m, n)]),
+             "load": load} for e, m, n in chosen]
 
 
 #: (label, file, function, caller function or None): the parts of a batched env step
@@ -318,13 +320,17 @@ def table(rows: list[dict[str, Any]], markdown: bool = False) -> str:
         vs = "pybox2d SyncVectorEnv" if other == "sync" and mode != "sync" else "pybox2d"
         r = "-" if k is None or b is None else f"{k / b:.2f} (vs {vs})"
         lines.append((label, str(n), cell(engine, mode, n), cell("box2d", other, n), r))
+    loads = [r["load"] for r in rows if "load" in r]
+    note = ("" if not loads else f"\n\nload average before / after the run: {loads[0][0]:.2f} / "
+            f"{loads[0][1]:.2f} ({os.cpu_count()} cores); the floor is raw pymunk stepping "
+            "the same bodies, joints and solver settings with no kge")
     if markdown:
         out = ["| " + " | ".join(head) + " |", "|---|---:|---:|---:|---:|"]
         out += ["| " + " | ".join(cols) + " |" for cols in lines]
-        return "\n".join(out)
+        return "\n".join(out) + note
     widths = [max(len(c[i]) for c in [head, *lines]) for i in range(len(head))]
     return "\n".join("  ".join(c[i].rjust(widths[i]) for i in range(len(head)))
-                     for c in [head, *lines])
+                     for c in [head, *lines]) + note
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -342,11 +348,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.profile:
         print(breakdown(args.profile, args.steps))
         return 0
-    before = os.getloadavg()
-    rows = measure(tuple(args.sizes), args.steps, args.repeats)
-    print(table(rows, args.markdown))
-    print(f"load average before / after: {before[0]:.2f} / {os.getloadavg()[0]:.2f} "
-          f"({os.cpu_count()} cores)")
+    print(table(measure(tuple(args.sizes), args.steps, args.repeats), args.markdown))
     return 0
 
 
