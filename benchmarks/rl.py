@@ -75,6 +75,18 @@ def variants(sizes: tuple[int, ...]) -> list[tuple[str, str, int]]:
     return out
 
 
+def solid(outline: list[tuple[float, float]], density: float) -> Any:
+    """A dynamic pymunk body with the mass of ``outline`` alone, as kge (and Box2D) count
+    it: the 0.01 m skin of the shape adds no mass (pymunk's density would add it)."""
+    import pymunk
+
+    mass = density * pymunk.area_for_poly(outline)
+    centre = pymunk.Poly(None, outline).center_of_gravity
+    body = pymunk.Body(mass, pymunk.moment_for_poly(mass, outline, (-centre.x, -centre.y)))
+    body.center_of_gravity = centre
+    return body
+
+
 class PymunkFloor:
     """N LunarLander scenes in one raw pymunk space: the kge env's bodies, joints and
     solver settings with no kge at all (the same geometry constants, origins 32 m apart).
@@ -114,20 +126,21 @@ class PymunkFloor:
                 seg.friction, seg.filter = 0.1, ground
             space.add(*segs)
             x0, y0 = ox + L.W / 2, L.H
-            hull = pymunk.Body()
+            outline = [(x / L.SCALE, y / L.SCALE) for x, y in L.LANDER_POLY]
+            hull = solid(outline, 5.0)
             hull.position = (x0, y0)
-            shape = pymunk.Poly(hull, [(x / L.SCALE, y / L.SCALE) for x, y in L.LANDER_POLY],
-                                radius=0.01)
-            shape.density, shape.friction = 5.0, 0.1
+            shape = pymunk.Poly(hull, outline, radius=0.01)
+            shape.friction = 0.1
             shape.filter = pymunk.ShapeFilter(categories=0x10, mask=1)
             space.add(hull, shape)
             parts = [(hull, (x0, y0), 0.0)]
             for i in (-1, 1):
-                leg = pymunk.Body()
+                hw, hh = L.LEG_W / L.SCALE, L.LEG_H / L.SCALE
+                corners = [(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)]
+                leg = solid(corners, 1.0)
                 leg.position, leg.angle = (x0 - i * L.LEG_AWAY / L.SCALE, y0), i * 0.05
-                box = pymunk.Poly.create_box(leg, (2 * L.LEG_W / L.SCALE, 2 * L.LEG_H / L.SCALE),
-                                             0.01)
-                box.density, box.friction = 1.0, 0.2
+                box = pymunk.Poly(leg, corners, radius=0.01)
+                box.friction = 0.2
                 box.filter = pymunk.ShapeFilter(categories=0x20, mask=1)
                 pivot = pymunk.PivotJoint(hull, leg, (0.0, 0.0),
                                           (i * L.LEG_AWAY / L.SCALE, L.LEG_DOWN / L.SCALE))

@@ -225,3 +225,24 @@ def test_time_limit_truncates_and_the_next_step_resets() -> None:
     assert trunc.all() and not term.any()
     obs, rew, _, trunc, _ = envs.step(np.array([2, 2]))  # the reset step
     assert not trunc.any() and (rew == 0.0).all() and (obs[:, 1] > 1.0).all()
+
+
+def test_the_benchmark_floor_steps_the_same_bodies() -> None:
+    """benchmarks.rl's raw-pymunk floor: the env's masses, joints and solver settings."""
+    from benchmarks.rl import PymunkFloor
+    from kge.physics.resource import Physics
+
+    floor = PymunkFloor(2)
+    envs = make_vec(LUNAR_LANDER, num_envs=1)
+    envs.reset(seed=0)
+    physics = envs.world.resource(Physics)
+    scene = envs._scenes[0]
+    hull, legs = floor.parts[0][0][0], [p[0] for p in floor.parts[0][1:]]
+    assert hull.mass == pytest.approx(physics.mass_data(scene.lander).mass, rel=1e-3)
+    assert hull.moment == pytest.approx(physics.mass_data(scene.lander).inertia, rel=1e-3)
+    assert legs[0].mass == pytest.approx(physics.mass_data(scene.legs[0]).mass, rel=1e-3)
+    assert len(floor.space.constraints) == 2 * 6 and floor.space.iterations == 40
+    y0 = hull.position.y
+    for _ in range(20):
+        floor.step(np.zeros(2, np.int64))
+    assert hull.position.y < y0 - 0.5  # falls under gravity
