@@ -7,7 +7,14 @@ pre-drawn random actions for every variant:
   get it), reset when an episode ends;
 * ``batched``: kge's own vector env (``make_vec``'s ``vector_entry_point``:
   N worlds, batched arrays, autoreset);
-* ``sync``: Gymnasium's ``SyncVectorEnv`` over N envs (for kge and for pybox2d).
+* ``sync``: Gymnasium's ``SyncVectorEnv`` over N envs (for kge and for pybox2d);
+* ``floor``: raw pymunk, no kge: N landers (hull, two legs on pivot + motor + limit,
+  the moon's edge and chain) in one space at the env's substeps and iterations, a
+  random engine impulse per lander and step. What the batched env cannot beat
+  while it solves the same bodies with the same solver settings.
+
+``python -m benchmarks.rl --profile 64`` prints where an env step of the batched
+env goes (cProfile, by subsystem, scaled to the unprofiled time).
 
 The pybox2d side is Gymnasium's ``LunarLander-v3`` (Box2D 2.3.10 through pybox2d;
 it needs ``box2d`` and ``pygame``, the ``bench`` extra). Run
@@ -17,6 +24,7 @@ it needs ``box2d`` and ``pygame``, the ``bench`` extra). Run
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import statistics
 import sys
@@ -63,7 +71,107 @@ def variants(sizes: tuple[int, ...]) -> list[tuple[str, str, int]]:
     for n in sizes:
         out.append(("kge", "batched", n))
         out += [(e, "sync", n) for e in engines]
+        out.append(("pymunk", "floor", n))
     return out
+
+
+def solid(outline: list[tuple[float, float]], density: float) -> Any:
+    """A dynamic pymunk body with the mass of ``outline`` alone, as kge (and Box2D) count
+    it: the 0.01 m skin of the shape adds no mass (pymunk's density would add it)."""
+    import pymunk
+
+    mass = density * pymunk.area_for_poly(outline)
+    centre = pymunk.Poly(None, outline).center_of_gravity
+    body = pymunk.Body(mass, pymunk.moment_for_poly(mass, outline, (-centre.x, -centre.y)))
+    body.center_of_gravity = centre
+    return body
+
+
+class PymunkFloor:
+    """N LunarLander scenes in one raw pymunk space: the kge env's bodies, joints and
+    solver settings with no kge at all (the same geometry constants, origins 32 m apart).
+    ``step(actions)`` fires the main engine (a plain impulse at the hull's centre) of the
+    landers whose action is 2, then takes the substeps; a lander that leaves its screen
+    or lands is put back at the top (its velocity zeroed), so the space stays as busy
+    as the env's with its resets."""
+
+    def __init__(self, n: int, seed: int = 0) -> None:
+        import pymunk
+
+        from kge.gym import lunar_lander as L
+        from kge.gym.lander_vector import SPACING
+
+        substeps, iterations = L.SOLVER
+        self.substeps, self.h = substeps, 1.0 / L.FPS / substeps
+        space = self.space = pymunk.Space()
+        space.gravity = (0.0, -10.0)
+        space.iterations = iterations
+        space.collision_slop = 0.005
+        space.sleep_time_threshold = 0.5
+        space.idle_speed_threshold = 0.01
+        rng = np.random.default_rng(seed)
+        ground = pymunk.ShapeFilter(categories=1)
+        self.hulls: list[Any] = []
+        self.parts: list[list[tuple[Any, tuple[float, float], float]]] = []
+        for k in range(n):
+            ox = k * SPACING
+            height = rng.uniform(0, L.H / 2, size=L.CHUNKS + 1)
+            height[L.CHUNKS // 2 - 2 : L.CHUNKS // 2 + 3] = L.H / 4
+            xs = [ox + L.W / (L.CHUNKS - 1) * i for i in range(L.CHUNKS)]
+            ys = [0.33 * (height[i - 1] + height[i] + height[i + 1]) for i in range(L.CHUNKS)]
+            segs = [pymunk.Segment(space.static_body, (ox, 0.0), (ox + L.W, 0.0), 0.01)]
+            segs += [pymunk.Segment(space.static_body, (xs[i], ys[i]), (xs[i + 1], ys[i + 1]),
+                                    0.01) for i in range(L.CHUNKS - 1)]
+            for seg in segs:
+                seg.friction, seg.filter = 0.1, ground
+            space.add(*segs)
+            x0, y0 = ox + L.W / 2, L.H
+            outline = [(x / L.SCALE, y / L.SCALE) for x, y in L.LANDER_POLY]
+            hull = solid(outline, 5.0)
+            hull.position = (x0, y0)
+            shape = pymunk.Poly(hull, outline, radius=0.01)
+            shape.friction = 0.1
+            shape.filter = pymunk.ShapeFilter(categories=0x10, mask=1)
+            space.add(hull, shape)
+            parts = [(hull, (x0, y0), 0.0)]
+            for i in (-1, 1):
+                hw, hh = L.LEG_W / L.SCALE, L.LEG_H / L.SCALE
+                corners = [(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)]
+                leg = solid(corners, 1.0)
+                leg.position, leg.angle = (x0 - i * L.LEG_AWAY / L.SCALE, y0), i * 0.05
+                box = pymunk.Poly(leg, corners, radius=0.01)
+                box.friction = 0.2
+                box.filter = pymunk.ShapeFilter(categories=0x20, mask=1)
+                pivot = pymunk.PivotJoint(hull, leg, (0.0, 0.0),
+                                          (i * L.LEG_AWAY / L.SCALE, L.LEG_DOWN / L.SCALE))
+                pivot.error_bias = 1.0
+                motor = pymunk.SimpleMotor(hull, leg, -L.LEG_MOTOR_SPEED * i)
+                motor.max_force = L.LEG_SPRING_TORQUE
+                lo, hi = L.LEG_TRAVEL
+                limit = pymunk.RotaryLimitJoint(hull, leg, *((lo, hi) if i == -1 else (-hi, -lo)))
+                limit.max_bias = 0.1
+                for c in (pivot, motor, limit):
+                    c.collide_bodies = False
+                space.add(leg, box, pivot, motor, limit)
+                parts.append((leg, leg.position, leg.angle))
+            self.hulls.append(hull)
+            self.parts.append(parts)
+        self.origins = np.arange(n) * SPACING
+
+    def step(self, actions: np.ndarray) -> None:
+        from kge.gym import lunar_lander as L
+
+        for k in np.flatnonzero(actions == 2).tolist():
+            self.hulls[k].apply_impulse_at_local_point((0.0, L.MAIN_ENGINE_POWER * 4 / L.SCALE))
+        for _ in range(self.substeps):
+            self.space.step(self.h)
+        for k, hull in enumerate(self.hulls):
+            x, y = hull.position
+            if abs(x - self.origins[k] - L.W / 2) > L.W / 2 or y > 3 * L.H or hull.is_sleeping:
+                for body, pos, angle in self.parts[k]:
+                    body.position, body.angle = pos, angle
+                    body.velocity, body.angular_velocity = (0.0, 0.0), 0.0
+                    body.activate()
 
 
 def steps_per_second(env: Any, mode: str, n: int, env_steps: int, seed: int = 0) -> float:
@@ -71,13 +179,19 @@ def steps_per_second(env: Any, mode: str, n: int, env_steps: int, seed: int = 0)
     rng = np.random.default_rng(seed)
     calls = max(1, env_steps // n)
     actions = rng.integers(0, 4, size=(calls + 10, n))
-    env.reset(seed=seed)
-    if mode == "single":
+    if mode == "floor":
+        env = PymunkFloor(n, seed)
+        step = env.step
+    elif mode == "single":
+        env.reset(seed=seed)
+
         def step(a: np.ndarray) -> None:
             _, _, term, trunc, _ = env.step(int(a[0]))
             if term or trunc:
                 env.reset()
     else:
+        env.reset(seed=seed)
+
         def step(a: np.ndarray) -> None:
             env.step(a)
     for a in actions[:10]:
@@ -90,19 +204,106 @@ def steps_per_second(env: Any, mode: str, n: int, env_steps: int, seed: int = 0)
 
 def measure(sizes: tuple[int, ...] = SIZES, env_steps: int = 4000,
             repeats: int = 3) -> list[dict[str, Any]]:
-    """Median env steps per second per variant, repeats interleaved across variants."""
+    """Median env steps per second per variant, repeats interleaved across variants.
+
+    Each measurement builds its env, measures and closes it, so no variant runs with the
+    others' objects on the heap (Python's cycle collector walks the whole heap: 64 kge
+    Apps kept alive for a later variant slowed every allocating variant by up to 2.5x).
+    """
     chosen = variants(sizes)
-    envs = {v: _make(*v) for v in chosen}
     samples: dict[tuple[str, str, int], list[float]] = {v: [] for v in chosen}
-    try:
-        for r in range(repeats):
-            for v in chosen:
-                samples[v].append(steps_per_second(envs[v], v[1], v[2], env_steps, seed=r))
-    finally:
-        for env in envs.values():
-            env.close()
-    return [{"engine": e, "mode": m, "n": n, "steps_per_s": statistics.median(samples[(e, m, n)])}
-            for e, m, n in chosen]
+    before = os.getloadavg()[0]
+    for r in range(repeats):
+        for v in chosen:
+            env = None if v[1] == "floor" else _make(*v)
+            gc.collect()
+            try:
+                samples[v].append(steps_per_second(env, v[1], v[2], env_steps, seed=r))
+            finally:
+                if env is not None:
+                    env.close()
+    load = (before, os.getloadavg()[0])  # the machine is shared: say how busy it was
+    return [{"engine": e, "mode": m, "n": n, "steps_per_s": statistics.median(samples[(e, m, n)]),
+             "load": load} for e, m, n in chosen]
+
+
+#: (label, file, function, caller function or None): the parts of a batched env step
+PARTS = (
+    ("scene resets: despawn + spawn (and the physics sync they trigger)", "lander_vector.py",
+     "_respawn", None),
+    ("engine impulses (Physics.apply_linear_impulse per firing engine)", "lunar_lander.py",
+     "fire", None),
+    ("physics sync-in (pending changes into pymunk)", "simulation.py", "sync_in", "step"),
+    ("joints before the step (per joint Python)", "joint_bridge.py", "before_step", "step"),
+    ("continuous collision + speed caps before the step", "manager.py", "before_step", "step"),
+    ("pymunk space.step: the solver itself (C)", "space.py", "step", "step"),
+    ("speed caps between substeps", "speed_cap.py", "before_substep", None),
+    ("joints after the step: position pass + read-back (per joint Python)", "joint_bridge.py",
+     "after_step", None),
+    ("physics sync-out (bulk pose read, component write-back)", "simulation.py", "sync_out",
+     None),
+)
+
+
+def breakdown(n: int, env_steps: int = 4000) -> str:
+    """Where an env step of the batched env goes at ``n`` envs (random actions, resets as
+    episodes end): cProfile's cumulative times per part, scaled to the unprofiled time."""
+    import cProfile
+    import pstats
+
+    env = _make("kge", "batched", n)
+    rng = np.random.default_rng(0)
+    calls = max(1, env_steps // n)
+    actions = rng.integers(0, 4, size=(2 * calls + 10, n))
+    env.reset(seed=0)
+    for a in actions[:10]:
+        env.step(a)
+    start = time.perf_counter()
+    for a in actions[10:10 + calls]:
+        env.step(a)
+    real = (time.perf_counter() - start) / (calls * n) * 1e6
+    prof = cProfile.Profile()
+    prof.enable()
+    for a in actions[10 + calls:]:
+        env.step(a)
+    prof.disable()
+    env.close()
+    stats: dict[Any, Any] = pstats.Stats(prof).stats  # type: ignore[attr-defined]
+    per_step = 1e6 / (calls * n)
+    total = per_step * sum(ct for (f, _, name), (_, _, _, ct, _) in stats.items()
+                           if f.endswith("lander_vector.py") and name == "step")
+    # the solver's C time is timed right; the profiler slows the Python around it
+    solver = per_step * sum(tt for (_, _, name), (_, _, tt, _, _) in stats.items()
+                            if name.endswith("cpSpaceStep>"))
+    scale = (real - solver) / (total - solver) if total > solver else 0.0
+
+    def cumulative(path: str, name: str, caller: str | None) -> float:
+        out = 0.0
+        for (f, _, fn), (_, _, _, ct, callers) in stats.items():
+            if not (f.endswith(path) and fn == name):
+                continue
+            if caller is None:
+                out += ct
+            else:  # only the calls from the physics step
+                out += sum(c[3] for (cf, _, cn), c in callers.items()
+                           if cn == caller and cf.endswith("simulation.py"))
+        return out * per_step
+
+    lines = [f"batched LunarLander, N = {n}: {real:.1f} µs per env step "
+             f"({1e6 / real:,.0f} steps/s), load average {os.getloadavg()[0]:.2f}",
+             "| part | µs per env step | share |", "|---|---:|---:|"]
+    accounted = 0.0
+    for label, path, name, caller in PARTS:
+        t = cumulative(path, name, caller)
+        t = solver + (t - solver) * scale if path == "space.py" else t * scale
+        accounted += t
+        lines.append(f"| {label} | {t:.1f} | {t / real:.0%} |")
+    rest = real - accounted
+    lines.append(f"| the rest: App frame, systems, batched numpy, contacts, arrays | {rest:.1f} "
+                 f"| {rest / real:.0%} |")
+    lines.append("(cProfile times; the Python parts scaled down by its overhead, the "
+                 "solver's C time as measured)")
+    return "\n".join(lines)
 
 
 def ratio(rows: list[dict[str, Any]], n: int) -> float | None:
@@ -124,20 +325,25 @@ def table(rows: list[dict[str, Any]], markdown: bool = False) -> str:
     head = ("env", "N", "kge steps/s", "pybox2d steps/s", "kge / pybox2d")
     lines = []
     for mode, n in keys:
-        k, b = by.get(("kge", mode, n)), by.get(("box2d", "sync" if mode == "batched" else mode, n))
+        engine = "pymunk" if mode == "floor" else "kge"
+        other = "sync" if mode in ("batched", "floor") else mode
+        k, b = by.get((engine, mode, n)), by.get(("box2d", other, n))
         label = {"single": "gymnasium.make", "batched": "kge batched (make_vec)",
-                 "sync": "SyncVectorEnv"}[mode]
-        vs = "pybox2d SyncVectorEnv" if mode == "batched" else "pybox2d"
+                 "sync": "SyncVectorEnv", "floor": "floor: raw pymunk, no kge"}[mode]
+        vs = "pybox2d SyncVectorEnv" if other == "sync" and mode != "sync" else "pybox2d"
         r = "-" if k is None or b is None else f"{k / b:.2f} (vs {vs})"
-        lines.append((label, str(n), cell("kge", mode, n),
-                      cell("box2d", "sync" if mode == "batched" else mode, n), r))
+        lines.append((label, str(n), cell(engine, mode, n), cell("box2d", other, n), r))
+    loads = [r["load"] for r in rows if "load" in r]
+    note = ("" if not loads else f"\n\nload average before / after the run: {loads[0][0]:.2f} / "
+            f"{loads[0][1]:.2f} ({os.cpu_count()} cores); the floor is raw pymunk stepping "
+            "the same bodies, joints and solver settings with no kge")
     if markdown:
         out = ["| " + " | ".join(head) + " |", "|---|---:|---:|---:|---:|"]
         out += ["| " + " | ".join(cols) + " |" for cols in lines]
-        return "\n".join(out)
+        return "\n".join(out) + note
     widths = [max(len(c[i]) for c in [head, *lines]) for i in range(len(head))]
     return "\n".join("  ".join(c[i].rjust(widths[i]) for i in range(len(head)))
-                     for c in [head, *lines])
+                     for c in [head, *lines]) + note
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -146,10 +352,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--steps", type=int, default=4000, help="env steps per measurement")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
+    parser.add_argument("--profile", type=int, metavar="N", default=0,
+                        help="print where a batched env step goes at N envs instead")
     args = parser.parse_args(argv)
     missing = box2d_lander_missing()
     if missing:
         print(f"skipped {missing}", file=sys.stderr)
+    if args.profile:
+        print(breakdown(args.profile, args.steps))
+        return 0
     print(table(measure(tuple(args.sizes), args.steps, args.repeats), args.markdown))
     return 0
 

@@ -15,9 +15,10 @@ from kge.gym.errors import (
     ObservationError,
     ResetNeededError,
 )
+from kge.gym.lander_vector import LunarLanderVector
 from kge.gym.lunar_lander import LunarLander
 from kge.gym.registration import CARTPOLE, LUNAR_LANDER, LUNAR_LANDER_CONTINUOUS, register_envs
-from kge.gym.vector import KgeVectorEnv
+from kge.gym.vector import BatchVectorEnv, KgeVectorEnv
 
 register_envs()
 
@@ -25,6 +26,7 @@ __all__ = [
     "CARTPOLE",
     "LUNAR_LANDER",
     "LUNAR_LANDER_CONTINUOUS",
+    "BatchVectorEnv",
     "CartPole",
     "EnvError",
     "InvalidActionError",
@@ -32,6 +34,7 @@ __all__ = [
     "KgeEnv",
     "KgeVectorEnv",
     "LunarLander",
+    "LunarLanderVector",
     "ObservationError",
     "ResetNeededError",
     "env_plugins",

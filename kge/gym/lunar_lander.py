@@ -26,6 +26,7 @@ close to Gymnasium's but not identical. :func:`heuristic` is a controller that l
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import gymnasium as gym
@@ -137,55 +138,12 @@ class LunarLander(KgeEnv):
 
     # -- the scene -------------------------------------------------------------------------------
     def build(self, world: World, rng: np.random.Generator) -> None:
-        # iterated hinges: the leg motors and limits are solved inside pymunk's iterations,
-        # with the contacts, as Box2D does, so they hold the legs on their limits (SOLVER)
-        substeps, iterations = SOLVER
-        world.insert_resource(PhysicsSettings(gravity=(0.0, self.gravity), substeps=substeps,
-                                              iterations=iterations, iterated_hinges=True))
-        height = rng.uniform(0, H / 2, size=(CHUNKS + 1,))
-        chunk_x = [W / (CHUNKS - 1) * i for i in range(CHUNKS)]
-        self.helipad_x = (chunk_x[CHUNKS // 2 - 1], chunk_x[CHUNKS // 2 + 1])
-        self.helipad_y = H / 4
-        height[CHUNKS // 2 - 2 : CHUNKS // 2 + 3] = self.helipad_y
-        smooth_y = [0.33 * (height[i - 1] + height[i] + height[i + 1]) for i in range(CHUNKS)]
-        ground = Filter(category_bits=0x0001)
-        world.spawn(Transform(), Collider(Edge((0.0, 0.0), (W, 0.0)), friction=0.1, filter=ground))
-        world.spawn(Transform(), Collider(Chain(list(zip(chunk_x, smooth_y, strict=True))),
-                                          friction=0.1, filter=ground))
-        for i in range(CHUNKS - 1):
-            quad = ((chunk_x[i], 0.0), (chunk_x[i + 1], 0.0),
-                    (chunk_x[i + 1], smooth_y[i + 1]), (chunk_x[i], smooth_y[i]))
-            world.spawn(Transform(), draw.Polygon(quad, color=(255, 255, 255), layer=-1))
-        for x in self.helipad_x:
-            y = self.helipad_y
-            world.spawn(Transform(), draw.Line((x, y), (x, y + 50 / SCALE), color=(255, 255, 255),
-                                               thickness=1 / SCALE))
-            world.spawn(Transform(), draw.Triangle((x, y + 50 / SCALE), (x, y + 40 / SCALE),
-                                                   (x + 25 / SCALE, y + 45 / SCALE), color=_FLAG))
+        world.insert_resource(solver_settings(self.gravity))
         world.insert_resource(Camera(center=(W / 2, H / 2), pixels_per_meter=SCALE))
-
-        x0, y0 = W / 2, H
-        poly = [(px / SCALE, py / SCALE) for px, py in LANDER_POLY]
-        self.lander = lander = world.spawn(
-            Transform(x0, y0), RigidBody(BodyType.DYNAMIC),
-            Collider(Polygon(poly), density=5.0, friction=0.1, restitution=0.0,
-                     filter=Filter(category_bits=0x0010, mask_bits=0x001)),
-            draw.Polygon(poly, color=_HULL),
-        )
-        legs = []
-        leg_shape = Box(LEG_W / SCALE, LEG_H / SCALE)
-        for i in (-1, +1):
-            leg = world.spawn(
-                Transform(x0 - i * LEG_AWAY / SCALE, y0, i * 0.05), RigidBody(BodyType.DYNAMIC),
-                Collider(leg_shape, density=1.0, friction=0.2, restitution=0.0,
-                         filter=Filter(category_bits=0x0020, mask_bits=0x001)),
-                draw.Polygon(leg_shape.vertices(), color=_HULL),
-            )
-            world.spawn(leg_joint(lander, leg, i))
-            legs.append(leg)
-        self.legs = (legs[0], legs[1])
-        push = rng.uniform(-INITIAL_RANDOM, INITIAL_RANDOM, size=2)
-        world.resource(Physics).apply_force(lander, (float(push[0]), float(push[1])))
+        scene = spawn_scene(world, rng, (0.0, 0.0), drawn=True)
+        give_push(world, [scene])
+        self.lander, self.legs, self.helipad_y = scene.lander, scene.legs, scene.helipad_y
+        self.helipad_x = scene.helipad_x
 
     def on_reset(self, world: World) -> None:
         """Gymnasium's reset ends with one no-op step: the first observation is after it."""
@@ -197,60 +155,26 @@ class LunarLander(KgeEnv):
 
     # -- one step --------------------------------------------------------------------------------
     def act(self, world: World, action: Any) -> None:
-        physics = world.resource(Physics)
         tf = world.get(self.lander, Transform)
-        tip = (math.sin(tf.angle), math.cos(tf.angle))
-        side = (-tip[1], tip[0])
-        d0, d1 = (self.np_random.uniform(-1.0, 1.0, size=2) / SCALE).tolist()
-        self.m_power, self.s_power, direction = self.throttle(action)
-        if self.m_power > 0.0:
-            ox = tip[0] * (MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0) + side[0] * d1
-            oy = -tip[1] * (MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0) - side[1] * d1
-            p = MAIN_ENGINE_POWER * self.m_power
-            physics.apply_linear_impulse(self.lander, (-ox * p, -oy * p), (tf.x + ox, tf.y + oy))
-        if self.s_power > 0.0:
-            lever = 3 * d1 + direction * SIDE_ENGINE_AWAY / SCALE
-            ox = tip[0] * d0 + side[0] * lever
-            oy = -tip[1] * d0 - side[1] * lever
-            at = (tf.x + ox - tip[0] * 17 / SCALE, tf.y + oy + tip[1] * SIDE_ENGINE_HEIGHT / SCALE)
-            p = SIDE_ENGINE_POWER * self.s_power
-            physics.apply_linear_impulse(self.lander, (-ox * p, -oy * p), at)
+        actions = np.asarray(action, dtype=np.float64).reshape(1, -1)
+        m_power, s_power, direction = throttles(actions, self.continuous)
+        self.m_power, self.s_power = float(m_power[0]), float(s_power[0])
+        pose = np.array([[tf.x, tf.y, tf.angle]])
+        fire(world.resource(Physics), [self.lander], pose,
+             self.np_random.uniform(-1.0, 1.0, size=(1, 2)), m_power, s_power, direction)
 
     def throttle(self, action: Any) -> tuple[float, float, float]:
-        """(main power 0..1, side power 0..1, side direction -1/+1) for an action.
-
-        Discrete: engines fire at full power. Continuous (Gymnasium's rules): the main
-        engine runs at 50-100 % for ``action[0]`` in (0, 1] and is off below; the side
-        engines fire at 50-100 % for ``|action[1]|`` in (0.5, 1], left for negative.
-        """
-        if not self.continuous:
-            a = int(action)
-            if a == MAIN:
-                return 1.0, 0.0, 0.0
-            if a in (LEFT, RIGHT):
-                return 0.0, 1.0, float(a - 2)
-            return 0.0, 0.0, 0.0
-        main, lateral = (float(v) for v in np.asarray(action, dtype=np.float64))
-        m_power = (min(max(main, 0.0), 1.0) + 1.0) * 0.5 if main > 0.0 else 0.0
-        if abs(lateral) > 0.5:
-            return m_power, min(max(abs(lateral), 0.5), 1.0), math.copysign(1.0, lateral)
-        return m_power, 0.0, 0.0
+        """(main power 0..1, side power 0..1, side direction -1/+1) for one action."""
+        m, s, d = throttles(np.asarray(action, dtype=np.float64).reshape(1, -1), self.continuous)
+        return float(m[0]), float(s[0]), float(d[0])
 
     def observe(self, world: World) -> np.ndarray:
         self._read_contacts(world)
         tf = world.get(self.lander, Transform)
         rb = world.get(self.lander, RigidBody)
         vx, vy = rb.velocity
-        return np.array([
-            (tf.x - W / 2) / (W / 2),
-            (tf.y - (self.helipad_y + LEG_DOWN / SCALE)) / (H / 2),
-            vx * (W / 2) / FPS,
-            vy * (H / 2) / FPS,
-            tf.angle,
-            20.0 * rb.angular_velocity / FPS,
-            1.0 if self.leg_contact[0] else 0.0,
-            1.0 if self.leg_contact[1] else 0.0,
-        ], dtype=np.float32)
+        state = np.array([[tf.x, tf.y, vx, vy, tf.angle, rb.angular_velocity]])
+        return observations(state, np.array([self.leg_contact], np.float64), self.helipad_y)[0]
 
     def _read_contacts(self, world: World) -> None:
         """Box2D's contact listener of the original: hull contact ends the game, legs flag."""
@@ -268,17 +192,13 @@ class LunarLander(KgeEnv):
                     self.leg_contact[k] = True
 
     def reward(self, world: World, obs: Any, action: Any) -> float:
-        s = obs.astype(np.float64)
-        shaping = (-100 * math.hypot(s[0], s[1]) - 100 * math.hypot(s[2], s[3])
-                   - 100 * abs(s[4]) + 10 * s[6] + 10 * s[7])
-        r = 0.0 if self.prev_shaping is None else shaping - self.prev_shaping
-        self.prev_shaping = shaping
-        r -= self.m_power * 0.30 + self.s_power * 0.03
-        if self.game_over or abs(s[0]) >= 1.0:
-            return -100.0
-        if not world.get(self.lander, RigidBody).awake:  # at rest: Box2D put it to sleep
-            return 100.0
-        return r
+        awake = world.get(self.lander, RigidBody).awake
+        prev = np.array([math.nan if self.prev_shaping is None else self.prev_shaping])
+        r, shaped = rewards(obs[None, :], prev, np.array([self.m_power]),
+                            np.array([self.s_power]), np.array([self.game_over]),
+                            np.array([awake]))
+        self.prev_shaping = float(shaped[0])
+        return float(r[0])
 
     def terminated(self, world: World, obs: Any) -> bool:
         return (self.game_over or abs(float(obs[0])) >= 1.0
@@ -286,6 +206,175 @@ class LunarLander(KgeEnv):
 
     def info(self, world: World) -> dict[str, Any]:
         return {"game_over": self.game_over, "awake": world.get(self.lander, RigidBody).awake}
+
+
+# -- the scene and the rules, shared by LunarLander and its batched form (LunarLanderVector) --
+def solver_settings(gravity: float) -> PhysicsSettings:
+    """The physics of the task: iterated hinges, so the leg motors and limits are solved
+    inside pymunk's iterations with the contacts, as Box2D does (see :data:`SOLVER`)."""
+    substeps, iterations = SOLVER
+    return PhysicsSettings(gravity=(0.0, gravity), substeps=substeps, iterations=iterations,
+                           iterated_hinges=True)
+
+
+@dataclass(slots=True)
+class LanderScene:
+    """The entities of one episode: what a reset despawns (joints first)."""
+
+    lander: int
+    legs: tuple[int, int]
+    helipad_x: tuple[float, float]
+    helipad_y: float
+    entities: list[int]
+    #: the random force of the first step, N
+    push: tuple[float, float]
+
+
+def spawn_scene(world: World, rng: np.random.Generator, origin: tuple[float, float],
+                drawn: bool) -> LanderScene:
+    """Spawn a moon and a lander with its origin at ``origin``; draw its random push
+    (:func:`give_push` applies it).
+
+    ``rng`` draws the terrain and the push (in Gymnasium's order). ``drawn`` adds the
+    drawables (terrain quads, flags, hull and legs); an env that never renders skips them.
+    Nothing here collides with another scene's moon as long as scenes lie further apart
+    than a lander flies out of its screen before its episode ends (see LunarLanderVector).
+    """
+    ox, oy = origin
+    height = rng.uniform(0, H / 2, size=(CHUNKS + 1,))
+    chunk_x = [W / (CHUNKS - 1) * i for i in range(CHUNKS)]
+    helipad_x = (ox + chunk_x[CHUNKS // 2 - 1], ox + chunk_x[CHUNKS // 2 + 1])
+    helipad_y = H / 4
+    height[CHUNKS // 2 - 2 : CHUNKS // 2 + 3] = helipad_y
+    smooth_y = [0.33 * (height[i - 1] + height[i] + height[i + 1]) for i in range(CHUNKS)]
+    ground = Filter(category_bits=0x0001)
+    made = [
+        world.spawn(Transform(ox, oy), Collider(Edge((0.0, 0.0), (W, 0.0)), friction=0.1,
+                                                filter=ground)),
+        world.spawn(Transform(ox, oy), Collider(Chain(list(zip(chunk_x, smooth_y, strict=True))),
+                                                friction=0.1, filter=ground)),
+    ]
+    if drawn:
+        for i in range(CHUNKS - 1):
+            quad = ((chunk_x[i], 0.0), (chunk_x[i + 1], 0.0),
+                    (chunk_x[i + 1], smooth_y[i + 1]), (chunk_x[i], smooth_y[i]))
+            made.append(world.spawn(Transform(ox, oy),
+                                    draw.Polygon(quad, color=(255, 255, 255), layer=-1)))
+        for x in helipad_x:
+            y = oy + helipad_y
+            made.append(world.spawn(Transform(), draw.Line(
+                (x, y), (x, y + 50 / SCALE), color=(255, 255, 255), thickness=1 / SCALE)))
+            made.append(world.spawn(Transform(), draw.Triangle(
+                (x, y + 50 / SCALE), (x, y + 40 / SCALE), (x + 25 / SCALE, y + 45 / SCALE),
+                color=_FLAG)))
+
+    x0, y0 = ox + W / 2, oy + H
+    poly = [(px / SCALE, py / SCALE) for px, py in LANDER_POLY]
+    looks: tuple[Any, ...] = (draw.Polygon(poly, color=_HULL),) if drawn else ()
+    lander = world.spawn(
+        Transform(x0, y0), RigidBody(BodyType.DYNAMIC),
+        Collider(Polygon(poly), density=5.0, friction=0.1, restitution=0.0,
+                 filter=Filter(category_bits=0x0010, mask_bits=0x001)),
+        *looks,
+    )
+    legs, joints = [], []
+    leg_shape = Box(LEG_W / SCALE, LEG_H / SCALE)
+    for i in (-1, +1):
+        looks = (draw.Polygon(leg_shape.vertices(), color=_HULL),) if drawn else ()
+        leg = world.spawn(
+            Transform(x0 - i * LEG_AWAY / SCALE, y0, i * 0.05), RigidBody(BodyType.DYNAMIC),
+            Collider(leg_shape, density=1.0, friction=0.2, restitution=0.0,
+                     filter=Filter(category_bits=0x0020, mask_bits=0x001)),
+            *looks,
+        )
+        joints.append(world.spawn(leg_joint(lander, leg, i)))
+        legs.append(leg)
+    px, py = rng.uniform(-INITIAL_RANDOM, INITIAL_RANDOM, size=2).tolist()
+    return LanderScene(lander, (legs[0], legs[1]), helipad_x, helipad_y,
+                       [*joints, *made, lander, *legs], (px, py))
+
+
+def give_push(world: World, scenes: list[LanderScene]) -> None:
+    """Apply each new lander's random push (a force for the first step). After all the
+    spawns: the first force makes the physics build the bodies, once for all scenes."""
+    physics = world.resource(Physics)
+    for scene in scenes:
+        physics.apply_force(scene.lander, scene.push)
+
+
+def throttles(actions: np.ndarray, continuous: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(main power 0..1, side power 0..1, side direction -1/+1), one row per action.
+
+    Discrete (``actions`` of shape (n, 1)): engines fire at full power. Continuous
+    (shape (n, 2), Gymnasium's rules): the main engine runs at 50-100 % for
+    ``action[0]`` in (0, 1] and is off below; the side engines fire at 50-100 % for
+    ``|action[1]|`` in (0.5, 1], left for negative.
+    """
+    if not continuous:
+        a = actions[:, 0]
+        side = (a == LEFT) | (a == RIGHT)
+        return (a == MAIN).astype(np.float64), side.astype(np.float64), np.where(side, a - 2, 0.0)
+    main, lateral = actions[:, 0], actions[:, 1]
+    m_power = np.where(main > 0.0, (np.clip(main, 0.0, 1.0) + 1.0) * 0.5, 0.0)
+    on = np.abs(lateral) > 0.5
+    s_power = np.where(on, np.clip(np.abs(lateral), 0.5, 1.0), 0.0)
+    return m_power, s_power, np.where(on, np.copysign(1.0, lateral), 0.0)
+
+
+def fire(physics: Physics, landers: list[int], pose: np.ndarray, dispersion: np.ndarray,
+         m_power: np.ndarray, s_power: np.ndarray, direction: np.ndarray) -> None:
+    """The engines' impulses, Gymnasium's geometry: computed for every lander at once
+    (``pose`` rows x, y, angle; ``dispersion`` rows uniform in [-1, 1]), applied to the
+    landers whose engines fire."""
+    tip_x, tip_y = np.sin(pose[:, 2]), np.cos(pose[:, 2])
+    side_x, side_y = -tip_y, tip_x
+    d0, d1 = dispersion[:, 0] / SCALE, dispersion[:, 1] / SCALE
+    along = MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0
+    mx, my = tip_x * along + side_x * d1, -tip_y * along - side_y * d1
+    lever = 3 * d1 + direction * SIDE_ENGINE_AWAY / SCALE
+    sx, sy = tip_x * d0 + side_x * lever, -tip_y * d0 - side_y * lever
+    p_main, p_side = MAIN_ENGINE_POWER * m_power, SIDE_ENGINE_POWER * s_power
+    main = np.stack([-mx * p_main, -my * p_main,
+                     pose[:, 0] + mx, pose[:, 1] + my], axis=1).tolist()
+    side = np.stack([-sx * p_side, -sy * p_side,
+                     pose[:, 0] + sx - tip_x * 17 / SCALE,
+                     pose[:, 1] + sy + tip_y * SIDE_ENGINE_HEIGHT / SCALE], axis=1).tolist()
+    for k in np.flatnonzero(m_power > 0.0).tolist():
+        jx, jy, px, py = main[k]
+        physics.apply_linear_impulse(landers[k], (jx, jy), (px, py))
+    for k in np.flatnonzero(s_power > 0.0).tolist():
+        jx, jy, px, py = side[k]
+        physics.apply_linear_impulse(landers[k], (jx, jy), (px, py))
+
+
+def observations(state: np.ndarray, legs: np.ndarray, helipad_y: float) -> np.ndarray:
+    """The 8-float observations: ``state`` rows (x, y, vx, vy, angle, angular velocity)
+    relative to each scene's origin, ``legs`` rows (left, right) contact flags 0/1."""
+    out = np.empty((len(state), 8), np.float32)
+    out[:, 0] = (state[:, 0] - W / 2) / (W / 2)
+    out[:, 1] = (state[:, 1] - (helipad_y + LEG_DOWN / SCALE)) / (H / 2)
+    out[:, 2] = state[:, 2] * (W / 2) / FPS
+    out[:, 3] = state[:, 3] * (H / 2) / FPS
+    out[:, 4] = state[:, 4]
+    out[:, 5] = 20.0 * state[:, 5] / FPS
+    out[:, 6:8] = legs
+    return out
+
+
+def rewards(obs: np.ndarray, prev_shaping: np.ndarray, m_power: np.ndarray,
+            s_power: np.ndarray, game_over: np.ndarray,
+            awake: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(reward, shaping) per row: the change of the shaping potential (0 on an episode's
+    first step, where ``prev_shaping`` is NaN) minus fuel; -100 for a crash or leaving
+    the screen, +100 for coming to rest."""
+    s = obs.astype(np.float64)
+    shaping = (-100 * np.hypot(s[:, 0], s[:, 1]) - 100 * np.hypot(s[:, 2], s[:, 3])
+               - 100 * np.abs(s[:, 4]) + 10 * s[:, 6] + 10 * s[:, 7])
+    r = np.where(np.isnan(prev_shaping), 0.0, shaping - prev_shaping)
+    r -= m_power * 0.30 + s_power * 0.03
+    r = np.where(awake, r, 100.0)
+    r = np.where(game_over | (np.abs(s[:, 0]) >= 1.0), -100.0, r)
+    return r, shaping
 
 
 #: a discrete action as the continuous throttles that fire the same engine at full power

@@ -4,9 +4,10 @@
 and ``kge/CartPole-v0``, after which::
 
     env = gymnasium.make("kge/LunarLander-v0")
-    envs = gymnasium.make_vec("kge/LunarLander-v0", num_envs=64)   # KgeVectorEnv
+    envs = gymnasium.make_vec("kge/LunarLander-v0", num_envs=64)   # LunarLanderVector
 
-``make_vec`` uses the ``vector_entry_point`` (one process, batched arrays) unless
+``make_vec`` uses the ``vector_entry_point`` (one process, batched arrays: the landers
+share one world, CartPole steps one world per env) unless
 ``vectorization_mode="sync"`` or ``"async"`` asks for Gymnasium's wrappers.
 """
 
@@ -17,7 +18,7 @@ from typing import Any
 import gymnasium as gym
 
 from kge.gym.cartpole import CartPole
-from kge.gym.lunar_lander import LunarLander
+from kge.gym.lander_vector import LunarLanderVector
 from kge.gym.vector import KgeVectorEnv
 
 LUNAR_LANDER = "kge/LunarLander-v0"
@@ -25,15 +26,15 @@ LUNAR_LANDER_CONTINUOUS = "kge/LunarLanderContinuous-v0"
 CARTPOLE = "kge/CartPole-v0"
 
 
-def lunar_lander_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:
-    """The ``vector_entry_point`` of ``kge/LunarLander-v0``."""
-    return KgeVectorEnv(LunarLander, num_envs, name=LUNAR_LANDER, **kwargs)
+def lunar_lander_vector(num_envs: int = 1, **kwargs: Any) -> LunarLanderVector:
+    """The ``vector_entry_point`` of ``kge/LunarLander-v0``: N landers in one world."""
+    return LunarLanderVector(num_envs, name=LUNAR_LANDER, **kwargs)
 
 
-def lunar_lander_continuous_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:
+def lunar_lander_continuous_vector(num_envs: int = 1, **kwargs: Any) -> LunarLanderVector:
     """The ``vector_entry_point`` of ``kge/LunarLanderContinuous-v0``."""
-    return KgeVectorEnv(LunarLander, num_envs, name=LUNAR_LANDER_CONTINUOUS,
-                        **{"continuous": True, **kwargs})
+    return LunarLanderVector(num_envs, name=LUNAR_LANDER_CONTINUOUS,
+                             **{"continuous": True, **kwargs})
 
 
 def cartpole_vector(num_envs: int = 1, **kwargs: Any) -> KgeVectorEnv:

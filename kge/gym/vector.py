@@ -28,20 +28,15 @@ from kge.gym.env import KgeEnv, check_seed
 from kge.gym.errors import InvalidActionError, InvalidSeedError, ResetNeededError
 
 
-class KgeVectorEnv(VectorEnv[Any, Any, Any]):
-    """``num_envs`` copies of a :class:`KgeEnv`, stepped together."""
+class BatchVectorEnv(VectorEnv[Any, Any, Any]):
+    """What every kge vector env shares: argument checks, batched spaces, the result
+    arrays, Gymnasium's seeding rule, the action check and the time limit."""
 
-    def __init__(
-        self,
-        env_fn: Callable[..., KgeEnv],
-        num_envs: int,
-        *,
-        max_episode_steps: int | None = None,
-        render_mode: str | None = None,
-        name: str | None = None,
-        **env_kwargs: Any,
-    ) -> None:
-        label = name or getattr(env_fn, "__name__", "KgeVectorEnv")
+    #: the name every error uses: "<id or class> (vector of N)"
+    env_name: str = "KgeVectorEnv"
+
+    def _setup_batch(self, label: Any, num_envs: Any, max_episode_steps: Any,
+                     render_mode: str | None) -> None:
         if isinstance(num_envs, bool) or not isinstance(num_envs, int) or num_envs < 1:
             raise ValueError(f"{label}: num_envs must be an int >= 1, got {num_envs!r}")
         if max_episode_steps is not None and (
@@ -50,15 +45,16 @@ class KgeVectorEnv(VectorEnv[Any, Any, Any]):
         ):
             raise ValueError(f"{label}: max_episode_steps must be an int >= 1 or None, "
                              f"got {max_episode_steps!r}")
-        self.envs = [env_fn(render_mode=render_mode, **env_kwargs) for _ in range(num_envs)]
-        first = self.envs[0]
-        self.env_name = f"{name or first.env_name} (vector of {num_envs})"
         self.num_envs = num_envs
         self.render_mode = render_mode
         self.max_episode_steps = max_episode_steps
-        self.metadata = {**first.metadata, "autoreset_mode": AutoresetMode.NEXT_STEP}
-        self.single_observation_space = first.observation_space
-        self.single_action_space = first.action_space
+
+    def _setup_spaces(self, env: KgeEnv) -> None:
+        """Spaces, metadata and result arrays from one single env (``env_name`` set first)."""
+        num_envs = self.num_envs
+        self.metadata = {**env.metadata, "autoreset_mode": AutoresetMode.NEXT_STEP}
+        self.single_observation_space = env.observation_space
+        self.single_action_space = env.action_space
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
         space = self.single_observation_space
@@ -74,6 +70,7 @@ class KgeVectorEnv(VectorEnv[Any, Any, Any]):
         self._started = False
 
     def _seeds(self, seed: int | Sequence[int | None] | None) -> list[int | None]:
+        """Gymnasium's rule: ``seed`` s seeds env i with s + i; or one seed per env."""
         if seed is None:
             return [None] * self.num_envs
         if isinstance(seed, (list, tuple)):
@@ -84,6 +81,57 @@ class KgeVectorEnv(VectorEnv[Any, Any, Any]):
         first = check_seed(self.env_name, seed)
         assert first is not None
         return [first + i for i in range(self.num_envs)]
+
+    def _check_actions(self, actions: Any) -> np.ndarray:
+        """The batch as an array, or :class:`InvalidActionError` naming the env."""
+        if not self._started:
+            raise ResetNeededError(f"{self.env_name}.step() called before reset()")
+        try:
+            batch = np.asarray(actions)
+            ok = self.action_space.contains(batch)
+        except (TypeError, ValueError):
+            ok = False
+        if not ok:
+            raise InvalidActionError(
+                f"{self.env_name}.step(): actions {actions!r} are not in the batched action "
+                f"space {self.action_space}"
+            )
+        return batch
+
+    def _time_limit(self, stepped: np.ndarray) -> None:
+        """Count the steps of the envs that ``stepped`` (not reset) and truncate at the limit;
+        then mark what the next step resets."""
+        self._steps[~stepped] = 0
+        self._steps[stepped] += 1
+        limit = self.max_episode_steps
+        if limit is not None:
+            self._truncations |= stepped & (self._steps >= limit)
+        np.logical_or(self._terminations, self._truncations, out=self._autoreset)
+
+    def _results(self, infos: dict[str, Any]) -> tuple[np.ndarray, np.ndarray, np.ndarray,
+                                                      np.ndarray, dict[str, Any]]:
+        return (self._obs.copy(), self._rewards.copy(), self._terminations.copy(),
+                self._truncations.copy(), infos)
+
+
+class KgeVectorEnv(BatchVectorEnv):
+    """``num_envs`` copies of a :class:`KgeEnv`, stepped together."""
+
+    def __init__(
+        self,
+        env_fn: Callable[..., KgeEnv],
+        num_envs: int,
+        *,
+        max_episode_steps: int | None = None,
+        render_mode: str | None = None,
+        name: str | None = None,
+        **env_kwargs: Any,
+    ) -> None:
+        label = name or getattr(env_fn, "__name__", "KgeVectorEnv")
+        self._setup_batch(label, num_envs, max_episode_steps, render_mode)
+        self.envs = [env_fn(render_mode=render_mode, **env_kwargs) for _ in range(num_envs)]
+        self.env_name = f"{name or self.envs[0].env_name} (vector of {num_envs})"
+        self._setup_spaces(self.envs[0])
 
     def reset(
         self,
@@ -105,41 +153,23 @@ class KgeVectorEnv(VectorEnv[Any, Any, Any]):
     def step(
         self, actions: Any
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
-        if not self._started:
-            raise ResetNeededError(f"{self.env_name}.step() called before reset()")
-        self._check_actions(actions)
-        batch = np.asarray(actions)
+        batch = self._check_actions(actions)
         infos: dict[str, Any] = {}
-        limit = self.max_episode_steps
+        resetting = self._autoreset.copy()
         for i, env in enumerate(self.envs):
-            if self._autoreset[i]:
+            if resetting[i]:
                 obs, info = env.reset()
-                reward, term, trunc = 0.0, False, False
-                self._steps[i] = 0
+                reward, term = 0.0, False
             else:
-                obs, reward, term, trunc, info = env.advance(batch[i])
-                self._steps[i] += 1
-                trunc = trunc or (limit is not None and self._steps[i] >= limit)
+                obs, reward, term, _, info = env.advance(batch[i])
             self._obs[i] = obs
             self._rewards[i] = reward
             self._terminations[i] = term
-            self._truncations[i] = trunc
             if info:
                 infos = self._add_info(infos, info, i)
-        np.logical_or(self._terminations, self._truncations, out=self._autoreset)
-        return (self._obs.copy(), self._rewards.copy(), self._terminations.copy(),
-                self._truncations.copy(), infos)
-
-    def _check_actions(self, actions: Any) -> None:
-        try:
-            ok = self.action_space.contains(np.asarray(actions))
-        except (TypeError, ValueError):
-            ok = False
-        if not ok:
-            raise InvalidActionError(
-                f"{self.env_name}.step(): actions {actions!r} are not in the batched action "
-                f"space {self.action_space}"
-            )
+        self._truncations[:] = False
+        self._time_limit(~resetting)
+        return self._results(infos)
 
     def render(self) -> tuple[Any, ...] | None:
         if self.render_mode is None:

@@ -112,10 +112,11 @@ def test_gymnasium_lander_throughput_is_reported(report: dict) -> None:
 
     seen = {(r["engine"], r["mode"], r["n"]) for r in report["rl"]}
     want = {("kge", "single", 1), ("kge", "batched", 1), ("kge", "batched", 4),
-            ("kge", "sync", 4)}
+            ("kge", "sync", 4), ("pymunk", "floor", 4)}
     if box2d_lander_missing() is None:
         want |= {("box2d", "single", 1), ("box2d", "sync", 4)}
     assert want <= seen
     assert all(r["steps_per_s"] > 0 for r in report["rl"])
     assert "Gymnasium LunarLander, env steps per second" in report["_md"]
+    assert "floor: raw pymunk, no kge" in report["_md"] and "load average" in report["_md"]
     assert any(t["target"].startswith("LunarLander steps/s") for t in report["targets"])

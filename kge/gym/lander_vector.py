@@ -1,0 +1,305 @@
+"""``LunarLanderVector``: N LunarLanders in ONE kge world, stepped as one batch.
+
+:class:`~kge.gym.vector.KgeVectorEnv` steps N complete envs, each its own App,
+World and pymunk space, so every env step pays kge's per-world Python (systems,
+sync, speed caps, continuous collision) N times. Here the N scenes share one
+world: each lies at its own origin along x, :data:`SPACING` metres apart, and the
+landers collide with the ground only (their filters), so scenes never touch. One
+``app.step`` runs one pymunk step for all of them; the engines' impulses, the
+observations, rewards and terminations are numpy over the whole batch
+(:func:`~kge.gym.lunar_lander.fire`, :func:`~kge.gym.lunar_lander.observations`,
+:func:`~kge.gym.lunar_lander.rewards`: the same functions the single env calls).
+
+Why scenes cannot meet: an episode ends on the step its lander leaves its screen
+sideways (``|obs[0]| >= 1``), and a step moves a body at most
+``PhysicsSettings.max_translation`` (2 m); the next step despawns that lander.
+So a lander never gets nearer than ``SPACING - W - 2`` m to another scene's ground.
+
+Resets replace one scene: next-step autoreset despawns env i's entities and spawns
+a new moon and lander at its origin, and the batch step that follows is that
+env's reset step (a no-op, as a single env's ``reset`` ends with one).
+
+What holds, and what does not (tested in ``tests/gym/test_lander_vector.py``):
+
+* the whole vector run is deterministic: the same seeds and actions give the same
+  observations, rewards and flags bit for bit;
+* env i is seeded like a single env reset with ``s + i`` and starts from the same
+  terrain and push; its first observation equals the single env's to float32
+  rounding. Its trajectory is the single env's physics, but not bit for bit: the
+  scene sits 32 i metres along x (so positions round differently) and shares the
+  solver with the other scenes (pymunk orders contacts by its spatial index), and
+  the differences grow over an episode as they do between any two Box2D builds.
+  Episode statistics (scores and outcomes of the heuristic pilot) agree with the
+  single env's within the band the test states.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+from gymnasium.utils import seeding
+
+from kge.app import App
+from kge.components import RigidBody, Transform
+from kge.components.camera import Camera
+from kge.gym.env import env_plugins
+from kge.gym.errors import ObservationError, ResetNeededError
+from kge.gym.lunar_lander import (
+    FPS,
+    SCALE,
+    VIEWPORT_H,
+    VIEWPORT_W,
+    H,
+    LanderScene,
+    LunarLander,
+    W,
+    fire,
+    give_push,
+    observations,
+    rewards,
+    solver_settings,
+    spawn_scene,
+    throttles,
+)
+from kge.gym.vector import BatchVectorEnv
+from kge.physics.events import PhysicsEvents
+from kge.physics.resource import Physics
+from kge.world import World
+
+#: metres between two scenes' origins along x (a screen is W = 20 m wide); a power of
+#: two, so every origin is exact
+SPACING = 32.0
+
+#: what a collider is in its scene: the hull, or leg 0 / leg 1
+HULL = -1
+
+
+class LunarLanderVector(BatchVectorEnv):
+    """``num_envs`` LunarLanders sharing one kge world (``make_vec``'s default)."""
+
+    def __init__(
+        self,
+        num_envs: int = 1,
+        *,
+        max_episode_steps: int | None = None,
+        render_mode: str | None = None,
+        gravity: float = -10.0,
+        continuous: bool = False,
+        name: str | None = None,
+    ) -> None:
+        label = name or type(self).__name__
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"{label}: render_mode must be 'rgb_array' or None, got "
+                             f"{render_mode!r} (a window per env: use vectorization_mode="
+                             "'sync')")
+        self._setup_batch(label, num_envs, max_episode_steps, render_mode)
+        self._template = LunarLander(gravity=gravity, continuous=continuous)  # checks both
+        self.gravity, self.continuous = float(gravity), continuous
+        self.env_name = f"{name or 'LunarLander'} (vector of {num_envs})"
+        self._setup_spaces(self._template)
+        self.metadata["render_modes"] = ["rgb_array"]
+        self.metadata["render_fps"] = FPS
+        n = num_envs
+        self.origins = np.arange(n, dtype=np.float64) * SPACING
+        self._app: App | None = None
+        self._rngs: list[np.random.Generator | None] = [None] * n
+        self._scenes: list[LanderScene | None] = [None] * n
+        self._landers: list[int] = [0] * n
+        self._tfs: list[Transform] = []
+        self._rbs: list[RigidBody] = []
+        #: collider entity -> (env, HULL or leg index)
+        self._parts: dict[int, tuple[int, int]] = {}
+        self.game_over = np.zeros(n, np.bool_)
+        self.leg_contact = np.zeros((n, 2), np.float64)
+        self.prev_shaping = np.full(n, np.nan)
+        self.m_power = np.zeros(n)
+        self.s_power = np.zeros(n)
+        self.awake = np.ones(n, np.bool_)
+
+    # -- the shared world ------------------------------------------------------------------
+    @property
+    def app(self) -> App:
+        if self._app is None:
+            raise ResetNeededError(f"{self.env_name}: call reset() before using the App")
+        return self._app
+
+    @property
+    def world(self) -> World:
+        return self.app.world
+
+    def _setup(self, world: World) -> None:
+        world.insert_resource(solver_settings(self.gravity))
+        world.insert_resource(Camera(center=(W / 2, H / 2), pixels_per_meter=SCALE))
+
+    def _new_world(self) -> World:
+        """A fresh world for a full reset: the run replays exactly from it."""
+        if self._app is None:
+            self._app = App(self._setup, headless=True, size=(VIEWPORT_W, VIEWPORT_H),
+                            fixed_dt=1.0 / FPS, background=(0, 0, 0),
+                            plugins=env_plugins(render=self.render_mode is not None))
+        else:
+            self._app.replace_scene(self._setup)
+        self._scenes = [None] * self.num_envs
+        self._parts.clear()
+        self._tfs = [Transform() for _ in range(self.num_envs)]
+        self._rbs = [RigidBody() for _ in range(self.num_envs)]
+        return self._app.world
+
+    def _respawn(self, world: World, envs: list[int]) -> None:
+        """Replace these envs' moons and landers with new episodes' (drawn from their rngs)."""
+        for i in envs:
+            old = self._scenes[i]
+            if old is not None:
+                for e in old.entities:
+                    self._parts.pop(e, None)
+                    if world.exists(e):
+                        world.despawn(e)
+        # despawns land now, so the physics takes the old scenes out and the new ones in
+        # with one sync (the push below makes it), not one for each
+        world.flush()
+        scenes = [self._respawn_one(world, i) for i in envs]
+        give_push(world, scenes)
+        for i in envs:
+            self._tfs[i] = world.get(self._landers[i], Transform)
+            self._rbs[i] = world.get(self._landers[i], RigidBody)
+
+    def _respawn_one(self, world: World, i: int) -> LanderScene:
+        rng = self._rngs[i]
+        if rng is None:
+            rng = self._rngs[i] = seeding.np_random(None)[0]
+        scene = spawn_scene(world, rng, (float(self.origins[i]), 0.0),
+                            drawn=self.render_mode is not None)
+        self._scenes[i] = scene
+        self._landers[i] = scene.lander
+        self._parts[scene.lander] = (i, HULL)
+        self._parts[scene.legs[0]] = (i, 0)
+        self._parts[scene.legs[1]] = (i, 1)
+        self.game_over[i] = False
+        self.leg_contact[i] = 0.0
+        self.prev_shaping[i] = np.nan
+        return scene
+
+    # -- Gymnasium protocol -----------------------------------------------------------------
+    def reset(
+        self,
+        *,
+        seed: int | Sequence[int | None] | None = None,
+        options: dict[str, Any] | None = None,
+    ) -> tuple[np.ndarray, dict[str, Any]]:
+        seeds = self._seeds(seed)
+        if options is not None and not isinstance(options, dict):
+            raise TypeError(f"{self.env_name}.reset(options=...) must be a dict or None, "
+                            f"got {options!r}")
+        for i, s in enumerate(seeds):
+            if s is not None:
+                self._rngs[i] = seeding.np_random(s)[0]
+        world = self._new_world()
+        self._respawn(world, list(range(self.num_envs)))
+        every = np.ones(self.num_envs, np.bool_)
+        self._advance(world, np.zeros((self.num_envs, 0)), every)
+        self._autoreset[:] = False
+        self._steps[:] = 0
+        self._started = True
+        return self._obs.copy(), self._infos()
+
+    def step(
+        self, actions: Any
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+        batch = self._check_actions(actions)
+        world = self.world
+        resetting = self._autoreset.copy()
+        if resetting.any():
+            self._respawn(world, np.flatnonzero(resetting).tolist())
+        self._advance(world, batch.reshape(self.num_envs, -1), resetting)
+        self._truncations[:] = False
+        self._time_limit(~resetting)
+        return self._results(self._infos())
+
+    def _advance(self, world: World, actions: np.ndarray, resetting: np.ndarray) -> None:
+        """One fixed step of the whole batch; ``resetting`` envs take their reset step (a
+        no-op, scored 0, never terminal) with the others' actions."""
+        n = self.num_envs
+        if actions.shape[1]:
+            m_power, s_power, direction = throttles(actions.astype(np.float64), self.continuous)
+            m_power[resetting] = s_power[resetting] = 0.0
+        else:
+            m_power, s_power, direction = np.zeros(n), np.zeros(n), np.zeros(n)
+        self.m_power, self.s_power = m_power, s_power
+        # each env's own stream, in the single env's order (one pair of draws per step)
+        dispersion = np.array([rng.uniform(-1.0, 1.0, size=2)  # type: ignore[union-attr]
+                               for rng in self._rngs])
+        tfs, rbs = self._tfs, self._rbs
+        pose = np.array([(t.x, t.y, t.angle) for t in tfs])
+        fire(world.resource(Physics), self._landers, pose, dispersion, m_power, s_power,
+             direction)
+        self.app.step(1)
+        self._read_contacts(world)
+        state = np.array([(t.x, t.y, *r.velocity, t.angle, r.angular_velocity)
+                          for t, r in zip(tfs, rbs, strict=True)])
+        state[:, 0] -= self.origins
+        obs = observations(state, self.leg_contact, H / 4)
+        if not np.isfinite(obs).all():
+            rows = np.flatnonzero(~np.isfinite(obs).all(axis=1)).tolist()
+            raise ObservationError(f"{self.env_name}: a non-finite observation in env(s) "
+                                   f"{rows}: {obs[rows]!r}")
+        self.awake = np.array([r.awake for r in rbs], np.bool_)
+        reward, shaping = rewards(obs, self.prev_shaping, m_power, s_power, self.game_over,
+                                  self.awake)
+        # a reset step scores nothing and leaves the shaping unset, as a single env's reset
+        self.prev_shaping = np.where(resetting, np.nan, shaping)
+        self._obs[:] = obs
+        self._rewards[:] = np.where(resetting, 0.0, reward)
+        self._terminations[:] = ~resetting & (self.game_over | (np.abs(obs[:, 0]) >= 1.0)
+                                              | ~self.awake)
+
+    def _read_contacts(self, world: World) -> None:
+        """The single env's contact listener, for every scene: ends first, then begins."""
+        events = world.resource(PhysicsEvents)
+        parts = self._parts
+        for end in events.contact_end:
+            for e in (end.collider_a, end.collider_b):
+                hit = parts.get(e)
+                if hit is not None and hit[1] != HULL:
+                    self.leg_contact[hit] = 0.0
+        for ev in events.contact_begin:
+            for e in (ev.collider_a, ev.collider_b):
+                hit = parts.get(e)
+                if hit is None:
+                    continue
+                if hit[1] == HULL:
+                    self.game_over[hit[0]] = True
+                else:
+                    self.leg_contact[hit] = 1.0
+
+    def _infos(self) -> dict[str, Any]:
+        every = np.ones(self.num_envs, np.bool_)
+        return {"game_over": self.game_over.copy(), "_game_over": every,
+                "awake": self.awake.copy(), "_awake": every.copy()}
+
+    # -- rendering ---------------------------------------------------------------------------
+    def render(self) -> tuple[Any, ...] | None:
+        """One (h, w, 3) frame per env: the camera visits each scene in turn."""
+        if self.render_mode is None:
+            import gymnasium as gym
+
+            gym.logger.warn(f"{self.env_name}.render() without a render_mode: nothing drawn")
+            return None
+        from kge.render.setup import frame_pixels
+
+        app = self.app
+        camera = app.world.resource(Camera)
+        frames = []
+        for ox in self.origins.tolist():
+            camera.center = (ox + W / 2, H / 2)
+            app.render()
+            frames.append(np.ascontiguousarray(frame_pixels(app)[::-1, :, :3]))
+        camera.center = (W / 2, H / 2)
+        return tuple(frames)
+
+    def close_extras(self, **kwargs: Any) -> None:
+        app, self._app = self._app, None
+        self._started = False
+        if app is not None:
+            app.close()
