@@ -299,7 +299,8 @@ class LunarLanderVector(BatchVectorEnv):
         return tuple(frames)
 
     def close_extras(self, **kwargs: Any) -> None:
-        app, self._app = self._app, None
+        # also reached from __del__ of an env whose __init__ refused its arguments
+        app, self._app = getattr(self, "_app", None), None
         self._started = False
         if app is not None:
             app.close()
