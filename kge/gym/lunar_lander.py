@@ -335,16 +335,17 @@ def fire(physics: Physics, landers: list[int], pose: np.ndarray, dispersion: np.
     sx, sy = tip_x * d0 + side_x * lever, -tip_y * d0 - side_y * lever
     p_main, p_side = MAIN_ENGINE_POWER * m_power, SIDE_ENGINE_POWER * s_power
     main = np.stack([-mx * p_main, -my * p_main,
-                     pose[:, 0] + mx, pose[:, 1] + my], axis=1).tolist()
+                     pose[:, 0] + mx, pose[:, 1] + my], axis=1)
     side = np.stack([-sx * p_side, -sy * p_side,
                      pose[:, 0] + sx - tip_x * 17 / SCALE,
-                     pose[:, 1] + sy + tip_y * SIDE_ENGINE_HEIGHT / SCALE], axis=1).tolist()
-    for k in np.flatnonzero(m_power > 0.0).tolist():
-        jx, jy, px, py = main[k]
-        physics.apply_linear_impulse(landers[k], (jx, jy), (px, py))
-    for k in np.flatnonzero(s_power > 0.0).tolist():
-        jx, jy, px, py = side[k]
-        physics.apply_linear_impulse(landers[k], (jx, jy), (px, py))
+                     pose[:, 1] + sy + tip_y * SIDE_ENGINE_HEIGHT / SCALE], axis=1)
+    # every firing engine in one call, main engines first (the order of the calls
+    # one by one, which an env whose two engines fire at once depends on)
+    on_main, on_side = np.flatnonzero(m_power > 0.0), np.flatnonzero(s_power > 0.0)
+    if len(on_main) or len(on_side):
+        rows = np.concatenate([main[on_main], side[on_side]])
+        who = np.asarray(landers, dtype=np.int64)[np.concatenate([on_main, on_side])]
+        physics.apply_linear_impulses(who, rows[:, :2], rows[:, 2:])
 
 
 def observations(state: np.ndarray, legs: np.ndarray, helipad_y: float) -> np.ndarray:

@@ -174,6 +174,36 @@ class Physics:
         body.angular_velocity = flush(w)
         self._velocity_changed(entity, body)
 
+    def apply_linear_impulses(
+        self, entities: Any, impulses: Any, points: Any = None, wake: bool = True
+    ) -> None:
+        """Row k applies ``impulses[k]`` (N s) to ``entities[k]`` at world ``points[k]``.
+
+        The same as calling :meth:`apply_linear_impulse` row by row (an entity may
+        appear twice), for controllers that push many bodies every step: the rows
+        are checked together and every one before any body changes, so a bad row
+        raises naming its index and entity and applies nothing. ``points`` None
+        pushes every body at its centre of mass.
+
+        >>> # physics.apply_linear_impulses([ship, rock], [(0, 5), (1, 0)], [(0, -1), (2, 2)])
+        """
+        from kge.physics import impulses as bulk
+
+        owner = "Physics.apply_linear_impulses"
+        ents, jj, pp = bulk.checked_rows(owner, entities, impulses, points)
+        recs = [self._record(e, "apply_linear_impulses") for e in ents]
+        new = bulk.new_velocities(owner, [r.body for r in recs], ents, jj, pp)
+        done: set[int] = set()
+        for e, rec in zip(ents, recs, strict=True):
+            body = rec.body
+            if body.id in done or self._force_target(e, "apply_linear_impulses", wake) is None:
+                continue
+            done.add(body.id)
+            vx, vy, w = (flush(x) for x in new[body.id])  # see kge.physics.tiny
+            body.velocity = (vx, vy)
+            body.angular_velocity = w
+            self._velocity_changed(e, body)
+
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
         """Change the angular velocity at once by ``impulse / inertia``."""
         owner = where(entity, "Physics.apply_angular_impulse")

@@ -1,0 +1,133 @@
+"""``Physics.apply_linear_impulses``: many impulses in one call, as if made one by one."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from kge.components.rigidbody import RigidBody
+from kge.components.shapes import Box, Circle
+from kge.errors import EntityNotFoundError, ValidationError
+
+from .conftest import Sim
+
+
+def _scene() -> tuple[Sim, list[int]]:
+    sim = Sim()
+    sim.ground()
+    es = [
+        sim.dynamic(Box(0.5, 0.25), 0.0, 2.0, density=1.0),
+        sim.dynamic(Circle(0.3), 2.0, 3.0, density=2.0),
+        sim.dynamic(Box(0.2, 0.6), -2.0, 4.0, 0.3, density=0.5),
+    ]
+    sim.step()
+    return sim, es
+
+
+ROWS = [(0, (1.0, 2.0), (0.3, 2.1)), (1, (-0.5, 0.0), (2.0, 3.2)),
+        (0, (0.25, -1.0), (-0.4, 1.9)), (2, (0.0, 3.0), (-2.1, 4.5))]
+
+
+def _velocities(sim: Sim, es: list[int]) -> list[tuple[float, float, float]]:
+    return [(*sim.rb(e).velocity, sim.rb(e).angular_velocity) for e in es]
+
+
+def test_rows_equal_the_same_calls_one_by_one() -> None:
+    one, es1 = _scene()
+    bulk, es2 = _scene()
+    try:
+        for k, j, p in ROWS:
+            one.physics.apply_linear_impulse(es1[k], j, p)
+        bulk.physics.apply_linear_impulses(
+            [es2[k] for k, _, _ in ROWS], [j for _, j, _ in ROWS], [p for _, _, p in ROWS])
+        assert _velocities(bulk, es2) == _velocities(one, es1)  # entity 0 twice, in order
+        assert _velocities(bulk, es2)[0][2] != 0.0  # off-centre: it spins
+        for s in (one, bulk):
+            s.step(10)
+        assert [(bulk.t(e).x, bulk.t(e).y) for e in es2] == [(one.t(e).x, one.t(e).y) for e in es1]
+    finally:
+        one.close()
+        bulk.close()
+
+
+def test_without_points_every_body_is_pushed_at_its_centre() -> None:
+    sim, es = _scene()
+    try:
+        sim.physics.apply_linear_impulses(es, [(1.0, 0.0)] * 3)
+        for e in es:
+            mass = sim.physics.mass_data(e).mass
+            vx, _vy = sim.rb(e).velocity
+            assert vx == pytest.approx(1.0 / mass)
+            assert sim.rb(e).angular_velocity == pytest.approx(0.0, abs=1e-12)
+    finally:
+        sim.close()
+
+
+@pytest.mark.parametrize(
+    ("impulses", "points", "message"),
+    [
+        ([(1.0, 0.0), (math.nan, 0.0), (0.0, 1.0)], None, r"impulses\[1\] \(entity \d+\) must be finite"),
+        ([(1.0, 0.0)] * 3, [(0.0, 0.0), (0.0, 0.0), (math.inf, 0.0)], r"points\[2\]"),
+        ([(1.0, 0.0)] * 2, None, r"shape \(3, 2\)"),
+        ([(1e308, 0.0)] * 3, None, r"would not be finite"),
+        ("abc", None, r"impulses"),
+    ],
+)
+def test_a_bad_row_raises_and_applies_nothing(impulses: object, points: object, message: str) -> None:
+    sim, es = _scene()
+    try:
+        before = _velocities(sim, es)
+        with pytest.raises(ValidationError, match=message):
+            sim.physics.apply_linear_impulses(es, impulses, points)
+        assert _velocities(sim, es) == before
+    finally:
+        sim.close()
+
+
+def test_bad_entities_are_refused_before_any_change() -> None:
+    sim, es = _scene()
+    try:
+        before = _velocities(sim, es)
+        with pytest.raises(EntityNotFoundError):
+            sim.physics.apply_linear_impulses([es[0], 999_999], [(1.0, 0.0)] * 2)
+        with pytest.raises(ValidationError, match="int ids"):
+            sim.physics.apply_linear_impulses([1.5, 2.5], [(1.0, 0.0)] * 2)
+        assert _velocities(sim, es) == before
+    finally:
+        sim.close()
+
+
+def test_wake_false_leaves_a_sleeping_body_asleep() -> None:
+    sim = Sim()
+    try:
+        sim.ground()
+        box = sim.dynamic(Box(0.5, 0.5), 0.0, 0.5, density=1.0)
+        sim.step(120)
+        assert not sim.rb(box).awake
+        sim.physics.apply_linear_impulses([box], [(5.0, 0.0)], wake=False)
+        assert not sim.rb(box).awake and sim.rb(box).velocity == (0.0, 0.0)
+        sim.physics.apply_linear_impulses([box], [(5.0, 0.0)])
+        assert sim.rb(box).awake and sim.rb(box).velocity[0] > 0.0
+    finally:
+        sim.close()
+
+
+def test_body_types_that_impulses_do_not_move() -> None:
+    sim, es = _scene()
+    try:
+        kin = sim.spawn(*_kinematic())
+        sim.step()
+        sim.physics.apply_linear_impulses([kin, es[0]], [(9.0, 0.0), (1.0, 0.0)])
+        assert sim.rb(kin).velocity == (0.0, 0.0)
+        assert sim.rb(es[0]).velocity[0] > 0.0
+    finally:
+        sim.close()
+
+
+def _kinematic() -> tuple[object, ...]:
+    from kge.components.collider import Collider
+    from kge.components.rigidbody import BodyType
+    from kge.components.transform import Transform
+
+    return Transform(5.0, 5.0), RigidBody(type=BodyType.KINEMATIC), Collider(Box(0.5, 0.5))
