@@ -52,6 +52,7 @@ from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes, spread
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
+from kge.physics.static_bulk import add_shapes
 from kge.physics.sync import PoseTable, rows_differ
 from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_rows
@@ -433,7 +434,7 @@ class Simulation:
             self.ccd_dirty.add(owner)
             attached.append(c)
         if to_add:
-            space.add(*to_add)  # one call, same order as shape by shape
+            add_shapes(space, to_add)  # one call, same order as shape by shape
         self.pending.difference_update(attached)
         if self._hash_cell is not None and 5 * len(space.shapes) > self._hash_count:
             self._use_hash(self._hash_cell)  # grown: a larger table (fewer false pairs)

@@ -141,19 +141,28 @@ class LayerCollision:
         mask = (self.kind[r0:r1, c0:c1] == SOLID) & (self.material[r0:r1, c0:c1] == m)
         units = self.data.units
         mat = self.materials[m]
+        loops = trace_loops(mask)
+        if not loops:
+            return []
+        # every corner of every loop converted and made into float tuples at once
+        sizes = np.array([len(loop) for loop in loops])
+        cr = np.concatenate(loops) + np.array([c0, r0])
+        x, y = units.corners(cr[:, 0].astype(float), cr[:, 1].astype(float))
+        points = list(zip(x.tolist(), y.tolist(), strict=True))
+        ends = np.cumsum(sizes)
+        starts = ends - sizes
+        lo = np.minimum.reduceat(cr, starts).tolist()
+        hi = np.maximum.reduceat(cr, starts).tolist()
         out = []
-        for loop in trace_loops(mask):
-            cols = loop[:, 0] + c0
-            rows = loop[:, 1] + r0
-            x, y = units.corners(cols.astype(float), rows.astype(float))
-            verts = list(zip(x.tolist(), y.tolist(), strict=True))
-            box = (int(cols.min()), int(rows.min()), int(cols.max()), int(rows.max()))
+        start = 0
+        for loop, end, (c_lo, r_lo), (c_hi, r_hi) in zip(loops, ends.tolist(), lo, hi, strict=True):
             comps = (
                 Transform(),
-                collider(Chain(verts, loop=True), mat),
-                TileCollider(self.layer.name, "outline", box),
+                collider(Chain(points[start:end], loop=True), mat),
+                TileCollider(self.layer.name, "outline", (c_lo, r_lo, c_hi, r_hi)),
             )
             out.append(Piece(comps, (m, loop.tobytes(), c0, r0)))
+            start = end
         return out
 
     def _runs(self, r: int) -> list[Piece]:
