@@ -58,19 +58,17 @@ def chain_segments(
     Neighbours follow Box2D's chain: a loop's ends wrap, an open chain's end
     segments have themselves as the outer neighbour (no ghost vertex).
     """
-    pts = np.asarray(vertices, dtype=np.float64).reshape(-1, 2)
-    pts = np.where(np.abs(pts) < TINY, 0.0, pts)  # see kge.physics.tiny
-    n = len(pts)
-    idx = np.arange(n if loop else n - 1)
-    a = pts[idx]
-    b = pts[(idx + 1) % n]
+    pts = list(vertices)
+    arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+    if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
+        pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
+    # ends and neighbours by list slicing: Chipmunk takes the points as they are
     if loop:
-        prev = pts[(idx - 1) % n]
-        nxt = pts[(idx + 2) % n]
+        A, B = pts, pts[1:] + pts[:1]
+        P, N = pts[-1:] + pts[:-1], pts[2:] + pts[:2]
     else:
-        prev = np.where((idx > 0)[:, None], pts[np.maximum(idx - 1, 0)], a)
-        nxt = np.where((idx + 2 < n)[:, None], pts[np.minimum(idx + 2, n - 1)], b)
-    A, B, P, N = a.tolist(), b.tolist(), prev.tolist(), nxt.tolist()
+        A, B = pts[:-1], pts[1:]
+        P, N = pts[:1] + pts[:-2], pts[2:] + pts[-1:]
     new_segment = lib.cpSegmentShapeNew
     set_neighbors = lib.cpSegmentShapeSetNeighbors
     set_friction = lib.cpShapeSetFriction

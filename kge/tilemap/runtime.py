@@ -69,6 +69,12 @@ class TileMap:
         self._live: dict[int, Piece] = {}  #: collider entity -> piece
         #: (tile layer position, chunk row, chunk column) whose drawing is stale
         self.dirty: set[tuple[int, int, int]] = set()
+        #: the gid each gid shows now: itself, or an animated tile's current frame.
+        #: The TilemapPlugin's clock advances it on game time (kge.animation's
+        #: numpy clips); the renderer draws ``shown[gids]``.
+        self.shown = np.arange(max(data.tiles.size, 1), dtype=np.int64)
+        for gid, (frames, _) in data.tiles.animations.items():
+            self.shown[gid] = frames[0]  # time 0: the first frame
         self.loaded = True
 
     # -- geometry ------------------------------------------------------------------------
