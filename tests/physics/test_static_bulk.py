@@ -126,3 +126,24 @@ def test_obstacle_rows_in_bulk_equal_one_by_one() -> None:
         want = (bb.left, bb.bottom, bb.right, bb.top)
         assert tuple(bulk.box[bulk.row_of[s]]) == want == tuple(single.box[single.row_of[s]])
     assert not np.any(bulk.kinematic[: bulk.live])
+
+
+def test_obstacle_rows_are_reused_after_removals() -> None:
+    space, body = _space()
+    first = chain_segments(body, [(float(i), 0.0) for i in range(41)], False, 0.0, 0.0, {})
+    add_shapes(space, first)
+    obs = Obstacles(space)
+    obs._classify_many(first)
+    space.remove(*first[:10])
+    obs._classify_many(first[:10])  # out of the space: their rows are freed
+    assert obs.live == 30 and len(obs._free) == 10
+    more = chain_segments(body, [(float(i), 5.0) for i in range(21)], False, 0.0, 0.0, {})
+    add_shapes(space, more)
+    obs._classify_many(more)  # 10 rows reused, 10 appended
+    assert obs.live == 50 and not obs._free and len(obs.shapes) == 50
+    for s in [*first[10:], *more]:
+        row = obs.row_of[s]
+        assert obs.shapes[row] is s
+        bb = s.bb
+        assert tuple(obs.box[row]) == (bb.left, bb.bottom, bb.right, bb.top)
+    assert sorted(obs._owner_rows[body.id]) == sorted(obs.row_of.values())

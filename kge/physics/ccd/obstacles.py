@@ -178,9 +178,14 @@ class Obstacles:
         bodies: dict[int, tuple[int, int]] = {}  # id(body) -> (type, body.id), read once
         row_of = self.row_of
         get_bb = lib.cpShapeGetBB
-        rows: list[int] = []
-        boxes: list[tuple[float, float, float, float]] = []
+        rows: list[int] = []  # known shapes' rows, then the new shapes' rows
+        fresh: list[pymunk.Shape] = []
+        fresh_key: list[int] = []
+        owners: dict[int, pymunk.Body] = {}
+        boxes: list[tuple[float, float, float, float]] = []  # known shapes, then new ones
+        fresh_boxes: list[tuple[float, float, float, float]] = []
         moving: list[bool] = []
+        fresh_moving: list[bool] = []
         for shape in shapes:
             body = shape._body()
             if body is None:
@@ -189,30 +194,57 @@ class Obstacles:
                 known = bodies.get(id(body))
                 if known is None:
                     known = bodies[id(body)] = (body.body_type, body.id)
+                    owners[known[1]] = body
                 kind, key = known
             row = row_of.get(shape)
             if body is None or kind == _DYNAMIC or shape._space() is not space:
                 if row is not None:
                     self._drop(shape)
                 continue
-            if row is None:
-                row = self._free_row()
-                row_of[shape] = row
-                self.shapes[row] = shape
-                self.owner_of[row] = key
-                self.live += 1
-                owner_rows = self._owner_rows.setdefault(key, [])
-                if not owner_rows:
-                    self._owners[key] = body
-                    self._owners_dirty = True
-                owner_rows.append(row)
             bb = get_bb(shape._shape)  # what shape.bb reads, without building a BB
-            rows.append(row)
-            boxes.append((bb.l, bb.b, bb.r, bb.t))
-            moving.append(kind == _KINEMATIC)
+            if row is None:
+                fresh.append(shape)
+                fresh_key.append(key)
+                fresh_boxes.append((bb.l, bb.b, bb.r, bb.t))
+                fresh_moving.append(kind == _KINEMATIC)
+            else:
+                rows.append(row)
+                boxes.append((bb.l, bb.b, bb.r, bb.t))
+                moving.append(kind == _KINEMATIC)
+        if fresh:
+            rows += self._new_rows(fresh, fresh_key, owners)
+            boxes += fresh_boxes
+            moving += fresh_moving
         if rows:
             self.box[rows] = boxes
             self.kinematic[rows] = moving
+
+    def _new_rows(
+        self, fresh: list[pymunk.Shape], keys: list[int], owners: dict[int, pymunk.Body]
+    ) -> list[int]:
+        """Rows for shapes not indexed yet: dropped rows first, then a block at the end."""
+        reuse = [self._free.pop() for _ in range(min(len(fresh), len(self._free)))]
+        for shape, row, key in zip(fresh, reuse, keys, strict=False):
+            self.shapes[row] = shape
+            self.owner_of[row] = key
+        start = len(self.shapes)
+        self.shapes.extend(fresh[len(reuse) :])
+        self.owner_of.extend(keys[len(reuse) :])
+        end = len(self.shapes)
+        if end > len(self.box):  # grow by doubling, as _free_row does
+            grow = max(end, 2 * len(self.box)) - len(self.box)
+            self.box = np.concatenate([self.box, np.full((grow, 4), np.nan)])
+            self.kinematic = np.concatenate([self.kinematic, np.zeros(grow, dtype=bool)])
+        new = reuse + list(range(start, end))
+        self.row_of.update(zip(fresh, new, strict=True))
+        self.live += len(fresh)
+        for key, row in zip(keys, new, strict=True):
+            owner_rows = self._owner_rows.setdefault(key, [])
+            if not owner_rows:
+                self._owners[key] = owners[key]
+                self._owners_dirty = True
+            owner_rows.append(row)
+        return new
 
     def _free_row(self) -> int:
         if self._free:
