@@ -5,6 +5,7 @@ from __future__ import annotations
 import gc
 import math
 import weakref
+from typing import Any
 
 import numpy as np
 import pymunk
@@ -147,3 +148,51 @@ def test_obstacle_rows_are_reused_after_removals() -> None:
         bb = s.bb
         assert tuple(obs.box[row]) == (bb.left, bb.bottom, bb.right, bb.top)
     assert sorted(obs._owner_rows[body.id]) == sorted(obs.row_of.values())
+
+
+def _read(space: pymunk.Space) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    bodies = list(space.bodies)
+    ids = np.array([b.id for b in bodies], np.int64)
+    pose = np.array([(b.position.x, b.position.y, b.angle) for b in bodies], float)
+    return ids, pose, np.zeros((len(bodies), 3))
+
+
+def test_a_new_static_owner_does_not_reread_every_other_box() -> None:
+    """Adding one static collider next to a big static index re-reads only its own boxes."""
+    space = pymunk.Space()
+    obs = Obstacles(space)
+    for k in range(50):
+        body = pymunk.Body(body_type=pymunk.Body.STATIC)
+        space.add(body)
+        add_shapes(space, chain_segments(body, [(float(i), k * 2.0) for i in range(21)],
+                                         False, 0.0, 0.0, {}))
+        obs.reclassify(body)
+    for order in (0, 0, 0):
+        obs.refresh(*_read(space), order)  # settled: every owner seen, nothing moved
+    assert obs.live == 50 * 20
+    counted: list[int] = []
+    bulk = obs._classify_many
+
+    def counting(shapes: Any) -> None:
+        shapes = list(shapes)
+        counted.append(len(shapes))
+        bulk(shapes)
+
+    obs._classify_many = counting  # type: ignore[method-assign]
+    body = pymunk.Body(body_type=pymunk.Body.STATIC)
+    space.add(body)
+    add_shapes(space, chain_segments(body, [(float(i), -5.0) for i in range(21)],
+                                     False, 0.0, 0.0, {}))
+    obs.reclassify(body)
+    obs.refresh(*_read(space), 1)
+    obs.refresh(*_read(space), 1)
+    assert obs.live == 51 * 20
+    assert sum(counted) <= 5 * 20  # the new owner's 20 shapes a few times, not 1,020
+    # and a static body that does move still has its boxes re-read
+    first = next(iter(space.bodies))
+    first.position = (0.0, 100.0)
+    space.reindex_shapes_for_body(first)
+    counted.clear()
+    obs.refresh(*_read(space), 1)
+    s = next(iter(first.shapes))
+    assert obs.box[obs.row_of[s]][1] >= 99.0 and sum(counted) == 20

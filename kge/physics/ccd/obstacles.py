@@ -84,9 +84,18 @@ class Obstacles:
         fresh = order != self._order
         self._order = order
         if self._owners_dirty:
+            old_ids, old_pose, old_recent = self._oids, self._opose, self._recent
             self._oids = np.array(sorted(self._owners), dtype=np.int64)
             self._opose = np.full((len(self._oids), 3), np.nan)
             self._recent = np.zeros(len(self._oids), dtype=bool)
+            if len(old_ids) and len(self._oids):
+                # owners that stay keep their last pose: one new static collider
+                # must not make every other owner re-read all its boxes (a tile
+                # map's 100,000s) on this step and the next
+                at = np.minimum(np.searchsorted(old_ids, self._oids), len(old_ids) - 1)
+                same = old_ids[at] == self._oids
+                self._opose[same] = old_pose[at[same]]
+                self._recent[same] = old_recent[at[same]]
             self._owners_dirty = False
             fresh = True
         k = len(self._oids)
@@ -106,8 +115,7 @@ class Obstacles:
         self._recent = moved
         self._opose = cur
         if update.any():
-            for j in np.flatnonzero(update).tolist():
-                self._update_owner(int(self._oids[j]))
+            self._update_owners(self._oids[update].tolist())
 
     def _scan(self) -> None:
         """Index the shapes added since the last scan (see the class docstring)."""
@@ -282,11 +290,11 @@ class Obstacles:
             self._owners.clear()
             self._owners_dirty = True
 
-    def _update_owner(self, body_id: int) -> None:
-        for row in list(self._owner_rows.get(body_id, ())):
-            shape = self.shapes[row]
-            if shape is not None:
-                self._classify(shape)
+    def _update_owners(self, body_ids: list[int]) -> None:
+        """Re-read the boxes of every shape of these owners, in one bulk pass."""
+        shapes = self.shapes
+        rows = [row for b in body_ids for row in self._owner_rows.get(b, ())]
+        self._classify_many([s for s in (shapes[r] for r in rows) if s is not None])
 
     def body(self, body_id: int) -> pymunk.Body | None:
         """A static or kinematic body that owns indexed shapes, by id."""
