@@ -30,6 +30,7 @@ from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import bind, raw_set, unbind
 from kge.components.transform import Transform
 from kge.errors import ValidationError
+from kge.gcpause import without_gc
 from kge.physics.bodies import (
     DYNAMIC,
     PYMUNK_TYPE,
@@ -321,6 +322,7 @@ class Simulation:
             if rec is not None and rec.body.is_sleeping:
                 rec.body.activate()
 
+    @without_gc  # a tile map's 100,000s of new static shapes (see kge.gcpause)
     def _sync_ccd(self) -> None:
         """(Re)register bodies with continuous collision after shape or type changes."""
         ccd = self.ccd
@@ -410,6 +412,7 @@ class Simulation:
             self.ccd_dirty.add(crec.owner)
         self._remove_shapes(crec)
 
+    @without_gc  # a tile map attaches 100,000s of shapes here (see kge.gcpause)
     def _attach_pending(self) -> None:
         world = self.world
         space = self.space

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from kge.errors import KgeError
+from kge.gcpause import without_gc
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
 from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, MapData, TileLayerData
@@ -223,6 +224,7 @@ class TileMap:
         return f"TileMap({str(self.path)!r}, {self.data.cols}x{self.data.rows})"
 
 
+@without_gc  # a large map makes 100,000s of objects at once (see kge.gcpause)
 def load_map(
     world: World,
     path: str | Path,
