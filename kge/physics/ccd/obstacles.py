@@ -15,6 +15,8 @@ import numpy as np
 import pymunk
 from pymunk._chipmunk import lib
 
+from kge.gcpause import without_gc
+
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
 
@@ -117,6 +119,7 @@ class Obstacles:
         if update.any():
             self._update_owners(self._oids[update].tolist())
 
+    @without_gc  # a tile map adds 100,000s of shapes at once (see kge.gcpause)
     def _scan(self) -> None:
         """Index the shapes added since the last scan (see the class docstring)."""
         shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
@@ -290,6 +293,7 @@ class Obstacles:
             self._owners.clear()
             self._owners_dirty = True
 
+    @without_gc  # all of a tile map's owners on their first sighting
     def _update_owners(self, body_ids: list[int]) -> None:
         """Re-read the boxes of every shape of these owners, in one bulk pass."""
         shapes = self.shapes
