@@ -8,9 +8,11 @@ re-read weak references), 2.7 s for the map before kge does anything. This
 module makes the *same* objects, real :class:`pymunk.Segment` instances with
 their Chipmunk shape, GC finaliser and user-data handle set exactly as
 pymunk's own ``Shape._init`` sets them, with the per-segment work reduced to
-the Chipmunk calls themselves: vertices flushed and neighbours found with
-numpy once per chain, shared attribute dicts and weak references, and the
-space checks done once per body instead of once per shape.
+the Chipmunk calls themselves: tiny coordinates checked with numpy and the
+neighbours found by list slicing once per chain, shared attribute dicts and
+weak references, and the space checks done once per body instead of once per
+shape. The callers pause Python's cyclic collector around the bulk work
+(:mod:`kge.gcpause`).
 
 Everything else (queries, contact callbacks, removal, pickling, garbage
 collection) sees ordinary pymunk shapes. Tied to pymunk 7.3's ``Shape``

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import gc
 import math
+import pickle
 import weakref
 from typing import Any
 
@@ -37,6 +38,8 @@ def test_segments_match_pymunks_own() -> None:
         assert s.body is body and s.space is None
         assert (s.kge_collider, s.kge_child) == (7, i)
     assert set(body.shapes) == set(segs)
+    twin = pickle.loads(pickle.dumps(segs[2]))  # pymunk's own pickling works on them
+    assert (twin.a, twin.b, twin.friction, twin.filter) == (segs[2].a, segs[2].b, 0.5, pf)
     add_shapes(space, segs)  # fewer than 16: space.add itself
     assert all(s.space is space for s in segs)
     # queries find the segment object itself (the user-data handle is set)
