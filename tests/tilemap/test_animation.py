@@ -15,6 +15,7 @@ import pytest
 
 from kge import App
 from kge.components.camera import Camera
+from kge.components.tilemap import TileCollider
 from kge.systems.tilemap_animation import MapClips, TileAnimationSystem
 from kge.tilemap import TileMap, load_map
 
@@ -114,3 +115,22 @@ def test_map_clips_use_the_animation_systems_clip_state(level: tuple[App, TileMa
     tmap.unload()
     app.step(1)
     assert id(tmap) not in system.clips
+
+
+def test_the_platformer_levels_water_animates(tmp_path: Path) -> None:
+    from kge.testbed.samples.tilemaps import WATER, write_levels
+
+    level1, _ = write_levels(tmp_path)
+    made: list[TileMap] = []
+    app = App(lambda world: made.append(load_map(world, level1, unknown="ignore")), headless=True)
+    try:
+        (m,) = made
+        assert int(np.count_nonzero(m.layer("Water").gids == WATER)) > 0
+        assert not [e for e in m.collider_entities if m.world.get(e, TileCollider).layer == "Water"]
+        shown = []
+        for _ in range(4):
+            shown.append(int(m.shown[WATER]))
+            app.step(30)  # 0.5 s: the next 0.4 s frame
+        assert shown == [WATER, WATER + 1, WATER, WATER + 1]
+    finally:
+        app.close()
