@@ -28,6 +28,7 @@ import pymunk
 from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
+from kge.physics.static_bulk import chain_segments
 from kge.physics.tiny import flush_point, flush_points
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
@@ -43,35 +44,11 @@ def build_shapes(
 ) -> list[pymunk.Shape]:
     """The pymunk shapes of one collider (several for a chain), not yet in a space."""
     geom = collider.shape
-    shapes: list[pymunk.Shape] = []
-    rank = RANK_POLYGON
-    # coordinates below 1e-100 m are zero to Chipmunk (see kge.physics.tiny)
-    if isinstance(geom, Circle):
-        shapes.append(pymunk.Circle(body, geom.radius, flush_point(geom.center)))
-        rank = RANK_CIRCLE
-    elif isinstance(geom, Box):
-        shapes.append(pymunk.Poly(body, flush_points(geom.vertices()), radius=skin))
-    elif isinstance(geom, Polygon):
-        shapes.append(pymunk.Poly(body, flush_points(geom.vertices), radius=skin))
-    elif isinstance(geom, Edge):
-        shapes.append(pymunk.Segment(body, flush_point(geom.v1), flush_point(geom.v2), skin))
-        rank = RANK_EDGE
-    elif isinstance(geom, Chain):
-        rank = RANK_EDGE
-        pts = flush_points(geom.vertices)
-        segs = [(flush_point(a), flush_point(b)) for a, b in geom.segments()]
-        n = len(pts)
-        for i, (a, b) in enumerate(segs):
-            seg = pymunk.Segment(body, a, b, skin)
-            if geom.loop:
-                prev, nxt = pts[(i - 1) % n], pts[(i + 2) % n]
-            else:
-                prev = pts[i - 1] if i > 0 else a
-                nxt = pts[i + 2] if i + 2 < n else b
-            seg.set_neighbors(prev, nxt)
-            shapes.append(seg)
     friction = math.sqrt(collider.friction)
     pf = to_pymunk(collider.filter)
+    rank = RANK_EDGE if isinstance(geom, (Edge, Chain)) else RANK_POLYGON
+    if isinstance(geom, Circle):
+        rank = RANK_CIRCLE
     attrs = {
         "kge_collider": collider_entity,
         "kge_body": body_entity,
@@ -81,17 +58,39 @@ def build_shapes(
         "kge_filter": collider.filter,
         "kge_hit": collider.hit_threshold,
     }
-    for i, s in enumerate(shapes):
-        vars(s)["kge_child"] = i
-        # what apply_material does, minus the writes a fresh shape does not need
-        # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
-        vars(s).update(attrs)
-        s.friction = friction
-        if pf != DEFAULT_FILTER:
-            s.filter = pf
-        if collider.sensor:
-            s.sensor = True
-    return shapes
+    # coordinates below 1e-100 m are zero to Chipmunk (see kge.physics.tiny)
+    if isinstance(geom, Chain):
+        # one tight loop: a tile map's outlines are 100,000s of segments
+        return list(
+            chain_segments(
+                body,
+                geom.vertices,
+                geom.loop,
+                skin,
+                friction,
+                attrs,
+                None if pf == DEFAULT_FILTER else pf,
+                collider.sensor,
+            )
+        )
+    if isinstance(geom, Circle):
+        shape: pymunk.Shape = pymunk.Circle(body, geom.radius, flush_point(geom.center))
+    elif isinstance(geom, Box):
+        shape = pymunk.Poly(body, flush_points(geom.vertices()), radius=skin)
+    elif isinstance(geom, Polygon):
+        shape = pymunk.Poly(body, flush_points(geom.vertices), radius=skin)
+    else:
+        shape = pymunk.Segment(body, flush_point(geom.v1), flush_point(geom.v2), skin)
+    # what apply_material does, minus the writes a fresh shape does not need
+    # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
+    vars(shape).update(attrs)
+    vars(shape)["kge_child"] = 0
+    shape.friction = friction
+    if pf != DEFAULT_FILTER:
+        shape.filter = pf
+    if collider.sensor:
+        shape.sensor = True
+    return [shape]
 
 
 def apply_material(shape: pymunk.Shape, collider: Collider) -> None:

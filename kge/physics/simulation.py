@@ -30,6 +30,7 @@ from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import bind, raw_set, unbind
 from kge.components.transform import Transform
 from kge.errors import ValidationError
+from kge.gcpause import without_gc
 from kge.physics.bodies import (
     DYNAMIC,
     PYMUNK_TYPE,
@@ -52,6 +53,7 @@ from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import apply_material, build_shapes, spread
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
+from kge.physics.static_bulk import add_shapes
 from kge.physics.sync import PoseTable, rows_differ
 from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_rows
@@ -320,6 +322,7 @@ class Simulation:
             if rec is not None and rec.body.is_sleeping:
                 rec.body.activate()
 
+    @without_gc  # a tile map's 100,000s of new static shapes (see kge.gcpause)
     def _sync_ccd(self) -> None:
         """(Re)register bodies with continuous collision after shape or type changes."""
         ccd = self.ccd
@@ -409,6 +412,7 @@ class Simulation:
             self.ccd_dirty.add(crec.owner)
         self._remove_shapes(crec)
 
+    @without_gc  # a tile map attaches 100,000s of shapes here (see kge.gcpause)
     def _attach_pending(self) -> None:
         world = self.world
         space = self.space
@@ -433,7 +437,7 @@ class Simulation:
             self.ccd_dirty.add(owner)
             attached.append(c)
         if to_add:
-            space.add(*to_add)  # one call, same order as shape by shape
+            add_shapes(space, to_add)  # one call, same order as shape by shape
         self.pending.difference_update(attached)
         if self._hash_cell is not None and 5 * len(space.shapes) > self._hash_count:
             self._use_hash(self._hash_cell)  # grown: a larger table (fewer false pairs)

@@ -8,8 +8,9 @@ coordinates with Tiled's flips), and deletes those that left it: the batch
 only ever holds the chunks on screen, so a frame costs the same on a 30x20
 map and on a 1,000x1,000 one. Layer opacity, tint, offset and parallax are
 uniforms of the layer's group, set per frame, never per tile. Animated tiles
-rewrite their chunk's texture coordinates when their frame changes (on game
-time, so they pause with the game).
+rebuild their chunk when the frame they show changes: ``TileMap.shown``, which
+the TilemapPlugin's clock advances with kge.animation's numpy clips on game
+time (so they pause, slow down and single-step with the game).
 """
 
 from __future__ import annotations
@@ -199,7 +200,7 @@ class MapDrawing:
             for key in self._visible(frame, li, shift):
                 wanted.add(key)
                 chunk = self.chunks.get(key)
-                anim = self._anim_key(layer, key, frame.time)
+                anim = self._anim_key(layer, key)
                 if chunk is None or chunk.anim_key != anim:
                     self._drop(key)
                     self.chunks[key] = self._build(frame, li, layer, key, anim, draw_layer, order)
@@ -232,16 +233,14 @@ class MapDrawing:
             return []
         return [(li, cr, cc) for cr in range(cr0, cr1 + 1) for cc in range(cc0, cc1 + 1)]
 
-    def _anim_key(
-        self, layer: TileLayerData, key: tuple[int, int, int], time: float
-    ) -> tuple[int, ...]:
+    def _anim_key(self, layer: TileLayerData, key: tuple[int, int, int]) -> tuple[int, ...]:
+        """The frames the chunk's animated tiles show now: a change rebuilds the chunk."""
         if not len(self.map.data.tiles.animations):
             return ()
         _, cr, cc = key
         sub = layer.gids[cr * CHUNK : (cr + 1) * CHUNK, cc * CHUNK : (cc + 1) * CHUNK]
         found = np.unique(sub[self.animated[sub]])
-        tiles = self.map.data.tiles
-        return tuple(tiles.frame_at(int(g), time) for g in found)
+        return tuple(self.map.shown[found].tolist())
 
     def _build(
         self,
@@ -263,10 +262,7 @@ class MapDrawing:
             return chunk
         gids = sub[rr, cols].astype(np.int64)
         flags = layer.flags[r0 : r0 + CHUNK, c0 : c0 + CHUNK][rr, cols]
-        shown = gids.copy()
-        if anim:
-            for g in np.unique(gids[self.animated[gids]]).tolist():
-                shown[gids == g] = data.tiles.frame_at(g, frame.time)
+        shown = self.map.shown[gids] if anim else gids
         quads = tile_quads(data, rr + r0, cols + c0, gids)
         uvs = tile_uvs(data, shown, flags, self.bounds)
         images = data.tiles.image[shown]

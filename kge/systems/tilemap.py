@@ -14,6 +14,7 @@ from typing import Any
 from kge.errors import KgeError
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
+from kge.systems.tilemap_animation import TileAnimationSystem
 from kge.tilemap.errors import TilemapError
 from kge.tilemap.runtime import MapFiles, TileMaps, maps_in
 from kge.world import World
@@ -23,10 +24,12 @@ PASS_ORDER = -100
 
 
 class TilemapPlugin(Plugin):
-    """Inserts the :class:`~kge.tilemap.TileMaps` resource and the tile drawing pass."""
+    """Inserts the :class:`~kge.tilemap.TileMaps` resource, the tile animation clock
+    (:mod:`kge.systems.tilemap_animation`) and the tile drawing pass."""
 
     def build(self, world: World) -> None:
         maps_in(world)
+        world.add_system(TileAnimationSystem())
         if not world.has_resource(MapFiles):
             world.insert_resource(MapFiles(lambda name: map_file(world, name)))
         state: dict[str, Any] = {}

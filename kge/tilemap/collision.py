@@ -137,23 +137,50 @@ class LayerCollision:
             self.cells[(c, r)] = self._shapes(c, r)
             yield from self.cells[(c, r)]
 
-    def _trace(self, m: int, c0: int, r0: int, c1: int, r1: int) -> list[Piece]:
+    def _trace(
+        self, m: int, c0: int, r0: int, c1: int, r1: int, known: dict[Any, Piece] | None = None
+    ) -> list[Piece]:
+        """The outline pieces of material ``m`` inside the cell rectangle [c0, c1) x [r0, r1).
+
+        A loop whose key (material and absolute corners) is in ``known`` is that
+        piece again: no components are built for it (a tile edit re-traces an area,
+        and most of its outlines come back unchanged).
+        """
         mask = (self.kind[r0:r1, c0:c1] == SOLID) & (self.material[r0:r1, c0:c1] == m)
         units = self.data.units
         mat = self.materials[m]
+        loops = trace_loops(mask)
+        if not loops:
+            return []
+        # every corner of every loop converted at once
+        sizes = np.array([len(loop) for loop in loops])
+        cr = np.concatenate(loops) + np.array([c0, r0])
+        x, y = units.corners(cr[:, 0].astype(float), cr[:, 1].astype(float))
+        ends = np.cumsum(sizes)
+        starts = ends - sizes
+        lo = np.minimum.reduceat(cr, starts).tolist()
+        hi = np.maximum.reduceat(cr, starts).tolist()
+        if known is None:
+            xs, ys = x.tolist(), y.tolist()
         out = []
-        for loop in trace_loops(mask):
-            cols = loop[:, 0] + c0
-            rows = loop[:, 1] + r0
-            x, y = units.corners(cols.astype(float), rows.astype(float))
-            verts = list(zip(x.tolist(), y.tolist(), strict=True))
-            box = (int(cols.min()), int(rows.min()), int(cols.max()), int(rows.max()))
+        for start, end, (c_lo, r_lo), (c_hi, r_hi) in zip(
+            starts.tolist(), ends.tolist(), lo, hi, strict=True
+        ):
+            key = (m, cr[start:end].tobytes())
+            same = known.get(key) if known is not None else None
+            if same is not None:
+                out.append(same)
+                continue
+            if known is None:
+                points = list(zip(xs[start:end], ys[start:end], strict=True))
+            else:
+                points = list(zip(x[start:end].tolist(), y[start:end].tolist(), strict=True))
             comps = (
                 Transform(),
-                collider(Chain(verts, loop=True), mat),
-                TileCollider(self.layer.name, "outline", box),
+                collider(Chain(points, loop=True), mat),
+                TileCollider(self.layer.name, "outline", (c_lo, r_lo, c_hi, r_hi)),
             )
-            out.append(Piece(comps, (m, loop.tobytes(), c0, r0)))
+            out.append(Piece(comps, key))
         return out
 
     def _runs(self, r: int) -> list[Piece]:
@@ -278,26 +305,16 @@ class LayerCollision:
                 hi = np.maximum(hi, boxes[hit, 2:].max(axis=0))
         old = [p for p, h in zip(pieces, hit.tolist(), strict=True) if h]
         keep = [p for p, h in zip(pieces, hit.tolist(), strict=True) if not h]
-        fresh = self._trace(m, int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1]))
-        # an outline that did not change keeps its entity
-        by_shape = {_loop_key(p): p for p in old}
-        gone, born, final = [], [], []
-        for p in fresh:
-            same = by_shape.pop(_loop_key(p), None)
-            if same is not None:
-                final.append(same)
-            else:
-                born.append(p)
-                final.append(p)
-        gone = list(by_shape.values())
+        # an outline that did not change keeps its piece and entity
+        by_key = {p.key: p for p in old}
+        final = self._trace(m, int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1]), known=by_key)
+        kept = {id(p) for p in final}
+        gone = [p for p in old if id(p) not in kept]
+        was = {id(p) for p in old}
+        born = [p for p in final if id(p) not in was]
         self.loops[m] = keep + final
         self.boxes[m] = _bboxes(self.loops[m])
         return gone, born
-
-
-def _loop_key(p: Piece) -> Any:
-    chain = p.components[1].shape
-    return chain.vertices
 
 
 def _bboxes(pieces: list[Piece]) -> np.ndarray:

@@ -150,15 +150,6 @@ class GidTable:
         ok[inside] = self.tileset[gids[inside]] >= 0
         return ok | (gids == 0)
 
-    def frame_at(self, gid: int, time: float) -> int:
-        """The gid an animated tile shows at game time ``time`` (itself if not animated)."""
-        anim = self.animations.get(gid)
-        if anim is None:
-            return gid
-        frames, ends = anim
-        t = time % float(ends[-1])
-        return int(frames[int(np.searchsorted(ends, t, side="right"))])
-
 
 @dataclass(slots=True)
 class MapData:

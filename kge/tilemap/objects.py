@@ -169,7 +169,7 @@ def _components(
                 f"{where}: class {cls!r} has no registered spawner; spawned with the default "
                 "components (register one, or pass unknown='ignore')",
                 TilemapWarning,
-                stacklevel=4,
+                stacklevel=5,  # _components, object_components, load_map, without_gc, caller
             )
     props: dict[str, Any] = {}
     if tile:

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from kge.errors import KgeError
+from kge.gcpause import without_gc
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
 from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, MapData, TileLayerData
@@ -69,6 +70,12 @@ class TileMap:
         self._live: dict[int, Piece] = {}  #: collider entity -> piece
         #: (tile layer position, chunk row, chunk column) whose drawing is stale
         self.dirty: set[tuple[int, int, int]] = set()
+        #: the gid each gid shows now: itself, or an animated tile's current frame.
+        #: The TilemapPlugin's clock advances it on game time (kge.animation's
+        #: numpy clips); the renderer draws ``shown[gids]``.
+        self.shown = np.arange(max(data.tiles.size, 1), dtype=np.int64)
+        for gid, (frames, _) in data.tiles.animations.items():
+            self.shown[gid] = frames[0]  # time 0: the first frame
         self.loaded = True
 
     # -- geometry ------------------------------------------------------------------------
@@ -217,6 +224,7 @@ class TileMap:
         return f"TileMap({str(self.path)!r}, {self.data.cols}x{self.data.rows})"
 
 
+@without_gc  # a large map makes 100,000s of objects at once (see kge.gcpause)
 def load_map(
     world: World,
     path: str | Path,

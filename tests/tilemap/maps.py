@@ -35,7 +35,12 @@ def sheet() -> np.ndarray:
     return img
 
 
-def tileset(external: str | None = None) -> TilesetSpec:
+#: ANIM_A's frames as Tiled lists them: (tile id, milliseconds)
+ANIMATION = [(4, 100), (5, 100)]
+
+
+def tileset(external: str | None = None, animation: list[tuple[int, int]] | None = None
+            ) -> TilesetSpec:
     return TilesetSpec(
         "tiles",
         "tiles.png",
@@ -54,7 +59,7 @@ def tileset(external: str | None = None) -> TilesetSpec:
                 ]
             },
             3: {"class": "Coin", "properties": {"value": 5}},
-            4: {"animation": [(4, 100), (5, 100)]},
+            4: {"animation": animation or ANIMATION},
         },
     )
 
@@ -66,6 +71,7 @@ def write_level(
     name: str = "level.tmx",
     external: str | None = None,
     extra_layers: list[Any] | None = None,
+    animation: list[tuple[int, int]] | None = None,
 ) -> Path:
     png.write(folder / "tiles.png", sheet())
     layers: list[Any] = [TileLayerSpec("Ground", grid)]
@@ -73,7 +79,7 @@ def write_level(
     if objects is not None:
         layers.append(ObjectLayerSpec("Objects", objects))
     path = folder / name
-    write_map(path, T, T, [tileset(external)], layers)
+    write_map(path, T, T, [tileset(external, animation)], layers)
     return path
 
 

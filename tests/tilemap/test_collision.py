@@ -149,6 +149,18 @@ def test_local_rebuilds_match_a_full_trace(tmp_path: Path, sim: Stepper) -> None
     assert now == expected
 
 
+def test_a_tile_edit_respawns_only_the_outlines_it_changed(tmp_path: Path, sim: Stepper) -> None:
+    grid = np.where(caves(60, 5), GROUND, 0)
+    m = load_map(sim.world, write_level(tmp_path, grid))
+    before = set(m.collider_entities)
+    assert len(before) > 10
+    rows, cols = np.nonzero(grid[1:-1, 1:-1] == 0)
+    m.set_tile("Ground", int(cols[0]) + 1, int(rows[0]) + 1, GROUND)  # fill one empty cell
+    after = set(m.collider_entities)
+    assert len(before - after) <= 4 and len(after - before) <= 4  # the few outlines touching it
+    assert len(before & after) >= len(before) - 4
+
+
 def test_layer_and_tile_properties_set_material_and_filter(tmp_path: Path, sim: Stepper) -> None:
     from kge.tilemap.writer import TileLayerSpec
 

@@ -141,3 +141,4 @@ def test_a_class_without_spawner_warns_once(tmp_path: Path, sim: Stepper) -> Non
             spawners={"PlayerStart": lambda s: None},
         )
     assert sum("'Coin'" in str(r.message) for r in rec) == 1
+    assert {r.filename for r in rec} == {__file__}  # it points at the load_map call

@@ -8,10 +8,14 @@ around each of them.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
 import pymunk
+from pymunk._chipmunk import lib
+
+from kge.gcpause import without_gc
 
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
@@ -82,9 +86,18 @@ class Obstacles:
         fresh = order != self._order
         self._order = order
         if self._owners_dirty:
+            old_ids, old_pose, old_recent = self._oids, self._opose, self._recent
             self._oids = np.array(sorted(self._owners), dtype=np.int64)
             self._opose = np.full((len(self._oids), 3), np.nan)
             self._recent = np.zeros(len(self._oids), dtype=bool)
+            if len(old_ids) and len(self._oids):
+                # owners that stay keep their last pose: one new static collider
+                # must not make every other owner re-read all its boxes (a tile
+                # map's 100,000s) on this step and the next
+                at = np.minimum(np.searchsorted(old_ids, self._oids), len(old_ids) - 1)
+                same = old_ids[at] == self._oids
+                self._opose[same] = old_pose[at[same]]
+                self._recent[same] = old_recent[at[same]]
             self._owners_dirty = False
             fresh = True
         k = len(self._oids)
@@ -104,9 +117,9 @@ class Obstacles:
         self._recent = moved
         self._opose = cur
         if update.any():
-            for j in np.flatnonzero(update).tolist():
-                self._update_owner(int(self._oids[j]))
+            self._update_owners(self._oids[update].tolist())
 
+    @without_gc  # a tile map adds 100,000s of shapes at once (see kge.gcpause)
     def _scan(self) -> None:
         """Index the shapes added since the last scan (see the class docstring)."""
         shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
@@ -115,15 +128,15 @@ class Obstacles:
             return
         added = 0
         newest = self._newest
+        seen = []
         for shape in reversed(shapes):
             h = shape._hashid
             if h <= self._newest:
                 break
             added += 1
             newest = max(newest, h)
-            body = shape.body
-            if shape in self.row_of or (body is not None and body.body_type != _DYNAMIC):
-                self._classify(shape)
+            seen.append(shape)
+        self._classify_many(reversed(seen))  # skips new dynamic shapes, as before
         self._newest = newest
         self._removed += max(0, self._count + added - n)
         self._count = n
@@ -138,8 +151,7 @@ class Obstacles:
         if body.body_type == _DYNAMIC and body.id not in self._owner_rows:
             return  # the common case (a dynamic body tracked): nothing of it is indexed
         own = set(body.shapes)
-        for shape in own:
-            self._classify(shape)
+        self._classify_many(own)
         for row in list(self._owner_rows.get(body.id, ())):
             gone = self.shapes[row]
             if gone is not None and gone not in own:
@@ -165,6 +177,85 @@ class Obstacles:
         bb = shape.bb
         self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
         self.kinematic[row] = body.body_type == _KINEMATIC
+
+    def _classify_many(self, shapes: Iterable[pymunk.Shape]) -> None:
+        """``_classify`` of each shape, boxes written in one numpy pass.
+
+        A tile map's static outlines add 100,000s of segments at once; per shape
+        this is a dict lookup, a row and a box read, nothing else. Dynamic
+        shapes that have no row are skipped (they never need one).
+        """
+        space = self.space
+        bodies: dict[int, tuple[int, int]] = {}  # id(body) -> (type, body.id), read once
+        row_of = self.row_of
+        get_bb = lib.cpShapeGetBB
+        rows: list[int] = []  # known shapes' rows, then the new shapes' rows
+        fresh: list[pymunk.Shape] = []
+        fresh_key: list[int] = []
+        owners: dict[int, pymunk.Body] = {}
+        boxes: list[tuple[float, float, float, float]] = []  # known shapes, then new ones
+        fresh_boxes: list[tuple[float, float, float, float]] = []
+        moving: list[bool] = []
+        fresh_moving: list[bool] = []
+        for shape in shapes:
+            body = shape._body()
+            if body is None:
+                kind, key = _DYNAMIC, 0
+            else:
+                known = bodies.get(id(body))
+                if known is None:
+                    known = bodies[id(body)] = (body.body_type, body.id)
+                    owners[known[1]] = body
+                kind, key = known
+            row = row_of.get(shape)
+            if body is None or kind == _DYNAMIC or shape._space() is not space:
+                if row is not None:
+                    self._drop(shape)
+                continue
+            bb = get_bb(shape._shape)  # what shape.bb reads, without building a BB
+            if row is None:
+                fresh.append(shape)
+                fresh_key.append(key)
+                fresh_boxes.append((bb.l, bb.b, bb.r, bb.t))
+                fresh_moving.append(kind == _KINEMATIC)
+            else:
+                rows.append(row)
+                boxes.append((bb.l, bb.b, bb.r, bb.t))
+                moving.append(kind == _KINEMATIC)
+        if fresh:
+            rows += self._new_rows(fresh, fresh_key, owners)
+            boxes += fresh_boxes
+            moving += fresh_moving
+        if rows:
+            self.box[rows] = boxes
+            self.kinematic[rows] = moving
+
+    def _new_rows(
+        self, fresh: list[pymunk.Shape], keys: list[int], owners: dict[int, pymunk.Body]
+    ) -> list[int]:
+        """Rows for shapes not indexed yet: dropped rows first, then a block at the end."""
+        reuse = [self._free.pop() for _ in range(min(len(fresh), len(self._free)))]
+        for shape, row, key in zip(fresh, reuse, keys, strict=False):
+            self.shapes[row] = shape
+            self.owner_of[row] = key
+        start = len(self.shapes)
+        self.shapes.extend(fresh[len(reuse) :])
+        self.owner_of.extend(keys[len(reuse) :])
+        end = len(self.shapes)
+        if end > len(self.box):  # grow by doubling, as _free_row does
+            grow = max(end, 2 * len(self.box)) - len(self.box)
+            self.box = np.concatenate([self.box, np.full((grow, 4), np.nan)])
+            self.kinematic = np.concatenate([self.kinematic, np.zeros(grow, dtype=bool)])
+        new = reuse + list(range(start, end))
+        self.row_of.update(zip(fresh, new, strict=True))
+        self.live += len(fresh)
+        for key, row in zip(keys, new, strict=True):
+            owner_rows = self._owner_rows.setdefault(key, [])
+            if not owner_rows:
+                self._owners[key] = owners[key]
+                self._owners_dirty = True
+            owner_rows.append(row)
+        return new
 
     def _free_row(self) -> int:
         if self._free:
@@ -202,11 +293,12 @@ class Obstacles:
             self._owners.clear()
             self._owners_dirty = True
 
-    def _update_owner(self, body_id: int) -> None:
-        for row in list(self._owner_rows.get(body_id, ())):
-            shape = self.shapes[row]
-            if shape is not None:
-                self._classify(shape)
+    @without_gc  # all of a tile map's owners on their first sighting
+    def _update_owners(self, body_ids: list[int]) -> None:
+        """Re-read the boxes of every shape of these owners, in one bulk pass."""
+        shapes = self.shapes
+        rows = [row for b in body_ids for row in self._owner_rows.get(b, ())]
+        self._classify_many([s for s in (shapes[r] for r in rows) if s is not None])
 
     def body(self, body_id: int) -> pymunk.Body | None:
         """A static or kinematic body that owns indexed shapes, by id."""

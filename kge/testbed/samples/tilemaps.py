@@ -1,8 +1,8 @@
 """Tile map samples: levels written by code as Tiled maps, loaded with ``load_map``.
 
 :func:`write_levels` writes the two platformer levels (generated tiles only)
-that ``examples/platformer.py`` plays: a floor with gaps, one-way ledges, coins
-and a door leading to the second level.
+that ``examples/platformer.py`` plays: a floor with gaps (animated water at their
+bottom), one-way ledges, coins and a door leading to the second level.
 """
 
 from __future__ import annotations
@@ -25,11 +25,12 @@ from kge.tilemap.writer import ObjectLayerSpec, TileLayerSpec, TilesetSpec, writ
 from kge.world import World
 
 T = 16
-ROCK, LEDGE, COIN, DOOR, GRASS = 1, 2, 3, 4, 5  # gids
+ROCK, LEDGE, COIN, DOOR, GRASS, WATER = 1, 2, 3, 4, 5, 6  # gids
+TILES = 7  # tiles in the sheet (the 7th is WATER's second frame)
 
 
 def _sheet() -> np.ndarray:
-    img = np.zeros((T, 5 * T, 4), np.uint8)
+    img = np.zeros((T, TILES * T, 4), np.uint8)
     img[:, 0:T] = (110, 80, 50, 255)  # rock
     img[2:6, T : 2 * T] = (230, 200, 90, 255)  # ledge: a plank at the top
     yy, xx = np.mgrid[0:T, 0:T]
@@ -38,6 +39,10 @@ def _sheet() -> np.ndarray:
     img[:, 3 * T : 4 * T] = (70, 40, 20, 255)  # door
     img[:, 4 * T : 5 * T] = (110, 80, 50, 255)
     img[0:4, 4 * T : 5 * T] = (60, 170, 60, 255)  # grass on rock
+    # water, two frames: the lighter band moves down (an animated tile, Tiled-style)
+    img[:, 5 * T : 7 * T] = (30, 70, 160, 255)
+    img[2:6, 5 * T : 6 * T] = (80, 140, 220, 255)
+    img[8:12, 6 * T : 7 * T] = (80, 140, 220, 255)
     return img
 
 
@@ -47,9 +52,9 @@ def _tileset() -> TilesetSpec:
         "platformer.png",
         T,
         T,
-        columns=5,
-        count=5,
-        image_size=(5 * T, T),
+        columns=TILES,
+        count=TILES,
+        image_size=(TILES * T, T),
         tiles={
             0: {"properties": {"solid": True, "friction": 0.8}},
             1: {
@@ -59,6 +64,7 @@ def _tileset() -> TilesetSpec:
             2: {"class": "Coin", "properties": {"value": 1}},
             3: {"class": "Door"},
             4: {"properties": {"solid": True, "friction": 0.8}},
+            5: {"animation": [(5, 400), (6, 400)]},  # water: played by kge.animation
         },
     )
 
@@ -128,6 +134,9 @@ def write_levels(folder: Path) -> tuple[Path, Path]:
                         "properties": {"collider": True, "sensor": True},
                     }
                 )
+        water = np.zeros_like(grid)
+        for a, b in gaps:
+            water[13:, a:b] = WATER  # the bottom of every gap: decoration, no collision
         name = "level1.tmx" if i == 0 else "level2.tmx"
         path = folder / name
         write_map(
@@ -135,7 +144,11 @@ def write_levels(folder: Path) -> tuple[Path, Path]:
             T,
             T,
             [_tileset()],
-            [TileLayerSpec("Ground", grid), ObjectLayerSpec("Objects", objects)],
+            [
+                TileLayerSpec("Water", water, properties={"collision": False}),
+                TileLayerSpec("Ground", grid),
+                ObjectLayerSpec("Objects", objects),
+            ],
         )
         paths.append(path)
     return paths[0], paths[1]
@@ -169,7 +182,8 @@ def levels() -> tuple[Path, Path]:
 @sample(
     "Tilemaps",
     "Platformer Level",
-    help="A Tiled level: merged ground outlines, one-way ledges, coins and a door (sensors).",
+    help="A Tiled level: merged ground outlines, one-way ledges, coins, a door (sensors) "
+    "and animated water tiles.",
     camera=(20.0, 7.0, 0.5),
 )
 def platformer_level(world: World) -> None:

@@ -1,0 +1,150 @@
+"""Chain segments built and added to a space in one tight loop each.
+
+Why: a tile map's cave outlines are some 176,000 segments. Through pymunk's
+public path each segment costs about 15 us (``Segment.__init__`` with its
+property writes through pymunk's ``__setattr__`` mixin, ``set_neighbors``,
+the ``friction`` property, then ``Space.add`` with four asserts that each
+re-read weak references), 2.7 s for the map before kge does anything. This
+module makes the *same* objects, real :class:`pymunk.Segment` instances with
+their Chipmunk shape, GC finaliser and user-data handle set exactly as
+pymunk's own ``Shape._init`` sets them, with the per-segment work reduced to
+the Chipmunk calls themselves: tiny coordinates checked with numpy and the
+neighbours found by list slicing once per chain, shared attribute dicts and
+weak references, and the space checks done once per body instead of once per
+shape. The callers pause Python's cyclic collector around the bulk work
+(:mod:`kge.gcpause`).
+
+Everything else (queries, contact callbacks, removal, pickling, garbage
+collection) sees ordinary pymunk shapes. Tied to pymunk 7.3's ``Shape``
+layout (``_shape``, ``_body``, ``_h``, ``_space``), which pyproject pins;
+``tests/physics/test_static_bulk.py`` checks the shapes behave like
+pymunk-built ones, so a pymunk upgrade that changes the layout fails there.
+"""
+
+from __future__ import annotations
+
+import weakref
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import pymunk
+from pymunk._chipmunk import ffi, lib
+
+from kge.physics.tiny import TINY
+
+
+def _shape_free(cp_shape: Any) -> None:
+    """pymunk's own finaliser for a shape (``Shape._init``): leave the space, then free."""
+    cp_space = lib.cpShapeGetSpace(cp_shape)
+    if cp_space != ffi.NULL:
+        lib.cpSpaceRemoveShape(cp_space, cp_shape)
+    lib.cpShapeFree(cp_shape)
+
+
+def chain_segments(
+    body: pymunk.Body,
+    vertices: Sequence[tuple[float, float]],
+    loop: bool,
+    radius: float,
+    friction: float,
+    attrs: dict[str, Any],
+    shape_filter: pymunk.ShapeFilter | None = None,
+    sensor: bool = False,
+) -> list[pymunk.Segment]:
+    """The segments of one chain on ``body``, neighbours set, not yet in a space.
+
+    ``attrs`` (the kge_* attributes shared by every segment of the collider) is
+    copied onto each; ``kge_child`` is the segment's index in the chain.
+    ``shape_filter`` (None: pymunk's default) and ``sensor`` are set on each.
+    Neighbours follow Box2D's chain: a loop's ends wrap, an open chain's end
+    segments have themselves as the outer neighbour (no ghost vertex).
+    """
+    pts = list(vertices)
+    arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+    if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
+        pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
+    # ends and neighbours by list slicing: Chipmunk takes the points as they are
+    if loop:
+        A, B = pts, pts[1:] + pts[:1]
+        P, N = pts[-1:] + pts[:-1], pts[2:] + pts[:2]
+    else:
+        A, B = pts[:-1], pts[1:]
+        P, N = pts[:1] + pts[:-2], pts[2:] + pts[-1:]
+    new_segment = lib.cpSegmentShapeNew
+    set_neighbors = lib.cpSegmentShapeSetNeighbors
+    set_friction = lib.cpShapeSetFriction
+    set_user_data = lib.cpShapeSetUserData
+    set_filter = lib.cpShapeSetFilter
+    set_sensor = lib.cpShapeSetSensor
+    gc = ffi.gc
+    new_handle = ffi.new_handle
+    make = object.__new__
+    cls = pymunk.Segment
+    cp_body = body._body
+    body_ref = weakref.ref(body)
+    body_shapes = body._shapes
+    out: list[pymunk.Segment] = []
+    append = out.append
+    for i in range(len(A)):
+        seg = make(cls)
+        d = seg.__dict__
+        d.update(attrs)
+        d["kge_child"] = i
+        d["_body"] = body_ref
+        c = new_segment(cp_body, A[i], B[i], radius)
+        d["_shape"] = gc(c, _shape_free)
+        h = d["_h"] = new_handle(seg)  # keeps the handle alive as long as the shape
+        set_user_data(c, h)
+        set_neighbors(c, P[i], N[i])
+        if friction:
+            set_friction(c, friction)
+        if shape_filter is not None:
+            set_filter(c, shape_filter)
+        if sensor:
+            set_sensor(c, True)
+        body_shapes[seg] = None
+        append(seg)
+    return out
+
+
+def add_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
+    """``space.add(*shapes)`` for shapes only, with pymunk's checks once per body.
+
+    Same result and order as ``space.add``: each shape joins Chipmunk's index
+    and ``space.shapes``. A locked space (inside a step) defers like
+    ``space.add``. A shape already in a space (or listed twice), or whose
+    body is not in this one, is refused with pymunk's message and the shapes
+    added before it are taken out again.
+    """
+    if space._locked or len(shapes) < 16:
+        space.add(*shapes)
+        return
+    known = space._shapes
+    bodies: set[int] = set()  # ids of bodies seen to be in this space
+    space_ref = weakref.ref(space)
+    cp_space = space._space
+    add = lib.cpSpaceAddShape
+    done = 0
+    try:
+        for s in shapes:
+            body = s._body()
+            if id(body) not in bodies:
+                if body is None:
+                    raise AssertionError("The shape's body is not set.")
+                if body.space is not space:
+                    raise AssertionError(
+                        "The shape's body must be added to the space before "
+                        "(or at the same time) as the shape."
+                    )
+                bodies.add(id(body))
+            d = s.__dict__
+            if s in known or ("_space" in d and d["_space"]() is not None):
+                raise AssertionError("Shape already added to a space.")
+            d["_space"] = space_ref
+            known[s] = None
+            add(cp_space, s._shape)
+            done += 1
+    except BaseException:
+        space.remove(*shapes[:done])  # nothing half-added
+        raise
