@@ -60,6 +60,8 @@ from kge.physics.writeback import Targets, write_rows
 from kge.world import World
 
 _EQUAL = np.equal
+#: bodies changed in one sync-in above which the cyclic collector waits until they are done
+_BULK = 64
 
 
 class Simulation:
@@ -275,8 +277,11 @@ class Simulation:
         if self.body_struct:
             ents = sorted(self.body_struct)
             self.body_struct.clear()
-            for e in ents:
-                self._restructure_body(e)
+            if len(ents) > _BULK:
+                self._restructure_bodies(ents)
+            else:
+                for e in ents:
+                    self._restructure_body(e)
         if self.collider_struct:
             ents = sorted(self.collider_struct)
             self.collider_struct.clear()
@@ -339,6 +344,11 @@ class Simulation:
                 ccd.track(body, bullet=bool(body.kge_bullet))
             else:
                 ccd.untrack(body)
+
+    @without_gc  # a wave of new bodies: pymunk objects, records, bindings (kge.gcpause)
+    def _restructure_bodies(self, ents: list[int]) -> None:
+        for e in ents:
+            self._restructure_body(e)
 
     def _restructure_body(self, e: int) -> None:
         world = self.world
