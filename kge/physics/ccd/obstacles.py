@@ -21,6 +21,12 @@ _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
 
 
+def _pose(body: pymunk.Body) -> tuple[float, float, float]:
+    """(x, y, angle) through Chipmunk's getters (no Vec2d)."""
+    p = lib.cpBodyGetPosition(body._body)
+    return (p.x, p.y, lib.cpBodyGetAngle(body._body))
+
+
 #: rows x fast bodies compared at once by Obstacles.near_any (bounds temporary memory)
 _CHUNK = 1 << 16
 
@@ -74,6 +80,8 @@ class Obstacles:
         self._orow = np.empty(0, dtype=np.intp)  # owner -> row in the bulk read (-1: none)
         self._recent = np.empty(0, dtype=bool)
         self._order = -1  # the bulk-read order _orow was computed for
+        #: owners that got their first rows since the last refresh -> their pose then
+        self._born: dict[int, tuple[float, float, float]] = {}
 
     # ----------------------------------------------------------------- upkeep
 
@@ -98,6 +106,16 @@ class Obstacles:
                 same = old_ids[at] == self._oids
                 self._opose[same] = old_pose[at[same]]
                 self._recent[same] = old_recent[at[same]]
+            if self._born:
+                # new owners start from the pose their boxes were read at: one that has
+                # not moved since is not re-read (a tile map's 100,000s of boxes would
+                # be, twice, at the first step that looks for obstacles)
+                born = np.array(list(self._born), dtype=np.int64)
+                at = np.minimum(np.searchsorted(self._oids, born), len(self._oids) - 1)
+                hit = self._oids[at] == born
+                if hit.any():
+                    self._opose[at[hit]] = np.array(list(self._born.values()))[hit]
+                self._born.clear()
             self._owners_dirty = False
             fresh = True
         k = len(self._oids)
@@ -173,6 +191,7 @@ class Obstacles:
             if not rows:
                 self._owners[body.id] = body
                 self._owners_dirty = True
+                self._born[body.id] = _pose(body)
             rows.append(row)
         bb = shape.bb
         self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
@@ -254,6 +273,7 @@ class Obstacles:
             if not owner_rows:
                 self._owners[key] = owners[key]
                 self._owners_dirty = True
+                self._born[key] = _pose(owners[key])
             owner_rows.append(row)
         return new
 
