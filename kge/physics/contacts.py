@@ -372,8 +372,10 @@ class ContactRecorder:
                 for fn in self.post_solve:
                     fn(ev)
 
-    def forget_shape(self, shape: pymunk.Shape) -> None:
-        """Drop cached state of a shape leaving the space (its separate already ran)."""
-        sid = id(shape)
-        for key in [k for k in self._pre_cache if sid in k]:
+    def forget_shapes(self, shapes: list[pymunk.Shape]) -> None:
+        """Drop cached state of shapes leaving the space (their separates already ran)."""
+        if not self._pre_cache:  # the usual case: no pre-solve hook holds a contact
+            return
+        gone = {id(s) for s in shapes}
+        for key in [k for k in self._pre_cache if k[0] in gone or k[1] in gone]:
             del self._pre_cache[key]

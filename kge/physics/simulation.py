@@ -388,7 +388,7 @@ class Simulation:
     def _destroy_body(self, rec: BodyRecord) -> None:
         self.joints.body_removed(rec.entity)
         if self.ccd is not None:
-            self.ccd.untrack(rec.body)
+            self.ccd.untrack(rec.body, removed=True)
         if rec.in_space:
             wake_neighbours(rec.body)
         for c in sorted(rec.colliders):
@@ -407,10 +407,10 @@ class Simulation:
 
     def _remove_shapes(self, crec: ColliderRecord) -> None:
         space = self.space
-        for s in crec.shapes:
-            if s.space is space:
-                space.remove(s)
-            self.recorder.forget_shape(s)
+        inside = [s for s in crec.shapes if s.space is space]
+        if inside:
+            space.remove(*inside)  # one call: a chain's thousands of segments
+        self.recorder.forget_shapes(crec.shapes)
 
     def _detach(self, crec: ColliderRecord) -> None:
         rec = self.bodies.get(crec.owner)

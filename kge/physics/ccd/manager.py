@@ -148,11 +148,18 @@ class ContinuousCollision:
             self, body, bullet, parts, core, reach, shapes, extent_of(body, shapes, reach)
         )
 
-    def untrack(self, body: pymunk.Body) -> None:
-        """Forget ``body`` (restores its plain integrator); unknown bodies are ignored."""
+    def untrack(self, body: pymunk.Body, removed: bool = False) -> None:
+        """Forget ``body`` (restores its plain integrator); unknown bodies are ignored.
+
+        ``removed``: the body is leaving the space with all its shapes, so its
+        obstacle rows are dropped at once instead of re-read one by one.
+        """
         self._bodies.pop(body.id, None)
         self._movers.pop(body.id, None)  # else a removed kinematic body stays referenced
-        self._obstacles.reclassify(body)  # it may have become static or kinematic
+        if removed:
+            self._obstacles.forget_owner(body.id)
+        else:
+            self._obstacles.reclassify(body)  # it may have become static or kinematic
         info = self._tracked.pop(body.id, None)
         if info is not None:
             self._index = None

@@ -288,6 +288,25 @@ class Obstacles:
         self.owner_of.append(0)
         return len(self.shapes) - 1
 
+    def forget_owner(self, body_id: int) -> None:
+        """Drop every row of a body leaving the space, in one pass (a chain's thousands)."""
+        rows = self._owner_rows.pop(body_id, None)
+        if not rows:
+            return
+        self._owners.pop(body_id, None)
+        self._owners_dirty = True
+        self._born.pop(body_id, None)
+        for row in rows:
+            shape = self.shapes[row]
+            if shape is not None:
+                self.row_of.pop(shape, None)
+                self.shapes[row] = None
+        self.box[rows] = np.nan
+        self._free.extend(rows)
+        self.live -= len(rows)
+        if self.live == 0:  # compact, as _drop does
+            self._drop_all()
+
     def _drop(self, shape: pymunk.Shape) -> None:
         row = self.row_of.pop(shape, None)
         if row is None:
@@ -305,13 +324,16 @@ class Obstacles:
                 self._owners.pop(key, None)
                 self._owners_dirty = True
         if self.live == 0:  # compact: nothing left to keep
-            self.shapes.clear()
-            self.owner_of.clear()
-            self._free.clear()
-            self.box[:] = np.nan
-            self._owner_rows.clear()
-            self._owners.clear()
-            self._owners_dirty = True
+            self._drop_all()
+
+    def _drop_all(self) -> None:
+        self.shapes.clear()
+        self.owner_of.clear()
+        self._free.clear()
+        self.box[:] = np.nan
+        self._owner_rows.clear()
+        self._owners.clear()
+        self._owners_dirty = True
 
     @without_gc  # all of a tile map's owners on their first sighting
     def _update_owners(self, body_ids: list[int]) -> None:
