@@ -243,9 +243,35 @@ def variant_lines(c: dict[str, float]) -> list[str]:
     return lines
 
 
+def component_build_ms(count: int = 1000, repeats: int = 9) -> float:
+    """ms to construct the components of ``count`` spawn-burst boxes, spawning nothing.
+
+    Transform, RigidBody, Collider (a Box, its material and Filter) and Name, each
+    checked as it is built: with raw pymunk's own spawn time beside it, the floor of
+    any spawn that starts from validated components, before the ECS or physics.
+    """
+    from kge.components import Collider, Filter, Name, RigidBody, Transform
+    from kge.components.shapes import Box
+
+    times = []
+    gc.collect()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            for i in range(count):
+                (Transform(1.5 * i, 2.0, 0.0), RigidBody(),
+                 Collider(Box(0.5, 0.5), density=1.0, friction=0.6, restitution=0.0,
+                          filter=Filter()), Name("burst"))
+            times.append((time.perf_counter() - t0) * 1000.0)
+    finally:
+        gc.enable()
+    return statistics.median(times)
+
+
 def measure(quick: bool = False) -> dict[str, float]:
     """Every figure of this module (smaller and fewer when ``quick``)."""
-    out: dict[str, float] = {}
+    out: dict[str, float] = {"component_build_ms": component_build_ms(100 if quick else 1000)}
     out.update(variant_costs(quick))
     out.update(sync_costs(500 if quick else 20_000, 5 if quick else 40))
     out.update(despawn_costs(100 if quick else 1000, 2 if quick else 9))
@@ -265,6 +291,7 @@ def table(costs: dict[str, float]) -> str:
         f"  despawn frame, {c['despawn_count']:,.0f} bodies"
         f"            kge {c['despawn_kge_ms']:.1f} ms"
         f"  pymunk {c['despawn_pymunk_ms']:.1f} ms",
+        f"  building the components of the spawn wave  {c['component_build_ms']:.1f} ms",
         f"  memory per body (RSS)                      kge {c['bytes_per_body_kge']:.0f} B"
         f"  pymunk {c['bytes_per_body_pymunk']:.0f} B",
         "  kge variants, frame ms (x default; threads-2 is not deterministic):",
@@ -286,6 +313,8 @@ def markdown(costs: dict[str, float]) -> list[str]:
         f"| {c['sync_in_ms']:.3f} | - |",
         f"| despawn frame, {c['despawn_count']:,.0f} bodies, ms "
         f"| {c['despawn_kge_ms']:.1f} | {c['despawn_pymunk_ms']:.1f} |",
+        f"| components of the spawn wave, built and checked, ms "
+        f"| {c['component_build_ms']:.1f} | - |",
         f"| memory per body (RSS growth, sparse field), bytes "
         f"| {c['bytes_per_body_kge']:,.0f} | {c['bytes_per_body_pymunk']:,.0f} |",
         "", "kge variants, frame ms (ratio to the default; `threads-2` is not deterministic):",
