@@ -90,6 +90,12 @@ class JointBridge:
     def iterated_hinges(self) -> bool:
         return bool(self.sim.settings.iterated_hinges)
 
+    @property
+    def epoch(self) -> tuple[int, int]:
+        """Changes whenever a body's type, membership or mass data may have changed:
+        joints re-check their bodies then (Composite.before_step), not every step."""
+        return self.types_epoch, self.sim.mass_epoch
+
     def body(self, entity: int) -> pymunk.Body:
         rec = self.sim.bodies.get(entity)
         if rec is None:

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 import pymunk
+from pymunk._chipmunk import lib
 
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
@@ -40,6 +41,15 @@ if TYPE_CHECKING:
 
 Vec2 = tuple[float, float]
 Pose = tuple[float, float, float]
+
+_local_to_world = lib.cpBodyLocalToWorld
+_get_cog = lib.cpBodyGetCenterOfGravity
+_get_velocity = lib.cpBodyGetVelocity
+_set_velocity = lib.cpBodySetVelocity
+_get_angular_velocity = lib.cpBodyGetAngularVelocity
+_set_angular_velocity = lib.cpBodySetAngularVelocity
+_get_mass = lib.cpBodyGetMass
+_get_moment = lib.cpBodyGetMoment
 
 
 class Physics:
@@ -103,8 +113,13 @@ class Physics:
         return rec
 
     # -- forces --------------------------------------------------------------------------------
-    def _force_target(self, entity: int, op: str, wake: bool) -> BodyRecord | None:
-        rec = self._record(entity, op)
+    def _force_target(
+        self, entity: int, op: str, wake: bool, rec: BodyRecord | None = None
+    ) -> BodyRecord | None:
+        """The body to push, or None (not dynamic, out of the space, asleep and
+        ``wake`` False). ``rec``: the record the caller just looked up."""
+        if rec is None:
+            rec = self._record(entity, op)
         self._sim.touched = True
         body = rec.body
         if body.body_type != DYNAMIC or not rec.in_space:
@@ -155,24 +170,35 @@ class Physics:
     def apply_linear_impulse(
         self, entity: int, impulse: Vec2, point: Vec2 | None = None, wake: bool = True
     ) -> None:
-        """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre)."""
+        """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre).
+
+        Called every step by controllers (Gymnasium's LunarLander fires its engines
+        this way), so it looks the body up once and reads it with Chipmunk's getters.
+        """
         owner = where(entity, "Physics.apply_linear_impulse")
         jx, jy = vec2(impulse, owner, "impulse")
         at = None if point is None else vec2(point, owner, "point")  # before any change
-        body = self._record(entity, "apply_linear_impulse").body
-        c = body.local_to_world(body.center_of_gravity)
+        rec = self._record(entity, "apply_linear_impulse")
+        cb = rec.body._body
+        c = _local_to_world(cb, _get_cog(cb))
         px, py = (c.x, c.y) if at is None else at
-        v = body.velocity
-        new_v = (v.x + jx / body.mass, v.y + jy / body.mass)
-        w = body.angular_velocity
-        if math.isfinite(body.moment):
-            w += ((px - c.x) * jy - (py - c.y) * jx) / body.moment
-        _finite_result(owner, "the resulting velocity", (*new_v, w))
-        if self._force_target(entity, "apply_linear_impulse", wake) is None:
+        v = _get_velocity(cb)
+        m, i = _get_mass(cb), _get_moment(cb)
+        vx, vy = v.x + jx / m, v.y + jy / m
+        w = _get_angular_velocity(cb)
+        if math.isfinite(i):
+            w += ((px - c.x) * jy - (py - c.y) * jx) / i
+        if not (math.isfinite(vx) and math.isfinite(vy) and math.isfinite(w)):
+            _finite_result(owner, "the resulting velocity", (vx, vy, w))
+        if self._force_target(entity, "apply_linear_impulse", wake, rec) is None:
             return
-        body.velocity = (flush(new_v[0]), flush(new_v[1]))  # see kge.physics.tiny
-        body.angular_velocity = flush(w)
-        self._velocity_changed(entity, body)
+        vx, vy, w = flush(vx), flush(vy), flush(w)  # see kge.physics.tiny
+        _set_velocity(cb, (vx, vy))
+        _set_angular_velocity(cb, w)
+        rb = self._world.try_get(entity, RigidBody)
+        if rb is not None:
+            raw_set(rb, "velocity", (vx, vy))
+            raw_set(rb, "angular_velocity", w)
 
     def apply_linear_impulses(
         self, entities: Any, impulses: Any, points: Any = None, wake: bool = True

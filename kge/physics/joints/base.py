@@ -32,6 +32,7 @@ from collections.abc import Callable
 from typing import Any
 
 import pymunk
+from pymunk._chipmunk import lib
 
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, JointHandle
@@ -50,6 +51,15 @@ ANGULAR = (
 )
 
 Vec2 = tuple[float, float]
+
+_get_velocity = lib.cpBodyGetVelocity
+_get_angular_velocity = lib.cpBodyGetAngularVelocity
+_get_mass = lib.cpBodyGetMass
+_get_moment = lib.cpBodyGetMoment
+_get_gravity = lib.cpSpaceGetGravity
+_get_step = lib.cpSpaceGetCurrentTimeStep
+_get_impulse = lib.cpConstraintGetImpulse
+_contains = lib.cpSpaceContainsConstraint
 
 #: fraction of a hard constraint's position error removed per 1/60 s step by
 #: pymunk's velocity bias (pymunk's default), for constraints with no position pass.
@@ -174,6 +184,9 @@ class Composite(JointHandle):
         self.own_collide: set[pymunk.Constraint] = set()
         #: the last position pass found the joint far off (see JOLT)
         self.jolted = False
+        #: the context's structure epoch when before_step last checked body types
+        #: and rotation (None: check again; see before_step)
+        self._epoch: Any = None
 
     # -- building ----------------------------------------------------------------------
     def add(
@@ -285,15 +298,24 @@ class Composite(JointHandle):
         return can_join(self.a, self.b)
 
     def before_step(self, dt: float) -> None:
-        """Suspend or resume with the bodies' types; remember B's momentum."""
-        if not self.active and not self.parts and self.can_act():
-            # built while neither body was dynamic (pymunk refuses such constraints):
-            # one is now, so build for real
-            type(self).__init__(self, self.ctx, self.entity, self.component)
-            if self.active:
-                self.apply(self.component)
-        self.track_body_types()
-        self.track_rotation()
+        """Suspend or resume with the bodies' types; remember B's momentum.
+
+        Body types and moments change only through the physics system, which
+        counts such changes (``ctx.epoch``: type changes, mass updates); the
+        checks below run again only when that count moved or this joint was
+        changed (``apply``). A context without the count checks every step.
+        """
+        epoch = getattr(self.ctx, "epoch", None)
+        if epoch is None or epoch != self._epoch:
+            if not self.active and not self.parts and self.can_act():
+                # built while neither body was dynamic (pymunk refuses such
+                # constraints): one is now, so build for real
+                type(self).__init__(self, self.ctx, self.entity, self.component)
+                if self.active:
+                    self.apply(self.component)
+            self.track_body_types()
+            self.track_rotation()
+            self._epoch = epoch
         self.before_step_momentum()
 
     def track_rotation(self) -> None:
@@ -318,8 +340,9 @@ class Composite(JointHandle):
         """Remember body B's momentum (for the reaction direction)."""
         body = self.b if is_dynamic(self.b) else self.a
         if is_dynamic(body):
-            v = body.velocity
-            self._momentum = (v.x, v.y, body.angular_velocity)
+            cb = body._body
+            v = _get_velocity(cb)
+            self._momentum = (v.x, v.y, _get_angular_velocity(cb))
         else:
             self._momentum = None
 
@@ -354,23 +377,25 @@ class Composite(JointHandle):
             return 0.0, 0.0, 0.0
         body, sign = (self.b, 1.0) if is_dynamic(self.b) else (self.a, -1.0)
         vx0, vy0, w0 = self._momentum
-        gx, gy = self.space.gravity
-        m, i = body.mass, body.moment
-        jx = m * (body.velocity.x - vx0 - gx * dt)
-        jy = m * (body.velocity.y - vy0 - gy * dt)
-        jw = i * (body.angular_velocity - w0) if math.isfinite(i) else 0.0
+        g = _get_gravity(self.space._space)
+        cb = body._body
+        m, i = _get_mass(cb), _get_moment(cb)
+        v = _get_velocity(cb)
+        jx = m * (v.x - vx0 - g.x * dt)
+        jy = m * (v.y - vy0 - g.y * dt)
+        jw = i * (_get_angular_velocity(cb) - w0) if math.isfinite(i) else 0.0
         return sign * jx, sign * jy, sign * jw
 
     def step_time(self) -> float:
         """The (sub)step that produced the constraints' current impulses."""
-        h = self.space.current_time_step
+        h = _get_step(self.space._space)
         return float(h) if h > 0 else 1.0 / 60.0
 
     def impulse_force(self, constraint: pymunk.Constraint | None) -> float:
         """Force or torque magnitude a constraint applied in the last (sub)step."""
-        if constraint is None or constraint not in self.space.constraints:
+        if constraint is None or not _contains(self.space._space, constraint._constraint):
             return 0.0  # switched off, or out of the space with a disabled body
-        return float(constraint.impulse) / self.step_time()
+        return float(_get_impulse(constraint._constraint)) / self.step_time()
 
     def write_reaction(
         self,
@@ -430,6 +455,7 @@ class Composite(JointHandle):
 
     def apply(self, component: Any) -> None:
         self.component = component
+        self._epoch = None  # constraints may have been switched: check again
         # a world anchor assigned after the build is resolved against the poses now
         if getattr(component, "anchor", None) is not None:
             self.local_anchors(component)

@@ -17,11 +17,23 @@ from __future__ import annotations
 import math
 
 import pymunk
+from pymunk._chipmunk import lib
 
-from kge.physics.joints.mechanics import cog_world, cross, inv_mass, point_mass, shift
+from kge.physics.joints.mechanics import (
+    cog_world,
+    cross,
+    inv_mass,
+    move_cog,
+    point_mass,
+    shift,
+)
 from kge.physics.joints.rows import Row, merge
 
 Vec2 = tuple[float, float]
+
+_local_to_world = lib.cpBodyLocalToWorld
+_get_cog = lib.cpBodyGetCenterOfGravity
+_get_angle = lib.cpBodyGetAngle
 
 #: Box2D's b2_maxLinearCorrection: the most a position pass moves per step, m
 MAX_CORRECTION = 0.2
@@ -38,8 +50,14 @@ def project_point(a: pymunk.Body, b: pymunk.Body, la: Vec2, lb: Vec2) -> float:
 
     Returns the gap found, m (before the correction, which is at most ``MAX_CORRECTION``).
     """
-    pa, pb = a.local_to_world(la), b.local_to_world(lb)
-    cx, cy = pb.x - pa.x, pb.y - pa.y
+    pa, pb = _local_to_world(a._body, la), _local_to_world(b._body, lb)
+    return project_gap(a, b, pa.x, pa.y, pb.x, pb.y)
+
+
+def project_gap(a: pymunk.Body, b: pymunk.Body, pax: float, pay: float, pbx: float,
+                pby: float) -> float:
+    """:func:`project_point` for anchors already in world coordinates (floats)."""
+    cx, cy = pbx - pax, pby - pay
     n = math.hypot(cx, cy)
     if n < 1e-9:
         return n
@@ -47,16 +65,26 @@ def project_point(a: pymunk.Body, b: pymunk.Body, la: Vec2, lb: Vec2) -> float:
         cx, cy = cx * MAX_CORRECTION / n, cy * MAX_CORRECTION / n
     ima, iia = inv_mass(a)
     imb, iib = inv_mass(b)
-    ra, rb = pa - cog_world(a), pb - cog_world(b)
-    k11 = ima + imb + iia * ra.y * ra.y + iib * rb.y * rb.y
-    k12 = -iia * ra.x * ra.y - iib * rb.x * rb.y
-    k22 = ima + imb + iia * ra.x * ra.x + iib * rb.x * rb.x
+    ca, cb = a._body, b._body
+    loa, lob = _get_cog(ca), _get_cog(cb)
+    ga, gb = _local_to_world(ca, loa), _local_to_world(cb, lob)
+    rax, ray = pax - ga.x, pay - ga.y
+    rbx, rby = pbx - gb.x, pby - gb.y
+    k11 = ima + imb + iia * ray * ray + iib * rby * rby
+    k12 = -iia * rax * ray - iib * rbx * rby
+    k22 = ima + imb + iia * rax * rax + iib * rbx * rbx
     det = k11 * k22 - k12 * k12
     if abs(det) < 1e-12:
         return n
     px = -(k22 * cx - k12 * cy) / det
     py = -(-k12 * cx + k11 * cy) / det
-    _push(a, b, pa, pb, px, py)
+    # P at pb on b, -P at pa on a
+    if ima or iia:
+        move_cog(ca, loa.x, loa.y, ga.x - ima * px, ga.y - ima * py,
+                 _get_angle(ca) - iia * cross(rax, ray, px, py))
+    if imb or iib:
+        move_cog(cb, lob.x, lob.y, gb.x + imb * px, gb.y + imb * py,
+                 _get_angle(cb) + iib * cross(rbx, rby, px, py))
     return n
 
 

@@ -21,6 +21,7 @@ import math
 from typing import Any
 
 import pymunk
+from pymunk._chipmunk import lib
 
 from kge.components.joints import RevoluteJoint
 from kge.components.tracked import raw_set
@@ -29,10 +30,15 @@ from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.positions import (
     MAX_ANGULAR_CORRECTION,
     MAX_CORRECTION,
+    project_gap,
     project_limit,
-    project_point,
 )
 from kge.physics.joints.rows import Row, hinge_rows, motor_and_limits
+
+_get_angle = lib.cpBodyGetAngle
+_get_angular_velocity = lib.cpBodyGetAngularVelocity
+_get_impulse = lib.cpConstraintGetImpulse
+_local_to_world = lib.cpBodyLocalToWorld
 
 #: Box2D's b2_angularSlop (2°)
 ANGULAR_SLOP = math.radians(2.0)
@@ -123,33 +129,39 @@ class Revolute(Composite):
 
     def project(self) -> None:
         """Box2D's position pass: the limit (8° per step at most), then the point."""
-        if self.pivot is None:
+        pivot = self.pivot
+        if pivot is None:
             return
         j = self.settings
+        iterated = self.ctx.iterated_hinges
+        ca, cb = self.a._body, self.b._body
         if j.enable_limit:
             # iterated hinges leave Box2D's b2_angularSlop alone, as its position pass
             # does: a motor holding a leg on its limit must not move (and so wake) it
-            slop = ANGULAR_SLOP if self.ctx.iterated_hinges else 0.0
-            project_limit(self.rows(1.0), self.coordinate(), j.lower_angle - slop,
-                          j.upper_angle + slop, MAX_ANGULAR_CORRECTION)
-        if self.ctx.iterated_hinges:
-            # a gap this small is left alone: moving a body wakes it (pymunk), and a
-            # motor holding a load leaves such a gap at every step
-            pa = self.a.local_to_world(self.pivot.anchor_a)
-            pb = self.b.local_to_world(self.pivot.anchor_b)
-            if math.hypot(pb.x - pa.x, pb.y - pa.y) < ITERATED_PIVOT_TOLERANCE:
-                return
-        gap = project_point(self.a, self.b, self.pivot.anchor_a, self.pivot.anchor_b)
+            slop = ANGULAR_SLOP if iterated else 0.0
+            angle = _get_angle(cb) - _get_angle(ca) - self.ref
+            lo, hi = j.lower_angle - slop, j.upper_angle + slop
+            if angle < lo or angle > hi:
+                project_limit(self.rows(1.0), angle, lo, hi, MAX_ANGULAR_CORRECTION)
+        pa, pb = _local_to_world(ca, self.la), _local_to_world(cb, self.lb)
+        pax, pay, pbx, pby = pa.x, pa.y, pb.x, pb.y
+        # iterated hinges: a gap this small is left alone: moving a body wakes it
+        # (pymunk), and a motor holding a load leaves such a gap at every step
+        if iterated and math.hypot(pbx - pax, pby - pay) < ITERATED_PIVOT_TOLERANCE:
+            return
+        gap = project_gap(self.a, self.b, pax, pay, pbx, pby)
         self.jolt(gap, MAX_CORRECTION)
 
     def read_live(self, j: Any, dt: float) -> None:
-        raw_set(j, "angle", self.coordinate())
-        raw_set(j, "speed", float(self.b.angular_velocity - self.a.angular_velocity))
-        if self.motor is not None and j.enable_motor and self.ctx.iterated_hinges:
+        ca, cb = self.a._body, self.b._body
+        raw_set(j, "angle", float(_get_angle(cb) - _get_angle(ca) - self.ref))
+        raw_set(j, "speed", float(_get_angular_velocity(cb) - _get_angular_velocity(ca)))
+        if self.ctx.iterated_hinges:
             # pymunk's impulse is the last substep's; Box2D's sign (torque on body b)
-            self.motor_impulse = -self.motor.impulse
-        if self.limit is not None and j.enable_limit and self.ctx.iterated_hinges:
-            self.limit_impulse = -self.limit.impulse
+            if self.motor is not None and j.enable_motor:
+                self.motor_impulse = -_get_impulse(self.motor._constraint)
+            if self.limit is not None and j.enable_limit:
+                self.limit_impulse = -_get_impulse(self.limit._constraint)
         raw_set(j, "motor_torque", self.motor_impulse / self.h)
         self.write_reaction(j, dt, self.impulse_force(self.pivot), 0.0)
         torque = self.limit_impulse / self.h
