@@ -190,8 +190,10 @@ class PivotBatch:
             a, b = self.ia[idx], self.ib[idx]
             sides = []
             for side, sgn in ((a, -1.0), (b, 1.0)):
-                keep = np.flatnonzero(movable[side])
+                keep: np.ndarray | None = np.flatnonzero(movable[side])
                 s = side[keep]
+                if len(s) == len(side):
+                    keep = None  # all of them: no gather needed
                 sides.append((keep, s, sgn * im[s], sgn * ii[s], cog[s]))
             self.passes.append((
                 idx, a, b,
@@ -272,30 +274,43 @@ class PivotBatch:
             ga, gb = pos[a] + ea * ca, pos[b] + eb * cb  # centres of gravity
             c = (gb + rb) - (ga + ra)
             n = np.abs(c)
-            far = n > JOLT * MAX_CORRECTION
-            if far.any():
-                jolted += jidx[far].tolist()
-            c = np.where(n > MAX_CORRECTION, c * (MAX_CORRECTION / np.maximum(n, 1e-300)), c)
+            # the guards below cost a dozen numpy calls per colour; a settled or
+            # everyday step needs none of them (largest gap under the clamp, none zero)
+            top = n.max()
+            if top > JOLT * MAX_CORRECTION:
+                jolted += jidx[n > JOLT * MAX_CORRECTION].tolist()
+            if top > MAX_CORRECTION:
+                c = np.where(n > MAX_CORRECTION, c * (MAX_CORRECTION / np.maximum(n, 1e-300)), c)
             rax, ray, rbx, rby = ra.real, ra.imag, rb.real, rb.imag
-            k11 = msum + iia * ray * ray + iib * rby * rby
-            k12 = -iia * rax * ray - iib * rbx * rby
-            k22 = msum + iia * rax * rax + iib * rbx * rbx
+            iax, iay, ibx, iby = iia * rax, iia * ray, iib * rbx, iib * rby
+            k11 = msum + iay * ray + iby * rby
+            k12 = -(iax * ray + ibx * rby)
+            k22 = msum + iax * rax + ibx * rbx
             det = k11 * k22 - k12 * k12
-            ok = (n >= 1e-9) & (np.abs(det) >= 1e-12)
-            if not ok.any():
-                continue
-            inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
             cx, cy = c.real, c.imag
-            p = (-(k22 * cx - k12 * cy) * inv) + 1j * (-(-k12 * cx + k11 * cy) * inv)
-            for (keep, s, sim, sii, cog), g, r in zip(sides, (ga, gb), (ra, rb), strict=True):
-                if not len(s):
+            if n.min() >= 1e-9 and np.abs(det).min() >= 1e-12:
+                ok = None
+                p = ((k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)) / det
+            else:
+                ok = (n >= 1e-9) & (np.abs(det) >= 1e-12)
+                if not ok.any():
                     continue
-                q = p[keep]
-                rr = r[keep]
+                inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+                p = ((k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)) * inv
+            for (keep, s, sim, sii, cog), g, r in zip(sides, (ga, gb), (ra, rb), strict=True):
+                if keep is None:  # every joint of the colour moves this side's bodies
+                    q, rr, gk = p, r, g
+                elif not len(s):
+                    continue
+                else:
+                    q, rr, gk = p[keep], r[keep], g[keep]
                 na = t[s] + sii * (rr.real * q.imag - rr.imag * q.real)
-                pos[s] = g[keep] + sim * q - np.exp(1j * na) * cog
+                pos[s] = gk + sim * q - np.exp(1j * na) * cog
                 t[s] = na
-                moved[s[ok[keep]]] = True
+                if ok is None:
+                    moved[s] = True
+                else:
+                    moved[s[ok if keep is None else ok[keep]]] = True
         idx = np.flatnonzero(moved)
         if not len(idx):
             return jolted
