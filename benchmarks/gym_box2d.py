@@ -15,7 +15,7 @@ import sys
 from types import ModuleType
 from typing import Any
 
-_MODULES: dict[str, ModuleType] = {}
+_MODULES: dict[tuple[str, str], ModuleType] = {}
 
 
 def gymnasium_available() -> str | None:
@@ -27,8 +27,14 @@ def gymnasium_available() -> str | None:
 
 def lunar_lander_module(backend: str) -> ModuleType:
     """Gymnasium's lunar_lander module bound to ``backend`` ("kge" or "box2d")."""
-    if backend in _MODULES:
-        return _MODULES[backend]
+    return env_module("lunar_lander", backend)
+
+
+def env_module(name: str, backend: str) -> ModuleType:
+    """Gymnasium's ``gymnasium.envs.box2d.<name>`` module bound to ``backend``
+    ("kge" or "box2d"), loaded under a private name so both can live in one process."""
+    if (name, backend) in _MODULES:
+        return _MODULES[name, backend]
     import kge.box2d
 
     # the package's path only: importing gymnasium.envs.box2d runs its __init__, which
@@ -47,8 +53,8 @@ def lunar_lander_module(backend: str) -> ModuleType:
                 if saved[k] is not None and saved[k].__name__.startswith("kge"):  # type: ignore[union-attr]
                     del sys.modules[k]
             import Box2D  # noqa: F401  (real pybox2d)
-        path = package_dir + "/lunar_lander.py"
-        spec = importlib.util.spec_from_file_location(f"_lunar_lander_{backend}", path)
+        path = f"{package_dir}/{name}.py"
+        spec = importlib.util.spec_from_file_location(f"_{name}_{backend}", path)
         assert spec is not None and spec.loader is not None
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
@@ -58,7 +64,7 @@ def lunar_lander_module(backend: str) -> ModuleType:
                 sys.modules.pop(k, None)
             else:
                 sys.modules[k] = v
-    _MODULES[backend] = module
+    _MODULES[name, backend] = module
     return module
 
 

@@ -8,9 +8,11 @@ is an ordinary (checked) component write. Read-only live state (``angle``,
 ``speed``, ``translation``, ``motorTorque``...) is what the physics system writes
 into the component after every step.
 
-Definitions take Box2D's defaults, not kge's: a revolute definition's
-``referenceAngle`` is 0 (the angle the bodies have *now* only when given
-``anchor=``, like ``Initialize``), local anchors are given in body frames, and
+Definitions take Box2D's defaults, not kge's: a revolute, prismatic or weld
+definition's ``referenceAngle`` is 0, except that, as in pybox2d, one built with
+``bodyA=`` and ``bodyB=`` keywords (and no ``referenceAngle=``) takes the angle
+between the bodies *now* (Gymnasium's walker and lander legs rely on it: their
+hinge limits are relative to the build angle); local anchors are given in body frames, and
 ``anchor`` / ``axis`` / ``anchorA`` / ``anchorB`` / ``groundAnchorA`` keywords run
 ``Initialize`` with the definition's bodies.
 """
@@ -58,6 +60,9 @@ class b2JointDef:
     TYPE: ClassVar[int] = c.e_unknownJoint
     #: keywords that run Initialize once the bodies are known
     INIT_KEYS: ClassVar[tuple[str, ...]] = ()
+    #: pybox2d's constructor rule: given both bodies and no referenceAngle keyword,
+    #: referenceAngle = bodyB.angle - bodyA.angle (revolute, prismatic, weld)
+    REFERENCE_FROM_BODIES: ClassVar[bool] = False
 
     def __init__(self, **kwargs: Any) -> None:
         self.bodyA: b2Body | None = None
@@ -73,6 +78,10 @@ class b2JointDef:
             setattr(self, name, value)
         if init:
             self._initialize(**init)
+        if (self.REFERENCE_FROM_BODIES and self.bodyA is not None and self.bodyB is not None
+                and "referenceAngle" not in kwargs):
+            a, b = self._bodies()
+            self.referenceAngle = b.angle - a.angle
 
     def __setattr__(self, name: str, value: Any) -> None:
         spec = self.FIELDS.get(name)
@@ -129,6 +138,7 @@ class _AnchorDef(b2JointDef):
 
 
 class b2RevoluteJointDef(_AnchorDef):
+    REFERENCE_FROM_BODIES = True
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "enableLimit": ("enable_limit", False, bool),
@@ -147,6 +157,7 @@ class b2RevoluteJointDef(_AnchorDef):
 
 
 class b2WeldJointDef(_AnchorDef):
+    REFERENCE_FROM_BODIES = True
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "referenceAngle": ("reference_angle", 0.0, float),
               "frequencyHz": ("frequency_hz", 0.0, float),
@@ -181,6 +192,7 @@ class _AnchorAxisDef(b2JointDef):
 
 
 class b2PrismaticJointDef(_AnchorAxisDef):
+    REFERENCE_FROM_BODIES = True
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "localAxisA": ("local_axis_a", (1.0, 0.0), _vec),
               "referenceAngle": ("reference_angle", 0.0, float),

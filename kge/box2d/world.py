@@ -436,6 +436,7 @@ class b2World:
         if st.iterations != iterations or st.substeps != substeps:
             st.iterations = iterations
             st.substeps = substeps
+        self._system.sim.joints.position_iterations = max(1, positionIterations)
         self._locked = True
         try:
             self._system.process(dt)

@@ -40,6 +40,8 @@ _get_angular_velocity = lib.cpBodyGetAngularVelocity
 _get_impulse = lib.cpConstraintGetImpulse
 _local_to_world = lib.cpBodyLocalToWorld
 
+#: Box2D's b2_linearSlop, m
+LINEAR_SLOP = 0.005
 #: Box2D's b2_angularSlop (2°)
 ANGULAR_SLOP = math.radians(2.0)
 #: iterated hinges: the limit's largest push-back speed, rad/s
@@ -127,14 +129,19 @@ class Revolute(Composite):
         """d(angle)/dt = w_b - w_a."""
         return [(self.b, 0.0, 0.0, scale), (self.a, 0.0, 0.0, -scale)]
 
-    def project(self) -> None:
-        """Box2D's position pass: the limit (8° per step at most), then the point."""
+    def project(self) -> bool:
+        """Box2D's position pass: the limit (8° per step at most), then the point.
+
+        Returns Box2D's verdict: the pivot gap within b2_linearSlop and the limit
+        within b2_angularSlop (measured before this pass's correction).
+        """
         pivot = self.pivot
         if pivot is None:
-            return
+            return True
         j = self.settings
         iterated = self.ctx.iterated_hinges
         ca, cb = self.a._body, self.b._body
+        angular = 0.0
         if j.enable_limit:
             # iterated hinges leave Box2D's b2_angularSlop alone, as its position pass
             # does: a motor holding a leg on its limit must not move (and so wake) it
@@ -142,15 +149,17 @@ class Revolute(Composite):
             angle = _get_angle(cb) - _get_angle(ca) - self.ref
             lo, hi = j.lower_angle - slop, j.upper_angle + slop
             if angle < lo or angle > hi:
+                angular = max(j.lower_angle - angle, angle - j.upper_angle)
                 project_limit(self.rows(1.0), angle, lo, hi, MAX_ANGULAR_CORRECTION)
         pa, pb = _local_to_world(ca, self.la), _local_to_world(cb, self.lb)
         pax, pay, pbx, pby = pa.x, pa.y, pb.x, pb.y
         # iterated hinges: a gap this small is left alone: moving a body wakes it
         # (pymunk), and a motor holding a load leaves such a gap at every step
         if iterated and math.hypot(pbx - pax, pby - pay) < ITERATED_PIVOT_TOLERANCE:
-            return
+            return angular <= ANGULAR_SLOP
         gap = project_gap(self.a, self.b, pax, pay, pbx, pby)
         self.jolt(gap, MAX_CORRECTION)
+        return gap <= LINEAR_SLOP and angular <= ANGULAR_SLOP
 
     def read_live(self, j: Any, dt: float) -> None:
         ca, cb = self.a._body, self.b._body
