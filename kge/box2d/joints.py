@@ -81,7 +81,7 @@ class b2JointDef:
         if (self.REFERENCE_FROM_BODIES and self.bodyA is not None and self.bodyB is not None
                 and "referenceAngle" not in kwargs):
             a, b = self._bodies()
-            self.referenceAngle = b.angle - a.angle
+            setattr(self, "referenceAngle", b.angle - a.angle)  # noqa: B010 - a FIELDS name
 
     def __setattr__(self, name: str, value: Any) -> None:
         spec = self.FIELDS.get(name)

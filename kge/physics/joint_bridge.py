@@ -61,10 +61,8 @@ class JointBridge:
     batch_revolutes = True
     #: most position passes per step over the per-joint path (Box2D's
     #: ``positionIterations``). kge's own physics makes one; ``kge.box2d`` sets
-    #: Step's count. Passes after the first run only while a joint that reports
-    #: Box2D's slop verdict (revolute joints) is still outside it, so they cost
-    #: nothing in a settled scene and pull apart joints together at once (a
-    #: Gymnasium walker's legs are built 0.5 m from their hip anchors).
+    #: Step's count, and above 1 the joints take turns with the contacts of their
+    #: bodies until all are within Box2D's slops (kge.physics.joints.settle).
     position_iterations = 1
 
     def __init__(self, sim: Simulation) -> None:
@@ -288,22 +286,30 @@ class JointBridge:
             live = False
             self._batch_epoch = -1
         jolted: list[joint_api.JointHandle] = []
+        box2d = self.position_iterations > 1
+        unsettled: list[tuple[int, joint_api.JointHandle]] = []
         if state is not None:
             jolted += [batch.handles[k] for k in batch.project(state)]
+            if box2d:
+                from kge.physics.joints.positions import LINEAR_SLOP
+
+                if batch.worst > LINEAR_SLOP:
+                    # Box2D's further iterations take the contacts too: per joint
+                    unsettled = [(e, h) for e, h in ordered if e in self._batched]
         others = False
-        unsettled = False
-        for e, h in self._others if state is not None else ordered:
-            comp = self.components.get(e)
-            if comp is None:
-                continue
-            h.read_back(comp, dt)
-            if h.jolted:
-                jolted.append(h)
-            others = True
-            if not getattr(h, "settled", True):
-                unsettled = True
-        if unsettled and self.position_iterations > 1:
-            self._settle(self._others if state is not None else ordered, dt)
+        loop = self._others if state is not None else ordered
+        if box2d and (loop or unsettled):
+            others = self._box2d_positions(loop, dt, unsettled)
+            jolted += [h for _, h in loop + unsettled if h.jolted]
+        else:
+            for e, h in loop:
+                comp = self.components.get(e)
+                if comp is None:
+                    continue
+                h.read_back(comp, dt)
+                if h.jolted:
+                    jolted.append(h)
+                others = True
         if jolted:
             self.forget_impulses(jolted)
         if state is not None:
@@ -328,26 +334,33 @@ class JointBridge:
                 if self.sim.world.exists(e):
                     self.sim.world.despawn(e)
 
-    def _settle(self, handles: list[tuple[int, joint_api.JointHandle]], dt: float) -> None:
-        """Box2D's further position iterations: every per-joint handle's position
-        pass again, until all report they are within the slops or the count is
-        spent; then their live values are read again from the final poses."""
+    def _box2d_positions(self, handles: list[tuple[int, joint_api.JointHandle]], dt: float,
+                         batched: list[tuple[int, joint_api.JointHandle]]) -> bool:
+        """Box2D's position iterations over the per-joint handles (and the batched
+        ones still apart after the batch's pass) and the contacts of their bodies
+        (:mod:`kge.physics.joints.settle`), then the read-back of the per-joint
+        handles from the final poses (the batch reads its own back). Returns
+        whether any body may have moved."""
         from kge.physics.joints.base import Composite
+        from kge.physics.joints.settle import position_loop
 
-        live = [
-            (e, h) for e, h in handles
-            if isinstance(h, Composite) and h.active and h.suspended is None
-            and self.components.get(e) is not None
-        ]
-        for _ in range(self.position_iterations - 1):
-            done = True
-            for _, h in live:
-                if h.project() is False:
-                    done = False
-            if done:
-                break
-        for e, h in live:
-            h.read_live(self.components[e], dt)
+        live: list[tuple[Composite, Any]] = []
+        rest: list[tuple[joint_api.JointHandle, Any]] = []
+        for e, h in handles:
+            comp = self.components.get(e)
+            if comp is None:
+                continue
+            if isinstance(h, Composite) and h.active and h.suspended is None:
+                live.append((h, comp))
+            else:
+                rest.append((h, comp))
+        extra = [h for _, h in batched if isinstance(h, Composite)]
+        position_loop([h for h, _ in live] + extra, self.position_iterations)
+        for h, comp in live:
+            h.read_live(comp, dt)
+        for other, comp in rest:
+            other.read_back(comp, dt)
+        return bool(live or rest or extra)
 
     def forget_impulses(self, jolted: list[joint_api.JointHandle]) -> None:
         """Joints found far off their constraint start the next step from zero impulse.

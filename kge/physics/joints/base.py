@@ -184,8 +184,6 @@ class Composite(JointHandle):
         self.own_collide: set[pymunk.Constraint] = set()
         #: the last position pass found the joint far off (see JOLT)
         self.jolted = False
-        #: the last position pass left the joint within Box2D's slops (see project)
-        self.settled = True
         #: the context's structure epoch when before_step last checked body types
         #: and rotation (None: check again; see before_step)
         self._epoch: Any = None
@@ -434,15 +432,15 @@ class Composite(JointHandle):
             raw_set(component, "reaction_torque", 0.0)
             self._force = self._torque = 0.0
             return
-        self.settled = self.project() is not False
+        self.project()
         self.read_live(component, dt)
 
     def project(self) -> bool | None:
         """Position pass after the step (none by default).
 
-        A joint that knows Box2D's criterion returns whether it is within the
-        slops (b2_linearSlop, b2_angularSlop) afterwards; None means "no opinion"
-        and the joint is not iterated (see ``JointBridge.position_iterations``).
+        A joint that knows Box2D's criterion returns whether it was within the
+        slops (b2_linearSlop, b2_angularSlop); None means "no opinion" (see
+        ``JointBridge.position_iterations`` and :mod:`kge.physics.joints.settle`).
         """
         return None
 

@@ -35,6 +35,9 @@ _local_to_world = lib.cpBodyLocalToWorld
 _get_cog = lib.cpBodyGetCenterOfGravity
 _get_angle = lib.cpBodyGetAngle
 
+#: Box2D's b2_linearSlop: the joint gap (and contact overlap) its position
+#: iterations settle for, m
+LINEAR_SLOP = 0.005
 #: Box2D's b2_maxLinearCorrection: the most a position pass moves per step, m
 MAX_CORRECTION = 0.2
 #: Box2D's b2_maxAngularCorrection (8°): the most an angle is corrected per step, rad

@@ -28,6 +28,7 @@ from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.positions import (
+    LINEAR_SLOP,
     MAX_ANGULAR_CORRECTION,
     MAX_CORRECTION,
     project_gap,
@@ -40,8 +41,6 @@ _get_angular_velocity = lib.cpBodyGetAngularVelocity
 _get_impulse = lib.cpConstraintGetImpulse
 _local_to_world = lib.cpBodyLocalToWorld
 
-#: Box2D's b2_linearSlop, m
-LINEAR_SLOP = 0.005
 #: Box2D's b2_angularSlop (2°)
 ANGULAR_SLOP = math.radians(2.0)
 #: iterated hinges: the limit's largest push-back speed, rad/s
