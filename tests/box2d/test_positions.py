@@ -81,6 +81,8 @@ def test_contacts_hold_while_the_joint_pulls() -> None:
     world.Step(1 / 50, 180, 60)
     assert (joint.anchorB - joint.anchorA).length < 0.005
     assert leg.angle < -0.6  # tipped over (pybox2d -0.91)
-    lowest = min(leg.GetWorldPoint(v).y for v in leg.fixtures[0].shape.vertices)
+    shape = leg.fixtures[0].shape
+    assert isinstance(shape, b2.b2PolygonShape)
+    lowest = min(leg.GetWorldPoint(v).y for v in shape.vertices)
     assert lowest > -0.05  # not pushed through the ground
     assert math.isfinite(leg.position.y) and leg.position.y > 0.3  # pybox2d 0.393
