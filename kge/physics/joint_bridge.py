@@ -40,6 +40,20 @@ def load_joint_modules() -> None:
             importlib.import_module(name)
 
 
+_SETTLE: tuple[Any, Any] | None = None
+
+
+def _settle_api() -> tuple[Any, Any]:
+    """(Composite, position_loop), imported on first use (the joint modules are optional)."""
+    global _SETTLE
+    if _SETTLE is None:
+        from kge.physics.joints.base import Composite
+        from kge.physics.joints.settle import position_loop
+
+        _SETTLE = (Composite, position_loop)
+    return _SETTLE
+
+
 def body_fields(component: Any) -> tuple[int | None, int | None]:
     return getattr(component, "body_a", None), getattr(component, "body_b", None)
 
@@ -341,20 +355,18 @@ class JointBridge:
         (:mod:`kge.physics.joints.settle`), then the read-back of the per-joint
         handles from the final poses (the batch reads its own back). Returns
         whether any body may have moved."""
-        from kge.physics.joints.base import Composite
-        from kge.physics.joints.settle import position_loop
-
-        live: list[tuple[Composite, Any]] = []
+        composite, position_loop = _settle_api()
+        live: list[tuple[Any, Any]] = []
         rest: list[tuple[joint_api.JointHandle, Any]] = []
         for e, h in handles:
             comp = self.components.get(e)
             if comp is None:
                 continue
-            if isinstance(h, Composite) and h.active and h.suspended is None:
+            if isinstance(h, composite) and h.active and h.suspended is None:
                 live.append((h, comp))
             else:
                 rest.append((h, comp))
-        extra = [h for _, h in batched if isinstance(h, Composite)]
+        extra = [h for _, h in batched if isinstance(h, composite)]
         position_loop([h for h, _ in live] + extra, self.position_iterations)
         for h, comp in live:
             h.read_live(comp, dt)

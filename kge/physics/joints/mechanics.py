@@ -15,6 +15,7 @@ C call it wraps (``body.position`` ~1 µs, ``cpBodyGetPosition`` ~0.15 µs).
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import pymunk
 from pymunk._chipmunk import lib
@@ -27,6 +28,7 @@ _get_moment = lib.cpBodyGetMoment
 _get_angle = lib.cpBodyGetAngle
 _set_angle = lib.cpBodySetAngle
 _set_position = lib.cpBodySetPosition
+_get_position = lib.cpBodyGetPosition
 _get_cog = lib.cpBodyGetCenterOfGravity
 _local_to_world = lib.cpBodyLocalToWorld
 _isinf = math.isinf
@@ -81,9 +83,31 @@ def shift(body: pymunk.Body, dx: float, dy: float, dangle: float) -> None:
     move_cog(cb, cog.x, cog.y, c.x + dx, c.y + dy, _get_angle(cb) + dangle)
 
 
-def move_cog(cb: object, lx: float, ly: float, cx: float, cy: float, angle: float) -> None:
+#: while a dict: the pose (origin x, y, angle) each Chipmunk body had before
+#: :func:`move_cog` first moved it (see :func:`journal`)
+_journal: dict[Any, tuple[float, float, float]] | None = None
+
+
+def journal(on: bool) -> dict[Any, tuple[float, float, float]]:
+    """Start (``on``) or stop recording the poses bodies had before position passes
+    moved them; returns the record, keyed by Chipmunk body (``body._body``).
+
+    Box2D's position iterations (:mod:`kge.physics.joints.settle`) need the poses
+    the step left only when a pass did move something, so they are recorded at
+    the moves rather than read for every body beforehand.
+    """
+    global _journal
+    record = _journal if _journal is not None else {}
+    _journal = {} if on else None
+    return record
+
+
+def move_cog(cb: Any, lx: float, ly: float, cx: float, cy: float, angle: float) -> None:
     """Put the Chipmunk body ``cb``'s centre of gravity (local ``(lx, ly)``) at
     ``(cx, cy)`` with rotation ``angle`` (angle first, then origin, as pymunk does)."""
+    if _journal is not None and cb not in _journal:
+        p = _get_position(cb)
+        _journal[cb] = (p.x, p.y, _get_angle(cb))
     _set_angle(cb, angle)
     c, s = _cos(angle), _sin(angle)
     _set_position(cb, (cx - (c * lx - s * ly), cy - (s * lx + c * ly)))

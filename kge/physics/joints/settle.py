@@ -36,7 +36,7 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk import lib
 
-from kge.physics.joints.mechanics import DYNAMIC, cross, inv_mass, move_cog
+from kge.physics.joints.mechanics import DYNAMIC, cross, inv_mass, journal, move_cog
 from kge.physics.joints.positions import LINEAR_SLOP, MAX_CORRECTION
 
 #: Box2D's b2_baumgarte: the fraction of a contact's overlap removed per pass
@@ -49,10 +49,12 @@ CONTACT_TOLERANCE = 1e-4
 _local_to_world = lib.cpBodyLocalToWorld
 _world_to_local = lib.cpBodyWorldToLocal
 _get_cog = lib.cpBodyGetCenterOfGravity
-_get_position = lib.cpBodyGetPosition
 _get_angle = lib.cpBodyGetAngle
 _get_type = lib.cpBodyGetType
 _is_sleeping = lib.cpBodyIsSleeping
+
+
+Pose = tuple[float, float, float]
 
 
 class ContactPoint:
@@ -61,16 +63,16 @@ class ContactPoint:
     __slots__ = ("a", "angle0", "b", "frame", "la", "lb", "nx", "ny")
 
     def __init__(self, a: pymunk.Body, b: pymunk.Body, pa: Any, pb: Any, normal: Any,
-                 poses: dict[int, Pose]) -> None:
+                 poses: dict[Any, Pose]) -> None:
         """``pa``/``pb``: the world points on each body, ``normal`` from a to b, all as
-        the step found them; ``poses``: body poses then (origin x, y, angle) for the
-        bodies the position passes may have moved since."""
+        the step found them; ``poses``: body poses then (origin x, y, angle), by
+        Chipmunk body, for the bodies the position passes moved since."""
         self.a, self.b = a, b
         self.la, self.lb = _to_local(a, pa, poses), _to_local(b, pb, poses)
         # the normal turns with the body that carries it: a static one never does
         self.frame = b if _get_type(a._body) == DYNAMIC and _get_type(b._body) != DYNAMIC else a
         self.nx, self.ny = float(normal.x), float(normal.y)
-        pose = poses.get(id(self.frame))
+        pose = poses.get(self.frame._body)
         self.angle0 = _get_angle(self.frame._body) if pose is None else pose[2]
 
     def solve(self) -> float:
@@ -109,17 +111,8 @@ class ContactPoint:
         return separation
 
 
-Pose = tuple[float, float, float]
-
-
-def _origin_pose(body: pymunk.Body) -> Pose:
-    cb = body._body
-    p = _get_position(cb)
-    return p.x, p.y, _get_angle(cb)
-
-
-def _to_local(body: pymunk.Body, point: Any, poses: dict[int, Pose]) -> tuple[float, float]:
-    pose = poses.get(id(body))
+def _to_local(body: pymunk.Body, point: Any, poses: dict[Any, Pose]) -> tuple[float, float]:
+    pose = poses.get(body._body)
     if pose is None:
         q = _world_to_local(body._body, (point.x, point.y))
         return q.x, q.y
@@ -130,7 +123,7 @@ def _to_local(body: pymunk.Body, point: Any, poses: dict[int, Pose]) -> tuple[fl
 
 
 def contacts_of(bodies: Sequence[pymunk.Body],
-                poses: dict[int, Pose] | None = None) -> list[ContactPoint]:
+                poses: dict[Any, Pose] | None = None) -> list[ContactPoint]:
     """The touching, solid contact points of ``bodies`` (each pair once); ``poses``:
     the poses the step left (see :class:`ContactPoint`), when bodies moved since."""
     known = poses or {}
@@ -164,20 +157,26 @@ def position_loop(joints: Sequence[Any], iterations: int) -> None:
     scene at one pass per joint. Otherwise up to ``iterations - 1`` further passes
     of contacts then joints follow, until all are within the slops.
     """
-    bodies: dict[int, pymunk.Body] = {}
-    if iterations > 1:
+    if iterations <= 1:
         for h in joints:
-            for body in (h.a, h.b):
-                cb = body._body
-                if _get_type(cb) == DYNAMIC and not _is_sleeping(cb):
-                    bodies[id(body)] = body
-    poses = {k: _origin_pose(body) for k, body in bodies.items()}  # the step's, for contacts
-    done = True
-    for h in joints:
-        if h.project() is False:
-            done = False
-    if done or not bodies:
+            h.project()
         return
+    journal(True)  # the poses the step left, of the bodies the first pass moves
+    try:
+        done = True
+        for h in joints:
+            if h.project() is False:
+                done = False
+    finally:
+        poses = journal(False)
+    if done:
+        return
+    bodies: dict[int, pymunk.Body] = {}
+    for h in joints:
+        for body in (h.a, h.b):
+            cb = body._body
+            if _get_type(cb) == DYNAMIC and not _is_sleeping(cb):
+                bodies[id(body)] = body
     contacts = contacts_of(list(bodies.values()), poses)
     for _ in range(iterations - 1):
         lowest = 0.0
