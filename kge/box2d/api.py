@@ -26,6 +26,7 @@ from kge.box2d.contact import (
     b2WorldManifold,
 )
 from kge.box2d.distance import b2Distance, b2DistanceResult, b2TimeOfImpact, b2TOIOutput
+from kge.box2d.draw import b2Color, b2Draw, b2DrawExtended
 from kge.box2d.fixture import b2Filter, b2Fixture, b2FixtureDef
 from kge.box2d.joints import (
     b2DistanceJoint,
@@ -73,23 +74,6 @@ class b2AssertException(KgeError, AssertionError):
 
 
 b2Globals = sys.modules[__name__]  # pybox2d's module of globals
-
-
-class b2Color:
-    """An RGB colour with components in 0..1 (``bytes`` gives 0..255)."""
-
-    def __init__(self, r: float = 0.0, g: float = 0.0, b: float = 0.0) -> None:
-        self.r, self.g, self.b = float(r), float(g), float(b)
-
-    @property
-    def bytes(self) -> tuple[int, int, int]:
-        return (int(self.r * 255), int(self.g * 255), int(self.b * 255))
-
-    def __iter__(self) -> Any:
-        return iter((self.r, self.g, self.b))
-
-    def __repr__(self) -> str:
-        return f"b2Color({self.r:g},{self.g:g},{self.b:g})"
 
 
 def b2Random(lo: float = -1.0, hi: float = 1.0) -> float:

@@ -575,9 +575,16 @@ class b2World:
 
     # -- misc ----------------------------------------------------------------------------------
     def DrawDebugData(self) -> None:
-        """pybox2d draws through ``world.renderer``; kge.box2d has no debug renderer."""
-        if self.renderer is not None:
-            raise ValidationError("kge.box2d has no b2Draw support; draw with kge's DebugDraw")
+        """Draw the world through ``world.renderer`` (a :class:`~kge.box2d.draw.b2Draw`),
+        as Box2D's b2World::DrawDebugData does; nothing without a renderer."""
+        renderer = self.renderer
+        if renderer is None:
+            return
+        from kge.box2d.draw import b2Draw, draw_debug_data
+
+        if not isinstance(renderer, b2Draw):
+            raise ComponentTypeError(f"b2World.renderer must be a b2Draw, got {renderer!r}")
+        draw_debug_data(self, renderer)
 
     def __repr__(self) -> str:
         return (f"b2World(gravity={self.gravity!r}, bodies={len(self._bodies)}, "
