@@ -16,8 +16,9 @@ so unmodified programs, Gymnasium's Box2D environments among them, use it::
 
 or run a script with ``python -m kge.box2d script.py``.
 
-This is a top floor: it may import anything in kge (except testbed and gym);
-nothing in kge imports it.
+Its floor is just under the testbed, gym, testing and scaffold floor: it may
+import anything below (app, systems, physics...), and only the testbed's pybox2d
+samples import it.
 """
 
 from __future__ import annotations

@@ -101,6 +101,12 @@ class b2Draw:
         self._flags &= ~int(flags)
 
     # the renderer's side: pybox2d calls these with world points (b2Vec2) and a b2Color
+    def StartDraw(self) -> None:
+        """Called before a ``DrawDebugData`` pass (pybox2d's testbed backends' hook)."""
+
+    def EndDraw(self) -> None:
+        """Called after a ``DrawDebugData`` pass."""
+
     def DrawPolygon(self, vertices: list[Any], color: b2Color) -> None:
         """An outlined polygon."""
 
@@ -159,6 +165,13 @@ def draw_debug_data(world: b2World, renderer: b2Draw) -> None:
         if convert else (lambda p: b2Vec2(p)))
     scale = renderer.zoom if convert else 1.0  # type: ignore[attr-defined]
     bodies = world.bodies
+    renderer.StartDraw()
+    _draw(world, renderer, flags, bodies, pt, scale)
+    renderer.EndDraw()
+
+
+def _draw(world: b2World, renderer: b2Draw, flags: int, bodies: list[b2Body],
+          pt: Callable[[Any], Any], scale: float) -> None:
     if flags & b2Draw.e_shapeBit:
         for body in bodies:
             color = _body_color(body)

@@ -4,6 +4,7 @@ from kge.testbed.samples import (  # noqa: F401
     animation,
     basics,
     bodies,
+    box2d_api,
     collision,
     collision_module,
     determinism,
