@@ -62,6 +62,30 @@ def test_bipedal_walker_steps(gym: ModuleType) -> None:
     env.close()
 
 
+def test_bipedal_walker_heuristic_walks(gym: ModuleType) -> None:
+    """The environment's own heuristic walks (seed 0 finishes on pybox2d, 314.6).
+
+    It stood stiff-legged or fell within 15 m before Box2D's position iterations
+    were modelled (the legs are built 0.5 m from their hips) and before the legs'
+    reference angle followed pybox2d's constructor rule.
+    """
+    from gymnasium.envs.box2d import bipedal_walker
+
+    env = gym.make("BipedalWalker-v3")
+    walker = bipedal_walker.BipedalWalkerHeuristics()
+    s, _ = env.reset(seed=0)
+    a = np.zeros(4)
+    total, hull = 0.0, env.unwrapped.hull
+    for _ in range(600):
+        s, r, term, _trunc, _ = env.step(a)
+        total += float(r)
+        assert not term, f"fell at x={hull.position.x:.1f}"
+        a = walker.step_heuristic(s)
+    assert hull.position.x > 25.0  # 12 s of walking: pybox2d 33.9 m, kge.box2d 35.6 m
+    assert total > 60.0  # pybox2d 108.3, kge.box2d 113.8
+    env.close()
+
+
 def test_bipedal_walker_hardcore_resets(gym: ModuleType) -> None:
     env = gym.make("BipedalWalkerHardcore-v3")
     for seed in (0, 1):
