@@ -105,7 +105,6 @@ class PivotBatch:
         self.ids = np.empty(0, dtype=np.int64)
         self._mapping: tuple[np.ndarray, np.ndarray] | None = None
         #: the largest anchor gap the last position pass found, m
-        self.worst = 0.0
         self.v0: np.ndarray | None = None
         self._mass_epoch = -1
 
@@ -264,14 +263,12 @@ class PivotBatch:
         """Box2D's point projection over every joint, colour by colour.
 
         Updates ``state``'s poses and writes the bodies that moved to pymunk.
-        Returns the joints (indices into ``handles``) found far apart (see ``JOLT``);
-        ``worst`` is then the largest gap found, m (Box2D's loop stops under its slop).
+        Returns the joints (indices into ``handles``) found far apart (see ``JOLT``).
         """
         pos = state[:, 0] + 1j * state[:, 1]
         t = state[:, 2].copy()
         moved = np.zeros(len(self.bodies), dtype=bool)
         jolted: list[int] = []
-        self.worst = 0.0
         for jidx, a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
             ea, eb = np.exp(1j * t[a]), np.exp(1j * t[b])
             ra, rb = ea * da, eb * db  # lever arms from the centres of gravity
@@ -281,7 +278,6 @@ class PivotBatch:
             # the guards below cost a dozen numpy calls per colour; a settled or
             # everyday step needs none of them (largest gap under the clamp, none zero)
             top = n.max()
-            self.worst = max(self.worst, float(top))
             if top > JOLT * MAX_CORRECTION:
                 jolted += jidx[n > JOLT * MAX_CORRECTION].tolist()
             if top > MAX_CORRECTION:
