@@ -22,10 +22,19 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 import pymunk
+from pymunk._chipmunk import lib
 
 from kge.physics.callback_errors import CallbackErrors
 
 Vec2 = tuple[float, float]
+
+_contains = lib.cpSpaceContainsConstraint
+
+
+def in_space(space: pymunk.Space, constraint: pymunk.Constraint) -> bool:
+    """Whether ``constraint`` is in ``space``, in constant time (``c in
+    space.constraints`` copies the space's whole constraint list first)."""
+    return bool(_contains(space._space, constraint._constraint))
 
 
 class JointContext(Protocol):
@@ -97,7 +106,7 @@ class JointHandle(ABC):
     def remove(self, space: pymunk.Space) -> None:
         """Take every constraint of this joint out of ``space``."""
         for c in self.constraints:
-            if c in space.constraints:
+            if in_space(space, c):
                 space.remove(c)
         self.constraints = []
 

@@ -254,7 +254,7 @@ class JointBridge:
 
         if self._batch is None:
             self._batch = PivotBatch(self.space, self.sim.bodies)
-        present = self.space.constraints
+        present = set(self.space.constraints)
         chosen = [
             (e, h)
             for e, h in self.ordered()

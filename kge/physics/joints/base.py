@@ -35,7 +35,7 @@ import pymunk
 from pymunk._chipmunk import lib
 
 from kge.components.tracked import raw_set
-from kge.physics.joint_api import JointContext, JointHandle
+from kge.physics.joint_api import JointContext, JointHandle, in_space
 from kge.physics.joints.mechanics import is_dynamic
 from kge.physics.joints.positions import MAX_ANGULAR_CORRECTION, MAX_CORRECTION
 
@@ -59,7 +59,6 @@ _get_moment = lib.cpBodyGetMoment
 _get_gravity = lib.cpSpaceGetGravity
 _get_step = lib.cpSpaceGetCurrentTimeStep
 _get_impulse = lib.cpConstraintGetImpulse
-_contains = lib.cpSpaceContainsConstraint
 
 #: fraction of a hard constraint's position error removed per 1/60 s step by
 #: pymunk's velocity bias (pymunk's default), for constraints with no position pass.
@@ -226,15 +225,15 @@ class Composite(JointHandle):
                 self.suspended.remove(constraint)
             return
         listed = constraint in self.constraints
-        in_space = constraint in self.space.constraints
+        present = in_space(self.space, constraint)
         if on and not listed:
             self.constraints.append(constraint)
             bodies_in = constraint.a.space is self.space and constraint.b.space is self.space
-            if not in_space and bodies_in:
+            if not present and bodies_in:
                 self.space.add(constraint)
         elif not on and listed:
             self.constraints.remove(constraint)
-            if in_space:
+            if present:
                 self.space.remove(constraint)
 
     def is_on(self, constraint: pymunk.Constraint | None) -> bool:
@@ -393,7 +392,7 @@ class Composite(JointHandle):
 
     def impulse_force(self, constraint: pymunk.Constraint | None) -> float:
         """Force or torque magnitude a constraint applied in the last (sub)step."""
-        if constraint is None or not _contains(self.space._space, constraint._constraint):
+        if constraint is None or not in_space(self.space, constraint):
             return 0.0  # switched off, or out of the space with a disabled body
         return float(_get_impulse(constraint._constraint)) / self.step_time()
 

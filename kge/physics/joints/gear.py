@@ -30,7 +30,7 @@ import pymunk
 
 from kge.components.joints import GearJoint
 from kge.components.tracked import raw_set
-from kge.physics.joint_api import JointContext, register
+from kge.physics.joint_api import JointContext, in_space, register
 from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.positions import (
     MAX_ANGULAR_CORRECTION,
@@ -135,7 +135,7 @@ class Gear(Composite):
     def rebuild(self) -> None:
         """Start again from the component (Box2D would create a new gear)."""
         for c in self.parts:
-            if c in self.space.constraints:
+            if in_space(self.space, c):
                 self.space.remove(c)
         type(self).__init__(self, self.ctx, self.entity, self.component)
 
