@@ -56,11 +56,17 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 import pymunk
+from pymunk._chipmunk import lib
 
 from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Box, Chain, Circle, Edge, Polygon
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import finite, number, vec2
+
+_poly_count = lib.cpPolyShapeGetCount
+_poly_vert = lib.cpPolyShapeGetVert
+_body_position = lib.cpBodyGetPosition
+_body_angle = lib.cpBodyGetAngle
 
 Vec2 = tuple[float, float]
 RayMode = Literal["closest", "all", "any"]
@@ -157,14 +163,27 @@ def _one_per_collider(shapes: Iterable[pymunk.Shape]) -> list[pymunk.Shape]:
 
 
 def _world_vertices(shape: pymunk.Poly) -> list[Vec2]:
-    """Core (skin-free) vertices in world space, counter-clockwise."""
-    t = shape.body.local_to_world if shape.body is not None else None
-    pts = [tuple(t(v)) if t else tuple(v) for v in shape.get_vertices()]
+    """Core (skin-free) vertices in world space, counter-clockwise.
+
+    Read with Chipmunk's getters and turned with the body's pose once: a lidar of
+    ten rays meets a few polygons each per step, and pymunk's ``get_vertices`` and
+    ``local_to_world`` build two ``Vec2d`` per vertex.
+    """
+    cs = shape._shape
+    local = [_poly_vert(cs, i) for i in range(_poly_count(cs))]
+    body = shape.body
+    if body is None:
+        pts = [(v.x, v.y) for v in local]
+    else:
+        cb = body._body
+        o, a = _body_position(cb), _body_angle(cb)
+        c, s = math.cos(a), math.sin(a)
+        pts = [(o.x + c * v.x - s * v.y, o.y + s * v.x + c * v.y) for v in local]
     area2 = sum(
         pts[i][0] * pts[(i + 1) % len(pts)][1] - pts[(i + 1) % len(pts)][0] * pts[i][1]
         for i in range(len(pts))
     )
-    return pts[::-1] if area2 < 0 else pts  # type: ignore[return-value]
+    return pts[::-1] if area2 < 0 else pts
 
 
 def _world_point(shape: pymunk.Shape, local: Any) -> Vec2:
