@@ -25,6 +25,7 @@ from kge.box2d.shapes import b2ChainShape, b2CircleShape, b2EdgeShape, b2Polygon
 from kge.box2d.transform import b2Transform, make_transform
 from kge.box2d.vec import as_xy, b2Vec2
 from kge.errors import ComponentTypeError
+from kge.validate import finite
 
 if TYPE_CHECKING:
     from kge.box2d.body import b2Body
@@ -144,15 +145,22 @@ class b2DrawExtended(b2Draw):
         self.flipY = False
         super().__init__(**kwargs)
 
+    def __setattr__(self, name: str, value: Any) -> None:
+        """The view's numbers are checked when set (a bad zoom fails here, not mid-draw)."""
+        if name in ("center", "offset", "screenSize"):
+            value = b2Vec2(*as_xy(value, "b2DrawExtended", name))
+        elif name == "zoom":
+            value = finite(value, "b2DrawExtended", "zoom")
+        object.__setattr__(self, name, value)
+
     def to_screen(self, point: Any) -> tuple[float, float]:
         x, y = as_xy(point, "b2DrawExtended", "point")
-        ox, oy = as_xy(self.offset, "b2DrawExtended", "offset")
-        sx = x * self.zoom - ox
-        sy = y * self.zoom - oy
-        if self.flipX or self.flipY:
-            w, h = as_xy(self.screenSize, "b2DrawExtended", "screenSize")
-            sx = w - sx if self.flipX else sx
-            sy = h - sy if self.flipY else sy
+        sx = x * self.zoom - self.offset.x
+        sy = y * self.zoom - self.offset.y
+        if self.flipX:
+            sx = self.screenSize.x - sx
+        if self.flipY:
+            sy = self.screenSize.y - sy
         return sx, sy
 
 

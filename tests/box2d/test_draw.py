@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 import kge.box2d as b2
-from kge.errors import ComponentTypeError
+from kge.errors import ComponentTypeError, KgeError
 
 #: pybox2d 2.3.10's calls for the world below (points rounded to 1 mm)
 PYBOX2D = [
@@ -132,3 +132,9 @@ def test_bad_renderer_and_flags_are_refused() -> None:
         world.DrawDebugData()
     with pytest.raises(ComponentTypeError):
         Recorder().flags = dict(drawEverything=True)
+    screen = b2.b2DrawExtended(zoom=2.0)
+    with pytest.raises(KgeError):
+        screen.zoom = float("nan")
+    with pytest.raises(KgeError):
+        screen.offset = "far"  # type: ignore[assignment]
+    assert screen.zoom == 2.0 and screen.offset == (0, 0)  # unchanged
