@@ -44,13 +44,13 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
     app.step(10)
     timer = PhaseTimer(app)
     moved = [0]
-    inner = simulation.write_rows
+    inner = simulation.write_poses
 
-    def counted(targets: Any, slots: Any, new: Any, velocities: bool = True) -> None:
+    def counted(targets: Any, slots: Any, new: Any) -> None:
         moved[0] += len(new)
-        inner(targets, slots, new, velocities)
+        inner(targets, slots, new)
 
-    simulation.write_rows = counted  # type: ignore[assignment]  # the module's name, which sync-out calls
+    simulation.write_poses = counted  # type: ignore[assignment]  # the module's name, which sync-out calls
     per_body = []
     try:
         for _ in range(frames):
@@ -59,7 +59,7 @@ def sync_costs(size: int, frames: int) -> dict[str, float]:
             if moved[0]:
                 per_body.append(timer.frames[-1]["sync-out"] * 1000.0 / moved[0])
     finally:
-        simulation.write_rows = inner
+        simulation.write_poses = inner
         measured.close()
     return {
         "sync_out_us": statistics.median(per_body) if per_body else float("nan"),

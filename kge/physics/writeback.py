@@ -32,53 +32,48 @@ Components = tuple[np.ndarray, np.ndarray]
 class Targets:
     """The Transform and RigidBody of every pose-table slot (rebuilt with the table)."""
 
-    __slots__ = ("_lists", "complete", "rigidbodies", "transforms")
+    __slots__ = ("rigidbodies", "transforms")
 
     def __init__(self, transforms: list[Any], rigidbodies: list[Any]) -> None:
-        self._lists = (list(transforms), list(rigidbodies))
         self.transforms = component_array(transforms)
         self.rigidbodies = component_array(rigidbodies)
-        #: every slot has both components: the all-moved write needs no gather at all
-        self.complete = bool(self.transforms[1].all() and self.rigidbodies[1].all())
 
 
-def write_rows(
-    targets: Targets, moved: np.ndarray | None, new: np.ndarray, velocities: bool = True
-) -> None:
-    """Write rows ``new`` to the components of the ``moved`` slots (None: every slot).
-
-    The caller passes only rows that changed, and ``velocities=False`` when no
-    velocity among them did (bodies drifting at constant velocity, with no
-    gravity): then only the Transforms are written. Finer masks per half cost
-    more numpy calls than the stores they would save.
-    """
-    if targets.complete:
-        if moved is None:
-            tfs, rbs = targets._lists
-        else:
-            tfs = targets.transforms[0][moved].tolist()
-            rbs = targets.rigidbodies[0][moved].tolist() if velocities else []
-        if velocities:
-            x, y, a, vx, vy, w = new.T.tolist()
-        else:
-            x, y, a = new[:, :3].T.tolist()
-    else:
-        if moved is None:
-            moved = np.arange(len(new))
-        (tf_objs, has_tf), (rb_objs, has_rb) = targets.transforms, targets.rigidbodies
-        sel = has_tf[moved]
-        tfs = tf_objs[moved[sel]].tolist()
-        x, y, a = new[sel, :3].T.tolist()
-        if velocities:
-            sel = has_rb[moved]
-            rbs = rb_objs[moved[sel]].tolist()
-            vx, vy, w = new[sel, 3:6].T.tolist()
+def write_poses(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:
+    """Write columns x, y, angle of rows ``new`` to the Transforms of the ``moved``
+    slots (None: every slot, ``new`` in slot order)."""
+    tfs, x, y, a = _columns(targets.transforms, 0, moved, new)
     _set_all(_SET_X, tfs, x)
     _set_all(_SET_Y, tfs, y)
     _set_all(_SET_ANGLE, tfs, a)
-    if velocities:
-        _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
-        _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
+
+
+def write_velocities(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:
+    """Write columns vx, vy, w of rows ``new`` to the RigidBodies of the ``moved``
+    slots (None: every slot, ``new`` in slot order)."""
+    rbs, vx, vy, w = _columns(targets.rigidbodies, 3, moved, new)
+    _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
+    _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
+
+
+def _columns(
+    components: Components, first: int, moved: np.ndarray | None, new: np.ndarray
+) -> tuple[list[Any], list[float], list[float], list[float]]:
+    """The components to write and their three columns from ``first`` on, as lists.
+
+    No mask when every slot has a component (the usual case); the object gather is
+    skipped when every slot is written.
+    """
+    objs, has = components
+    if has.all():
+        chosen = objs.tolist() if moved is None else objs[moved].tolist()
+        c0, c1, c2 = new[:, first:first + 3].T.tolist()
+        return chosen, c0, c1, c2
+    if moved is None:
+        moved = np.arange(len(new))
+    sel = has[moved]
+    c0, c1, c2 = new[sel, first:first + 3].T.tolist()
+    return objs[moved[sel]].tolist(), c0, c1, c2
 
 
 def component_array(items: list[Any]) -> Components:
