@@ -39,6 +39,7 @@ import numpy as np
 
 from kge.app import App
 from kge.gym.errors import InvalidActionError, InvalidSeedError, ObservationError, ResetNeededError
+from kge.gym.holder import AppHolder
 from kge.platform import has_display
 from kge.plugin import PluginLike
 from kge.world import World
@@ -84,7 +85,7 @@ def check_seed(env_name: str, seed: Any) -> int | None:
     return int(seed)
 
 
-class KgeEnv(gym.Env[Any, Any]):
+class KgeEnv(AppHolder, gym.Env[Any, Any]):
     """A kge scene driven by Gymnasium's ``reset`` / ``step`` protocol.
 
     Pass ``build``, ``act``, ``observe``, ``reward`` and ``terminated`` as functions,
@@ -188,16 +189,6 @@ class KgeEnv(gym.Env[Any, Any]):
         spec = getattr(self, "spec", None)
         return spec.id if spec is not None else type(self).__name__
 
-    @property
-    def app(self) -> App:
-        """The kge App running the scene (created by the first ``reset``)."""
-        if self._app is None:
-            raise ResetNeededError(f"{self.env_name}: call reset() before using the App")
-        return self._app
-
-    @property
-    def world(self) -> World:
-        return self.app.world
 
     def _setup(self, world: World) -> None:
         self.build(world, self.np_random)

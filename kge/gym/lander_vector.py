@@ -45,7 +45,8 @@ from kge.app import App
 from kge.components import RigidBody, Transform
 from kge.components.camera import Camera
 from kge.gym.env import env_plugins
-from kge.gym.errors import ObservationError, ResetNeededError
+from kge.gym.errors import ObservationError
+from kge.gym.holder import AppHolder
 from kge.gym.lunar_lander import (
     FPS,
     SCALE,
@@ -76,7 +77,7 @@ SPACING = 32.0
 HULL = -1
 
 
-class LunarLanderVector(BatchVectorEnv):
+class LunarLanderVector(AppHolder, BatchVectorEnv):
     """``num_envs`` LunarLanders sharing one kge world (``make_vec``'s default)."""
 
     def __init__(
@@ -119,15 +120,6 @@ class LunarLanderVector(BatchVectorEnv):
         self.awake = np.ones(n, np.bool_)
 
     # -- the shared world ------------------------------------------------------------------
-    @property
-    def app(self) -> App:
-        if self._app is None:
-            raise ResetNeededError(f"{self.env_name}: call reset() before using the App")
-        return self._app
-
-    @property
-    def world(self) -> World:
-        return self.app.world
 
     def _setup(self, world: World) -> None:
         world.insert_resource(solver_settings(self.gravity))

@@ -246,3 +246,20 @@ def test_the_benchmark_floor_steps_the_same_bodies() -> None:
     for _ in range(20):
         floor.step(np.zeros(2, np.int64))
     assert hull.position.y < y0 - 0.5  # falls under gravity
+
+
+def test_app_and_world_before_reset_name_the_env() -> None:
+    envs = make_vec(LUNAR_LANDER, num_envs=2)
+    single: Any = gym.make(LUNAR_LANDER).unwrapped
+    try:
+        pairs: list[tuple[Any, str]] = [(envs, "vector of 2"), (single, LUNAR_LANDER)]
+        for env, name in pairs:
+            with pytest.raises(ResetNeededError, match=f"{name}.*call reset"):
+                env.app  # noqa: B018  (the property raises)
+            with pytest.raises(ResetNeededError, match="call reset"):
+                env.world  # noqa: B018
+        envs.reset(seed=0)
+        assert envs.world is envs.app.world
+    finally:
+        envs.close()
+        single.close()
