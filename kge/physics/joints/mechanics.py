@@ -111,3 +111,20 @@ def move_cog(cb: Any, lx: float, ly: float, cx: float, cy: float, angle: float) 
     _set_angle(cb, angle)
     c, s = _cos(angle), _sin(angle)
     _set_position(cb, (cx - (c * lx - s * ly), cy - (s * lx + c * ly)))
+
+
+def push_apart(
+    a: tuple[Any, Any, Any, float, float, float, float],
+    b: tuple[Any, Any, Any, float, float, float, float],
+    px: float, py: float,
+) -> None:
+    """Box2D's position impulse ``P = (px, py)``: ``-P`` on body a, ``+P`` on body b.
+
+    Each side is (Chipmunk body, local centre of gravity, its world position, inverse
+    mass, inverse inertia, lever x, lever y); a side with no inverse mass or inertia
+    (static, kinematic) stays where it is.
+    """
+    for (cb, lo, g, im, ii, rx, ry), sign in ((a, -1.0), (b, 1.0)):
+        if im or ii:
+            move_cog(cb, lo.x, lo.y, g.x + sign * im * px, g.y + sign * im * py,
+                     _get_angle(cb) + sign * ii * cross(rx, ry, px, py))

@@ -23,8 +23,8 @@ from kge.physics.joints.mechanics import (
     cog_world,
     cross,
     inv_mass,
-    move_cog,
     point_mass,
+    push_apart,
     shift,
 )
 from kge.physics.joints.rows import Row, merge
@@ -82,12 +82,7 @@ def project_gap(a: pymunk.Body, b: pymunk.Body, pax: float, pay: float, pbx: flo
     px = -(k22 * cx - k12 * cy) / det
     py = -(-k12 * cx + k11 * cy) / det
     # P at pb on b, -P at pa on a
-    if ima or iia:
-        move_cog(ca, loa.x, loa.y, ga.x - ima * px, ga.y - ima * py,
-                 _get_angle(ca) - iia * cross(rax, ray, px, py))
-    if imb or iib:
-        move_cog(cb, lob.x, lob.y, gb.x + imb * px, gb.y + imb * py,
-                 _get_angle(cb) + iib * cross(rbx, rby, px, py))
+    push_apart((ca, loa, ga, ima, iia, rax, ray), (cb, lob, gb, imb, iib, rbx, rby), px, py)
     return n
 
 

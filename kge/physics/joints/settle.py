@@ -36,7 +36,7 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk import lib
 
-from kge.physics.joints.mechanics import DYNAMIC, cross, inv_mass, journal, move_cog
+from kge.physics.joints.mechanics import DYNAMIC, cross, inv_mass, journal, push_apart
 from kge.physics.joints.positions import LINEAR_SLOP, MAX_CORRECTION
 
 #: Box2D's b2_baumgarte: the fraction of a contact's overlap removed per pass
@@ -102,12 +102,7 @@ class ContactPoint:
             return separation
         impulse = -correction / k
         jx, jy = impulse * nx, impulse * ny
-        if ima or iia:
-            move_cog(ca, loa.x, loa.y, ga.x - ima * jx, ga.y - ima * jy,
-                     _get_angle(ca) - iia * cross(rax, ray, jx, jy))
-        if imb or iib:
-            move_cog(cb, lob.x, lob.y, gb.x + imb * jx, gb.y + imb * jy,
-                     _get_angle(cb) + iib * cross(rbx, rby, jx, jy))
+        push_apart((ca, loa, ga, ima, iia, rax, ray), (cb, lob, gb, imb, iib, rbx, rby), jx, jy)
         return separation
 
 
