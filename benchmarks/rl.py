@@ -231,7 +231,7 @@ def measure(sizes: tuple[int, ...] = SIZES, env_steps: int = 4000,
 PARTS = (
     ("scene resets: despawn + spawn (and the physics sync they trigger)", "lander_vector.py",
      "_respawn", None),
-    ("engine impulses (Physics.apply_linear_impulse per firing engine)", "lunar_lander.py",
+    ("engine impulses (numpy geometry, one Physics.apply_linear_impulses)", "lunar_lander.py",
      "fire", None),
     ("physics sync-in (pending changes into pymunk)", "simulation.py", "sync_in", "step"),
     ("joints before the step (per joint Python)", "joint_bridge.py", "before_step", "step"),
