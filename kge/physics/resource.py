@@ -220,15 +220,19 @@ class Physics:
         recs = [self._record(e, "apply_linear_impulses") for e in ents]
         new = bulk.new_velocities(owner, [r.body for r in recs], ents, jj, pp)
         done: set[int] = set()
+        try_get = self._world.try_get
         for e, rec in zip(ents, recs, strict=True):
             body = rec.body
-            if body.id in done or self._force_target(e, "apply_linear_impulses", wake) is None:
+            if body.id in done or self._force_target(e, "apply_linear_impulses", wake, rec) is None:
                 continue
             done.add(body.id)
             vx, vy, w = (flush(x) for x in new[body.id])  # see kge.physics.tiny
-            body.velocity = (vx, vy)
-            body.angular_velocity = w
-            self._velocity_changed(e, body)
+            _set_velocity(body._body, (vx, vy))
+            _set_angular_velocity(body._body, w)
+            rb = try_get(e, RigidBody)
+            if rb is not None:
+                raw_set(rb, "velocity", (vx, vy))
+                raw_set(rb, "angular_velocity", w)
 
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
         """Change the angular velocity at once by ``impulse / inertia``."""
