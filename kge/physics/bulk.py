@@ -25,6 +25,8 @@ buffer: they are valid until the next :meth:`BodyReader.read` of the same reader
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pymunk
 import pymunk.batch as pb
@@ -65,12 +67,10 @@ class BodyReader:
 
     def read(self, space: pymunk.Space) -> tuple[np.ndarray, np.ndarray]:
         """(ids, rows): body ids (empty unless asked for) and an (n, width) float view."""
-        floats, ints = self._floats, self._ints
-        floats.num = 0
-        ints.num = 0
-        _lib.cpSpaceEachBody(space._space, _ITERATOR, self._data)
-        rows = np.frombuffer(_ffi.buffer(floats.arr, _FLOAT * floats.num), dtype=np.float64)
+        self._fill(space)
+        rows = np.frombuffer(self._float_bytes(), dtype=np.float64)
         if self.with_ids:
+            ints = self._ints
             ids = np.frombuffer(_ffi.buffer(ints.arr, _INT * ints.num), dtype=np.int64)
         else:
             ids = _NO_IDS
@@ -82,11 +82,16 @@ class BodyReader:
         For a few bodies, Python's ``max``/``min`` over this beat numpy's reductions,
         whose fixed cost is a microsecond each.
         """
-        floats, ints = self._floats, self._ints
-        floats.num = 0
-        ints.num = 0
+        self._fill(space)
+        return memoryview(self._float_bytes()).cast("d")
+
+    def _fill(self, space: pymunk.Space) -> None:
+        self._floats.num = 0
+        self._ints.num = 0
         _lib.cpSpaceEachBody(space._space, _ITERATOR, self._data)
-        return memoryview(_ffi.buffer(floats.arr, _FLOAT * floats.num)).cast("d")
+
+    def _float_bytes(self) -> Any:
+        return _ffi.buffer(self._floats.arr, _FLOAT * self._floats.num)
 
 
 _NO_IDS = np.empty(0, dtype=np.int64)

@@ -69,6 +69,24 @@ def _rows(owner: str, name: str, value: Any, n: int) -> np.ndarray:
     return arr
 
 
+def velocity_of(cb: Any) -> list[float]:
+    """``[vx, vy, w]`` of the Chipmunk body ``cb``."""
+    v = _get_velocity(cb)
+    return [v.x, v.y, _get_angular_velocity(cb)]
+
+
+def push(cb: Any, v: list[float], jx: float, jy: float, at: Sequence[float] | None) -> None:
+    """Add the impulse ``(jx, jy)`` at world point ``at`` (None: the centre of mass) to
+    ``v = [vx, vy, w]`` of the Chipmunk body ``cb``; a body that cannot turn keeps ``w``."""
+    m, i = _get_mass(cb), _get_moment(cb)
+    v[0] += jx / m
+    v[1] += jy / m
+    if math.isfinite(i):
+        c = _local_to_world(cb, _get_cog(cb))
+        px, py = (c.x, c.y) if at is None else at
+        v[2] += ((px - c.x) * jy - (py - c.y) * jx) / i
+
+
 def new_velocities(
     owner: str, bodies: Sequence[Any], entities: Sequence[int],
     impulses: np.ndarray, points: np.ndarray | None,
@@ -79,19 +97,11 @@ def new_velocities(
     at = None if points is None else points.tolist()
     for k, body in enumerate(bodies):
         cb = body._body
-        key = body.id
-        v = out.get(key)
+        v = out.get(body.id)
         if v is None:
-            vel = _get_velocity(cb)
-            v = out[key] = [vel.x, vel.y, _get_angular_velocity(cb)]
+            v = out[body.id] = velocity_of(cb)
         jx, jy = rows[k]
-        m, i = _get_mass(cb), _get_moment(cb)
-        v[0] += jx / m
-        v[1] += jy / m
-        if at is not None and math.isfinite(i):
-            c = _local_to_world(cb, _get_cog(cb))
-            px, py = at[k]
-            v[2] += ((px - c.x) * jy - (py - c.y) * jx) / i
+        push(cb, v, jx, jy, None if at is None else at[k])
         if not (math.isfinite(v[0]) and math.isfinite(v[1]) and math.isfinite(v[2])):
             raise ValidationError(
                 f"{owner}: the velocity of entity {entities[k]} after impulses[{k}] would not "

@@ -27,6 +27,7 @@ from pymunk._chipmunk import lib
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
 from kge.errors import EntityNotFoundError, ValidationError, where
+from kge.physics import impulses as impulses_mod
 from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.events import PhysicsEvents
@@ -42,14 +43,8 @@ if TYPE_CHECKING:
 Vec2 = tuple[float, float]
 Pose = tuple[float, float, float]
 
-_local_to_world = lib.cpBodyLocalToWorld
-_get_cog = lib.cpBodyGetCenterOfGravity
-_get_velocity = lib.cpBodyGetVelocity
 _set_velocity = lib.cpBodySetVelocity
-_get_angular_velocity = lib.cpBodyGetAngularVelocity
 _set_angular_velocity = lib.cpBodySetAngularVelocity
-_get_mass = lib.cpBodyGetMass
-_get_moment = lib.cpBodyGetMoment
 
 
 class Physics:
@@ -180,25 +175,14 @@ class Physics:
         at = None if point is None else vec2(point, owner, "point")  # before any change
         rec = self._record(entity, "apply_linear_impulse")
         cb = rec.body._body
-        c = _local_to_world(cb, _get_cog(cb))
-        px, py = (c.x, c.y) if at is None else at
-        v = _get_velocity(cb)
-        m, i = _get_mass(cb), _get_moment(cb)
-        vx, vy = v.x + jx / m, v.y + jy / m
-        w = _get_angular_velocity(cb)
-        if math.isfinite(i):
-            w += ((px - c.x) * jy - (py - c.y) * jx) / i
+        v = impulses_mod.velocity_of(cb)
+        impulses_mod.push(cb, v, jx, jy, at)
+        vx, vy, w = v
         if not (math.isfinite(vx) and math.isfinite(vy) and math.isfinite(w)):
             _finite_result(owner, "the resulting velocity", (vx, vy, w))
         if self._force_target(entity, "apply_linear_impulse", wake, rec) is None:
             return
-        vx, vy, w = flush(vx), flush(vy), flush(w)  # see kge.physics.tiny
-        _set_velocity(cb, (vx, vy))
-        _set_angular_velocity(cb, w)
-        rb = self._world.try_get(entity, RigidBody)
-        if rb is not None:
-            raw_set(rb, "velocity", (vx, vy))
-            raw_set(rb, "angular_velocity", w)
+        self._write_velocity(entity, cb, vx, vy, w)
 
     def apply_linear_impulses(
         self, entities: Any, impulses: Any, points: Any = None, wake: bool = True
@@ -213,26 +197,27 @@ class Physics:
 
         >>> # physics.apply_linear_impulses([ship, rock], [(0, 5), (1, 0)], [(0, -1), (2, 2)])
         """
-        from kge.physics import impulses as bulk
-
         owner = "Physics.apply_linear_impulses"
-        ents, jj, pp = bulk.checked_rows(owner, entities, impulses, points)
+        ents, jj, pp = impulses_mod.checked_rows(owner, entities, impulses, points)
         recs = [self._record(e, "apply_linear_impulses") for e in ents]
-        new = bulk.new_velocities(owner, [r.body for r in recs], ents, jj, pp)
+        new = impulses_mod.new_velocities(owner, [r.body for r in recs], ents, jj, pp)
         done: set[int] = set()
-        try_get = self._world.try_get
         for e, rec in zip(ents, recs, strict=True):
             body = rec.body
             if body.id in done or self._force_target(e, "apply_linear_impulses", wake, rec) is None:
                 continue
             done.add(body.id)
-            vx, vy, w = (flush(x) for x in new[body.id])  # see kge.physics.tiny
-            _set_velocity(body._body, (vx, vy))
-            _set_angular_velocity(body._body, w)
-            rb = try_get(e, RigidBody)
-            if rb is not None:
-                raw_set(rb, "velocity", (vx, vy))
-                raw_set(rb, "angular_velocity", w)
+            self._write_velocity(e, body._body, *new[body.id])
+
+    def _write_velocity(self, entity: int, cb: Any, vx: float, vy: float, w: float) -> None:
+        """Give Chipmunk's body ``cb`` and the entity's RigidBody this velocity (flushed)."""
+        vx, vy, w = flush(vx), flush(vy), flush(w)  # see kge.physics.tiny
+        _set_velocity(cb, (vx, vy))
+        _set_angular_velocity(cb, w)
+        rb = self._world.try_get(entity, RigidBody)
+        if rb is not None:
+            raw_set(rb, "velocity", (vx, vy))
+            raw_set(rb, "angular_velocity", w)
 
     def apply_angular_impulse(self, entity: int, impulse: float, wake: bool = True) -> None:
         """Change the angular velocity at once by ``impulse / inertia``."""

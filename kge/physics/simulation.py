@@ -59,8 +59,7 @@ from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_poses, write_velocities
 from kge.world import World
 
-_EQUAL = np.equal
-#: below this many rows, velocities of all changed rows are written without a mask
+#: up to this many rows (every slot moved), all velocities are written without a mask
 _FEW = 32
 #: bodies changed in one sync-in above which the cyclic collector waits until they are done
 _BULK = 64
@@ -791,13 +790,11 @@ class Simulation:
         if maybe_over(rows[:, 3:6], vmax, wmax):
             self._cap_rows(slots, rows, vmax, wmax)
         state = poses.state
-        if poses.full:
-            # ``rows`` is a fresh gather in slot order: it becomes the state as it is
-            poses.prev[:] = state[:, :3]
+        poses.prev[:] = state[:, :3]
+        if poses.full:  # ``rows`` is a fresh gather in slot order: it becomes the state
             old = state
             poses.state = rows
         else:
-            poses.prev[:] = state[:, :3]
             old = state[slots]
             state[slots] = rows
         changed = rows_differ(rows, old)
@@ -842,19 +839,14 @@ class Simulation:
         it ignores). Only rows that changed are written: a sleeper's RigidBody holds
         zero while its row keeps the speed it fell asleep at.
         """
-        v_new, v_old = rows[:, 3:6], old[:, 3:6]
-        if _EQUAL(v_new, v_old).all():
+        if (rows[:, 3:6] == old[:, 3:6]).all():
             return
-        if len(rows) > _FEW:
+        if slots is not None or len(rows) > _FEW:
             vel = columns_differ(rows, old, 3, 6)
             if not vel.all():
                 moved = np.flatnonzero(vel) if slots is None else slots[vel]
                 write_velocities(self._targets, moved, rows[vel])
                 return
-        elif slots is not None:
-            vel = columns_differ(rows, old, 3, 6)
-            write_velocities(self._targets, slots[vel], rows[vel])
-            return
         write_velocities(self._targets, slots, rows)
 
     def _cap_rows(self, slots: np.ndarray, rows: np.ndarray, vmax: float, wmax: float) -> None:

@@ -6,8 +6,10 @@ import math
 
 import pytest
 
-from kge.components.rigidbody import RigidBody
+from kge.components.collider import Collider
+from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle
+from kge.components.transform import Transform
 from kge.errors import EntityNotFoundError, ValidationError
 
 from .conftest import Sim
@@ -116,7 +118,8 @@ def test_wake_false_leaves_a_sleeping_body_asleep() -> None:
 def test_body_types_that_impulses_do_not_move() -> None:
     sim, es = _scene()
     try:
-        kin = sim.spawn(*_kinematic())
+        kin = sim.spawn(Transform(5.0, 5.0), RigidBody(type=BodyType.KINEMATIC),
+                        Collider(Box(0.5, 0.5)))
         sim.step()
         sim.physics.apply_linear_impulses([kin, es[0]], [(9.0, 0.0), (1.0, 0.0)])
         assert sim.rb(kin).velocity == (0.0, 0.0)
@@ -124,10 +127,3 @@ def test_body_types_that_impulses_do_not_move() -> None:
     finally:
         sim.close()
 
-
-def _kinematic() -> tuple[object, ...]:
-    from kge.components.collider import Collider
-    from kge.components.rigidbody import BodyType
-    from kge.components.transform import Transform
-
-    return Transform(5.0, 5.0), RigidBody(type=BodyType.KINEMATIC), Collider(Box(0.5, 0.5))

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from kge.components.collider import Collider
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle
 from kge.components.transform import Transform
@@ -44,7 +45,7 @@ def test_components_follow_bodies_through_every_sync_out_path() -> None:
             for i in range(12)
         ]
         # a wall some of them reach: their velocities change on impact (both halves)
-        sim.spawn(Transform(13.0, 0.0), _wall())
+        sim.spawn(Transform(13.0, 0.0), Collider(Box(0.5, 10.0), restitution=1.0))
         resting = sim.dynamic(Box(0.5, 0.5), x=-5.0, y=-5.0, density=1.0)  # never moves
         for step in range(240):
             sim.step()
@@ -81,8 +82,3 @@ def test_components_follow_bodies_while_a_pile_falls_asleep() -> None:
     finally:
         sim.close()
 
-
-def _wall() -> object:
-    from kge.components.collider import Collider
-
-    return Collider(Box(0.5, 10.0), restitution=1.0)

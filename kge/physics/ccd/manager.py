@@ -22,7 +22,7 @@ from kge.physics.callback_errors import CallbackErrors
 from kge.physics.ccd.obstacles import Obstacles
 from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
-from kge.physics.speed_cap import clamp_one, maybe_over
+from kge.physics.speed_cap import clamp_one, largest, maybe_over
 from kge.validate import boolean, integer, non_negative, positive
 
 #: ``pair_filter(moving_shape, other_shape) -> bool``: False = they never touch.
@@ -31,8 +31,6 @@ _ALL = pymunk.ShapeFilter()
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
 _SQRT2 = math.sqrt(2.0)
-_MAX = np.maximum.reduce
-_ABS = np.absolute
 _FIELDS = (
     pymunk.batch.BodyFields.BODY_ID
     | pymunk.batch.BodyFields.POSITION
@@ -230,7 +228,7 @@ class ContinuousCollision:
         # means no tracked body moves more than (sqrt 2 + its reach) * top * dt, and
         # when that is under the smallest threshold none is fast (a settled or slow
         # world then skips the per-body arrays below; a NaN fails the test)
-        top = float(_MAX(_ABS(vel), axis=None)) if len(vel) else 0.0
+        top = largest(vel)
         bound = (_SQRT2 + index.max_reach) * top * dt
         speed: np.ndarray | None = None
         if not bound <= self.threshold * n * index.min_core:
@@ -240,7 +238,7 @@ class ContinuousCollision:
             if len(fast):
                 self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
         untracked = self._untracked
-        if self._movers or (len(untracked) and _MAX(_ABS(vel[untracked]), axis=None) > 0.0):
+        if self._movers or largest(vel[untracked]) > 0.0:
             if speed is None:
                 speed = np.hypot(vel[:, 0], vel[:, 1])
             moving = ~known & ((speed > 0.0) | (vel[:, 2] != 0.0))
