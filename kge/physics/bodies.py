@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 import pymunk
 from pymunk._chipmunk import lib as _lib
@@ -63,7 +64,9 @@ PYMUNK_TYPE = {
 class BodyRecord:
     """One simulated body: its pymunk Body and the collider entities on it."""
 
-    __slots__ = ("body", "colliders", "enabled", "entity", "implicit", "in_space", "mass")
+    __slots__ = (
+        "applied", "body", "colliders", "enabled", "entity", "implicit", "in_space", "mass"
+    )
 
     def __init__(self, entity: int, body: pymunk.Body, implicit: bool) -> None:
         self.entity = entity
@@ -74,6 +77,9 @@ class BodyRecord:
         self.enabled = True
         self.in_space = False
         self.mass: MassData = ZERO
+        #: the RigidBody fields the mass data and continuous collision were last
+        #: built from (type, enabled, mass, fixed_rotation, bullet)
+        self.applied: tuple[Any, ...] | None = None
 
     @property
     def kge_body(self) -> int | None:
@@ -310,6 +316,12 @@ def set_mass(body: pymunk.Body, md: MassData) -> None:
 
     ``md`` comes from :func:`kge.physics.mass.dynamic_mass`: 0 < mass < inf and
     inertia > 0 (inf for no rotation), the values pymunk's setters assert.
+
+    The body's origin stays where it is and its centre of mass moves, as in Box2D's
+    ``ResetMassData`` (which also gives the centre the velocity of its new point,
+    ``v += ω × Δc``). Chipmunk does the opposite: it keeps the centre's world
+    position and its next step redraws the origin around it, so a body spawned at
+    rest with an off-centre shape jumped by its centre's offset on its first step.
     """
     cp = body._body
     cog = _lib.cpBodyGetCenterOfGravity(cp)
@@ -321,4 +333,14 @@ def set_mass(body: pymunk.Body, md: MassData) -> None:
         return  # unchanged: Chipmunk's setters would wake the body (and its island) for nothing
     _lib.cpBodySetMass(cp, md.mass)
     _lib.cpBodySetMoment(cp, md.inertia)
+    if (cog.x, cog.y) == (md.center[0], md.center[1]):
+        return
+    origin = _lib.cpBodyGetPosition(cp)  # from the transform: still the old centre's
+    old = _lib.cpBodyLocalToWorld(cp, cog)
     _lib.cpBodySetCenterOfGravity(cp, md.center)
+    _lib.cpBodySetPosition(cp, origin)  # the centre is placed from the origin again
+    w = _lib.cpBodyGetAngularVelocity(cp)
+    if w:
+        new = _lib.cpBodyLocalToWorld(cp, md.center)
+        v = _lib.cpBodyGetVelocity(cp)
+        _lib.cpBodySetVelocity(cp, (v.x - w * (new.y - old.y), v.y + w * (new.x - old.x)))

@@ -99,6 +99,7 @@ class JointBridge:
         self._checked: list[tuple[int, joint_api.JointHandle]] = []
         self._others: list[tuple[int, joint_api.JointHandle]] = []
         self._batch_live = False
+        self._others_epoch = -1
 
     # -- JointContext ----------------------------------------------------------------
     @property
@@ -230,22 +231,27 @@ class JointBridge:
         return self._ordered
 
     def _batchable(self, e: int, h: joint_api.JointHandle) -> bool:
-        """A live plain hinge: a revolute joint with no motor and no limit.
+        """A live hinge that needs no Python between substeps: a revolute joint with
+        no motor and no limit, or with pymunk solving them (``iterated_hinges``).
 
-        Motors and limits already run Python rows every substep, which dwarfs their
-        after-step work; keeping them on the per-joint path also keeps their
+        kge's own motor and limit rows run in Python every substep, which dwarfs
+        their after-step work; keeping them on the per-joint path also keeps their
         position pass in entity order, which a tumbling ragdoll is sensitive to.
+        Box2D's position iterations (``position_iterations`` above 1, kge.box2d)
+        take motors and limits per joint with the contacts, as Box2D does.
         """
         from kge.physics.joints.revolute import Revolute
 
         if not (self.batch_revolutes and type(h) is Revolute):
             return False
         j = h.settings
+        iterated = self.iterated_hinges and self.position_iterations == 1
+        if (j.enable_motor or j.enable_limit) and (not iterated or h.rotation_off):
+            return False
         return (
             h.active
             and h.suspended is None
             and h.pivot is not None
-            and not (j.enable_motor or j.enable_limit)
             and self.components.get(e) is h.component
         )
 
@@ -260,7 +266,7 @@ class JointBridge:
             for e, h in self.ordered()
             if self._batchable(e, h) and h.pivot in present  # type: ignore[attr-defined]
         ]
-        self._batch.rebuild([h for _, h in chosen])
+        self._batch.rebuild([h for _, h in chosen], self._pivot_tolerance())
         self._batched = {e for e, _ in chosen}
         # the break check skips batched joints that have no break limit
         unbreakable = {
@@ -270,6 +276,14 @@ class JointBridge:
         self._checked = [(e, h) for e, h in self.ordered() if e not in unbreakable]
         self._others = [(e, h) for e, h in self.ordered() if e not in self._batched]
         self._batch_epoch = self.types_epoch
+
+    def _pivot_tolerance(self) -> float:
+        """Pivot gaps the position pass leaves alone, m (see ``Revolute.project``)."""
+        if not self.iterated_hinges:
+            return 0.0
+        from kge.physics.joints.positions import ITERATED_PIVOT_TOLERANCE
+
+        return ITERATED_PIVOT_TOLERANCE
 
     def before_step(self, dt: float, raw: Any = None) -> None:
         """``raw``: sync-out's bulk read when nothing touched a body since (or None)."""
@@ -281,8 +295,22 @@ class JointBridge:
         else:
             for _, h in self._others:
                 h.before_step(dt)
+            if self._others and self.sim.mass_epoch != self._others_epoch:
+                # a mass update can let a body turn again (fixed_rotation off): a
+                # motor or limit hinge that left the batch for it may come back
+                self._others_epoch = self.sim.mass_epoch
+                if any(self._batchable(e, h) for e, h in self._others):
+                    self._rebuild_batch()
             if self._batched and self._batch.mass_changed(self.sim.mass_epoch):
-                self._batch.refresh_mass()
+                if self._batch.torqued:
+                    # a body that can no longer turn takes a motor or limit out
+                    # (Composite.track_rotation): such a joint leaves the batch
+                    for k in self._batch.torqued:
+                        self._batch.handles[k].before_step(dt)
+                if any(self._batch.handles[k].rotation_off for k in self._batch.torqued):
+                    self._rebuild_batch()
+                else:
+                    self._batch.refresh_mass()
         self._batch_live = bool(self._batched) and self._batch.before_step(raw)
         if self._batched and not self._batch_live:  # a body left the space: per joint
             for e, h in ordered:
@@ -388,6 +416,13 @@ class JointBridge:
             h.forget_impulses()
         for h in self.handles.values():
             if h.body_a in moved or h.body_b in moved:
+                h.forget_impulses()
+
+    def reset_impulses(self, entities: list[int]) -> None:
+        """The live joints among ``entities`` start the next step from zero impulse."""
+        for e in entities:
+            h = self.handles.get(e)
+            if h is not None:
                 h.forget_impulses()
 
     def body_removed(self, body_entity: int) -> None:

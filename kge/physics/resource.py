@@ -17,7 +17,7 @@ implemented in :mod:`kge.physics.queries` and only forwarded here.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
@@ -290,6 +290,28 @@ class Physics:
         rec = self._record(entity, "is_awake")
         body = rec.body
         return rec.in_space and body.body_type != pymunk.Body.STATIC and not body.is_sleeping
+
+    # -- joints -------------------------------------------------------------------------------
+    def reset_joints(self, entities: Iterable[int]) -> None:
+        """Let these joints start their next step from zero impulse, as new joints do.
+
+        A solver warm-starts every joint with the impulse it applied in the last
+        step (Box2D and pymunk alike), and teleporting the bodies keeps it: a
+        ragdoll put back at a checkpoint, or an RL env's lander put back at the top,
+        would begin with the push its legs last gave while standing. After this
+        call the joints carry nothing over (for one substep they apply no impulse
+        while pymunk's accumulator drains, then solve from zero). Joints not yet
+        built are unaffected (they start cold anyway); an entity with no joint
+        component is refused before any joint is touched.
+        """
+        ents = [int(e) for e in entities]
+        joints = self._sim.joints
+        for e in ents:
+            if e not in joints.components:
+                if not self._world.exists(e):
+                    raise EntityNotFoundError(f"Physics.reset_joints: entity {e} does not exist")
+                raise ValidationError(f"Physics.reset_joints: entity {e} has no joint component")
+        joints.reset_impulses(ents)
 
     # -- interpolation ------------------------------------------------------------------------
     def previous_pose(self, entity: int) -> Pose | None:

@@ -541,8 +541,14 @@ class Simulation:
                 self.poses.state[i, 3:6] = (vx, vy, w)
         configure_dynamics(body, rb, self.dt, self.substeps)
         body.kge_bullet = rb.bullet
-        self.mass_dirty.add(e)
-        self.ccd_dirty.add(e)
+        # a velocity write (a player controller's, every frame) leaves the mass data
+        # and continuous collision as they were: rebuilt only when what they are
+        # made of changed
+        applied = (rb.type, rb.enabled, rb.mass, rb.fixed_rotation, rb.bullet)
+        if applied != rec.applied:
+            rec.applied = applied
+            self.mass_dirty.add(e)
+            self.ccd_dirty.add(e)
         if rb.allow_sleep:
             self.no_sleep.discard(e)
         else:
@@ -650,8 +656,10 @@ class Simulation:
         x, y, angle = flush(t.x), flush(t.y), flush(t.angle)
         if (p.x, p.y, body.angle) == (x, y, angle):
             return
-        body.position = (x, y)
+        # angle first: Chipmunk turns a body about its centre of gravity, so setting
+        # the origin and then the angle would move the origin off the pose again
         body.angle = angle
+        body.position = (x, y)
         if body.body_type == STATIC and rec.in_space:
             self.space.reindex_shapes_for_body(body)
         self.poses.teleported(e, t.x, t.y, t.angle)

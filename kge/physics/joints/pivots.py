@@ -23,7 +23,16 @@ the same work over all of them at once:
   with no motor and no limit are zero and are written once. The angle is read
   after the whole pass, so it matches the final poses exactly.
 
-Joints with a motor or a limit stay on the per-joint path (see
+Hinges with a motor or a limit join the batch when pymunk solves those in its
+iterations (``PhysicsSettings.iterated_hinges``, the Box2D-style setting kge.gym's
+LunarLander uses: its 128 legs at N = 64 took a fifth of an env step on the
+per-joint path). Their position pass is the per-joint one's: within each colour,
+the limits first (Box2D's angular projection back to within b2_angularSlop, at
+most 8° per step), then the points; gaps under ``ITERATED_PIVOT_TOLERANCE`` are
+left alone in such worlds, so a leg held on its limit does not wake. Their motor
+and limit torques are read from pymunk's constraints as columns. With the other
+setting the motor and limit rows run in Python every substep, which dwarfs the
+after-step work, and those joints stay on the per-joint path (see
 ``JointBridge._batchable``).
 
 Mass data is reloaded when a body's ``BodyRecord.mass`` object changes (the
@@ -45,7 +54,11 @@ from pymunk._chipmunk import lib
 from kge.components.tracked import raw_set
 from kge.physics.joints.base import JOLT
 from kge.physics.joints.mechanics import inv_mass, is_dynamic
-from kge.physics.joints.positions import MAX_CORRECTION
+from kge.physics.joints.positions import (
+    ANGULAR_SLOP,
+    MAX_ANGULAR_CORRECTION,
+    MAX_CORRECTION,
+)
 from kge.physics.sync import FIELDS  # the same columns sync-out reads
 
 if TYPE_CHECKING:
@@ -84,7 +97,7 @@ def colour(pairs: list[tuple[int, int]], movable: list[bool]) -> list[int]:
 
 
 class PivotBatch:
-    """The plain revolute joints (no motor, no limit) of one space, handled together.
+    """The revolute joints of one space that need no Python between substeps, together.
 
     Poses are complex numbers here (origin ``x + iy``, rotation ``e^{iθ}``), which
     turns each rotate-and-add of the position pass into one numpy operation.
@@ -107,11 +120,19 @@ class PivotBatch:
         #: the largest anchor gap the last position pass found, m
         self.v0: np.ndarray | None = None
         self._mass_epoch = -1
+        self.tolerance = 1e-9
+        self.torqued: list[int] = []
+        self.breakable: list[int] = []
 
     # -- structure ------------------------------------------------------------------
-    def rebuild(self, handles: list[Revolute]) -> None:
-        """Take ``handles`` (live revolute joints whose bodies are in the space)."""
+    def rebuild(self, handles: list[Revolute], tolerance: float = 0.0) -> None:
+        """Take ``handles`` (live revolute joints whose bodies are in the space).
+
+        ``tolerance``: pivot gaps below it are not projected (m; see
+        ``ITERATED_PIVOT_TOLERANCE``).
+        """
         self._clear()
+        self.tolerance = max(tolerance, 1e-9)
         static = self.space.static_body
         slot: dict[pymunk.Body, int] = {static: 0}
         bodies = [static]
@@ -129,11 +150,32 @@ class PivotBatch:
             pairs.append((ends[0], ends[1]))
         self.handles = list(handles)
         self.components = comps = [h.component for h in handles]
+        sets = [h.settings for h in handles]
+        #: joints with a motor or a limit (pymunk's SimpleMotor / RotaryLimitJoint)
+        self.motors = [k for k, j in enumerate(sets) if j.enable_motor]
+        self.limits = [k for k, j in enumerate(sets) if j.enable_limit]
+        self.torqued = sorted({*self.motors, *self.limits})
+        self._motor_cs = [handles[k].motor._constraint for k in self.motors]  # type: ignore[union-attr]
+        self._limit_cs = [handles[k].limit._constraint for k in self.limits]  # type: ignore[union-attr]
+        where = {k: i for i, k in enumerate(self.torqued)}
+        self._motor_rows = np.array([where[k] for k in self.motors], dtype=np.intp)
+        self._limit_rows = np.array([where[k] for k in self.limits], dtype=np.intp)
+        self._torqued_comps = [comps[k] for k in self.torqued]
         # the torques of a joint with no motor and no limit are zero: written once here
-        for h, j in zip(handles, comps, strict=True):
-            raw_set(j, "motor_torque", 0.0)
-            raw_set(j, "reaction_torque", 0.0)
-            h._torque = 0.0
+        plain = np.ones(len(handles), dtype=bool)
+        plain[self.torqued] = False
+        for k in np.flatnonzero(plain).tolist():
+            raw_set(comps[k], "motor_torque", 0.0)
+            raw_set(comps[k], "reaction_torque", 0.0)
+            handles[k]._torque = 0.0
+        #: the limits, widened by b2_angularSlop (the position pass leaves that much)
+        limited = np.zeros(len(handles), dtype=bool)
+        limited[self.limits] = True
+        self.limited = limited
+        self.lower = np.array([j.lower_angle - ANGULAR_SLOP if j.enable_limit else 0.0
+                               for j in sets])
+        self.upper = np.array([j.upper_angle + ANGULAR_SLOP if j.enable_limit else 0.0
+                               for j in sets])
         #: joints with a break limit: their reaction size is kept for the break check
         self.breakable = [
             k for k, j in enumerate(comps)
@@ -145,7 +187,8 @@ class PivotBatch:
         self._slots = (
             None
             if kind is None
-            else {f: getattr(kind, f).__set__ for f in ("angle", "speed", "reaction_force")}
+            else {f: getattr(kind, f).__set__ for f in ("angle", "speed", "reaction_force",
+                                                        "motor_torque", "reaction_torque")}
         )
         self.pivots = [h.pivot._constraint for h in handles]  # type: ignore[union-attr]
         self.bodies = bodies
@@ -196,8 +239,17 @@ class PivotBatch:
                 if len(s) == len(side):
                     keep = None  # all of them: no gather needed
                 sides.append((keep, s, sgn * im[s], sgn * ii[s], cog[s]))
+            lim = np.flatnonzero(self.limited[idx])
+            lim = lim[ii[a[lim]] + ii[b[lim]] > 0.0]  # neither body can turn: nothing to do
+            la_, lb_ = a[lim], b[lim]
+            turning = ii[la_] + ii[lb_]
+            limit = (
+                None if not len(lim)
+                else (la_, lb_, self.ref[idx[lim]], self.lower[idx[lim]], self.upper[idx[lim]],
+                      ii[la_] / turning, ii[lb_] / turning, cog[la_], cog[lb_])
+            )
             self.passes.append((
-                idx, a, b,
+                limit, idx, a, b,
                 self.la[idx] - cog[a], self.lb[idx] - cog[b],  # anchors from the centres
                 cog[a], cog[b],
                 im[a] + im[b], ii[a], ii[b],
@@ -269,7 +321,10 @@ class PivotBatch:
         t = state[:, 2].copy()
         moved = np.zeros(len(self.bodies), dtype=bool)
         jolted: list[int] = []
-        for jidx, a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
+        tol = self.tolerance
+        for limit, jidx, a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
+            if limit is not None:
+                self._limits(limit, pos, t, moved)
             ea, eb = np.exp(1j * t[a]), np.exp(1j * t[b])
             ra, rb = ea * da, eb * db  # lever arms from the centres of gravity
             ga, gb = pos[a] + ea * ca, pos[b] + eb * cb  # centres of gravity
@@ -289,11 +344,11 @@ class PivotBatch:
             k22 = msum + iax * rax + ibx * rbx
             det = k11 * k22 - k12 * k12
             cx, cy = c.real, c.imag
-            if n.min() >= 1e-9 and np.abs(det).min() >= 1e-12:
+            if n.min() >= tol and np.abs(det).min() >= 1e-12:
                 ok = None
                 p = ((k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)) / det
             else:
-                ok = (n >= 1e-9) & (np.abs(det) >= 1e-12)
+                ok = (n >= tol) & (np.abs(det) >= 1e-12)
                 if not ok.any():
                     continue
                 inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
@@ -305,13 +360,14 @@ class PivotBatch:
                     continue
                 else:
                     q, rr, gk = p[keep], r[keep], g[keep]
+                if ok is not None:  # only the joints to correct move their bodies
+                    sel = ok if keep is None else ok[keep]
+                    s, q, rr, gk, sim, sii, cog = (s[sel], q[sel], rr[sel], gk[sel],
+                                                   sim[sel], sii[sel], cog[sel])
                 na = t[s] + sii * (rr.real * q.imag - rr.imag * q.real)
                 pos[s] = gk + sim * q - np.exp(1j * na) * cog
                 t[s] = na
-                if ok is None:
-                    moved[s] = True
-                else:
-                    moved[s[ok if keep is None else ok[keep]]] = True
+                moved[s] = True
         idx = np.flatnonzero(moved)
         if not len(idx):
             return jolted
@@ -324,11 +380,36 @@ class PivotBatch:
             _set_position(body, (x, y))
         return jolted
 
+    @staticmethod
+    def _limits(limit: tuple[Any, ...], pos: np.ndarray, t: np.ndarray,
+                moved: np.ndarray) -> None:
+        """Box2D's angular limit projection for one colour's limited joints: each
+        hinge angle outside its (slop-widened) range turns both bodies about their
+        centres of gravity, shared by inverse inertia, by at most 8° per step."""
+        a, b, ref, lower, upper, fa, fb, ca, cb = limit
+        angle = t[b] - t[a] - ref
+        error = np.where(angle < lower, angle - lower, np.where(angle > upper, angle - upper, 0.0))
+        out = np.flatnonzero(error)
+        if not len(out):
+            return
+        error = np.clip(error[out], -MAX_ANGULAR_CORRECTION, MAX_ANGULAR_CORRECTION)
+        for s, turn, cog in ((a[out], fa[out] * error, ca[out]),
+                             (b[out], -fb[out] * error, cb[out])):
+            live = np.flatnonzero(turn)  # a body that cannot turn stays put
+            if not len(live):
+                continue
+            s, turn, cog = s[live], turn[live], cog[live]
+            g = pos[s] + np.exp(1j * t[s]) * cog  # turn about the centre of gravity
+            t[s] = t[s] + turn
+            pos[s] = g - np.exp(1j * t[s]) * cog
+            moved[s] = True
+
     # -- read-back ------------------------------------------------------------------------
     def read_back(self, state: np.ndarray, dt: float, step_time: float, gravity: Any) -> None:
-        """Write angle, speed and reactions into every joint's component.
+        """Write angle, speed, reactions and torques into every joint's component.
 
-        The joints have no motor and no limit, so their torques are zero.
+        The torques of joints with no motor and no limit are zero (written at
+        ``rebuild``); the others' are pymunk's last substep impulses over its time.
         """
         t, w = state[:, 2], state[:, 5]
         ia, ib = self.ia, self.ib
@@ -360,10 +441,39 @@ class PivotBatch:
             _drain(map(raw_set, comps, repeat("angle"), angle))
             _drain(map(raw_set, comps, repeat("speed"), speed))
             _drain(map(raw_set, comps, repeat("reaction_force"), reaction))
+        torque = self._torques(step_time) if self.torqued else None
         if self.breakable:
             hs = self.handles
             for k in self.breakable:
                 hs[k]._force = float(force[k])
+            if torque is not None:
+                where = dict(zip(self.torqued, np.abs(torque).tolist(), strict=True))
+                for k in self.breakable:
+                    hs[k]._torque = where.get(k, 0.0)
+
+    def _torques(self, step_time: float) -> np.ndarray:
+        """Write the motor and limit torques (Box2D's sign: on body B) of the joints
+        that have them; returns the limit torques (the break check's)."""
+        n = len(self.torqued)
+        motor, limit = np.zeros(n), np.zeros(n)
+        scale = -1.0 / step_time
+        if self._motor_cs:
+            motor[self._motor_rows] = np.fromiter(
+                map(_get_impulse, self._motor_cs), dtype=float, count=len(self._motor_cs))
+            motor *= scale
+        if self._limit_cs:
+            limit[self._limit_rows] = np.fromiter(
+                map(_get_impulse, self._limit_cs), dtype=float, count=len(self._limit_cs))
+            limit *= scale
+        comps = self._torqued_comps
+        slots = self._slots
+        if slots is not None:
+            _drain(map(slots["motor_torque"], comps, motor.tolist()))
+            _drain(map(slots["reaction_torque"], comps, limit.tolist()))
+        else:
+            _drain(map(raw_set, comps, repeat("motor_torque"), motor.tolist()))
+            _drain(map(raw_set, comps, repeat("reaction_torque"), limit.tolist()))
+        return limit
 
 def _drain(it: Any) -> None:
     """Run an iterator of side effects at C speed."""

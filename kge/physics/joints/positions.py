@@ -40,6 +40,11 @@ _get_angle = lib.cpBodyGetAngle
 LINEAR_SLOP = 0.005
 #: Box2D's b2_maxLinearCorrection: the most a position pass moves per step, m
 MAX_CORRECTION = 0.2
+#: Box2D's b2_angularSlop (2°): the limit overshoot its position iterations settle for
+ANGULAR_SLOP = math.radians(2.0)
+#: iterated hinges: pivot gaps below this (a tenth of b2_linearSlop) are not projected,
+#: m: moving a body wakes it (pymunk), and a motor holding a load leaves such a gap
+ITERATED_PIVOT_TOLERANCE = 0.0005
 #: Box2D's b2_maxAngularCorrection (8°): the most an angle is corrected per step, rad
 MAX_ANGULAR_CORRECTION = math.radians(8.0)
 #: an error (m or rad) below which the scalar passes (sliders, gears) leave a joint

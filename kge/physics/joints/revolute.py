@@ -26,8 +26,10 @@ from pymunk._chipmunk import lib
 from kge.components.joints import RevoluteJoint
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
-from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
+from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite, in_space
 from kge.physics.joints.positions import (
+    ANGULAR_SLOP,
+    ITERATED_PIVOT_TOLERANCE,
     LINEAR_SLOP,
     MAX_ANGULAR_CORRECTION,
     MAX_CORRECTION,
@@ -41,12 +43,8 @@ _get_angular_velocity = lib.cpBodyGetAngularVelocity
 _get_impulse = lib.cpConstraintGetImpulse
 _local_to_world = lib.cpBodyLocalToWorld
 
-#: Box2D's b2_angularSlop (2°)
-ANGULAR_SLOP = math.radians(2.0)
 #: iterated hinges: the limit's largest push-back speed, rad/s
 ITERATED_LIMIT_BIAS = 0.1
-#: iterated hinges: pivot gaps below this (a tenth of b2_linearSlop) are not projected, m
-ITERATED_PIVOT_TOLERANCE = 0.0005
 
 
 class Revolute(Composite):
@@ -160,19 +158,27 @@ class Revolute(Composite):
         self.jolt(gap, MAX_CORRECTION)
         return gap <= LINEAR_SLOP and angular <= ANGULAR_SLOP
 
+    def _impulse(self, c: pymunk.Constraint | None) -> float:
+        """pymunk's last impulse of ``c``; 0 while it is switched off (as when neither
+        body can turn: ``track_rotation``), whatever it held before."""
+        if c is None or not in_space(self.space, c):
+            return 0.0
+        return float(_get_impulse(c._constraint))
+
     def read_live(self, j: Any, dt: float) -> None:
         ca, cb = self.a._body, self.b._body
         raw_set(j, "angle", float(_get_angle(cb) - _get_angle(ca) - self.ref))
         raw_set(j, "speed", float(_get_angular_velocity(cb) - _get_angular_velocity(ca)))
+        h = self.h
         if self.ctx.iterated_hinges:
-            # pymunk's impulse is the last substep's; Box2D's sign (torque on body b)
-            if self.motor is not None and j.enable_motor:
-                self.motor_impulse = -_get_impulse(self.motor._constraint)
-            if self.limit is not None and j.enable_limit:
-                self.limit_impulse = -_get_impulse(self.limit._constraint)
-        raw_set(j, "motor_torque", self.motor_impulse / self.h)
+            # pymunk's impulse is the last substep's (so over the substep's time);
+            # Box2D's sign (torque on body b)
+            h = self.step_time()
+            self.motor_impulse = -self._impulse(self.motor) if j.enable_motor else 0.0
+            self.limit_impulse = -self._impulse(self.limit) if j.enable_limit else 0.0
+        raw_set(j, "motor_torque", self.motor_impulse / h)
         self.write_reaction(j, dt, self.impulse_force(self.pivot), 0.0)
-        torque = self.limit_impulse / self.h
+        torque = self.limit_impulse / h
         self._torque = abs(torque)
         raw_set(j, "reaction_torque", torque)
 
