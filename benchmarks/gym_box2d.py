@@ -114,7 +114,8 @@ LIMITS = {"lunar_lander": 1000, "bipedal_walker": 1600}
 
 
 def heuristic_episodes(name: str, backend: str, seeds: range, **kwargs: Any) -> list[str]:
-    """Each seed's ``score (steps)`` under the environment's own heuristic controller.
+    """Each seed's ``score (steps)`` under the environment's own heuristic controller
+    (and, for the walker, the hull's final x).
 
     LunarLander's ``heuristic(env, s)`` is a function; BipedalWalker's
     ``BipedalWalkerHeuristics`` keeps its state machine between episodes, as in
@@ -138,6 +139,8 @@ def heuristic_episodes(name: str, backend: str, seeds: range, **kwargs: Any) -> 
             if walker is not None:
                 action = walker.step_heuristic(s)
         note = "" if term else ", time limit"
+        if walker is not None:  # how far it walked: the course ends at x = 88.7 m
+            note += f", x = {float(env.hull.position[0]):.1f} m"
         out.append(f"{total:.1f} ({steps}{note})")
         env.close()
     return out
