@@ -243,9 +243,10 @@ class PivotBatch:
             lim = lim[ii[a[lim]] + ii[b[lim]] > 0.0]  # neither body can turn: nothing to do
             la_, lb_ = a[lim], b[lim]
             turning = ii[la_] + ii[lb_]
+            ref = self.ref[idx[lim]]
             limit = (
                 None if not len(lim)
-                else (la_, lb_, self.ref[idx[lim]], self.lower[idx[lim]], self.upper[idx[lim]],
+                else (la_, lb_, self.lower[idx[lim]] + ref, self.upper[idx[lim]] + ref,
                       ii[la_] / turning, ii[lb_] / turning, cog[la_], cog[lb_])
             )
             self.passes.append((
@@ -386,13 +387,15 @@ class PivotBatch:
         """Box2D's angular limit projection for one colour's limited joints: each
         hinge angle outside its (slop-widened) range turns both bodies about their
         centres of gravity, shared by inverse inertia, by at most 8° per step."""
-        a, b, ref, lower, upper, fa, fb, ca, cb = limit
-        angle = t[b] - t[a] - ref
-        error = np.where(angle < lower, angle - lower, np.where(angle > upper, angle - upper, 0.0))
-        out = np.flatnonzero(error)
-        if not len(out):
-            return
-        error = np.clip(error[out], -MAX_ANGULAR_CORRECTION, MAX_ANGULAR_CORRECTION)
+        a, b, lower, upper, fa, fb, ca, cb = limit  # bounds on θb - θa (reference added)
+        turn = t[b] - t[a]
+        below, above = turn < lower, turn > upper
+        if not (below.any() or above.any()):
+            return  # the everyday case: every hinge within its limits
+        out = np.flatnonzero(below | above)
+        turn = turn[out]
+        error = np.where(below[out], turn - lower[out], turn - upper[out])
+        error = np.clip(error, -MAX_ANGULAR_CORRECTION, MAX_ANGULAR_CORRECTION)
         for s, turn, cog in ((a[out], fa[out] * error, ca[out]),
                              (b[out], -fb[out] * error, cb[out])):
             live = np.flatnonzero(turn)  # a body that cannot turn stays put
