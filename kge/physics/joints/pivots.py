@@ -43,6 +43,7 @@ after every membership refresh (which every type change triggers).
 from __future__ import annotations
 
 from collections import deque
+from dataclasses import dataclass
 from itertools import repeat
 from typing import TYPE_CHECKING, Any
 
@@ -94,6 +95,26 @@ def colour(pairs: list[tuple[int, int]], movable: list[bool]) -> list[int]:
         used[c].update(need)
         out.append(c)
     return out
+
+
+@dataclass(slots=True)
+class _Colour:
+    """One colour's joints, their two ends stacked: row k of the first half is joint
+    k's body A, of the second half its body B, so one numpy call serves both ends."""
+
+    idx: np.ndarray  # the joints (indices into PivotBatch.handles)
+    n: int
+    ab: np.ndarray  # body slots, the A ends then the B ends (2n)
+    arm: np.ndarray  # anchors from the centres of gravity, in the bodies' frames
+    cog: np.ndarray  # local centres of gravity
+    inv_i: np.ndarray  # inverse inertias
+    msum: np.ndarray  # im[a] + im[b] (n)
+    step_m: np.ndarray  # -im[a], then +im[b]: how far the position impulse moves each end
+    step_i: np.ndarray  # -ii[a], then +ii[b]: how far it turns each end
+    movable: np.ndarray  # the ends that can move (bool)
+    all_movable: bool
+    #: the limited joints' columns (see PivotBatch._limits), or None
+    limit: tuple[Any, ...] | None
 
 
 class PivotBatch:
@@ -228,34 +249,34 @@ class PivotBatch:
         colours = colour(list(zip(self.ia.tolist(), self.ib.tolist(), strict=True)),
                          movable.tolist())
         col = np.array(colours, dtype=np.intp)
-        self.passes = []
-        for ci in range(max(colours, default=-1) + 1):
-            idx = np.flatnonzero(col == ci)
-            a, b = self.ia[idx], self.ib[idx]
-            sides = []
-            for side, sgn in ((a, -1.0), (b, 1.0)):
-                keep: np.ndarray | None = np.flatnonzero(movable[side])
-                s = side[keep]
-                if len(s) == len(side):
-                    keep = None  # all of them: no gather needed
-                sides.append((keep, s, sgn * im[s], sgn * ii[s], cog[s]))
-            lim = np.flatnonzero(self.limited[idx])
-            lim = lim[ii[a[lim]] + ii[b[lim]] > 0.0]  # neither body can turn: nothing to do
-            la_, lb_ = a[lim], b[lim]
-            turning = ii[la_] + ii[lb_]
-            ref = self.ref[idx[lim]]
-            limit = (
-                None if not len(lim)
-                else (la_, lb_, self.lower[idx[lim]] + ref, self.upper[idx[lim]] + ref,
-                      ii[la_] / turning, ii[lb_] / turning, cog[la_], cog[lb_])
-            )
-            self.passes.append((
-                limit, idx, a, b,
-                self.la[idx] - cog[a], self.lb[idx] - cog[b],  # anchors from the centres
-                cog[a], cog[b],
-                im[a] + im[b], ii[a], ii[b],
-                sides,
-            ))
+        self.passes = [
+            self._colour(np.flatnonzero(col == ci), movable)
+            for ci in range(max(colours, default=-1) + 1)
+        ]
+
+    def _colour(self, idx: np.ndarray, movable: np.ndarray) -> _Colour:
+        """The constant columns of one colour's joints, both ends stacked."""
+        im, ii, cog = self.im, self.ii, self.cog
+        a, b = self.ia[idx], self.ib[idx]
+        ab = np.concatenate((a, b))
+        lim = np.flatnonzero(self.limited[idx])
+        lim = lim[ii[a[lim]] + ii[b[lim]] > 0.0]  # neither body can turn: nothing to do
+        la_, lb_ = a[lim], b[lim]
+        turning = ii[la_] + ii[lb_]
+        ref = self.ref[idx[lim]]
+        limit = (
+            None if not len(lim)
+            else (la_, lb_, self.lower[idx[lim]] + ref, self.upper[idx[lim]] + ref,
+                  ii[la_] / turning, ii[lb_] / turning, cog[la_], cog[lb_])
+        )
+        ends = movable[ab]
+        return _Colour(
+            idx=idx, n=len(idx), ab=ab,
+            arm=np.concatenate((self.la[idx], self.lb[idx])) - cog[ab],
+            cog=cog[ab], inv_i=ii[ab], msum=im[a] + im[b],
+            step_m=np.concatenate((-im[a], im[b])), step_i=np.concatenate((-ii[a], ii[b])),
+            movable=ends, all_movable=bool(ends.all()), limit=limit,
+        )
 
     def mass_changed(self, epoch: int) -> bool:
         """Whether a body's mass data was replaced since the last check.
@@ -323,51 +344,54 @@ class PivotBatch:
         moved = np.zeros(len(self.bodies), dtype=bool)
         jolted: list[int] = []
         tol = self.tolerance
-        for limit, jidx, a, b, da, db, ca, cb, msum, iia, iib, sides in self.passes * SWEEPS:
-            if limit is not None:
-                self._limits(limit, pos, t, moved)
-            ea, eb = np.exp(1j * t[a]), np.exp(1j * t[b])
-            ra, rb = ea * da, eb * db  # lever arms from the centres of gravity
-            ga, gb = pos[a] + ea * ca, pos[b] + eb * cb  # centres of gravity
-            c = (gb + rb) - (ga + ra)
-            n = np.abs(c)
+        for col in self.passes * SWEEPS:
+            if col.limit is not None:
+                self._limits(col.limit, pos, t, moved)
+            n, ab = col.n, col.ab
+            tt = t[ab]  # ends A then B: one call serves both
+            e = np.exp(1j * tt)
+            r = e * col.arm  # lever arms from the centres of gravity
+            g = pos[ab] + e * col.cog  # centres of gravity
+            w = g + r  # the anchors in the world
+            c = w[n:] - w[:n]
+            gap = np.abs(c)
             # the guards below cost a dozen numpy calls per colour; a settled or
             # everyday step needs none of them (largest gap under the clamp, none zero)
-            top = n.max()
+            top = gap.max()
             if top > JOLT * MAX_CORRECTION:
-                jolted += jidx[n > JOLT * MAX_CORRECTION].tolist()
+                jolted += col.idx[gap > JOLT * MAX_CORRECTION].tolist()
             if top > MAX_CORRECTION:
-                c = np.where(n > MAX_CORRECTION, c * (MAX_CORRECTION / np.maximum(n, 1e-300)), c)
-            rax, ray, rbx, rby = ra.real, ra.imag, rb.real, rb.imag
-            iax, iay, ibx, iby = iia * rax, iia * ray, iib * rbx, iib * rby
-            k11 = msum + iay * ray + iby * rby
-            k12 = -(iax * ray + ibx * rby)
-            k22 = msum + iax * rax + ibx * rbx
+                c = np.where(gap > MAX_CORRECTION,
+                             c * (MAX_CORRECTION / np.maximum(gap, 1e-300)), c)
+            rx, ry = r.real, r.imag
+            wx, wy = col.inv_i * rx, col.inv_i * ry
+            k_yy, k_xx, k_xy = wy * ry, wx * rx, wx * ry
+            k11 = col.msum + k_yy[:n] + k_yy[n:]
+            k12 = -(k_xy[:n] + k_xy[n:])
+            k22 = col.msum + k_xx[:n] + k_xx[n:]
             det = k11 * k22 - k12 * k12
             cx, cy = c.real, c.imag
-            if n.min() >= tol and np.abs(det).min() >= 1e-12:
-                ok = None
-                p = ((k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)) / det
-            else:
-                ok = (n >= tol) & (np.abs(det) >= 1e-12)
+            p = (k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)
+            act = col.movable
+            if gap.min() >= tol and np.abs(det).min() >= 1e-12:
+                p = p / det
+                every = col.all_movable
+            else:  # joints within the tolerance (or degenerate) move nothing
+                ok = (gap >= tol) & (np.abs(det) >= 1e-12)
                 if not ok.any():
                     continue
-                inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
-                p = ((k12 * cy - k22 * cx) + 1j * (k12 * cx - k11 * cy)) * inv
-            for (keep, s, sim, sii, cog), g, r in zip(sides, (ga, gb), (ra, rb), strict=True):
-                if keep is None:  # every joint of the colour moves this side's bodies
-                    q, rr, gk = p, r, g
-                elif not len(s):
-                    continue
-                else:
-                    q, rr, gk = p[keep], r[keep], g[keep]
-                if ok is not None:  # only the joints to correct move their bodies
-                    sel = ok if keep is None else ok[keep]
-                    s, q, rr, gk, sim, sii, cog = (s[sel], q[sel], rr[sel], gk[sel],
-                                                   sim[sel], sii[sel], cog[sel])
-                na = t[s] + sii * (rr.real * q.imag - rr.imag * q.real)
-                pos[s] = gk + sim * q - np.exp(1j * na) * cog
-                t[s] = na
+                p = np.where(ok, p / np.where(ok, det, 1.0), 0.0)
+                act = act & np.concatenate((ok, ok))
+                every = False
+            pp = np.concatenate((p, p))  # P at B's anchor, -P at A's (in step_m, step_i)
+            new_t = tt + col.step_i * (rx * pp.imag - ry * pp.real)
+            new_pos = g + col.step_m * pp - np.exp(1j * new_t) * col.cog
+            if every:  # no body appears twice among a colour's movable ends
+                t[ab], pos[ab] = new_t, new_pos
+                moved[ab] = True
+            else:
+                s = ab[act]
+                t[s], pos[s] = new_t[act], new_pos[act]
                 moved[s] = True
         idx = np.flatnonzero(moved)
         if not len(idx):
