@@ -80,6 +80,9 @@ SPACING = 32.0
 #: what a collider is in its scene: the hull, or leg 0 / leg 1
 HULL = -1
 
+#: the pose table's columns (x, y, angle, vx, vy, w) in the observations' order
+_OBS_COLUMNS = [0, 1, 3, 4, 2, 5]
+
 
 class LunarLanderVector(AppHolder, BatchVectorEnv):
     """``num_envs`` LunarLanders sharing one kge world (``make_vec``'s default)."""
@@ -221,21 +224,21 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         # each env's own stream, in the single env's order (one pair of draws per step)
         dispersion = np.array([rng.uniform(-1.0, 1.0, size=2)  # type: ignore[union-attr]
                                for rng in self._rngs])
-        tfs, rbs = self._tfs, self._rbs
-        pose = np.array([(t.x, t.y, t.angle) for t in tfs])
-        fire(world.resource(Physics), self._landers, pose, dispersion, m_power, s_power,
-             direction)
+        physics = world.resource(Physics)
+        landers = np.array(self._landers, dtype=np.int64)
+        # the landers' rows of the physics' pose table: one gather, not 64 component reads
+        before, _ = physics.states(landers)
+        fire(physics, self._landers, before[:, :3], dispersion, m_power, s_power, direction)
         self.app.step(1)
         self._read_contacts(world)
-        state = np.array([(t.x, t.y, *r.velocity, t.angle, r.angular_velocity)
-                          for t, r in zip(tfs, rbs, strict=True)])
+        after, self.awake = physics.states(landers)
+        state = after[:, _OBS_COLUMNS]
         state[:, 0] -= self.origins
         obs = observations(state, self.leg_contact, H / 4)
         if not np.isfinite(obs).all():
             rows = np.flatnonzero(~np.isfinite(obs).all(axis=1)).tolist()
             raise ObservationError(f"{self.env_name}: a non-finite observation in env(s) "
                                    f"{rows}: {obs[rows]!r}")
-        self.awake = np.array([r.awake for r in rbs], np.bool_)
         reward, shaping = rewards(obs, self.prev_shaping, m_power, s_power, self.game_over,
                                   self.awake)
         # a reset step scores nothing and leaves the shaping unset, as a single env's reset

@@ -30,8 +30,8 @@ _get_angular_velocity = _lib.cpBodyGetAngularVelocity
 _get_mass = _lib.cpBodyGetMass
 _get_moment = _lib.cpBodyGetMoment
 
-#: new (vx, vy, w) of a body, keyed by its pymunk body id
-Velocities = dict[int, list[float]]
+#: (record, its new [vx, vy, w]), keyed by ``id(record)``
+Velocities = dict[int, tuple[Any, list[float]]]
 
 
 def checked_rows(
@@ -88,18 +88,24 @@ def push(cb: Any, v: list[float], jx: float, jy: float, at: Sequence[float] | No
 
 
 def new_velocities(
-    owner: str, bodies: Sequence[Any], entities: Sequence[int],
+    owner: str, records: Sequence[Any], entities: Sequence[int],
     impulses: np.ndarray, points: np.ndarray | None,
 ) -> Velocities:
-    """Each pushed body's velocity after its rows, in row order; nothing is written yet."""
+    """Each pushed body's velocity after its rows, in row order; nothing is written yet.
+
+    ``records`` are the rows' body records (anything with a ``body``); the result maps
+    each record's ``id`` to ``(record, [vx, vy, w])``, in the order of first appearance.
+    """
     out: Velocities = {}
     rows = impulses.tolist()
     at = None if points is None else points.tolist()
-    for k, body in enumerate(bodies):
-        cb = body._body
-        v = out.get(body.id)
-        if v is None:
-            v = out[body.id] = velocity_of(cb)
+    for k, rec in enumerate(records):
+        cb = rec.body._body
+        key = id(rec)
+        pushed = out.get(key)
+        if pushed is None:
+            pushed = out[key] = (rec, velocity_of(cb))
+        v = pushed[1]
         jx, jy = rows[k]
         push(cb, v, jx, jy, None if at is None else at[k])
         if not (math.isfinite(v[0]) and math.isfinite(v[1]) and math.isfinite(v[2])):

@@ -28,6 +28,7 @@ from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
 from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.physics import impulses as impulses_mod
+from kge.physics import states as states_mod
 from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.events import PhysicsEvents
@@ -45,6 +46,9 @@ Pose = tuple[float, float, float]
 
 _set_velocity = lib.cpBodySetVelocity
 _set_angular_velocity = lib.cpBodySetAngularVelocity
+_get_type = lib.cpBodyGetType
+_is_sleeping = lib.cpBodyIsSleeping
+_CP_DYNAMIC = lib.CP_BODY_TYPE_DYNAMIC
 
 
 class Physics:
@@ -54,6 +58,7 @@ class Physics:
         self._world = world
         self._sim = sim
         self._carried = PhysicsEvents()  #: events of between-step syncs, for the next step
+        self._state_slots = states_mod.SlotCache()
 
     # -- configuration ------------------------------------------------------------------
     @property
@@ -199,15 +204,35 @@ class Physics:
         """
         owner = "Physics.apply_linear_impulses"
         ents, jj, pp = impulses_mod.checked_rows(owner, entities, impulses, points)
-        recs = [self._record(e, "apply_linear_impulses") for e in ents]
-        new = impulses_mod.new_velocities(owner, [r.body for r in recs], ents, jj, pp)
-        done: set[int] = set()
-        for e, rec in zip(ents, recs, strict=True):
-            body = rec.body
-            if body.id in done or self._force_target(e, "apply_linear_impulses", wake, rec) is None:
-                continue
-            done.add(body.id)
-            self._write_velocity(e, body._body, *new[body.id])
+        recs = self._records(ents, "apply_linear_impulses")
+        new = impulses_mod.new_velocities(owner, recs, ents, jj, pp)
+        self._sim.touched = True
+        for rec, (vx, vy, w) in new.values():  # each body once, in order of first appearance
+            cb = rec.body._body
+            if not rec.in_space or _get_type(cb) != _CP_DYNAMIC:
+                continue  # static and kinematic bodies ignore impulses
+            if _is_sleeping(cb):
+                if not wake:
+                    continue
+                rec.body.activate()
+                self._mark_awake(rec.entity)
+            self._write_velocity(rec.entity, cb, vx, vy, w)
+
+    def _records(self, entities: list[int], op: str) -> list[BodyRecord]:
+        """:meth:`_record` of every entity (ints), with one sync for them all."""
+        exists = self._world.exists
+        if not all(map(exists, entities)):
+            missing = next(e for e in entities if not exists(e))
+            raise EntityNotFoundError(f"physics.{op}(): entity {missing} does not exist")
+        self._synced()
+        get = self._sim.bodies.get
+        recs = [get(e) for e in entities]
+        if None in recs:
+            bare = entities[recs.index(None)]
+            raise ValidationError(
+                f"physics.{op}(): entity {bare} has no body (add a RigidBody or a Collider)"
+            )
+        return recs  # type: ignore[return-value]  (no None left)
 
     def _write_velocity(self, entity: int, cb: Any, vx: float, vy: float, w: float) -> None:
         """Give Chipmunk's body ``cb`` and the entity's RigidBody this velocity (flushed)."""
@@ -330,6 +355,39 @@ class Physics:
         """
         p = self._sim.poses
         return p.entities.copy(), p.prev.copy(), p.state[:, :3].copy()
+
+    def states(self, entities: Any) -> tuple[np.ndarray, np.ndarray]:
+        """Bulk form of reading Transform and RigidBody: ``(states, awake)`` of many bodies.
+
+        ``states`` has one row ``(x, y, angle, vx, vy, w)`` per entity, ``awake`` one
+        bool: the values the entity's Transform and RigidBody held when the last step
+        ended (sync-out writes both from the same table), gathered with one numpy
+        index instead of one component read per body. Changes made since that step
+        (impulses, component writes) are not in it; read the components for those.
+        A body spawned since the last step reads its pose at spawn. The arrays are
+        fresh, safe to keep. For dynamic and kinematic bodies; others raise, naming
+        the entity.
+
+        >>> # states, awake = physics.states(landers); x, vy = states[:, 0], states[:, 4]
+        """
+        ents = np.asarray(entities)
+        if ents.ndim != 1 or (len(ents) and ents.dtype.kind not in "iu"):
+            raise ValidationError(
+                f"Physics.states: entities must be a 1-D sequence of int ids, got {entities!r}"
+            )
+        ents = ents.astype(np.int64, copy=False)
+        self._synced()  # bodies spawned since the last step get their slots
+        table = self._sim.poses
+        slots = self._state_slots.slots(table, ents)
+        if slots is None:
+            for e in ents.tolist():
+                if e not in table.slot:
+                    self._record(e, "states")  # raises for a missing or bodiless entity
+                    raise ValidationError(
+                        f"physics.states(): entity {e} has a static body (states are "
+                        "kept for dynamic and kinematic bodies)"
+                    )
+        return states_mod.gather(table, slots)  # type: ignore[arg-type]
 
     # -- contact hooks -------------------------------------------------------------------------
     def on_pre_solve(self, fn: PreSolveFn) -> PreSolveFn:
