@@ -48,6 +48,7 @@ from kge.app import App
 from kge.components import RigidBody, Transform
 from kge.components.camera import Camera
 from kge.gym.env import env_plugins
+from kge.gym.draws import PairDraws
 from kge.gym.errors import ObservationError
 from kge.gym.holder import AppHolder
 from kge.gym.lunar_lander import (
@@ -113,6 +114,8 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         self.origins = np.arange(n, dtype=np.float64) * SPACING
         self._app: App | None = None
         self._rngs: list[np.random.Generator | None] = [None] * n
+        #: the engines' dispersion, drawn from ``_rngs`` a block of steps at a time
+        self._draws = PairDraws(n)
         self._scenes: list[LanderScene | None] = [None] * n
         self._landers: list[int] = [0] * n
         self._tfs: list[Transform] = []
@@ -186,6 +189,7 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         if options is not None and not isinstance(options, dict):
             raise TypeError(f"{self.env_name}.reset(options=...) must be a dict or None, "
                             f"got {options!r}")
+        self._draws.give_back(range(self.num_envs))  # the scenes draw from the same streams
         for i, s in enumerate(seeds):
             if s is not None:
                 self._rngs[i] = seeding.np_random(s)[0]
@@ -205,7 +209,9 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         world = self.world
         resetting = self._autoreset.copy()
         if resetting.any():
-            self._respawn(world, np.flatnonzero(resetting).tolist())
+            envs = np.flatnonzero(resetting).tolist()
+            self._draws.give_back(envs)  # their new scenes draw from the same streams
+            self._respawn(world, envs)
         self._advance(world, batch.reshape(self.num_envs, -1), resetting)
         self._truncations[:] = False
         self._time_limit(~resetting)
@@ -222,8 +228,7 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
             m_power, s_power, direction = np.zeros(n), np.zeros(n), np.zeros(n)
         self.m_power, self.s_power = m_power, s_power
         # each env's own stream, in the single env's order (one pair of draws per step)
-        dispersion = np.array([rng.uniform(-1.0, 1.0, size=2)  # type: ignore[union-attr]
-                               for rng in self._rngs])
+        dispersion = self._draws.take(self._rngs)  # type: ignore[arg-type]  (all set)
         physics = world.resource(Physics)
         landers = np.array(self._landers, dtype=np.int64)
         # the landers' rows of the physics' pose table: one gather, not 64 component reads

@@ -16,6 +16,7 @@ from kge.gym import (
     lander_vector,
     lunar_lander,
 )
+from kge.gym.draws import PairDraws
 from kge.gym.errors import InvalidActionError, ObservationError, ResetNeededError
 from kge.gym.lander_vector import SPACING
 from kge.physics.events import PhysicsEvents
@@ -42,6 +43,29 @@ def test_the_vector_run_replays_bit_for_bit():
     a, b = _random_run(3), _random_run(3)
     assert a.tobytes() == b.tobytes()
     assert a.tobytes() != _random_run(4).tobytes()
+
+
+def test_dispersion_blocks_give_each_env_its_per_step_stream(monkeypatch) -> None:
+    """Pre-drawn blocks of dispersion (kge.gym.draws) change nothing: a run with blocks of
+    one step (a draw per env and step, the single env's way) is the same bit for bit,
+    through autoresets (the new scene draws from the same stream) and an unseeded reset."""
+
+    def run(block: int) -> bytes:
+        monkeypatch.setattr(lander_vector, "PairDraws", lambda n: PairDraws(n, block=block))
+        envs = make_vec(LUNAR_LANDER, num_envs=5)
+        rng = np.random.default_rng(2)
+        out = [envs.reset(seed=4)[0].tobytes()]
+        for k in range(300):
+            if k == 150:
+                out.append(envs.reset()[0].tobytes())  # the streams go on, unseeded
+            obs, rew, term, _, _ = envs.step(rng.integers(0, 4, size=5))
+            out += [obs.tobytes(), rew.tobytes(), term.tobytes()]
+        envs.close()
+        return b"".join(out)
+
+    one = run(1)
+    assert run(64) == one
+    assert run(7) == one
 
 
 def test_reset_with_the_same_seed_replays_on_the_same_env():
