@@ -47,8 +47,8 @@ from gymnasium.utils import seeding
 from kge.app import App
 from kge.components import RigidBody, Transform
 from kge.components.camera import Camera
-from kge.gym.env import env_plugins
 from kge.gym.draws import PairDraws
+from kge.gym.env import env_plugins
 from kge.gym.errors import ObservationError
 from kge.gym.holder import AppHolder
 from kge.gym.lunar_lander import (
@@ -228,7 +228,7 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
             m_power, s_power, direction = np.zeros(n), np.zeros(n), np.zeros(n)
         self.m_power, self.s_power = m_power, s_power
         # each env's own stream, in the single env's order (one pair of draws per step)
-        dispersion = self._draws.take(self._rngs)  # type: ignore[arg-type]  (all set)
+        dispersion = self._draws.take(self._rngs)  # type: ignore[arg-type]
         physics = world.resource(Physics)
         landers = np.array(self._landers, dtype=np.int64)
         # the landers' rows of the physics' pose table: one gather, not 64 component reads

@@ -232,7 +232,7 @@ class Physics:
             raise ValidationError(
                 f"physics.{op}(): entity {bare} has no body (add a RigidBody or a Collider)"
             )
-        return recs  # type: ignore[return-value]  (no None left)
+        return recs  # type: ignore[return-value]
 
     def _write_velocity(self, entity: int, cb: Any, vx: float, vy: float, w: float) -> None:
         """Give Chipmunk's body ``cb`` and the entity's RigidBody this velocity (flushed)."""
