@@ -17,6 +17,7 @@ implemented in :mod:`kge.physics.queries` and only forwarded here.
 from __future__ import annotations
 
 import math
+from collections import deque
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -34,7 +35,8 @@ from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
 from kge.physics.settings import PhysicsSettings
-from kge.physics.tiny import flush
+from kge.physics.tiny import TINY, flush
+from kge.physics.writeback import slot_setter
 from kge.validate import finite, vec2
 
 if TYPE_CHECKING:
@@ -49,6 +51,8 @@ _set_angular_velocity = lib.cpBodySetAngularVelocity
 _get_type = lib.cpBodyGetType
 _is_sleeping = lib.cpBodyIsSleeping
 _CP_DYNAMIC = lib.CP_BODY_TYPE_DYNAMIC
+_SET_VELOCITY = slot_setter(RigidBody, "velocity")
+_SET_ANGULAR_VELOCITY = slot_setter(RigidBody, "angular_velocity")
 
 
 class Physics:
@@ -205,6 +209,8 @@ class Physics:
         owner = "Physics.apply_linear_impulses"
         ents, jj, pp = impulses_mod.checked_rows(owner, entities, impulses, points)
         recs = self._records(ents, "apply_linear_impulses")
+        if wake and self._push_distinct(owner, recs, ents, jj, pp):
+            return
         new = impulses_mod.new_velocities(owner, recs, ents, jj, pp)
         self._sim.touched = True
         for rec, (vx, vy, w) in new.values():  # each body once, in order of first appearance
@@ -217,6 +223,44 @@ class Physics:
                 rec.body.activate()
                 self._mark_awake(rec.entity)
             self._write_velocity(rec.entity, cb, vx, vy, w)
+
+    def _push_distinct(
+        self, owner: str, recs: list[BodyRecord], ents: list[int], jj: np.ndarray,
+        pp: np.ndarray | None,
+    ) -> bool:
+        """The common case of :meth:`apply_linear_impulses` in bulk: every row a different
+        awake dynamic body in the space (a batch of engines). False (nothing done) for
+        anything else, which the row-by-row path handles."""
+        cbs = [r.body._body for r in recs]
+        if (
+            len(set(cbs)) != len(cbs)
+            or not all([r.in_space for r in recs])
+            or any([_get_type(cb) != _CP_DYNAMIC or _is_sleeping(cb) for cb in cbs])
+        ):
+            return False
+        v = impulses_mod.distinct_velocities(cbs, jj, pp)
+        bad = ~np.isfinite(v).all(axis=1)
+        if bad.any():
+            k = int(np.flatnonzero(bad)[0])
+            raise ValidationError(
+                f"{owner}: the velocity of entity {ents[k]} after impulses[{k}] would not "
+                f"be finite ({tuple(v[k].tolist())!r}); the input is too large"
+            )
+        self._sim.touched = True
+        v[np.abs(v) < TINY] = 0.0  # kge.physics.tiny.flush, every value at once
+        vx, vy, w = v.T.tolist()
+        for cb, x, y, a in zip(cbs, vx, vy, w, strict=True):
+            _set_velocity(cb, (x, y))
+            _set_angular_velocity(cb, a)
+        try_get = self._world.try_get
+        rbs = [try_get(e, RigidBody) for e in ents]
+        if any(rb is None for rb in rbs):  # (``None in`` would call each dataclass's __eq__)
+            keep = [k for k, rb in enumerate(rbs) if rb is not None]
+            rbs = [rbs[k] for k in keep]
+            vx, vy, w = [vx[k] for k in keep], [vy[k] for k in keep], [w[k] for k in keep]
+        deque(map(_SET_VELOCITY, rbs, zip(vx, vy, strict=True)), maxlen=0)
+        deque(map(_SET_ANGULAR_VELOCITY, rbs, w), maxlen=0)
+        return True
 
     def _records(self, entities: list[int], op: str) -> list[BodyRecord]:
         """:meth:`_record` of every entity (ints), with one sync for them all."""

@@ -89,7 +89,7 @@ def component_array(items: list[Any]) -> Components:
     return arr, np.fromiter((item is not None for item in items), dtype=bool, count=len(items))
 
 
-def _slot_setter(cls: type, name: str) -> Callable[[Any, Any], None]:
+def slot_setter(cls: type, name: str) -> Callable[[Any, Any], None]:
     """The slot's C setter: like ``raw_set`` (no validation, no dirty mark), without a lookup."""
     for klass in cls.__mro__:
         d = klass.__dict__.get(name)
@@ -102,8 +102,8 @@ def _set_all(setter: Callable[[Any, Any], None], objs: list[Any], values: Any) -
     deque(map(setter, objs, values), maxlen=0)
 
 
-_SET_X = _slot_setter(Transform, "x")
-_SET_Y = _slot_setter(Transform, "y")
-_SET_ANGLE = _slot_setter(Transform, "angle")
-_SET_VELOCITY = _slot_setter(RigidBody, "velocity")
-_SET_ANGULAR_VELOCITY = _slot_setter(RigidBody, "angular_velocity")
+_SET_X = slot_setter(Transform, "x")
+_SET_Y = slot_setter(Transform, "y")
+_SET_ANGLE = slot_setter(Transform, "angle")
+_SET_VELOCITY = slot_setter(RigidBody, "velocity")
+_SET_ANGULAR_VELOCITY = slot_setter(RigidBody, "angular_velocity")
