@@ -63,6 +63,7 @@ class Physics:
         self._sim = sim
         self._carried = PhysicsEvents()  #: events of between-step syncs, for the next step
         self._state_slots = states_mod.SlotCache()
+        self._rows = impulses_mod.RowReader()  # bodies' current rows for bulk impulses
 
     # -- configuration ------------------------------------------------------------------
     @property
@@ -231,14 +232,25 @@ class Physics:
         """The common case of :meth:`apply_linear_impulses` in bulk: every row a different
         awake dynamic body in the space (a batch of engines). False (nothing done) for
         anything else, which the row-by-row path handles."""
-        cbs = [r.body._body for r in recs]
+        sim = self._sim
+        table = sim.poses
+        get = table.slot.get
+        found = [get(e, -1) for e in ents]
+        if sim.poses_stale or -1 in found or len(set(found)) != len(found):
+            return False  # (a stale table: inside a callback, between flush and sync)
+        slots = np.array(found, dtype=np.intp)
         if (
-            len(set(cbs)) != len(cbs)
+            not table.dynamic[slots].all()
+            or table.asleep[slots].any()
             or not all([r.in_space for r in recs])
-            or any([_get_type(cb) != _CP_DYNAMIC or _is_sleeping(cb) for cb in cbs])
         ):
             return False
-        v = impulses_mod.distinct_velocities(cbs, jj, pp)
+        # (a body Chipmunk put to sleep at the end of the last step while it still moved
+        # is "awake" in the table: the velocity setter wakes it, as the other path does)
+        state = self._rows.rows(sim.space, table.ids[slots])
+        if state is None:
+            return False
+        v = impulses_mod.distinct_velocities(state, [r.mass for r in recs], jj, pp)
         bad = ~np.isfinite(v).all(axis=1)
         if bad.any():
             k = int(np.flatnonzero(bad)[0])
@@ -249,7 +261,8 @@ class Physics:
         self._sim.touched = True
         v[np.abs(v) < TINY] = 0.0  # kge.physics.tiny.flush, every value at once
         vx, vy, w = v.T.tolist()
-        for cb, x, y, a in zip(cbs, vx, vy, w, strict=True):
+        for rec, x, y, a in zip(recs, vx, vy, w, strict=True):
+            cb = rec.body._body
             _set_velocity(cb, (x, y))
             _set_angular_velocity(cb, a)
         try_get = self._world.try_get

@@ -127,3 +127,52 @@ def test_body_types_that_impulses_do_not_move() -> None:
     finally:
         sim.close()
 
+
+
+def test_distinct_awake_bodies_take_the_numpy_path_and_equal_the_calls_one_by_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """One row per body, all awake and dynamic (a batch of engines): pushed in numpy,
+    bit for bit what the single calls give (turned bodies, a fixed-rotation body,
+    with and without points)."""
+    from kge.physics.resource import Physics
+
+    taken: list[bool] = []
+    real = Physics._push_distinct
+
+    def spy(self: Physics, *args: object) -> bool:
+        taken.append(real(self, *args))  # type: ignore[arg-type]
+        return taken[-1]
+
+    monkeypatch.setattr(Physics, "_push_distinct", spy)
+
+    def scene() -> tuple[Sim, list[int]]:
+        sim, es = _scene()
+        es.append(sim.spawn(Transform(4.0, 2.0, 1.1),
+                            RigidBody(type=BodyType.DYNAMIC, fixed_rotation=True),
+                            Collider(Box(0.3, 0.3), density=1.0)))
+        sim.step(3)  # turned and moving
+        return sim, es
+
+    rows = [(2, (0.5, -1.0), (-1.5, 4.1)), (0, (1.0, 2.0), (0.3, 2.1)),
+            (3, (0.2, 0.1), (4.4, 2.2)), (1, (-0.5, 0.0), (2.0, 3.2))]
+    for with_points in (True, False):
+        one, es1 = scene()
+        bulk, es2 = scene()
+        try:
+            for k, j, p in rows:
+                one.physics.apply_linear_impulse(es1[k], j, p if with_points else None)
+            taken.clear()
+            bulk.physics.apply_linear_impulses(
+                [es2[k] for k, _, _ in rows], [j for _, j, _ in rows],
+                [p for _, _, p in rows] if with_points else None)
+            assert taken == [True]
+            assert _velocities(bulk, es2) == _velocities(one, es1)
+            assert bulk.rb(es2[3]).angular_velocity == one.rb(es1[3]).angular_velocity
+            for s in (one, bulk):
+                s.step(5)
+            assert [(bulk.t(e).x, bulk.t(e).angle) for e in es2] == [
+                (one.t(e).x, one.t(e).angle) for e in es1]
+        finally:
+            one.close()
+            bulk.close()
