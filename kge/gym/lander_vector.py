@@ -116,6 +116,8 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         self._rngs: list[np.random.Generator | None] = [None] * n
         #: the engines' dispersion, drawn from ``_rngs`` a block of steps at a time
         self._draws = PairDraws(n)
+        #: the landers' states after the last step (``Physics.states`` rows)
+        self._stepped: np.ndarray | None = None
         self._scenes: list[LanderScene | None] = [None] * n
         self._landers: list[int] = [0] * n
         self._tfs: list[Transform] = []
@@ -190,6 +192,7 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
             raise TypeError(f"{self.env_name}.reset(options=...) must be a dict or None, "
                             f"got {options!r}")
         self._draws.give_back(range(self.num_envs))  # the scenes draw from the same streams
+        self._stepped = None
         for i, s in enumerate(seeds):
             if s is not None:
                 self._rngs[i] = seeding.np_random(s)[0]
@@ -231,12 +234,17 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         dispersion = self._draws.take(self._rngs)  # type: ignore[arg-type]
         physics = world.resource(Physics)
         landers = np.array(self._landers, dtype=np.int64)
-        # the landers' rows of the physics' pose table: one gather, not 64 component reads
-        before, _ = physics.states(landers)
+        # the landers' poses as the last step left them: that step's rows (nothing moved
+        # them since; a lander respawned since takes its reset step now and fires nothing)
+        before = self._stepped
+        if before is None:
+            before, _ = physics.states(landers)
         fire(physics, self._landers, before[:, :3], dispersion, m_power, s_power, direction)
         self.app.step(1)
         self._read_contacts(world)
+        # the landers' rows of the physics' pose table: one gather, not 64 component reads
         after, self.awake = physics.states(landers)
+        self._stepped = after
         state = after[:, _OBS_COLUMNS]
         state[:, 0] -= self.origins
         obs = observations(state, self.leg_contact, H / 4)

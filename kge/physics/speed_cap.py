@@ -185,7 +185,12 @@ def maybe_over(v: np.ndarray, vmax: float, wmax: float) -> bool:
     >>> maybe_over(np.array([[90.0, 0.0, 0.0]]), 120.0, 94.0)
     True
     """
-    return largest(v) > min(vmax * _SQRT_HALF, wmax)
+    return largest(v) > screen(vmax, wmax)
+
+
+def screen(vmax: float, wmax: float) -> float:
+    """:func:`maybe_over`'s bound: no ``|component|`` above it means no row over a limit."""
+    return min(vmax * _SQRT_HALF, wmax)
 
 
 def largest(v: np.ndarray) -> float:

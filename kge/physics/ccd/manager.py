@@ -22,7 +22,7 @@ from kge.physics.callback_errors import CallbackErrors
 from kge.physics.ccd.obstacles import Obstacles
 from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
-from kge.physics.speed_cap import clamp_one, largest, maybe_over
+from kge.physics.speed_cap import clamp_one, largest, screen
 from kge.validate import boolean, integer, non_negative, positive
 
 #: ``pair_filter(moving_shape, other_shape) -> bool``: False = they never touch.
@@ -219,7 +219,11 @@ class ContinuousCollision:
         else:
             ids, rows = read
             pose, vel = rows[:, :3], rows[:, 3:]
-        vel = self._clamp(ids, vel, dt)
+        rows_vel = vel
+        top = largest(vel)  # the largest |component|: the caps' screen and the sweeps'
+        vel = self._clamp(ids, vel, dt, top)
+        if vel is not rows_vel:
+            top = largest(vel)  # some were capped
         for info in self._boosted:
             info.boost = 0.0
         self._boosted.clear()
@@ -233,7 +237,6 @@ class ContinuousCollision:
         # means no tracked body moves more than (sqrt 2 + its reach) * top * dt, and
         # when that is under the smallest threshold none is fast (a settled or slow
         # world then skips the per-body arrays below; a NaN fails the test)
-        top = largest(vel)
         bound = (_SQRT2 + index.max_reach) * top * dt
         speed: np.ndarray | None = None
         if not bound <= self.threshold * n * index.min_core:
@@ -408,10 +411,16 @@ class ContinuousCollision:
         ids, data = self._reader.read(self.space)
         return ids, data[:, :3], data[:, 3:]
 
-    def _clamp(self, ids: np.ndarray, vel: np.ndarray, dt: float) -> np.ndarray:
+    def _clamp(
+        self, ids: np.ndarray, vel: np.ndarray, dt: float, top: float | None = None
+    ) -> np.ndarray:
+        """Cap the rows' bodies; ``vel`` itself when none is over (``top``: its
+        :func:`largest`, when the caller has it). A copy when some were capped."""
         max_v = self.max_translation / dt
         max_w = self.max_rotation / dt
-        if not maybe_over(vel, max_v, max_w):  # two reductions; errstate alone costs more
+        if top is None:
+            top = largest(vel)
+        if not top > screen(max_v, max_w):  # maybe_over, reusing top (errstate costs more)
             return vel
         with np.errstate(over="ignore"):  # inf is over the limit; clamp_one is overflow-safe
             speed2 = vel[:, 0] ** 2 + vel[:, 1] ** 2
