@@ -180,11 +180,14 @@ class RowReader:
         self._key = b""
         self._order = np.empty(0, dtype=np.intp)
         self._sorted = np.empty(0, dtype=np.int64)
+        self._last: tuple[np.ndarray, np.ndarray] = (self._sorted, np.empty((0, 6)))
+        self._at = np.empty(0, dtype=np.intp)
 
     def rows(self, space: Any, body_ids: np.ndarray) -> np.ndarray | None:
         """The current rows of the bodies ``body_ids`` (pymunk ids), or None if one of
-        them is not in the space."""
+        them is not in the space. :meth:`patch` may then write their new velocities."""
         ids, rows = self._reader.read(space)
+        self._last = (ids, rows)
         key = ids.tobytes()
         if key != self._key:
             self._order = np.argsort(ids, kind="stable")
@@ -195,4 +198,13 @@ class RowReader:
         at = np.minimum(np.searchsorted(self._sorted, body_ids), len(self._sorted) - 1)
         if not np.array_equal(self._sorted[at], body_ids):
             return None
-        return rows[self._order[at]]
+        self._at = self._order[at]
+        return rows[self._at]
+
+    def patch(self, velocities: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Write the velocities just given to the bodies of the last :meth:`rows` into
+        that read, and return it, ``(ids, rows)`` of every body: the space as it is now
+        (views of the buffer, valid until the next read)."""
+        ids, rows = self._last
+        rows[self._at, 3:6] = velocities
+        return ids, rows

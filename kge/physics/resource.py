@@ -89,6 +89,7 @@ class Physics:
             # without its end.
             events = sim.events
             marks = [len(getattr(events, name)) for name, _ in PhysicsEvents.CHANNELS]
+            sim.fresh_read = None  # the changes it applies are not in that read
             sim.sync_in()
             for (name, _), n in zip(PhysicsEvents.CHANNELS, marks, strict=True):
                 lst = getattr(events, name)
@@ -126,6 +127,7 @@ class Physics:
         if rec is None:
             rec = self._record(entity, op)
         self._sim.touched = True
+        self._sim.fresh_read = None  # (a wake-up or a velocity write follows)
         body = rec.body
         if body.body_type != DYNAMIC or not rec.in_space:
             return None
@@ -265,6 +267,9 @@ class Physics:
             cb = rec.body._body
             _set_velocity(cb, (x, y))
             _set_angular_velocity(cb, a)
+        # the read, with these velocities, is the space as it is: the step's continuous
+        # collision and joints take it instead of reading again (Simulation.fresh_read)
+        sim.fresh_read = self._rows.patch(v)
         try_get = self._world.try_get
         rbs = [try_get(e, RigidBody) for e in ents]
         if any(rb is None for rb in rbs):  # (``None in`` would call each dataclass's __eq__)

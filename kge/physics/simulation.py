@@ -117,6 +117,10 @@ class Simulation:
         self.all_asleep = False
         #: something outside the dirty sets (an impulse, a wake-up) touched a body
         self.touched = False
+        #: (ids, rows) of every body as it is now, left by the last thing that changed
+        #: bodies between steps when it could keep its own bulk read current (the bulk
+        #: impulses); anything else that changes a body clears it (Physics does)
+        self.fresh_read: tuple[np.ndarray, np.ndarray] | None = None
         #: ``poses.prev`` equals the current poses (set by a quiet step)
         self._prev_is_current = False
 
@@ -703,10 +707,14 @@ class Simulation:
     # -- step ------------------------------------------------------------------------------
     def _busy(self) -> bool:
         """Is any change waiting to be applied (anything that could wake a body)?"""
+        return bool(self.touched or self.forces or self._pending_changes())
+
+    def _pending_changes(self) -> bool:
+        """Will sync-in change a body (the dirty sets, the pose table, no-sleep bodies)?"""
         return bool(
-            self.touched or self.forces or self.poses_stale or self.no_sleep
-            or self.body_struct or self.collider_struct or self.pending or self.rb_dirty
-            or self.col_dirty or self.tf_dirty or self.mass_dirty or self.ccd_dirty
+            self.poses_stale or self.no_sleep or self.body_struct or self.collider_struct
+            or self.pending or self.rb_dirty or self.col_dirty or self.tf_dirty
+            or self.mass_dirty or self.ccd_dirty
         )
 
     def step(self) -> None:
@@ -721,6 +729,9 @@ class Simulation:
         applied = self._applied
         idle = not self._busy()
         quiet = self.all_asleep and idle and not self.joints.handles
+        fresh, self.fresh_read = self.fresh_read, None
+        if fresh is not None and self._pending_changes():
+            fresh = None  # sync-in is about to change bodies
         self.sync_in()
         unchanged = self._applied is applied
         quiet = quiet and unchanged
@@ -728,8 +739,9 @@ class Simulation:
         self.events_step_started()
         n = self.substeps
         h = self.dt / n
-        # nothing touched a body since the last sync-out: its bulk read is current
-        last = self.poses.raw if idle and unchanged else None
+        # nothing touched a body since the last sync-out: its bulk read is current; or
+        # only bulk impulses did, and they kept theirs current
+        last = self.poses.raw if idle and unchanged else (fresh if unchanged else None)
         self.joints.before_step(self.dt, last)
         rec = self.recorder
         if self.ccd is not None and not quiet:

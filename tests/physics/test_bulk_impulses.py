@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from kge.components.collider import Collider
@@ -176,3 +177,58 @@ def test_distinct_awake_bodies_take_the_numpy_path_and_equal_the_calls_one_by_on
         finally:
             one.close()
             bulk.close()
+
+
+def _spy_ccd_reads(monkeypatch: pytest.MonkeyPatch) -> list[object]:
+    """What each step's continuous collision is handed as its read, and a fresh read."""
+    from kge.physics.bulk import BodyReader
+    from kge.physics.ccd import ContinuousCollision
+    from kge.physics.sync import FIELDS
+
+    seen: list[object] = []
+    real = ContinuousCollision.before_step
+
+    def spy(self: ContinuousCollision, dt: float, n: int = 1,
+            read: tuple[np.ndarray, np.ndarray] | None = None) -> int:
+        if read is None:
+            seen.append(None)
+        else:
+            ids, rows = read
+            now_ids, now_rows = BodyReader(FIELDS).read(self.space)
+            seen.append((np.sort(ids).tolist() == np.sort(now_ids).tolist(),
+                         rows[np.argsort(ids)].tobytes() == now_rows[np.argsort(now_ids)].tobytes()))
+        return real(self, dt, n, read)
+
+    monkeypatch.setattr(ContinuousCollision, "before_step", spy)
+    return seen
+
+
+def test_bulk_impulses_hand_their_read_to_the_step_while_it_is_current(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The bulk impulses keep their bulk read current (the velocities they wrote patched
+    in), so the step's continuous collision and joints use it instead of reading again;
+    any other change between the impulses and the step drops it."""
+    seen = _spy_ccd_reads(monkeypatch)
+    sim, es = _scene()
+    try:
+        pushes = [(1.0, 2.0), (-0.5, 0.3), (0.2, 0.1)]
+        points = [(0.3, 2.1), (2.0, 3.2), (-2.1, 4.5)]
+        sim.physics.apply_linear_impulses(es, pushes, points)
+        sim.step()
+        assert seen[-1] == (True, True)  # handed over, and equal to a read at that moment
+        for change in ("component", "force", "single impulse", "query after a write"):
+            sim.physics.apply_linear_impulses(es, pushes, points)
+            if change == "component":
+                sim.rb(es[1]).velocity = (4.0, 0.0)
+            elif change == "force":
+                sim.physics.apply_force(es[0], (1.0, 0.0))
+            elif change == "single impulse":
+                sim.physics.apply_linear_impulse(es[2], (0.0, 1.0))
+            else:
+                sim.t(es[0]).x += 0.5
+                sim.physics.query_point((0.0, 0.0))  # syncs the teleport before the step
+            sim.step()
+            assert seen[-1] is None, change
+    finally:
+        sim.close()
