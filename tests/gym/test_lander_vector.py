@@ -204,6 +204,7 @@ def test_a_relaid_scene_starts_as_a_fresh_scene_does(seed: int) -> None:
     envs = make_vec(LUNAR_LANDER, num_envs=1)
     envs.reset(seed=seed)
     _finish_episode(envs, np.random.default_rng(seed + 100))
+    envs._draws.give_back([0])  # the dispersion drawn ahead goes back to the stream
     state = copy.deepcopy(envs._rngs[0])
     relaid, *_ = envs.step(np.array([0]))  # the autoreset step
     fresh_env = make_vec(LUNAR_LANDER, num_envs=1)
