@@ -270,8 +270,8 @@ class Physics:
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)
-        try_get = self._world.try_get
-        rbs = [try_get(e, RigidBody) for e in ents]
+        every = sim._rigidbodies  # the RigidBody of each slot (rebuilt with the table)
+        rbs = [every[i] for i in found]
         if any(rb is None for rb in rbs):  # (``None in`` would call each dataclass's __eq__)
             keep = [k for k, rb in enumerate(rbs) if rb is not None]
             rbs = [rbs[k] for k in keep]
