@@ -390,29 +390,38 @@ def throttles(actions: np.ndarray, continuous: bool) -> tuple[np.ndarray, np.nda
 
 def fire(physics: Physics, landers: list[int], pose: np.ndarray, dispersion: np.ndarray,
          m_power: np.ndarray, s_power: np.ndarray, direction: np.ndarray) -> None:
-    """The engines' impulses, Gymnasium's geometry: computed for every lander at once
-    (``pose`` rows x, y, angle; ``dispersion`` rows uniform in [-1, 1]), applied to the
-    landers whose engines fire."""
-    tip_x, tip_y = np.sin(pose[:, 2]), np.cos(pose[:, 2])
-    side_x, side_y = -tip_y, tip_x
-    d0, d1 = dispersion[:, 0] / SCALE, dispersion[:, 1] / SCALE
-    along = MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0
-    mx, my = tip_x * along + side_x * d1, -tip_y * along - side_y * d1
-    lever = 3 * d1 + direction * SIDE_ENGINE_AWAY / SCALE
-    sx, sy = tip_x * d0 + side_x * lever, -tip_y * d0 - side_y * lever
-    p_main, p_side = MAIN_ENGINE_POWER * m_power, SIDE_ENGINE_POWER * s_power
-    main = np.stack([-mx * p_main, -my * p_main,
-                     pose[:, 0] + mx, pose[:, 1] + my], axis=1)
-    side = np.stack([-sx * p_side, -sy * p_side,
-                     pose[:, 0] + sx - tip_x * 17 / SCALE,
-                     pose[:, 1] + sy + tip_y * SIDE_ENGINE_HEIGHT / SCALE], axis=1)
+    """The engines' impulses, Gymnasium's geometry, for the landers whose engines fire
+    (``pose`` rows x, y, angle; ``dispersion`` rows uniform in [-1, 1]), in numpy."""
     # every firing engine in one call, main engines first (the order of the calls
-    # one by one, which an env whose two engines fire at once depends on)
+    # one by one, which an env whose two engines fire at once depends on); only the
+    # firing rows are computed, in one set of columns for both kinds of engine
     on_main, on_side = np.flatnonzero(m_power > 0.0), np.flatnonzero(s_power > 0.0)
-    if len(on_main) or len(on_side):
-        rows = np.concatenate([main[on_main], side[on_side]])
-        who = np.asarray(landers, dtype=np.int64)[np.concatenate([on_main, on_side])]
-        physics.apply_linear_impulses(who, rows[:, :2], rows[:, 2:])
+    k = len(on_main)
+    if not (k or len(on_side)):
+        return
+    rows = np.concatenate([on_main, on_side])
+    x, y, angle = pose[rows].T
+    tip_x, tip_y = np.sin(angle), np.cos(angle)
+    d0, d1 = (dispersion[rows] / SCALE).T
+    # the nozzle's offset along the tip (main: below the hull; side: the dispersion)
+    # and across it (main: the dispersion; side: out to the engine's side)
+    along = d0.copy()
+    along[:k] = MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0[:k]
+    across = d1.copy()
+    across[k:] = 3 * d1[k:] + direction[on_side] * SIDE_ENGINE_AWAY / SCALE
+    ox = tip_x * along + (-tip_y) * across  # (side = (-tip_y, tip_x))
+    oy = -tip_y * along - tip_x * across
+    power = np.concatenate([MAIN_ENGINE_POWER * m_power[on_main],
+                            SIDE_ENGINE_POWER * s_power[on_side]])
+    out = np.empty((len(rows), 4))
+    out[:, 0] = -ox * power
+    out[:, 1] = -oy * power
+    out[:, 2] = x + ox
+    out[:, 3] = y + oy
+    out[k:, 2] -= tip_x[k:] * 17 / SCALE
+    out[k:, 3] += tip_y[k:] * SIDE_ENGINE_HEIGHT / SCALE
+    who = np.asarray(landers, dtype=np.int64)[rows]
+    physics.apply_linear_impulses(who, out[:, :2], out[:, 2:])
 
 
 def observations(state: np.ndarray, legs: np.ndarray, helipad_y: float) -> np.ndarray:

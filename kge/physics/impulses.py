@@ -144,25 +144,27 @@ def distinct_velocities(
     order, so the floats are the same as the row-by-row path's.
     """
     out = state[:, 3:6].copy()
-    mass = np.array([md.mass for md in masses])
-    moment = np.array([md.inertia for md in masses])
+    md = np.array([(m.mass, m.inertia, *m.center) for m in masses]).reshape(-1, 4)
+    mass, moment = md[:, 0], md[:, 1]
     jx, jy = impulses[:, 0], impulses[:, 1]
-    out[:, 0] += jx / mass
-    out[:, 1] += jy / mass
-    turns = np.isfinite(moment)
-    if not turns.any():
-        return out
-    angles = state[:, 2].tolist()
-    ca = np.array([math.cos(a) for a in angles])
-    sa = np.array([math.sin(a) for a in angles])
-    gx = np.array([md.center[0] for md in masses])
-    gy = np.array([md.center[1] for md in masses])
-    cx = ca * gx + (-sa) * gy + state[:, 0]
-    cy = sa * gx + ca * gy + state[:, 1]
-    px, py = (cx, cy) if points is None else (points[:, 0], points[:, 1])
-    with np.errstate(all="ignore"):  # rows that cannot turn are not used
+    with np.errstate(all="ignore"):  # too large a push: the caller reports the row
+        out[:, 0] += jx / mass
+        out[:, 1] += jy / mass
+        turns = np.isfinite(moment)
+        if not turns.any():
+            return out
+        angles = state[:, 2].tolist()
+        ca = np.array([math.cos(a) for a in angles])
+        sa = np.array([math.sin(a) for a in angles])
+        gx, gy = md[:, 2], md[:, 3]
+        cx = ca * gx + (-sa) * gy + state[:, 0]
+        cy = sa * gx + ca * gy + state[:, 1]
+        px, py = (cx, cy) if points is None else (points[:, 0], points[:, 1])
         spin = ((px - cx) * jy - (py - cy) * jx) / moment
-    out[turns, 2] += spin[turns]
+    if turns.all():
+        out[:, 2] += spin
+    else:  # (a body that cannot turn keeps its angular velocity, even a -0.0)
+        out[turns, 2] += spin[turns]
     return out
 
 

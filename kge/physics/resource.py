@@ -253,9 +253,8 @@ class Physics:
         if state is None:
             return False
         v = impulses_mod.distinct_velocities(state, [r.mass for r in recs], jj, pp)
-        bad = ~np.isfinite(v).all(axis=1)
-        if bad.any():
-            k = int(np.flatnonzero(bad)[0])
+        if not np.isfinite(v).all():
+            k = int(np.flatnonzero(~np.isfinite(v).all(axis=1))[0])
             raise ValidationError(
                 f"{owner}: the velocity of entity {ents[k]} after impulses[{k}] would not "
                 f"be finite ({tuple(v[k].tolist())!r}); the input is too large"
