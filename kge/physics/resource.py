@@ -262,10 +262,9 @@ class Physics:
         self._sim.touched = True
         v[np.abs(v) < TINY] = 0.0  # kge.physics.tiny.flush, every value at once
         vx, vy, w = v.T.tolist()
-        for rec, x, y, a in zip(recs, vx, vy, w, strict=True):
-            cb = rec.body._body
-            _set_velocity(cb, (x, y))
-            _set_angular_velocity(cb, a)
+        cbs = [r.body._body for r in recs]  # Chipmunk's setters mapped over the bodies
+        deque(map(_set_velocity, cbs, zip(vx, vy, strict=True)), maxlen=0)
+        deque(map(_set_angular_velocity, cbs, w), maxlen=0)
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)
