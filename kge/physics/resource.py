@@ -235,6 +235,7 @@ class Physics:
         awake dynamic body in the space (a batch of engines). False (nothing done) for
         anything else, which the row-by-row path handles."""
         sim = self._sim
+        sim.fresh_read = None  # it views the buffer the read below refills
         table = sim.poses
         get = table.slot.get
         found = [get(e, -1) for e in ents]
