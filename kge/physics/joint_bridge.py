@@ -361,6 +361,8 @@ class JointBridge:
             if state is not None:
                 h0 = self.space.current_time_step
                 batch.read_back(state, dt, h0 if h0 > 0 else 1.0 / 60.0, self.space.gravity)
+                # nothing moves a body from here to sync-out: it reuses this read
+                self.sim.out_read = batch.raw
         for e, h in self._checked if live else ordered:
             if e not in self.handles:
                 continue  # destroyed with a joint it depended on

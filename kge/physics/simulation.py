@@ -121,6 +121,9 @@ class Simulation:
         #: bodies between steps when it could keep its own bulk read current (the bulk
         #: impulses); anything else that changes a body clears it (Physics does)
         self.fresh_read: tuple[np.ndarray, np.ndarray] | None = None
+        #: a bulk read the joints' after-step work left current (its moves patched in),
+        #: for sync-out instead of reading every body again (JointBridge.after_step)
+        self.out_read: tuple[np.ndarray, np.ndarray] | None = None
         #: ``poses.prev`` equals the current poses (set by a quiet step)
         self._prev_is_current = False
 
@@ -763,14 +766,16 @@ class Simulation:
         forces.clear()
         rec.substep = 0
         self.steps += 1
+        self.out_read = None
         self.joints.after_step(self.dt)
+        out, self.out_read = self.out_read, None
         if quiet:
             if not self._prev_is_current:  # at rest: no interpolation (copied once)
                 self.poses.prev[:] = self.poses.state[:, :3]
                 self._prev_is_current = True
         else:
             self._prev_is_current = False
-            self.sync_out()
+            self.sync_out(out)
         self.events.sort()  # Chipmunk's order follows addresses (kge.physics.events)
         self.errors.raise_pending()
         rec.deliver_post_solve()
@@ -789,8 +794,11 @@ class Simulation:
         self.recorder.begin_step()
 
     # -- sync-out -------------------------------------------------------------------------
-    def sync_out(self) -> None:
+    def sync_out(self, raw: tuple[np.ndarray, np.ndarray] | None = None) -> None:
         """Read every moving body once and write the ones that changed to their components.
+
+        ``raw``: a bulk read of the whole space that is still current (the joints'
+        after-step read, their position pass's moves patched in), instead of a new one.
 
         Its fixed cost is a few dozen numpy calls, which is what a small world (a
         Gymnasium lander) pays per step, so the common cases take the short way:
@@ -800,7 +808,7 @@ class Simulation:
         if self.poses_stale:
             self._rebuild_poses()
         poses = self.poses
-        slots, rows = poses.read(self.space)
+        slots, rows = poses.read(self.space, raw)
         if len(slots) == 0:
             self.all_asleep = len(poses.dynamic) == 0
             return

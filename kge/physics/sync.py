@@ -146,13 +146,16 @@ class PoseTable:
             self.state[i, :3] = (x, y, angle)
             self.prev[i] = (x, y, angle)
 
-    def read(self, space: pymunk.Space) -> tuple[np.ndarray, np.ndarray]:
+    def read(
+        self, space: pymunk.Space, raw: tuple[np.ndarray, np.ndarray] | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Fetch all rows; returns (slots, rows) of the tracked bodies, in slot order.
 
         ``rows`` is a fresh array (a gather), owned by the caller. :attr:`full`
-        tells whether ``slots`` is every slot, i.e. ``arange(len(ids))``.
+        tells whether ``slots`` is every slot, i.e. ``arange(len(ids))``. ``raw``:
+        the (ids, rows) of a current bulk read of ``space`` to use instead of one.
         """
-        ids, rows = self._reader.read(space)
+        ids, rows = self._reader.read(space) if raw is None else raw
         self.raw = (ids, rows)
         if len(self.ids) == 0 or len(ids) == 0:
             self.full = False

@@ -74,6 +74,7 @@ SWEEPS = 1
 
 _set_angle = lib.cpBodySetAngle
 _set_position = lib.cpBodySetPosition
+_get_position = lib.cpBodyGetPosition
 _get_impulse = lib.cpConstraintGetImpulse
 
 
@@ -142,6 +143,9 @@ class PivotBatch:
         self.v0: np.ndarray | None = None
         self._mass_epoch = -1
         self.tolerance = 1e-9
+        #: the last read of the whole space, with the position pass's moves patched in
+        #: (sync-out reuses it: Simulation.out_read)
+        self.raw: tuple[np.ndarray, np.ndarray] | None = None
         self.torqued: list[int] = []
         self.breakable: list[int] = []
 
@@ -305,6 +309,7 @@ class PivotBatch:
             rows = np.frombuffer(buf.float_buf(), dtype=np.float64).reshape(-1, 6)
         else:
             ids, rows = raw
+        self.raw = (ids, rows)
         m = self._mapping
         if m is None or not np.array_equal(ids, m[0]):
             if len(ids) == 0:
@@ -398,12 +403,25 @@ class PivotBatch:
             return jolted
         state[:, 0], state[:, 1], state[:, 2] = pos.real, pos.imag, t
         cbodies = self.cbodies
+        moved_rows = []
         for k, x, y, a in zip(idx.tolist(), pos.real[idx].tolist(), pos.imag[idx].tolist(),
                               t[idx].tolist(), strict=True):
             body = cbodies[k]
             _set_angle(body, a)
             _set_position(body, (x, y))
+            p = _get_position(body)  # Chipmunk's origin: (x, y) to the last bit, or not
+            moved_rows.append((p.x, p.y, a))
+        self._patch(idx, moved_rows)
         return jolted
+
+    def _patch(self, idx: np.ndarray, poses: list[tuple[float, float, float]]) -> None:
+        """Put the moved bodies' poses into :attr:`raw` (a copy: the buffer is reused)."""
+        if self.raw is None or self._mapping is None:
+            return
+        ids, rows = self.raw
+        rows = rows.copy()
+        rows[self._mapping[1][idx - 1], :3] = poses  # slot k >= 1 is row found[k - 1]
+        self.raw = (ids, rows)
 
     @staticmethod
     def _limits(limit: tuple[Any, ...], pos: np.ndarray, t: np.ndarray,
