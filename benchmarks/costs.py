@@ -9,6 +9,10 @@ issue sets targets for, each measured side by side with raw pymunk in one run:
   should not grow with the body count);
 * ``despawn_ms``: the frame that despawns a 1,000-body wave (the spawn scene's
   ``prepare``), interleaved with raw pymunk removing the same wave;
+* ``churn_ms``: spawning a 7-entity scene (3 bodies, 2 joints, 2 ground colliders)
+  into a world of 200 or 2,000 bodies and despawning it (a bullet, a respawned
+  lander), beside raw pymunk adding and removing the same objects: a structural
+  change costs what it changes, so the two kge figures should be about equal;
 * ``bytes_per_body``: RSS growth per body while building the sparse field of
   10,000 bodies, each engine in a fresh interpreter (memory a process has freed
   is not given back, so one process cannot measure both).
@@ -269,12 +273,153 @@ def component_build_ms(count: int = 1000, repeats: int = 9) -> float:
     return statistics.median(times)
 
 
+#: world sizes of the structural-change figure (its bodies; half as many joints)
+CHURN_WORLDS = (200, 2000)
+#: steps the churn worlds take before they are measured (the crowd lands on its ground)
+CHURN_SETTLE = 30
+
+
+def _churn_world(bodies: int) -> tuple[Any, Any, Any]:
+    """(app, physics, anchor): ``bodies`` dynamic 0.8 m boxes in pairs on revolute joints,
+    resting on a ground (a contact each): the world a few bodies are spawned into."""
+    from kge.app import App
+    from kge.components import Box, Collider, RevoluteJoint, RigidBody, Transform
+    from kge.physics.resource import Physics
+
+    app = App(lambda world: None, headless=True)
+    world = app.world
+    anchor = world.spawn(Transform(0.0, -1.0), Collider(Box(2.0 * bodies, 1.0)))
+    for k in range(bodies // 2):
+        x = 2.0 * k
+        a = world.spawn(Transform(x, 0.45), RigidBody(), Collider(Box(0.4, 0.4), density=1.0))
+        b = world.spawn(Transform(x + 0.9, 0.45), RigidBody(), Collider(Box(0.4, 0.4)))
+        world.spawn(RevoluteJoint(a, b, local_anchor_a=(0.45, 0.0), local_anchor_b=(-0.45, 0.0)))
+    app.step(CHURN_SETTLE)
+    return app, world.resource(Physics), anchor
+
+
+def _churn_scene(world: Any, x: float) -> list[int]:
+    """A lander-sized scene at ``x`` (far above the crowd): a hull and two legs on motorised,
+    limited hinges, and a ground of an edge and a 10-segment chain. 7 entities."""
+    from kge.components import Box, Chain, Collider, Edge, RevoluteJoint, RigidBody, Transform
+
+    made = [world.spawn(Transform(x, 100.0), Collider(Edge((0.0, 0.0), (20.0, 0.0)))),
+            world.spawn(Transform(x, 100.0),
+                        Collider(Chain([(2.0 * i, 1.0 + (i % 3)) for i in range(11)])))]
+    hull = world.spawn(Transform(x + 10.0, 110.0), RigidBody(),
+                       Collider(Box(0.5, 0.3), density=5.0))
+    made.append(hull)
+    for side in (-1, 1):
+        leg = world.spawn(Transform(x + 10.0 - 0.7 * side, 109.5), RigidBody(),
+                          Collider(Box(0.05, 0.15), density=1.0))
+        made += [leg, world.spawn(RevoluteJoint(
+            hull, leg, local_anchor_b=(0.7 * side, 0.6), enable_limit=True, lower_angle=-0.4,
+            upper_angle=0.4, enable_motor=True, motor_speed=0.3, max_motor_torque=40.0))]
+    return made
+
+
+def _raw_scene(space: Any, x: float) -> list[Any]:
+    """:func:`_churn_scene` in raw pymunk: the same bodies, shapes and constraints."""
+    import pymunk
+
+    static = space.static_body
+    objs: list[Any] = [pymunk.Segment(static, (x, 100.0), (x + 20.0, 100.0), 0.01)]
+    pts = [(x + 2.0 * i, 101.0 + (i % 3)) for i in range(11)]
+    objs += [pymunk.Segment(static, pts[i], pts[i + 1], 0.01) for i in range(10)]
+    hull = pymunk.Body(3.0, 1.0)
+    hull.position = (x + 10.0, 110.0)
+    objs += [hull, pymunk.Poly.create_box(hull, (1.0, 0.6), 0.01)]  # kge's Box: half sizes
+    for side in (-1, 1):
+        leg = pymunk.Body(0.03, 0.001)
+        leg.position = (x + 10.0 - 0.7 * side, 109.5)
+        objs += [leg, pymunk.Poly.create_box(leg, (0.1, 0.3), 0.01),
+                 pymunk.PivotJoint(hull, leg, (0.0, 0.0), (0.7 * side, 0.6)),
+                 pymunk.RotaryLimitJoint(hull, leg, -0.4, 0.4), pymunk.SimpleMotor(hull, leg, 0.3)]
+    space.add(*objs)
+    return objs
+
+
+def _raw_world(bodies: int) -> Any:
+    import pymunk
+
+    space = pymunk.Space()
+    space.gravity = (0.0, -10.0)
+    space.add(ground := pymunk.Segment(space.static_body, (0.0, -0.5), (2.0 * bodies, -0.5), 0.5))
+    for k in range(bodies // 2):
+        pair = []
+        for dx in (0.0, 0.9):
+            body = pymunk.Body(0.64, 0.07)
+            body.position = (2.0 * k + dx, 0.45)
+            space.add(body, pymunk.Poly.create_box(body, (0.8, 0.8), 0.01))
+            pair.append(body)
+        pivot = pymunk.PivotJoint(pair[0], pair[1], (0.45, 0.0), (-0.45, 0.0))
+        pivot.collide_bodies = False
+        space.add(pivot)
+    for _ in range(CHURN_SETTLE):
+        space.step(1 / 60)
+    del ground
+    return space
+
+
+def churn_costs(repeats: int, worlds: tuple[int, ...] = CHURN_WORLDS) -> dict[str, float]:
+    """ms to spawn a 7-entity scene (3 bodies, 2 joints, 2 ground colliders) into a world
+    and despawn it again, each applied by a sync-in, in worlds of ``worlds`` bodies; raw
+    pymunk adding and removing the same objects beside it, interleaved.
+
+    The figure of a structural change's cost: it should not grow with the world
+    (kge at the largest world / kge at the smallest about 1).
+    """
+    kge_worlds = {n: _churn_world(n) for n in worlds}
+    raw_worlds = {n: _raw_world(n) for n in worlds}
+    times: dict[str, list[float]] = {f"{e}_{n}": [] for n in worlds for e in ("kge", "raw")}
+    gc.collect()
+    gc.disable()
+    try:
+        for r in range(repeats + 1):
+            for n in worlds:
+                app, physics, anchor = kge_worlds[n]
+                world = app.world
+                t0 = time.perf_counter()
+                made = _churn_scene(world, -1000.0)
+                physics.is_awake(made[2])  # sync-in: the scene enters the space
+                for e in made:
+                    world.despawn(e)
+                world.flush()
+                physics.is_awake(anchor)  # sync-in: it leaves
+                t1 = time.perf_counter()
+                space = raw_worlds[n]
+                objs = _raw_scene(space, -1000.0)
+                space.remove(*objs)
+                t2 = time.perf_counter()
+                if r:  # the first round warms up
+                    times[f"kge_{n}"].append((t1 - t0) * 1000.0)
+                    times[f"raw_{n}"].append((t2 - t1) * 1000.0)
+            gc.collect()
+    finally:
+        gc.enable()
+        for app, _, _ in kge_worlds.values():
+            app.close()
+    out = {f"churn_{k}_ms": statistics.median(v) for k, v in times.items()}
+    out["churn_small"], out["churn_large"] = float(min(worlds)), float(max(worlds))
+    return out
+
+
+def churn_line(c: dict[str, float]) -> str:
+    small, large = int(c["churn_small"]), int(c["churn_large"])
+    k_s, k_l = c[f"churn_kge_{small}_ms"], c[f"churn_kge_{large}_ms"]
+    r_l = c[f"churn_raw_{large}_ms"]
+    return (f"  spawn+despawn 7 entities (3 bodies, 2 joints) in {small:,} / {large:,} bodies"
+            f"  kge {k_s:.2f} / {k_l:.2f} ms ({k_l / k_s:.2f}x)  pymunk {r_l:.3f} ms"
+            f" (kge / pymunk {k_l / r_l:.0f}x)")
+
+
 def measure(quick: bool = False) -> dict[str, float]:
     """Every figure of this module (smaller and fewer when ``quick``)."""
     out: dict[str, float] = {"component_build_ms": component_build_ms(100 if quick else 1000)}
     out.update(variant_costs(quick))
     out.update(sync_costs(500 if quick else 20_000, 5 if quick else 40))
     out.update(despawn_costs(100 if quick else 1000, 2 if quick else 9))
+    out.update(churn_costs(5 if quick else 40))
     n = 1000 if quick else MEMORY_BODIES
     out["bytes_per_body_kge"] = memory_per_body("kge", n)
     out["bytes_per_body_pymunk"] = memory_per_body("pymunk", n)
@@ -292,6 +437,7 @@ def table(costs: dict[str, float]) -> str:
         f"            kge {c['despawn_kge_ms']:.1f} ms"
         f"  pymunk {c['despawn_pymunk_ms']:.1f} ms",
         f"  building the components of the spawn wave  {c['component_build_ms']:.1f} ms",
+        *([churn_line(c)] if "churn_small" in c else []),
         f"  memory per body (RSS)                      kge {c['bytes_per_body_kge']:.0f} B"
         f"  pymunk {c['bytes_per_body_pymunk']:.0f} B",
         "  kge variants, frame ms (x default; threads-2 is not deterministic):",
@@ -315,6 +461,11 @@ def markdown(costs: dict[str, float]) -> list[str]:
         f"| {c['despawn_kge_ms']:.1f} | {c['despawn_pymunk_ms']:.1f} |",
         f"| components of the spawn wave, built and checked, ms "
         f"| {c['component_build_ms']:.1f} | - |",
+        *[
+            f"| spawn + despawn 7 entities (3 bodies, 2 joints) in a world of {n:,.0f} bodies, "
+            f"ms | {c[f'churn_kge_{n:.0f}_ms']:.2f} | {c[f'churn_raw_{n:.0f}_ms']:.3f} |"
+            for n in ((c["churn_small"], c["churn_large"]) if "churn_small" in c else ())
+        ],
         f"| memory per body (RSS growth, sparse field), bytes "
         f"| {c['bytes_per_body_kge']:,.0f} | {c['bytes_per_body_pymunk']:,.0f} |",
         "", "kge variants, frame ms (ratio to the default; `threads-2` is not deterministic):",

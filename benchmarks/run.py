@@ -122,6 +122,10 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
     add("sync-out per moved body (sparse field)", c.get("sync_out_us"), 0.10, True, "µs")
     despawn = c.get("despawn_kge_ms") if c.get("despawn_count") == 1000 else None
     add("despawning 1,000 bodies in one frame", despawn, 25.0, True, "ms")
+    # a structural change costs what it changes: the same in a 10x larger world
+    add("spawn+despawn of 7 entities, kge in 2,000 bodies / in 200",
+        c["churn_kge_2000_ms"] / c["churn_kge_200_ms"] if "churn_kge_2000_ms" in c else None,
+        1.3, True)
     # lunar-lander: Gymnasium's LunarLander on kge.box2d vs on pybox2d (goal: half its speed)
     for scene, size, goal in (("pyramid", 40, 0.80), ("chain", 200, 0.70),
                               ("many-sleeping", 5000, 0.10), ("lunar-lander", 50, 2.0)):

@@ -75,6 +75,11 @@ class JointHandle(ABC):
     #: other joint entities this one depends on (a gear on its two joints): when one
     #: of them is destroyed, this joint is destroyed first.
     depends_on: tuple[int, ...] = ()
+    #: ``body_a``, ``body_b`` and ``depends_on`` stay as built. The bridge indexes
+    #: joints by them (a despawned body finds its joints without a pass over all);
+    #: a handle that changes them later (a gear, which takes its joints' bodies
+    #: once they exist) sets this False and is looked at by every such query.
+    fixed_ends: bool = True
     #: its last position pass moved its bodies a long way (set by the handle)
     jolted: bool = False
 

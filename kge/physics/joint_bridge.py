@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib
+import itertools
 from typing import TYPE_CHECKING, Any
 
 import pymunk
@@ -89,9 +90,20 @@ class JointBridge:
         self.pending: set[int] = set()
         self.dirty: set[int] = set()
         self.removed: set[int] = set()
+        #: every joint's membership must be checked at the next refresh (the
+        #: targeted marks below cover the changes the bridge and the simulation make)
         self.membership_dirty = False
+        self._check_joints: set[int] = set()  # new joints: their membership is checked
+        self._check_bodies: set[int] = set()  # bodies in or out of the space, or retyped
         #: bumped by every membership refresh (body types or enabled flags changed)
         self.types_epoch = 0
+        # indexes of the live handles, so a structural change costs what it touches:
+        self._rank: dict[int, int] = {}  # joint -> place in ``handles``' order
+        self._ranks = itertools.count()
+        self._by_body: dict[int, set[int]] = {}  # body entity -> joints on it
+        self._dependents: dict[int, set[int]] = {}  # joint -> joints depending on it
+        self._indexed: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
+        self._loose: set[int] = set()  # handles whose ends may change: always looked at
         self._batch_epoch = -1
         self._ordered: list[tuple[int, joint_api.JointHandle]] | None = None
         self._batch: Any = None  # PivotBatch, created on first use
@@ -166,7 +178,7 @@ class JointBridge:
                 if e in self._batched or self._batchable(e, h):
                     self._batch_epoch = -1  # anchors, reference or motor changed
             self.dirty.clear()
-        if self.membership_dirty:
+        if self.membership_dirty or self._check_joints or self._check_bodies:
             self.refresh_membership()
 
     def _try_build(self, entity: int) -> None:
@@ -184,8 +196,9 @@ class JointBridge:
         handle = builder(self, entity, comp)
         handle.apply(comp)
         self.handles[entity] = handle
+        self._index(entity, handle)
         self._ordered = None
-        self.membership_dirty = True
+        self._check_joints.add(entity)
         self.pending.discard(entity)
         self.dirty.discard(entity)
 
@@ -199,19 +212,80 @@ class JointBridge:
         as at spawn.
         """
         h = self.handles.pop(entity)
+        self._unindex(entity)
         h.remove(self.space)
         self._ordered = None
         self._batch_epoch = -1
         self.pending.add(entity)
         self._try_build(entity)
 
+    # -- indexes: which joints a body or a joint concerns ---------------------------------
+    def _index(self, entity: int, h: joint_api.JointHandle) -> None:
+        """Record a new handle under its bodies and the joints it depends on.
+
+        A handle whose ends may change after it is built (``fixed_ends`` False: a
+        gear takes its joints' bodies once they exist) is kept apart and looked at
+        by every query instead; every query re-checks the live handle anyway.
+        """
+        self._rank[entity] = next(self._ranks)
+        if not h.fixed_ends:
+            self._loose.add(entity)
+            return
+        ends = tuple({h.body_a, h.body_b} - {-1})
+        deps = tuple(set(h.depends_on))
+        self._indexed[entity] = (ends, deps)
+        for b in ends:
+            self._by_body.setdefault(b, set()).add(entity)
+        for d in deps:
+            self._dependents.setdefault(d, set()).add(entity)
+
+    def _unindex(self, entity: int) -> None:
+        self._rank.pop(entity, None)
+        self._loose.discard(entity)
+        ends, deps = self._indexed.pop(entity, ((), ()))
+        for key in ends:
+            _discard(self._by_body, key, entity)
+        for key in deps:
+            _discard(self._dependents, key, entity)
+
+    def on_body(self, body: int) -> list[int]:
+        """The joints that may be built on ``body``, sorted (re-check each handle's ends)."""
+        return sorted(self._by_body.get(body, set()) | self._loose)
+
+    def depending_on(self, joint: int) -> list[int]:
+        """The joints that may depend on ``joint``, sorted (re-check ``depends_on``)."""
+        return sorted(self._dependents.get(joint, set()) | self._loose)
+
+    def body_changed(self, body: int) -> None:
+        """A body entered or left the space or changed type: its joints' constraints
+        are checked at the next :meth:`refresh_membership`."""
+        self._check_bodies.add(body)
+
     def refresh_membership(self) -> None:
-        """Constraints are in the space exactly while both bodies are."""
+        """Constraints are in the space exactly while both bodies are (one dynamic).
+
+        Only the joints that may have changed are looked at: new ones, those on
+        the bodies marked with :meth:`body_changed`, and those whose ends may
+        move; all of them when :attr:`membership_dirty` asks. They are visited in
+        the order of :attr:`handles` (the order of the space's constraint array,
+        and so of the solver, follows these adds and removes).
+        """
+        full = self.membership_dirty
         self.membership_dirty = False
         self.types_epoch += 1
+        joints, bodies = self._check_joints, self._check_bodies
+        self._check_joints, self._check_bodies = set(), set()
+        if full:
+            chosen: Any = self.handles.values()
+        else:
+            for b in bodies:
+                joints |= self._by_body.get(b, set())
+            joints |= self._loose
+            rank = self._rank
+            chosen = [self.handles[e] for e in sorted(
+                (e for e in joints if e in self.handles), key=rank.__getitem__)]
         space = self.space
-        present = set(space.constraints)
-        for h in self.handles.values():
+        for h in chosen:
             for c in h.constraints:
                 a, b = c.a, c.b
                 want = (
@@ -219,9 +293,10 @@ class JointBridge:
                     and b.space is space
                     and (a.body_type == pymunk.Body.DYNAMIC or b.body_type == pymunk.Body.DYNAMIC)
                 )
-                if want and c not in present:
+                present = joint_api.in_space(space, c)
+                if want and not present:
                     space.add(c)
-                elif not want and c in present:
+                elif not want and present:
                     space.remove(c)
 
     def ordered(self) -> list[tuple[int, joint_api.JointHandle]]:
@@ -429,7 +504,7 @@ class JointBridge:
 
     def body_removed(self, body_entity: int) -> None:
         """A body left: destroy every joint on it (and joints depending on those)."""
-        for e in sorted(self.handles):
+        for e in self.on_body(body_entity):
             h = self.handles.get(e)
             if h is not None and body_entity in (h.body_a, h.body_b):
                 self._destroy(e, event=True)
@@ -440,9 +515,10 @@ class JointBridge:
         h = self.handles.pop(entity, None)
         if h is None:
             return
+        self._unindex(entity)
         self._ordered = None
         self._batch_epoch = -1
-        for other in sorted(self.handles):
+        for other in self.depending_on(entity):
             oh = self.handles.get(other)
             if oh is not None and entity in oh.depends_on:
                 self._destroy(other, event=True)
@@ -451,3 +527,11 @@ class JointBridge:
         h.remove(self.space)
         if event:
             self.sim.events.joint_destroyed.append(JointDestroyed(entity, h.body_a, h.body_b))
+
+
+def _discard(table: dict[int, set[int]], key: int, entity: int) -> None:
+    members = table.get(key)
+    if members is not None:
+        members.discard(entity)
+        if not members:
+            del table[key]

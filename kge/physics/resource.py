@@ -269,7 +269,7 @@ class Physics:
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)
-        every = sim._rigidbodies  # the RigidBody of each slot (rebuilt with the table)
+        every = sim._targets.rigidbodies[0]  # the RigidBody of each slot (re-slotted with it)
         rbs = [every[i] for i in found]
         if any(rb is None for rb in rbs):  # (``None in`` would call each dataclass's __eq__)
             keep = [k for k, rb in enumerate(rbs) if rb is not None]

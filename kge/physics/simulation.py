@@ -98,8 +98,8 @@ class Simulation:
         self.no_sleep: set[int] = set()
         self.poses = PoseTable()
         self.poses_stale = True
-        self._transforms: list[Transform | None] = []
-        self._rigidbodies: list[RigidBody | None] = []
+        #: entities whose pose-table slot (membership, body, components) may have changed
+        self._pose_dirty: set[int] = set()
         self._targets = Targets([], [])
         #: bumped whenever a body's mass data is recomputed (joint batches watch it)
         self.mass_epoch = 0
@@ -136,7 +136,7 @@ class Simulation:
         bind(rb, entity, self.rb_dirty)
         self.body_struct.add(entity)
         self.rb_dirty.add(entity)
-        self.poses_stale = True
+        self._restale(entity)
 
     def on_rigidbody_removed(self, entity: int, rb: RigidBody) -> None:
         unbind(rb)
@@ -179,11 +179,16 @@ class Simulation:
     def on_transform_added(self, entity: int, t: Transform) -> None:
         bind(t, entity, self.tf_dirty)
         self.tf_dirty.add(entity)
-        self.poses_stale = True
+        self._restale(entity)
 
     def on_transform_removed(self, entity: int, t: Transform) -> None:
         unbind(t)
+        self._restale(entity)
+
+    def _restale(self, entity: int) -> None:
+        """The pose-table slot of ``entity`` is re-read at the next sync-in."""
         self.poses_stale = True
+        self._pose_dirty.add(entity)
 
     def on_platform_changed(self, entity: int, p: OneWayPlatform) -> None:
         if self.world.exists(entity) and self.world.try_get(entity, OneWayPlatform) is p:
@@ -391,7 +396,7 @@ class Simulation:
         else:
             rec.enabled = False
         self.mass_dirty.add(e)
-        self.poses_stale = True
+        self._restale(e)
 
     def _destroy_body(self, rec: BodyRecord) -> None:
         self.joints.body_removed(rec.entity)
@@ -411,7 +416,7 @@ class Simulation:
             rec.in_space = False
         del self.bodies[rec.entity]
         self.no_sleep.discard(rec.entity)
-        self.poses_stale = True
+        self._restale(rec.entity)
 
     def _remove_shapes(self, crec: ColliderRecord) -> None:
         space = self.space
@@ -514,9 +519,10 @@ class Simulation:
             if self.ccd is not None:
                 self.ccd.untrack(body)
             set_body_type(body, ptype)  # safe: sync-in runs between steps
+            self.joints.body_changed(e)
             self.joints.refresh_membership()
             self.mass_dirty.add(e)
-            self.poses_stale = True
+            self._restale(e)
         if rb.enabled != rec.enabled:
             self._set_enabled(rec, rb.enabled)
         if ptype == STATIC:
@@ -650,8 +656,8 @@ class Simulation:
             take_out(space, rec.body)  # wakes its neighbours first (see bodies.take_out)
             rec.in_space = False
         rec.enabled = on
-        self.poses_stale = True
-        self.joints.membership_dirty = True
+        self._restale(rec.entity)
+        self.joints.body_changed(rec.entity)
 
     def _teleport(self, e: int) -> None:
         rec = self.bodies.get(e)
@@ -694,17 +700,27 @@ class Simulation:
         set_mass(body, md)
 
     def _rebuild_poses(self) -> None:
-        items = [
-            (e, r.body)
-            for e, r in self.bodies.items()
-            if not r.implicit and r.body.body_type != STATIC
-        ]
-        self.poses.rebuild(items)
+        """Re-slot the entities whose body or components came, went or changed type.
+
+        Only those are looked at (:meth:`PoseTable.update`), so a few bodies spawned
+        or despawned in a world of thousands cost a few numpy copies of the table
+        instead of a pass over every body. Every other slot keeps its components:
+        each Transform or RigidBody that comes or goes (a replacement too) passes
+        the world hooks above, which mark its entity here.
+        """
+        changed = self._pose_dirty
+        self._pose_dirty = set()
+        bodies = self.bodies
+        items = []
+        for e in changed:
+            r = bodies.get(e)
+            if r is not None and not r.implicit and r.body.body_type != STATIC:
+                items.append((e, r.body))
+        reslot = self.poses.update(changed, items)
         world = self.world
-        ents = self.poses.entities.tolist()
-        self._transforms = [world.try_get(e, Transform) for e in ents]
-        self._rigidbodies = [world.try_get(e, RigidBody) for e in ents]
-        self._targets = Targets(self._transforms, self._rigidbodies)
+        tfs = [world.try_get(e, Transform) for e, _ in items]
+        rbs = [world.try_get(e, RigidBody) for e, _ in items]
+        self._targets.reslot(reslot, tfs, rbs)
         self.poses_stale = False
 
     # -- step ------------------------------------------------------------------------------
@@ -755,7 +771,7 @@ class Simulation:
         cap = None if quiet else self._speed_cap
         s = self.settings
         vmax, wmax = s.max_translation / self.dt, s.max_rotation / self.dt
-        known = (self.poses.ids, self.poses.bodies)
+        known = self.poses.by_id()
         for i in range(n):
             rec.substep = i
             if cap is not None and i:
@@ -849,7 +865,7 @@ class Simulation:
                 if body.is_sleeping:
                     poses.asleep[i] = True
                     body.kge_awake = False
-                    rb = self._rigidbodies[i]
+                    rb = self._targets.rigidbodies[0][i]
                     if rb is not None:
                         raw_set(rb, "awake", False)
                         raw_set(rb, "velocity", (0.0, 0.0))

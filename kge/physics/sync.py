@@ -4,7 +4,7 @@
 all bodies into one buffer (~100x faster than a property loop). Its row order
 is unstable (removals swap rows, sleeping reorders them), so rows are mapped
 to kge slots by BODY_ID with ``np.searchsorted`` over the sorted ids of the
-bodies kge tracks. Only rows whose values changed since the last step are
+bodies kge tracks (:meth:`PoseTable.by_id`). Only rows whose values changed since the last step are
 written to components, so sleeping bodies cost nothing in Python.
 
 The table also keeps the previous step's pose of every tracked body, for
@@ -13,7 +13,9 @@ render interpolation.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pymunk
@@ -33,8 +35,22 @@ FIELDS = (
 _DYNAMIC = pymunk.Body.DYNAMIC
 
 
-def _first(item: tuple[int, int, pymunk.Body]) -> int:
-    return item[0]
+class _InOrder(Sequence[pymunk.Body]):
+    """``bodies`` seen in the order ``slots`` (no copy: indexed a few at a time)."""
+
+    __slots__ = ("_bodies", "_slots")
+
+    def __init__(self, bodies: list[pymunk.Body], slots: np.ndarray) -> None:
+        self._bodies = bodies
+        self._slots = slots
+
+    def __len__(self) -> int:
+        return len(self._slots)
+
+    def __getitem__(self, k: Any) -> Any:
+        if isinstance(k, slice):
+            return [self._bodies[i] for i in self._slots[k].tolist()]
+        return self._bodies[int(self._slots[k])]
 
 
 # columns of the float rows
@@ -70,11 +86,35 @@ def columns_differ(a: np.ndarray, b: np.ndarray, start: int, stop: int) -> np.nd
     return out
 
 
+@dataclass(slots=True)
+class Reslot:
+    """How :meth:`PoseTable.update` moved the slots, for tables kept beside it.
+
+    Slots ``movers`` moved into ``holes`` (the slots of removed entities), the
+    table was cut to ``kept`` slots, then the new entities were appended; the
+    entities re-slotted in place kept their slot. ``placed`` is the slot of each
+    of the update's items, in their order.
+    """
+
+    holes: list[int]
+    movers: list[int]
+    kept: int
+    placed: list[int]
+    size: int
+
+
 class PoseTable:
-    """Slots for the moving (dynamic and kinematic) bodies kge tracks."""
+    """Slots for the moving (dynamic and kinematic) bodies kge tracks.
+
+    A slot is an entity's for as long as its body moves: a removed entity's slot
+    is filled by the last one, and new entities are appended, so a structural
+    change costs what it changes (plus a few array copies), however many bodies
+    the world holds. Slots are therefore in no particular order; :meth:`by_id`
+    gives the id-sorted view that maps a bulk read (a binary search).
+    """
 
     def __init__(self) -> None:
-        self.ids = np.empty(0, dtype=np.int64)  # sorted pymunk body ids
+        self.ids = np.empty(0, dtype=np.int64)  # pymunk body ids, by slot
         self.entities = np.empty(0, dtype=np.int64)
         self.state = np.empty((0, 6))  # x, y, angle, vx, vy, w after the last step
         self.prev = np.empty((0, 3))  # pose one step earlier
@@ -87,6 +127,7 @@ class PoseTable:
         # unless bodies are added, removed, or fall asleep, so it is usually reused
         self._row_ids = b""
         self._mapping: tuple[np.ndarray, np.ndarray] | None = None
+        self._sorted: tuple[np.ndarray, np.ndarray] | None = None  # (sorted ids, their slots)
         #: the last read returned every slot, in slot order (``slots`` is an arange)
         self.full = False
         #: (ids, rows) of the last bulk read, every body of the space (views of the
@@ -94,50 +135,102 @@ class PoseTable:
         #: nothing changed the bodies between the end of a step and the next one
         self.raw: tuple[np.ndarray, np.ndarray] | None = None
 
-    def rebuild(self, items: Sequence[tuple[int, pymunk.Body]]) -> None:
-        """Reset the slots to ``items`` (entity, body), keeping known states.
+    def rebuild(self, items: Sequence[tuple[int, pymunk.Body]]) -> Reslot:
+        """Reset the slots to ``items`` (entity, body), keeping known states."""
+        return self.update([*self.slot, *(e for e, _ in items)], items)
 
-        Runs once per sync-in that added or removed bodies, so it is written for
-        a wave of new bodies among many known ones: known rows are copied with
-        one numpy gather, and only new bodies are read through pymunk.
+    def update(
+        self, changed: Iterable[int], items: Sequence[tuple[int, pymunk.Body]]
+    ) -> Reslot:
+        """Re-slot the ``changed`` entities to ``items`` (entity, body).
+
+        ``items`` are the pairs among ``changed`` that belong in the table now
+        (moving bodies); changed entities without an item leave it. An entity that
+        had a slot keeps it, with its state, previous pose and sleep flag (also on
+        a new body: a RigidBody replaced, as a full rebuild always did); only
+        entities new to the table are read through pymunk. Every other slot keeps
+        its contents, though the last ones may move into the slots freed.
         """
-        old_slot, old_state, old_prev, old_sleep = self.slot, self.state, self.prev, self.asleep
+        slot = self.slot
         self._mapping = None
+        self._sorted = None
         self.raw = None
-        keyed = sorted([(b.id, e, b) for e, b in items], key=_first)  # ids are unique
-        n = len(keyed)
-        self.ids = np.fromiter([k[0] for k in keyed], dtype=np.int64, count=n)
-        ents = [k[1] for k in keyed]
-        self.entities = np.fromiter(ents, dtype=np.int64, count=n)
-        self.bodies = bodies = [k[2] for k in keyed]
-        self.slot = dict(zip(ents, range(n), strict=True))
-        self.dynamic = np.fromiter(
-            [b.body_type == _DYNAMIC for b in bodies], dtype=bool, count=n
-        )
-        old = np.fromiter([old_slot.get(e, -1) for e in ents], dtype=np.int64, count=n)
-        known = old >= 0
-        self.state = np.empty((n, 6))
-        self.prev = np.empty((n, 3))
-        self.asleep = np.zeros(n, dtype=bool)
-        if known.any():
-            src = old[known]
-            self.state[known] = old_state[src]
-            self.prev[known] = old_prev[src]
-            self.asleep[known] = old_sleep[src]
-        fresh = np.flatnonzero(~known).tolist()
+        wanted = {e for e, _ in items}
+        n = len(self.ids)
+        gone = sorted(slot[e] for e in set(changed) if e in slot and e not in wanted)
+        kept = n - len(gone)
+        holes = [i for i in gone if i < kept]
+        dropped = set(gone)
+        movers = [i for i in range(kept, n) if i not in dropped]
+        ids, ents, bodies = self.ids, self.entities, self.bodies
+        for i in gone:
+            del slot[int(ents[i])]
+        if holes:
+            for arr in (ids, ents, self.state, self.prev, self.asleep, self.dynamic):
+                arr[holes] = arr[movers]
+            for h, m in zip(holes, movers, strict=True):
+                bodies[h] = bodies[m]
+                slot[int(ents[h])] = h
+        if gone:
+            del bodies[kept:]
+            self.ids, self.entities = ids[:kept], ents[:kept]
+            self.state, self.prev = self.state[:kept], self.prev[:kept]
+            self.asleep, self.dynamic = self.asleep[:kept], self.dynamic[:kept]
+        placed: list[int] = []
+        fresh: list[tuple[int, pymunk.Body]] = []
+        for e, body in items:
+            known = slot.get(e)
+            if known is None:
+                i = slot[e] = kept + len(fresh)
+                fresh.append((e, body))
+            else:  # known: a new body perhaps, keeping its row
+                i = known
+                self.ids[i] = body.id
+                bodies[i] = body
+                self.dynamic[i] = body.body_type == _DYNAMIC
+            placed.append(i)
         if fresh:
-            rows = []
-            lib = _lib
-            for i in fresh:
-                cp = bodies[i]._body  # Chipmunk's getters: no Vec2d per read
-                p, v = lib.cpBodyGetPosition(cp), lib.cpBodyGetVelocity(cp)
-                rows.append(
-                    (p.x, p.y, lib.cpBodyGetAngle(cp), v.x, v.y, lib.cpBodyGetAngularVelocity(cp))
-                )
-                if lib.cpBodyIsSleeping(cp):
-                    self.asleep[i] = True
-            self.state[fresh] = rows
-            self.prev[fresh] = self.state[fresh, :3]
+            self._append(fresh)
+        return Reslot(holes, movers, kept, placed, len(self.ids))
+
+    def _append(self, fresh: list[tuple[int, pymunk.Body]]) -> None:
+        """New slots at the end, read through Chipmunk's getters (no Vec2d per read)."""
+        m = len(fresh)
+        new = [b for _, b in fresh]
+        self.bodies.extend(new)
+        rows = []
+        asleep = []
+        lib = _lib
+        for body in new:
+            cp = body._body
+            p, v = lib.cpBodyGetPosition(cp), lib.cpBodyGetVelocity(cp)
+            w = lib.cpBodyGetAngularVelocity(cp)
+            rows.append((p.x, p.y, lib.cpBodyGetAngle(cp), v.x, v.y, w))
+            asleep.append(bool(lib.cpBodyIsSleeping(cp)))
+        state = np.array(rows, dtype=np.float64).reshape(m, 6)
+        self.ids = np.concatenate(
+            [self.ids, np.fromiter([b.id for b in new], dtype=np.int64, count=m)]
+        )
+        self.entities = np.concatenate(
+            [self.entities, np.fromiter([e for e, _ in fresh], dtype=np.int64, count=m)]
+        )
+        self.state = np.concatenate([self.state, state])
+        self.prev = np.concatenate([self.prev, state[:, :3]])
+        self.asleep = np.concatenate([self.asleep, np.array(asleep, dtype=bool)])
+        self.dynamic = np.concatenate(
+            [self.dynamic, np.array([b.body_type == _DYNAMIC for b in new], dtype=bool)]
+        )
+
+    def by_id(self) -> tuple[np.ndarray, Sequence[pymunk.Body]]:
+        """(the tracked bodies' ids sorted, the bodies in that order): binary searches."""
+        ids, slots = self._by_id()
+        return ids, _InOrder(self.bodies, slots)
+
+    def _by_id(self) -> tuple[np.ndarray, np.ndarray]:
+        if self._sorted is None:
+            order = np.argsort(self.ids, kind="stable")  # unique ids: the one order
+            self._sorted = (self.ids[order], order)
+        return self._sorted
 
     def teleported(self, entity: int, x: float, y: float, angle: float) -> None:
         """A user moved the body: no interpolation across the jump."""
@@ -162,10 +255,11 @@ class PoseTable:
             return np.empty(0, dtype=np.int64), np.empty((0, 6))
         key = ids.tobytes()  # one memcmp: cheaper than np.array_equal for any size
         if self._mapping is None or key != self._row_ids:
-            idx = np.searchsorted(self.ids, ids)
-            idx[idx >= len(self.ids)] = 0
-            hit = self.ids[idx] == ids
-            slots = idx[hit]
+            known, order = self._by_id()
+            idx = np.searchsorted(known, ids)
+            idx[idx >= len(known)] = 0
+            hit = known[idx] == ids
+            slots = order[idx[hit]]
             order = np.argsort(slots, kind="stable")
             self._mapping = (np.flatnonzero(hit)[order], slots[order])
             self._row_ids = key

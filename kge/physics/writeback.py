@@ -30,13 +30,59 @@ Components = tuple[np.ndarray, np.ndarray]
 
 
 class Targets:
-    """The Transform and RigidBody of every pose-table slot (rebuilt with the table)."""
+    """The Transform and RigidBody of every pose-table slot (re-slotted with the table)."""
 
-    __slots__ = ("rigidbodies", "transforms")
+    __slots__ = ("_columns", "rigidbodies", "transforms")
 
     def __init__(self, transforms: list[Any], rigidbodies: list[Any]) -> None:
-        self.transforms = component_array(transforms)
-        self.rigidbodies = component_array(rigidbodies)
+        self._columns = (_Column(transforms), _Column(rigidbodies))
+        self._views()
+
+    def reslot(self, r: Any, transforms: list[Any], rigidbodies: list[Any]) -> None:
+        """Follow :meth:`~kge.physics.sync.PoseTable.update`'s :class:`Reslot` ``r``:
+        the entities re-slotted get ``transforms`` and ``rigidbodies`` (in the order
+        of its items). The work is proportional to the change."""
+        tf, rb = self._columns
+        tf.reslot(r, transforms)
+        rb.reslot(r, rigidbodies)
+        self._views()
+
+    def _views(self) -> None:
+        tf, rb = self._columns
+        self.transforms = tf.view()
+        self.rigidbodies = rb.view()
+
+
+class _Column:
+    """One component per slot in a buffer with room to grow (views are handed out)."""
+
+    __slots__ = ("has", "n", "objs")
+
+    def __init__(self, items: list[Any]) -> None:
+        self.objs, self.has = component_array(items)
+        self.n = len(items)
+
+    def view(self) -> Components:
+        return self.objs[: self.n], self.has[: self.n]
+
+    def reslot(self, r: Any, items: list[Any]) -> None:
+        objs, has = self.objs, self.has
+        if r.holes:
+            objs[r.holes] = objs[r.movers]
+            has[r.holes] = has[r.movers]
+        objs[r.kept : self.n] = None  # let go of the removed ones
+        has[r.kept : self.n] = False
+        if r.size > len(objs):
+            grown = max(r.size, 2 * len(objs))
+            more = np.empty(grown, dtype=object)
+            more[: r.kept] = objs[: r.kept]
+            mask = np.zeros(grown, dtype=bool)
+            mask[: r.kept] = has[: r.kept]
+            self.objs, self.has = objs, has = more, mask
+        self.n = r.size
+        for i, item in zip(r.placed, items, strict=True):
+            objs[i] = item
+            has[i] = item is not None
 
 
 def write_poses(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:

@@ -75,10 +75,13 @@ def test_report_has_per_body_costs_and_their_targets(report: dict) -> None:
     assert 0 < c["sync_out_us"] < 1000 and c["sync_in_ms"] >= 0
     assert c["despawn_kge_ms"] > 0 and c["despawn_pymunk_ms"] > 0
     assert c["bytes_per_body_kge"] > 0 and c["bytes_per_body_pymunk"] > 0
+    assert c["churn_kge_200_ms"] > 0 and c["churn_raw_2000_ms"] > 0
+    assert "in a world of 2,000 bodies" in report["_md"]
     names = {t["target"] for t in report["targets"]}
     assert {"kge / raw pymunk, chain-200", "kge / raw pymunk, dense-pile-6000",
             "kge / raw pymunk, joint-grid-100",
-            "sync-out per moved body (sparse field)"} <= names
+            "sync-out per moved body (sparse field)",
+            "spawn+despawn of 7 entities, kge in 2,000 bodies / in 200"} <= names
     sync = next(t for t in report["targets"] if t["target"].startswith("sync-out"))
     assert sync["value"] == c["sync_out_us"] and sync["met"] is not None
     assert "Per-body costs" in report["_md"]

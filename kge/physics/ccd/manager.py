@@ -41,10 +41,15 @@ _FIELDS = (
 
 
 class Index:
-    """The tracked bodies sorted by id, with their radii as arrays (rebuilt on track/untrack)."""
+    """The tracked bodies sorted by id, with their radii as arrays.
+
+    Immutable: a change of the tracked set makes a new one (:meth:`changed`), so
+    caches keyed on an index see the change.
+    """
 
     __slots__ = (
-        "bullets", "core", "extent", "ids", "infos", "max_extent", "max_reach", "min_core", "reach",
+        "bullet", "bullets", "core", "extent", "ids", "infos", "max_extent", "max_reach",
+        "min_core", "reach",
     )
 
     def __init__(self, tracked: dict[int, Tracked]) -> None:
@@ -53,15 +58,45 @@ class Index:
         keys = sorted(tracked)
         infos = [tracked[k] for k in keys]
         n = len(keys)
-        self.infos = infos
-        self.ids = np.fromiter(keys, dtype=np.int64, count=n)
-        self.core = np.fromiter([t.core for t in infos], dtype=np.float64, count=n)
-        self.reach = np.fromiter([t.reach for t in infos], dtype=np.float64, count=n)
-        self.extent = np.fromiter([t.extent for t in infos], dtype=np.float64, count=n)
-        self.max_extent = float(self.extent.max()) if infos else 0.0
-        self.max_reach = float(self.reach.max()) if infos else 0.0
-        self.min_core = float(self.core.min()) if infos else 0.0
-        self.bullets = any(t.bullet for t in infos)
+        self._fill(
+            np.fromiter(keys, dtype=np.int64, count=n),
+            np.fromiter([t.core for t in infos], dtype=np.float64, count=n),
+            np.fromiter([t.reach for t in infos], dtype=np.float64, count=n),
+            np.fromiter([t.extent for t in infos], dtype=np.float64, count=n),
+            np.fromiter([t.bullet for t in infos], dtype=bool, count=n),
+            _objects(infos),
+        )
+
+    def _fill(self, ids: np.ndarray, core: np.ndarray, reach: np.ndarray, extent: np.ndarray,
+              bullet: np.ndarray, infos: np.ndarray) -> None:
+        self.ids, self.core, self.reach, self.extent = ids, core, reach, extent
+        self.bullet, self.infos = bullet, infos  # infos: an object array, read by slot
+        some = len(ids) > 0
+        self.max_extent = float(extent.max()) if some else 0.0
+        self.max_reach = float(reach.max()) if some else 0.0
+        self.min_core = float(core.min()) if some else 0.0
+        self.bullets = bool(bullet.any())
+
+    def changed(self, removed: set[int], added: dict[int, Tracked]) -> Index:
+        """This index without the bodies ``removed`` (ids) and with ``added`` (by id):
+        what a new index of the tracked bodies would be, with Python work only for
+        the change (a body spawned or despawned among thousands of tracked bodies)."""
+        keep = ~np.isin(self.ids, np.fromiter(removed, dtype=np.int64, count=len(removed)))
+        new = Index(added)
+        ids = np.concatenate([self.ids[keep], new.ids])
+        order = np.argsort(ids, kind="stable")  # unique ids: the one sorted order
+        out = Index.__new__(Index)
+        out._fill(*(np.concatenate([col[keep], extra])[order] for col, extra in (
+            (self.ids, new.ids), (self.core, new.core), (self.reach, new.reach),
+            (self.extent, new.extent), (self.bullet, new.bullet), (self.infos, new.infos))))
+        return out
+
+
+def _objects(items: list[Tracked]) -> np.ndarray:
+    out = np.empty(len(items), dtype=object)
+    for i, item in enumerate(items):
+        out[i] = item
+    return out
 
 
 class ContinuousCollision:
@@ -117,6 +152,8 @@ class ContinuousCollision:
         self._armed: dict[int, Tracked] = {}  # id(info) -> info
         self._reader = BodyReader(_FIELDS)
         self._index: Index | None = None
+        #: body id -> its new record (None: untracked) since the index was made
+        self._index_changes: dict[int, Tracked | None] = {}
         #: the last bulk read's body ids and their rows in the index (reused while unchanged)
         self._rows: (
             tuple[bytes, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
@@ -141,15 +178,16 @@ class ContinuousCollision:
         old = self._tracked.pop(key, None)
         if old is not None and old.armed:
             self._disarm(self._armed.pop(id(old)))
-        self._index = None
+        self._index_changed(key, None)
         self._obstacles.reclassify(body)  # its type may have changed in place
         if body.body_type != _DYNAMIC:
             return
         shapes = tuple(body.shapes)  # pymunk builds a new set per read
         parts, core, reach = parts_of(body, shapes, self.margin)
-        self._tracked[key] = Tracked(
+        self._tracked[key] = info = Tracked(
             self, body, bullet, parts, core, reach, shapes, extent_of(body, shapes, reach)
         )
+        self._index_changed(key, info)
 
     def untrack(self, body: pymunk.Body, removed: bool = False) -> None:
         """Forget ``body`` (restores its plain integrator); unknown bodies are ignored.
@@ -165,7 +203,7 @@ class ContinuousCollision:
             self._obstacles.reclassify(body)  # it may have become static or kinematic
         info = self._tracked.pop(body.id, None)
         if info is not None:
-            self._index = None
+            self._index_changed(body.id, None)
             if info.armed:
                 self._disarm(self._armed.pop(id(info)))
 
@@ -449,9 +487,19 @@ class ContinuousCollision:
             body = next((b for b in self.space.bodies if b.id == body_id), None)
         return body
 
+    def _index_changed(self, key: int, info: Tracked | None) -> None:
+        """Record a change of the tracked set for the next :meth:`_lookup_index`."""
+        if self._index is not None:
+            self._index_changes[key] = info
+
     def _lookup_index(self) -> Index:
         if self._index is None:
             self._index = Index(self._tracked)
+            self._index_changes.clear()
+        elif self._index_changes:
+            changes, self._index_changes = self._index_changes, {}
+            added = {k: t for k, t in changes.items() if t is not None}
+            self._index = self._index.changed(set(changes), added)
         return self._index
 
     def _rows_of(self, ids: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

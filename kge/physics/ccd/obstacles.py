@@ -95,7 +95,8 @@ class Obstacles:
         self._order = order
         if self._owners_dirty:
             old_ids, old_pose, old_recent = self._oids, self._opose, self._recent
-            self._oids = np.array(sorted(self._owners), dtype=np.int64)
+            owners = self._owners
+            self._oids = np.sort(np.fromiter(owners, dtype=np.int64, count=len(owners)))
             self._opose = np.full((len(self._oids), 3), np.nan)
             self._recent = np.zeros(len(self._oids), dtype=bool)
             if len(old_ids) and len(self._oids):
@@ -166,8 +167,12 @@ class Obstacles:
 
     def reclassify(self, body: pymunk.Body) -> None:
         """Re-read ``body``'s shapes after its type (or shape set) may have changed."""
-        if body.body_type == _DYNAMIC and body.id not in self._owner_rows:
-            return  # the common case (a dynamic body tracked): nothing of it is indexed
+        if body.id not in self._owner_rows:
+            if body.body_type == _DYNAMIC:
+                return  # the common case (a dynamic body tracked): nothing of it is indexed
+            newest = self._newest
+            if all(s._hashid > newest for s in body._shapes):
+                return  # a new body: the next scan indexes its shapes (they are the newest)
         own = set(body.shapes)
         self._classify_many(own)
         for row in list(self._owner_rows.get(body.id, ())):

@@ -46,6 +46,8 @@ Coupled = Revolute | Prismatic
 
 
 class Gear(Composite):
+    fixed_ends = False  # its bodies are its joints' (resolve), its joints the component's
+
     def __init__(self, ctx: JointContext, entity: int, g: GearJoint) -> None:
         # a gear has no bodies of its own until its joints are known: until then it
         # sits inert on the ground body (a = b = the static body)
