@@ -491,9 +491,11 @@ class JointBridge:
         moved = {e for h in jolted for e in (h.body_a, h.body_b) if e >= 0}
         for h in jolted:
             h.forget_impulses()
-        for h in self.handles.values():
-            if h.body_a in moved or h.body_b in moved:
-                h.forget_impulses()
+        for body in sorted(moved):  # the joints on those bodies only (the index)
+            for e in self.on_body(body):
+                h = self.handles.get(e)
+                if h is not None and body in (h.body_a, h.body_b):
+                    h.forget_impulses()
 
     def reset_impulses(self, entities: list[int]) -> None:
         """The live joints among ``entities`` start the next step from zero impulse."""
