@@ -31,6 +31,7 @@ from kge.physics import joint_api
 from kge.physics.events import JointBroken, JointDestroyed
 
 if TYPE_CHECKING:
+    from kge.physics.joints.revolute import Revolute
     from kge.physics.simulation import Simulation
 
 
@@ -42,6 +43,17 @@ def load_joint_modules() -> None:
 
 
 _SETTLE: tuple[Any, Any] | None = None
+_REVOLUTE: Any = None
+
+
+def _revolute() -> type[Revolute]:
+    """The revolute handle class, imported on first use (the joint modules are optional)."""
+    global _REVOLUTE
+    if _REVOLUTE is None:
+        from kge.physics.joints.revolute import Revolute
+
+        _REVOLUTE = Revolute
+    return _REVOLUTE
 
 
 def _settle_api() -> tuple[Any, Any]:
@@ -315,13 +327,14 @@ class JointBridge:
         Box2D's position iterations (``position_iterations`` above 1, kge.box2d)
         take motors and limits per joint with the contacts, as Box2D does.
         """
-        from kge.physics.joints.revolute import Revolute
-
-        if not (self.batch_revolutes and type(h) is Revolute):
+        revolute = _revolute()
+        if not (self.batch_revolutes and type(h) is revolute):
             return False
+        assert isinstance(h, revolute)  # (for the type checker: the line above)
         j = h.settings
-        iterated = self.iterated_hinges and self.position_iterations == 1
-        if (j.enable_motor or j.enable_limit) and (not iterated or h.rotation_off):
+        if (j.enable_motor or j.enable_limit) and (
+            h.rotation_off or not (self.iterated_hinges and self.position_iterations == 1)
+        ):
             return False
         return (
             h.active
@@ -335,11 +348,11 @@ class JointBridge:
 
         if self._batch is None:
             self._batch = PivotBatch(self.space, self.sim.bodies)
-        present = set(self.space.constraints)
+        space, inside = self.space, joint_api.in_space
         chosen = [
             (e, h)
             for e, h in self.ordered()
-            if self._batchable(e, h) and h.pivot in present  # type: ignore[attr-defined]
+            if self._batchable(e, h) and inside(space, h.pivot)  # type: ignore[attr-defined]
         ]
         self._batch.rebuild([h for _, h in chosen], self._pivot_tolerance())
         self._batched = {e for e, _ in chosen}
@@ -493,9 +506,9 @@ class JointBridge:
             h.forget_impulses()
         for body in sorted(moved):  # the joints on those bodies only (the index)
             for e in self.on_body(body):
-                h = self.handles.get(e)
-                if h is not None and body in (h.body_a, h.body_b):
-                    h.forget_impulses()
+                other = self.handles.get(e)
+                if other is not None and body in (other.body_a, other.body_b):
+                    other.forget_impulses()
 
     def reset_impulses(self, entities: list[int]) -> None:
         """The live joints among ``entities`` start the next step from zero impulse."""

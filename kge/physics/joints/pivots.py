@@ -75,6 +75,8 @@ SWEEPS = 1
 _set_angle = lib.cpBodySetAngle
 _set_position = lib.cpBodySetPosition
 _get_position = lib.cpBodyGetPosition
+_get_mass = lib.cpBodyGetMass
+_get_cog = lib.cpBodyGetCenterOfGravity
 _get_impulse = lib.cpConstraintGetImpulse
 
 
@@ -244,8 +246,9 @@ class PivotBatch:
         for k, body in enumerate(self.bodies):
             im[k], ii[k] = inv_mass(body)
             if k:
-                mass[k] = body.mass
-                c = body.center_of_gravity
+                cb = body._body  # Chipmunk's getters: no Vec2d per read
+                mass[k] = _get_mass(cb)
+                c = _get_cog(cb)
                 cog[k] = complex(c.x, c.y)
         self.im, self.ii, self.mass, self.cog = im, ii, mass, cog
         self.masses = [None if r is None else r.mass for r in self.recs]
