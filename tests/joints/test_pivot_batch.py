@@ -206,6 +206,10 @@ def test_motor_and_limit_hinges_join_the_batch_and_match_the_per_joint_path() ->
                                           strict=True):
         assert lower - math.radians(2.5) <= a <= upper + math.radians(2.5)
         assert m != 0.0
+    # a motor held off by its limit pushes with its whole max_motor_torque, in N·m (the
+    # last substep's impulse over the substep's time, on both paths)
+    for torques in (bulk_joints, one_joints):
+        assert max(abs(m) for _, _, m, _ in torques) == pytest.approx(40.0, rel=1e-9)
 
 
 def test_a_batched_limit_projects_a_hinge_back_within_its_slop() -> None:
