@@ -51,7 +51,7 @@ _WIDTH = {
 class BodyReader:
     """Reads ``fields`` of every body of a space into reused buffers."""
 
-    __slots__ = ("_buffer", "_data", "_floats", "_ints", "width", "with_ids")
+    __slots__ = ("_buffer", "_data", "_floats", "_ints", "_view", "_view_at", "width", "with_ids")
 
     def __init__(self, fields: pb.BodyFields) -> None:
         self._buffer = pb.Buffer()  # owns the two growable C arrays
@@ -64,6 +64,9 @@ class BodyReader:
         #: floats per body
         self.width = sum(w for f, w in _WIDTH.items() if f in fields)
         self.with_ids = pb.BodyFields.BODY_ID in fields
+        #: :meth:`flat`'s view and the C array it views (reused while neither changes)
+        self._view = _NO_FLOATS
+        self._view_at: Any = None
 
     def read(self, space: pymunk.Space) -> tuple[np.ndarray, np.ndarray]:
         """(ids, rows): body ids (empty unless asked for) and an (n, width) float view."""
@@ -85,6 +88,36 @@ class BodyReader:
         self._fill(space)
         return memoryview(self._float_bytes()).cast("d")
 
+    def fill(self, space: pymunk.Space) -> int:
+        """Read every body of ``space`` into the buffers; returns how many floats came.
+
+        Then :meth:`flat` (a numpy view) or :meth:`memory` (a memoryview) hands them out.
+        """
+        floats = self._floats
+        floats.num = 0
+        self._ints.num = 0
+        _lib.cpSpaceEachBody(space._space, _ITERATOR, self._data)
+        return floats.num  # type: ignore[no-any-return]
+
+    def flat(self) -> np.ndarray:
+        """The floats of the last :meth:`fill` as one flat float64 view of the buffer.
+
+        The view is kept for the next reads while the C array neither moves nor
+        changes length (a steady space), so a read creates no numpy object at all;
+        like every view here it is valid until the next read.
+        """
+        floats = self._floats
+        at, num = floats.arr, floats.num
+        view = self._view
+        if num != len(view) or at != self._view_at:
+            view = np.frombuffer(self._float_bytes(), dtype=np.float64) if num else _NO_FLOATS
+            self._view, self._view_at = view, at
+        return view
+
+    def memory(self) -> memoryview[float]:
+        """The floats of the last :meth:`fill` as a flat memoryview (see :meth:`floats`)."""
+        return memoryview(self._float_bytes()).cast("d")
+
     def _fill(self, space: pymunk.Space) -> None:
         self._floats.num = 0
         self._ints.num = 0
@@ -96,3 +129,5 @@ class BodyReader:
 
 _NO_IDS = np.empty(0, dtype=np.int64)
 _NO_IDS.flags.writeable = False
+_NO_FLOATS = np.empty(0, dtype=np.float64)
+_NO_FLOATS.flags.writeable = False

@@ -123,6 +123,7 @@ class SpeedCap:
     def __init__(self) -> None:
         self._velocities = BodyReader(_VELOCITIES)
         self._ids = BodyReader(pb.BodyFields.BODY_ID)
+        self._abs = np.empty(0)  # |v| of the last read, reused while the count stays
 
     def before_substep(
         self,
@@ -142,18 +143,28 @@ class SpeedCap:
         Runs every substep, so the common case is kept to a bulk read of the
         velocities alone (ids are read only when a body is over) and one
         ``max``/``min`` over all of them: in plain Python for a few bodies, in
-        numpy for many.
+        numpy for many (on the reader's standing view of its buffer and a reused
+        ``|v|`` array: no numpy object is made while nothing is over).
         """
         bound = min(vmax * _SQRT_HALF, wmax)
-        flat = self._velocities.floats(space)
-        if len(flat) < self.SMALL:
-            if not flat or (max(flat) <= bound and min(flat) >= -bound):
+        reader = self._velocities
+        count = reader.fill(space)
+        if count < self.SMALL:
+            if not count:
+                return 0
+            flat = reader.memory()
+            if max(flat) <= bound and min(flat) >= -bound:
                 return 0
             v = np.array(flat).reshape(-1, 3)
         else:
-            v = np.asarray(flat).reshape(-1, 3)  # a view of the buffer
-            if not maybe_over(v, vmax, wmax):
+            view = reader.flat()
+            scratch = self._abs
+            if len(scratch) != count:
+                scratch = self._abs = np.empty(count)
+            # maybe_over's test on the flat view (a NaN is not over, as there)
+            if not float(_MAX(_ABS(view, out=scratch))) > bound:
                 return 0
+            v = view.reshape(-1, 3)  # a view of the buffer
         capped = v.copy()  # ``v`` views the buffer
         over = clamp(capped, vmax, wmax)
         if len(over) == 0:

@@ -79,9 +79,14 @@ class Obstacles:
         self._opose = np.empty((0, 3))
         self._orow = np.empty(0, dtype=np.intp)  # owner -> row in the bulk read (-1: none)
         self._recent = np.empty(0, dtype=bool)
+        self._recent_any = False  # self._recent.any()
         self._order = -1  # the bulk-read order _orow was computed for
         #: owners that got their first rows since the last refresh -> their pose then
         self._born: dict[int, tuple[float, float, float]] = {}
+        #: rows whose box was read since the last scan (see :meth:`_scan`)
+        self._read_rows: set[int] = set()
+        #: the owners' rows in the bulk read, where every owner is in it (else None)
+        self._gather: np.ndarray | None = None
 
     # ----------------------------------------------------------------- upkeep
 
@@ -118,6 +123,7 @@ class Obstacles:
                     self._opose[at[hit]] = np.array(list(self._born.values()))[hit]
                 self._born.clear()
             self._owners_dirty = False
+            self._recent_any = bool(self._recent.any())
             fresh = True
         k = len(self._oids)
         if k == 0:
@@ -127,6 +133,17 @@ class Obstacles:
             hit = self._oids[at] == ids
             self._orow = np.full(k, -1, dtype=np.intp)
             self._orow[at[hit]] = np.flatnonzero(hit)
+            self._gather = self._orow if hit.sum() == k else None
+        gather = self._gather
+        if gather is not None:  # every owner is in the read (the common case): no masks
+            cur = pose[gather]
+            if (
+                not self._recent_any
+                and (cur == self._opose).all()  # a nan (never read) is unequal: moved
+                and not vel[gather].any()  # nan counts as moving, as != 0.0 does
+            ):
+                self._opose = cur  # nothing moved or turns, nothing re-read last step
+                return
         present = self._orow >= 0
         rows = np.where(present, self._orow, 0)
         cur = np.where(present[:, None], pose[rows], np.nan)
@@ -134,6 +151,7 @@ class Obstacles:
         spinning = present & (vel[rows] != 0.0).any(axis=1)
         update = moved | spinning | self._recent
         self._recent = moved
+        self._recent_any = bool(moved.any())
         self._opose = cur
         if update.any():
             self._update_owners(self._oids[update].tolist())
@@ -148,13 +166,21 @@ class Obstacles:
         added = 0
         newest = self._newest
         seen = []
+        row_of, read = self.row_of, self._read_rows
         for shape in reversed(shapes):
             h = shape._hashid
             if h <= self._newest:
                 break
             added += 1
             newest = max(newest, h)
-            seen.append(shape)
+            # a new shape that already has a row got it, and its box, after it joined
+            # the space and since the last scan (``reclassify`` from the physics' sync
+            # of its owner): reading it again would give the same box, as its owner's
+            # moves since then are caught by refresh like any owner's
+            row = row_of.get(shape)
+            if row is None or row not in read:
+                seen.append(shape)
+        self._read_rows = set()
         self._classify_many(reversed(seen))  # skips new dynamic shapes, as before
         self._newest = newest
         self._removed += max(0, self._count + added - n)
@@ -175,10 +201,9 @@ class Obstacles:
                 return  # a new body: the next scan indexes its shapes (they are the newest)
         own = set(body.shapes)
         self._classify_many(own)
-        for row in list(self._owner_rows.get(body.id, ())):
-            gone = self.shapes[row]
-            if gone is not None and gone not in own:
-                self._classify(gone)
+        shapes = self.shapes
+        gone = [shapes[row] for row in self._owner_rows.get(body.id, ())]
+        self._classify_many([g for g in gone if g is not None and g not in own])
 
     def _classify(self, shape: pymunk.Shape) -> None:
         body = shape.body
@@ -201,6 +226,7 @@ class Obstacles:
         bb = shape.bb
         self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
         self.kinematic[row] = body.body_type == _KINEMATIC
+        self._read_rows.add(row)
 
     def _classify_many(self, shapes: Iterable[pymunk.Shape]) -> None:
         """``_classify`` of each shape, boxes written in one numpy pass.
@@ -221,6 +247,7 @@ class Obstacles:
         fresh_boxes: list[tuple[float, float, float, float]] = []
         moving: list[bool] = []
         fresh_moving: list[bool] = []
+        gone: list[pymunk.Shape] = []  # rows to drop
         for shape in shapes:
             body = shape._body()
             if body is None:
@@ -234,7 +261,7 @@ class Obstacles:
             row = row_of.get(shape)
             if body is None or kind == _DYNAMIC or shape._space() is not space:
                 if row is not None:
-                    self._drop(shape)
+                    gone.append(shape)
                 continue
             bb = get_bb(shape._shape)  # what shape.bb reads, without building a BB
             if row is None:
@@ -253,6 +280,11 @@ class Obstacles:
         if rows:
             self.box[rows] = boxes
             self.kinematic[rows] = moving
+            self._read_rows.update(rows)
+        if gone:
+            # after the new rows: an owner whose shapes were all replaced (a re-laid
+            # chain) never runs out of rows, so the owner table is not rebuilt
+            self._drop_many(gone)
 
     def _new_rows(
         self, fresh: list[pymunk.Shape], keys: list[int], owners: dict[int, pymunk.Body]
@@ -310,6 +342,36 @@ class Obstacles:
         self._free.extend(rows)
         self.live -= len(rows)
         if self.live == 0:  # compact, as _drop does
+            self._drop_all()
+
+    def _drop_many(self, shapes: list[pymunk.Shape]) -> None:
+        """:meth:`_drop` of each shape, with one numpy write and one pass per owner (a
+        re-laid chain's old segments)."""
+        row_of, table = self.row_of, self.shapes
+        rows = []
+        for shape in shapes:
+            row = row_of.pop(shape, None)
+            if row is not None:
+                table[row] = None
+                rows.append(row)
+        if not rows:
+            return
+        self.box[rows] = np.nan
+        self._free.extend(rows)
+        self.live -= len(rows)
+        by_owner: dict[int, set[int]] = {}
+        for row in rows:
+            by_owner.setdefault(self.owner_of[row], set()).add(row)
+        for key, dropped in by_owner.items():
+            kept = self._owner_rows.get(key)
+            if kept is None:
+                continue
+            kept[:] = [r for r in kept if r not in dropped]
+            if not kept:
+                del self._owner_rows[key]
+                self._owners.pop(key, None)
+                self._owners_dirty = True
+        if self.live == 0:  # compact: nothing left to keep
             self._drop_all()
 
     def _drop(self, shape: pymunk.Shape) -> None:

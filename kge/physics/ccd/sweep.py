@@ -169,7 +169,7 @@ class Tracked:
         nearby = space.bb_query(swept, _ALL)
         if not nearby:
             return None
-        joint_free = joint_free_bodies(body)
+        joint_free = JointFree(body)
         obstacles = []
         for s in nearby:
             if self._is_obstacle(s, joint_free):
@@ -319,10 +319,8 @@ class Tracked:
             shapes = space.bb_query(grown(box, reach), _ALL)
         else:
             shapes = self.owner._obstacles.candidates(box, motion, reach)
-        joint_free: set[pymunk.Body] | None = None
+        joint_free = JointFree(self.body)
         for shape in shapes:
-            if joint_free is None:
-                joint_free = joint_free_bodies(self.body)
             if not self._is_obstacle(shape, joint_free):
                 continue
             moving = shape.body is not None and shape.body.body_type != pymunk.Body.STATIC
@@ -330,7 +328,7 @@ class Tracked:
                 return True
         return False
 
-    def _is_obstacle(self, shape: pymunk.Shape, joint_free: set[pymunk.Body]) -> bool:
+    def _is_obstacle(self, shape: pymunk.Shape, joint_free: JointFree) -> bool:
         other = shape.body
         if other is self.body or other is None or shape.sensor:
             return False
@@ -341,6 +339,37 @@ class Tracked:
 
 def grown(box: pymunk.BB, by: float) -> pymunk.BB:
     return pymunk.BB(box.left - by, box.bottom - by, box.right + by, box.top + by)
+
+
+class JointFree:
+    """:func:`joint_free_bodies` of ``body``, computed on the first ``in`` that needs it.
+
+    Most obstacles (the ground, walls, a tile map's static bodies) are joined to
+    nothing, and a body joined to nothing cannot be joined to ``body``: pymunk
+    records every constraint on both of its bodies (``Body._constraints``), so
+    ``other in joint_free`` answers False from ``other``'s own record without
+    walking ``body``'s constraints (about 9 µs for a lander leg) or any cffi call.
+
+    >>> a, b, c = pymunk.Body(1, 1), pymunk.Body(1, 1), pymunk.Body(1, 1)
+    >>> pivot = pymunk.PivotJoint(a, b, (0, 0)); pivot.collide_bodies = False
+    >>> free = JointFree(a)
+    >>> b in free, c in free, a in free
+    (True, False, False)
+    """
+
+    __slots__ = ("_bodies", "_body")
+
+    def __init__(self, body: pymunk.Body) -> None:
+        self._body = body
+        self._bodies: set[pymunk.Body] | None = None
+
+    def __contains__(self, other: pymunk.Body) -> bool:
+        if not other._constraints:  # joined to nothing, so not to ``body``
+            return False
+        bodies = self._bodies
+        if bodies is None:
+            bodies = self._bodies = joint_free_bodies(self._body)
+        return other in bodies
 
 
 def joint_free_bodies(body: pymunk.Body) -> set[pymunk.Body]:
