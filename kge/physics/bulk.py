@@ -97,7 +97,7 @@ class BodyReader:
         floats.num = 0
         self._ints.num = 0
         _lib.cpSpaceEachBody(space._space, _ITERATOR, self._data)
-        return floats.num  # type: ignore[no-any-return]
+        return floats.num
 
     def flat(self) -> np.ndarray:
         """The floats of the last :meth:`fill` as one flat float64 view of the buffer.

@@ -584,7 +584,7 @@ def test_fast_bodies_far_from_static_geometry_cost_no_shape_walks(
     original = ccd_module.Tracked._is_obstacle
 
     def counting(
-        self: ccd_module.Tracked, shape: pymunk.Shape, joint_free: set[pymunk.Body]
+        self: ccd_module.Tracked, shape: pymunk.Shape, joint_free: ccd_module.JointFree
     ) -> bool:
         tested.append(shape)
         return original(self, shape, joint_free)
