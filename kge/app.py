@@ -396,9 +396,11 @@ class App(Host):
         self._in_frame = True
         try:
             self.input.refresh_world_position()
-            for i, world in enumerate(self._running_worlds()):
-                with self.input.muted(i > 0):  # scenes below an overlay get no input
-                    self._run_world(world, steps, game_dt, with_input=i == 0)
+            top, *below = self._running_worlds()
+            self._run_world(top, steps, game_dt, with_input=True)
+            for world in below:
+                with self.input.muted():  # scenes below an overlay get no input
+                    self._run_world(world, steps, game_dt, with_input=False)
         finally:
             self._in_frame = False
             self.input.end_frame()
@@ -409,21 +411,22 @@ class App(Host):
         time = world.resource(Time)
         if with_input:  # input hooks and the UI
             world.schedule.run(Stage.INPUT, game_dt)
+        inp, schedule = self.input, world.schedule
         for _ in range(steps):
             if self._scene_ops:
                 break  # the scene is changing: do not step a world about to close
             world.clear_events()
-            self.input.begin_step()  # fixed-step code sees each input edge once
-            world.schedule.run(Stage.FIXED, self.fixed_dt)
-            self.input.end_step()
+            inp.begin_step()  # fixed-step code sees each input edge once
+            schedule.run(Stage.FIXED, self.fixed_dt)
+            inp.end_step()
             time.step += 1
             time.fixed_elapsed += self.fixed_dt
         time.dt = game_dt
         time.elapsed += game_dt
         time.frame += 1
         time.alpha = self.timestep.alpha
-        world.schedule.run(Stage.UPDATE, game_dt)
-        world.schedule.run(Stage.LATE, game_dt)
+        schedule.run(Stage.UPDATE, game_dt)
+        schedule.run(Stage.LATE, game_dt)
 
     def _run_scene_ops(self) -> None:
         ops, self._scene_ops = self._scene_ops, []

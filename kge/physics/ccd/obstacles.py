@@ -166,9 +166,9 @@ class Obstacles:
         added = 0
         newest = self._newest
         seen = []
-        row_of, read = self.row_of, self._read_rows
+        row_of, read, hashid = self.row_of, self._read_rows, lib.cpShapeGetHashID
         for shape in reversed(shapes):
-            h = shape._hashid
+            h = hashid(shape._shape)  # what shape._hashid reads, without the property
             if h <= self._newest:
                 break
             added += 1
@@ -181,7 +181,8 @@ class Obstacles:
             if row is None or row not in read:
                 seen.append(shape)
         self._read_rows = set()
-        self._classify_many(reversed(seen))  # skips new dynamic shapes, as before
+        if seen:
+            self._classify_many(reversed(seen))  # skips new dynamic shapes, as before
         self._newest = newest
         self._removed += max(0, self._count + added - n)
         self._count = n
