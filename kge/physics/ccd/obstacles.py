@@ -67,6 +67,8 @@ class Obstacles:
         self.row_of: dict[pymunk.Shape, int] = {}
         self.box = np.full((16, 4), np.nan)  # left, bottom, right, top (nan: free row)
         self.kinematic = np.zeros(16, dtype=bool)
+        #: False while no row was ever marked kinematic (since the last compaction)
+        self.any_kinematic = False
         self.live = 0
         self._free: list[int] = []  # dropped rows, reused first
         self._count = 0  # len(space.shapes) at the last scan
@@ -226,7 +228,9 @@ class Obstacles:
             rows.append(row)
         bb = shape.bb
         self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
-        self.kinematic[row] = body.body_type == _KINEMATIC
+        moving = body.body_type == _KINEMATIC
+        self.kinematic[row] = moving
+        self.any_kinematic |= moving
         self._read_rows.add(row)
 
     def _classify_many(self, shapes: Iterable[pymunk.Shape]) -> None:
@@ -281,6 +285,7 @@ class Obstacles:
         if rows:
             self.box[rows] = boxes
             self.kinematic[rows] = moving
+            self.any_kinematic |= any(moving)
             self._read_rows.update(rows)
         if gone:
             # after the new rows: an owner whose shapes were all replaced (a re-laid
@@ -399,6 +404,7 @@ class Obstacles:
         self.owner_of.clear()
         self._free.clear()
         self.box[:] = np.nan
+        self.any_kinematic = False
         self._owner_rows.clear()
         self._owners.clear()
         self._owners_dirty = True
@@ -423,6 +429,11 @@ class Obstacles:
         if self.live == 0 or m == 0:
             return out
         left, bottom, right, top = (self.box[:m, i] for i in range(4))
+        if len(x) == 1:  # the usual single fast body: scalars, no broadcast views
+            x0, y0, r0 = float(x[0]), float(y[0]), float(r[0])
+            out[0] = ((left <= x0 + r0) & (right >= x0 - r0) & (bottom <= y0 + r0)
+                      & (top >= y0 - r0)).any()
+            return out
         step = max(1, _CHUNK // m)
         for i in range(0, len(x), step):
             xs, ys, rs = x[i : i + step, None], y[i : i + step, None], r[i : i + step, None]
@@ -435,7 +446,10 @@ class Obstacles:
         m = len(self.shapes)
         if self.live == 0 or m == 0:
             return []
-        g = np.where(self.kinematic[:m], moving, still)
+        # one growth for every row while none is kinematic (the same sums, as scalars)
+        g: np.ndarray | float = (
+            np.where(self.kinematic[:m], moving, still) if self.any_kinematic else still
+        )
         b = self.box[:m]
         hit = (
             (b[:, 0] <= box.right + g)
