@@ -103,7 +103,7 @@ def _read(space: pymunk.Space) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return ids, pose, np.zeros((len(bodies), 3))
 
 
-def _chain(body: pymunk.Body, y: float) -> list[pymunk.Shape]:
+def _chain(body: pymunk.Body, y: float) -> list[pymunk.Segment]:
     points = [(float(i), y + 0.3 * (i % 2)) for i in range(12)]
     return chain_segments(body, points, False, 0.01, 0.0, {})
 
