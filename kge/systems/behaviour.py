@@ -105,6 +105,11 @@ class BehaviourRunner:
             if world.exists(entity):
                 fn(*args)
 
+    @property
+    def scripted(self) -> bool:
+        """Does any entity hold a script? (Else every :meth:`call_one` is a no-op.)"""
+        return bool(self._hooks)
+
     def call_one(self, entity: int, hook: str, *args: Any) -> None:
         """Call ``hook`` on ``entity``'s script, if it has one and defines the hook."""
         hooks = self._hooks.get(entity)

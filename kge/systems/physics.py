@@ -214,7 +214,9 @@ class PhysicsEventDelivery(System):
                 continue
             for ev in list(lst):
                 world.dispatch(name, ev)
-                if hook is None:
+                # no script anywhere (an env's scenes): no hook to look for; asked per
+                # event, as a handler may have added a Behaviour meanwhile
+                if hook is None or not run.scripted:
                     continue
                 seen: list[int] = []
                 for ent in (ev.collider_a, ev.collider_b, ev.body_a, ev.body_b):

@@ -197,3 +197,43 @@ def test_sweeps_walk_a_bodys_joints_only_for_obstacles_that_have_joints(
             assert walks and ball.position.x > 3.0  # not an obstacle: passed through
         else:
             assert walks == [] and ball.position.x < 3.0  # stopped, no joint walk at all
+
+
+def test_contact_events_look_for_hooks_only_while_some_entity_has_a_script(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import kge
+    from kge.components import Behaviour, Collider, RigidBody, Transform
+    from kge.components.shapes import Box, Circle
+    from kge.systems.behaviour import BehaviourRunner
+
+    asked: list[int] = []
+    original = BehaviourRunner.call_one
+
+    def counting(self: BehaviourRunner, entity: int, hook: str, *args: Any) -> None:
+        asked.append(entity)
+        original(self, entity, hook, *args)
+
+    monkeypatch.setattr(BehaviourRunner, "call_one", counting)
+    seen: list[Any] = []
+
+    def scene(world: kge.World) -> None:
+        world.spawn(Transform(0, -10), Collider(Box(50, 10)))
+        world.spawn(Transform(0, 1), RigidBody(), Collider(Circle(0.5), restitution=0.5))
+        world.set_handler("contact_begin", seen.append)
+
+    app = kge.App(scene, headless=True, plugins=[kge.BehaviourPlugin(), kge.PhysicsPlugin()])
+    app.step(60)
+    assert seen and asked == []  # events delivered to handlers; no script to look up
+
+    class Script:
+        def __init__(self) -> None:
+            self.begins = 0
+
+        def on_contact_begin(self, event: Any) -> None:
+            self.begins += 1
+
+    script = Script()
+    ball = app.world.spawn(Transform(3, 1), RigidBody(), Collider(Circle(0.5)), Behaviour(script))
+    app.step(60)
+    assert ball in asked and script.begins >= 1
