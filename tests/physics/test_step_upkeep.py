@@ -237,3 +237,21 @@ def test_contact_events_look_for_hooks_only_while_some_entity_has_a_script(
     ball = app.world.spawn(Transform(3, 1), RigidBody(), Collider(Circle(0.5)), Behaviour(script))
     app.step(60)
     assert ball in asked and script.begins >= 1
+
+
+def test_the_kept_motion_limit_follows_threshold_and_substeps() -> None:
+    space = pymunk.Space()
+    _wall(space, 0.5)  # within the ball's step motion: armed whenever it is fast
+    ball = pymunk.Body()
+    shape = pymunk.Circle(ball, 0.1)
+    shape.density = 1.0
+    space.add(ball, shape)
+    ccd = ContinuousCollision(space)
+    ccd.track(ball)
+    ball.velocity = (30.0, 0.0)  # 0.5 m per step: 0.125 m per substep of 4
+    assert ccd.before_step(DT, 4) == 1  # over half the 0.1 m radius per substep
+    assert ccd.before_step(DT, 16) == 0  # 0.03 m per substep: under it
+    ccd.threshold = 2.0
+    assert ccd.before_step(DT, 1) == 1  # 0.5 m per step > 2 * 0.1 m
+    ccd.threshold = 10.0
+    assert ccd.before_step(DT, 1) == 0

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 import pymunk
@@ -159,6 +160,8 @@ class ContinuousCollision:
             tuple[bytes, Index, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None
         ) = None
         self._untracked = np.empty(0, dtype=np.int64)  # rows of _rows not tracked
+        #: (rows, substeps, threshold, per-row motion limit: inf for untracked rows)
+        self._limit: tuple[Any, int, float, np.ndarray] | None = None
         self._generation = 0  # bumped whenever _rows is recomputed
         self._obstacles = Obstacles(space)
         #: this step's answers of near_obstacles(cap) for neighbours of fast bodies
@@ -280,7 +283,7 @@ class ContinuousCollision:
         if not bound <= self.threshold * n * index.min_core:
             speed = np.hypot(vel[:, 0], vel[:, 1])
             motion = (speed + np.abs(vel[:, 2]) * reach) * dt
-            fast = np.flatnonzero(known & (motion > self.threshold * n * core))
+            fast = np.flatnonzero(motion > self._motion_limit(n, known, core))
             if len(fast):
                 self._arm_fast(fast, pos[fast], ids, pose, vel, motion[fast], want)
         untracked = self._untracked
@@ -519,6 +522,18 @@ class ContinuousCollision:
         self._untracked = np.flatnonzero(~known)  # static and kinematic rows
         self._generation += 1
         return self._rows[2:]
+
+    def _motion_limit(self, substeps: int, known: np.ndarray, core: np.ndarray) -> np.ndarray:
+        """Per bulk-read row, the step motion beyond which a tracked body is fast
+        (``threshold * substeps * core``; inf for untracked rows, which are never fast),
+        kept while the rows, the substeps and the threshold stay."""
+        rows, limit = self._rows, self._limit
+        if limit is None or limit[0] is not rows or limit[1] != substeps or (
+            limit[2] != self.threshold
+        ):
+            values = np.where(known, self.threshold * substeps * core, np.inf)
+            limit = self._limit = (rows, substeps, self.threshold, values)
+        return limit[3]
 
     @staticmethod
     def _disarm(info: Tracked) -> None:
