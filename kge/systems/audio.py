@@ -65,11 +65,33 @@ def _deliver_contact_begin(event: Any) -> None:
         system.contact_begin(event)
 
 
+#: mixers of Apps collected without ``close()``, waiting to be closed on the main thread
+_orphans: list[Mixer] = []
+
+
+def _orphaned(mixer: Mixer) -> None:
+    """An App was collected: its mixer is closed at the next safe point, not here.
+
+    A garbage-collection pass runs finalizers on whatever thread triggered it,
+    pyglet's media thread included, in the middle of pyglet's own code. Stopping a
+    player from there deadlocked against the main thread starting one (each waits
+    for the media thread's lock the other holds). So this only queues the mixer.
+    """
+    _orphans.append(mixer)
+
+
+def close_orphans() -> None:
+    """Close the mixers of collected Apps (main thread, between frames)."""
+    while _orphans:
+        _orphans.pop().close()
+
+
 def mixer_for(world: World) -> tuple[Mixer, bool]:
     """The mixer of ``world``'s App (shared), or a new one owned by the world.
 
     Returns ``(mixer, owned)``; an owned mixer is closed with the world.
     """
+    close_orphans()
     app = world.try_resource(Host)
     if app is None:
         return Mixer(), True
@@ -77,12 +99,13 @@ def mixer_for(world: World) -> tuple[Mixer, bool]:
     if mixer is None:
         mixer = Mixer()
         _app_mixers[app] = mixer
-        weakref.finalize(app, mixer.close).atexit = False
+        weakref.finalize(app, _orphaned, mixer).atexit = False
     return mixer, False
 
 
 def close_app_audio(app: Any) -> None:
     """Stop every sound of ``app``, music included (for ``App.close``)."""
+    close_orphans()
     mixer = _app_mixers.pop(app, None)
     if mixer is not None:
         mixer.close()
@@ -174,6 +197,8 @@ class AudioSystem(System):
     def process(self, dt: float) -> None:
         if not self._active:
             return
+        if _orphans:
+            close_orphans()
         self._clock += dt
         if self._to_start:
             self._start_sources()
