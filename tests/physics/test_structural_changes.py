@@ -82,6 +82,21 @@ def _crowd(sim: Sim, pairs: int) -> list[int]:
     return joints
 
 
+
+def _record_destroys(bridge: Any) -> list[int]:
+    """The joints ``bridge`` takes out, in the order they finish ``_destroy``."""
+    done: list[int] = []
+    destroy = bridge._destroy
+
+    def recorded(entity: int, event: bool) -> None:
+        known = entity in bridge.handles
+        destroy(entity, event)
+        if known:
+            done.append(entity)
+
+    bridge._destroy = recorded
+    return done
+
 def test_despawning_a_body_destroys_exactly_its_joints_and_dependents_in_order() -> None:
     sim = Sim(PhysicsSettings(gravity=(0.0, 0.0)))
     try:
@@ -96,16 +111,7 @@ def test_despawning_a_body_destroys_exactly_its_joints_and_dependents_in_order()
         assert len(bridge.handles) == len(crowd) + 2 * 4 + 2
         # the order joints are taken out (their constraints leave the space, their events
         # are made) is the order they finish _destroy; the event list is sorted later
-        done: list[int] = []
-        destroy = bridge._destroy
-
-        def recorded(entity: int, event: bool) -> None:
-            known = entity in bridge.handles
-            destroy(entity, event)
-            if known:
-                done.append(entity)
-
-        bridge._destroy = recorded  # type: ignore[method-assign]
+        done = _record_destroys(bridge)
         for victim in (early["w1"], late["w1"]):
             want = _old_destruction_order(bridge.handles, victim)
             before = set(bridge.handles)
@@ -350,16 +356,7 @@ def test_a_joint_kind_with_fixed_ends_is_destroyed_with_the_joint_it_depends_on(
         sim.step()
         bridge = sim.system.sim.joints
         assert {early, late, other, hinge} <= set(bridge.handles)
-        done: list[int] = []
-        destroy = bridge._destroy
-
-        def recorded(entity: int, event: bool) -> None:
-            known = entity in bridge.handles
-            destroy(entity, event)
-            if known:
-                done.append(entity)
-
-        bridge._destroy = recorded  # type: ignore[method-assign]
+        done = _record_destroys(bridge)
         want = _old_destruction_order(bridge.handles, a)
         sim.world.despawn(a)
         sim.step()
