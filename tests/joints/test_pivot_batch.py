@@ -22,6 +22,13 @@ from kge.systems.physics import PhysicsSystem
 from kge.world import World
 
 
+@pytest.fixture(autouse=True)
+def _batch_any_count(monkeypatch: pytest.MonkeyPatch) -> None:
+    """These scenes have a few joints: take the bulk path anyway (kge waits for
+    ``JointBridge.batch_from``, where it starts to pay)."""
+    monkeypatch.setattr(JointBridge, "batch_from", 1)
+
+
 def _chain(world: World) -> None:
     prev = None
     for i in range(6):
@@ -301,3 +308,25 @@ def test_reset_joints_drops_the_warm_start() -> None:
     with pytest.raises(EntityNotFoundError, match="entity 99 does not exist"):
         physics.reset_joints([99])
     app.close()
+
+
+def test_few_joints_stay_on_the_per_joint_path(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Below ``batch_from`` batchable joints the bulk path costs more than it saves."""
+
+    def chains(count: int) -> Any:
+        def scene(world: World) -> None:
+            for c in range(count):
+                prev = None
+                for i in range(4):
+                    link = world.spawn(Transform(3.0 * c + 0.5 + i, 5.0), RigidBody(),
+                                       Collider(Circle(0.2), density=1.0))
+                    world.spawn(RevoluteJoint(prev, link, anchor=(3.0 * c + i, 5.0)))
+                    prev = link
+        return scene
+
+    monkeypatch.setattr(JointBridge, "batch_from", 24)
+    for count, batched in ((5, 0), (6, 24)):  # 20 joints, then 24
+        app = App(chains(count), headless=True)
+        app.step(2)
+        assert len(_bridge(app)._batched) == batched
+        app.close()
