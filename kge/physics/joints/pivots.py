@@ -83,19 +83,22 @@ _get_impulse = lib.cpConstraintGetImpulse
 def colour(pairs: list[tuple[int, int]], movable: list[bool]) -> list[int]:
     """Greedy colouring: no movable slot appears twice within one colour.
 
+    Each joint takes the lowest colour neither of its movable bodies has yet (a
+    bit mask per body: the lowest clear bit of the two masks' union).
+
     >>> colour([(1, 2), (2, 3), (3, 4), (0, 1)], [False, True, True, True, True])
     [0, 1, 0, 1]
     """
-    used: list[set[int]] = []
+    masks = [0] * len(movable)
     out = []
     for a, b in pairs:
-        need = [s for s in (a, b) if movable[s]]
-        c = 0
-        while c < len(used) and any(s in used[c] for s in need):
-            c += 1
-        if c == len(used):
-            used.append(set())
-        used[c].update(need)
+        taken = (masks[a] if movable[a] else 0) | (masks[b] if movable[b] else 0)
+        c = (~taken & (taken + 1)).bit_length() - 1
+        bit = 1 << c
+        if movable[a]:
+            masks[a] |= bit
+        if movable[b]:
+            masks[b] |= bit
         out.append(c)
     return out
 
