@@ -388,6 +388,11 @@ def throttles(actions: np.ndarray, continuous: bool) -> tuple[np.ndarray, np.nda
     return m_power, s_power, np.where(on, np.copysign(1.0, lateral), 0.0)
 
 
+#: at most this many firing engines are pushed one call each: below it the checks and
+#: numpy of Physics.apply_linear_impulses cost more than the calls (the same floats)
+FEW_ENGINES = 4
+
+
 def fire(physics: Physics, landers: list[int], pose: np.ndarray, dispersion: np.ndarray,
          m_power: np.ndarray, s_power: np.ndarray, direction: np.ndarray) -> None:
     """The engines' impulses, Gymnasium's geometry, for the landers whose engines fire
@@ -420,6 +425,11 @@ def fire(physics: Physics, landers: list[int], pose: np.ndarray, dispersion: np.
     out[:, 3] = y + oy
     out[k:, 2] -= tip_x[k:] * 17 / SCALE
     out[k:, 3] += tip_y[k:] * SIDE_ENGINE_HEIGHT / SCALE
+    if len(rows) <= FEW_ENGINES:  # a single env: the bulk call's numpy costs more
+        for e, (jx, jy, px, py) in zip([landers[r] for r in rows.tolist()], out.tolist(),
+                                       strict=True):
+            physics.apply_linear_impulse(e, (jx, jy), (px, py))
+        return
     who = np.asarray(landers, dtype=np.int64)[rows]
     physics.apply_linear_impulses(who, out[:, :2], out[:, 2:])
 
