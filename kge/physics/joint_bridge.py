@@ -8,8 +8,9 @@ limits (JointBroken) and destroys joints whose body or prerequisite joint goes
 away (JointDestroyed). A joint's constraints are in the space only while both
 of its bodies are (a disabled body takes its joints out, as in Box2D).
 
-Revolute joints, the ones scenes have by the hundred (chains, bridges, grids),
-skip the per-joint path in the steady state: a
+Revolute joints, the ones scenes have by the hundred (chains, bridges, grids,
+a batch of landers' legs), skip the per-joint path in the steady state once
+there are ``batch_from`` of them: a
 :class:`~kge.physics.joints.pivots.PivotBatch` does their position pass and
 read-back over all of them at once. A joint leaves the batch (and takes the
 per-joint path) while it is inert, suspended or has a body out of the space;

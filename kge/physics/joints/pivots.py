@@ -1,4 +1,4 @@
-"""Plain revolute joints in bulk: the position pass and the read-back, as columns.
+"""Revolute joints in bulk: the position pass and the read-back, as columns.
 
 A chain of 200 links or a 30 x 30 grid has hundreds of revolute joints, and
 doing their after-step work one joint at a time (Box2D's position pass through
