@@ -12,7 +12,7 @@ observations, rewards and terminations are numpy over the whole batch
 
 Why scenes cannot meet: an episode ends on the step its lander leaves its screen
 sideways (``|obs[0]| >= 1``), and a step moves a body at most
-``PhysicsSettings.max_translation`` (2 m); the next step despawns that lander.
+``PhysicsSettings.max_translation`` (2 m); the next step re-lays that scene.
 So a lander never gets nearer than ``SPACING - W - 2`` m to another scene's ground.
 
 Resets re-lay one scene: next-step autoreset gives env i's moon a new outline and
@@ -45,7 +45,6 @@ import numpy as np
 from gymnasium.utils import seeding
 
 from kge.app import App
-from kge.components import RigidBody, Transform
 from kge.components.camera import Camera
 from kge.gym.draws import PairDraws
 from kge.gym.env import env_plugins
@@ -120,8 +119,6 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
         self._stepped: np.ndarray | None = None
         self._scenes: list[LanderScene | None] = [None] * n
         self._landers: list[int] = [0] * n
-        self._tfs: list[Transform] = []
-        self._rbs: list[RigidBody] = []
         #: collider entity -> (env, HULL or leg index)
         self._parts: dict[int, tuple[int, int]] = {}
         self.game_over = np.zeros(n, np.bool_)
@@ -147,18 +144,12 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
             self._app.replace_scene(self._setup)
         self._scenes = [None] * self.num_envs
         self._parts.clear()
-        self._tfs = [Transform() for _ in range(self.num_envs)]
-        self._rbs = [RigidBody() for _ in range(self.num_envs)]
         return self._app.world
 
     def _respawn(self, world: World, envs: list[int]) -> None:
         """New episodes for these envs (drawn from their rngs): a fresh world's scenes
         are spawned; a finished episode's are re-laid (:func:`replace_scene`)."""
-        scenes = [self._respawn_one(world, i) for i in envs]
-        give_push(world, scenes)
-        for i in envs:
-            self._tfs[i] = world.get(self._landers[i], Transform)
-            self._rbs[i] = world.get(self._landers[i], RigidBody)
+        give_push(world, [self._respawn_one(world, i) for i in envs])
 
     def _respawn_one(self, world: World, i: int) -> LanderScene:
         rng = self._rngs[i]

@@ -219,7 +219,7 @@ def solver_settings(gravity: float) -> PhysicsSettings:
 
 @dataclass(slots=True)
 class LanderScene:
-    """The entities of one episode: what a reset despawns (joints first)."""
+    """The entities of one episode (joints first), which the next re-uses."""
 
     lander: int
     legs: tuple[int, int]
@@ -356,7 +356,8 @@ def replace_scene(world: World, scene: LanderScene, rng: np.random.Generator,
         rb = world.get(e, RigidBody)
         rb.velocity, rb.angular_velocity = (0.0, 0.0), 0.0
     world.resource(Physics).reset_joints(scene.joints)
-    entities = [e for e in scene.entities if e not in set(scene.decor)] + list(decor)
+    old_decor = set(scene.decor)
+    entities = [e for e in scene.entities if e not in old_decor] + list(decor)
     return LanderScene(scene.lander, scene.legs, moon.helipad_x, moon.helipad_y, entities,
                        _push(rng), ground=scene.ground, joints=scene.joints, decor=decor)
 

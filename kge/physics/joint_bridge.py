@@ -333,10 +333,8 @@ class JointBridge:
         Box2D's position iterations (``position_iterations`` above 1, kge.box2d)
         take motors and limits per joint with the contacts, as Box2D does.
         """
-        revolute = _revolute()
-        if not (self.batch_revolutes and type(h) is revolute):
+        if not (self.batch_revolutes and type(h) is _revolute()):
             return False
-        assert isinstance(h, revolute)  # (for the type checker: the line above)
         j = h.settings
         if (j.enable_motor or j.enable_limit) and (
             h.rotation_off or not (self.iterated_hinges and self.position_iterations == 1)
@@ -400,12 +398,12 @@ class JointBridge:
                 if any(self._batchable(e, h) for e, h in self._others):
                     self._rebuild_batch()
             if self._batched and self._batch.mass_changed(self.sim.mass_epoch):
-                if self._batch.torqued:
-                    # a body that can no longer turn takes a motor or limit out
-                    # (Composite.track_rotation): such a joint leaves the batch
-                    for k in self._batch.torqued:
-                        self._batch.handles[k].before_step(dt)
-                if any(self._batch.handles[k].rotation_off for k in self._batch.torqued):
+                # a body that can no longer turn takes a motor or limit out
+                # (Composite.track_rotation): such a joint leaves the batch
+                torqued = [self._batch.handles[k] for k in self._batch.torqued]
+                for h in torqued:
+                    h.before_step(dt)
+                if any(h.rotation_off for h in torqued):
                     self._rebuild_batch()
                 else:
                     self._batch.refresh_mass()

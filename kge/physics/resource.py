@@ -17,7 +17,6 @@ implemented in :mod:`kge.physics.queries` and only forwarded here.
 from __future__ import annotations
 
 import math
-from collections import deque
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -36,7 +35,7 @@ from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
 from kge.physics.settings import PhysicsSettings
 from kge.physics.tiny import TINY, flush
-from kge.physics.writeback import slot_setter
+from kge.physics.writeback import set_all, slot_setter
 from kge.validate import finite, vec2
 
 if TYPE_CHECKING:
@@ -264,8 +263,8 @@ class Physics:
         v[np.abs(v) < TINY] = 0.0  # kge.physics.tiny.flush, every value at once
         vx, vy, w = v.T.tolist()
         cbs = [r.body._body for r in recs]  # Chipmunk's setters mapped over the bodies
-        deque(map(_set_velocity, cbs, zip(vx, vy, strict=True)), maxlen=0)
-        deque(map(_set_angular_velocity, cbs, w), maxlen=0)
+        set_all(_set_velocity, cbs, zip(vx, vy, strict=True))
+        set_all(_set_angular_velocity, cbs, w)
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)
@@ -275,8 +274,8 @@ class Physics:
             keep = [k for k, rb in enumerate(rbs) if rb is not None]
             rbs = [rbs[k] for k in keep]
             vx, vy, w = [vx[k] for k in keep], [vy[k] for k in keep], [w[k] for k in keep]
-        deque(map(_SET_VELOCITY, rbs, zip(vx, vy, strict=True)), maxlen=0)
-        deque(map(_SET_ANGULAR_VELOCITY, rbs, w), maxlen=0)
+        set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
+        set_all(_SET_ANGULAR_VELOCITY, rbs, w)
         return True
 
     def _records(self, entities: list[int], op: str) -> list[BodyRecord]:

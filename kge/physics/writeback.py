@@ -89,17 +89,17 @@ def write_poses(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> 
     """Write columns x, y, angle of rows ``new`` to the Transforms of the ``moved``
     slots (None: every slot, ``new`` in slot order)."""
     tfs, x, y, a = _columns(targets.transforms, 0, moved, new)
-    _set_all(_SET_X, tfs, x)
-    _set_all(_SET_Y, tfs, y)
-    _set_all(_SET_ANGLE, tfs, a)
+    set_all(_SET_X, tfs, x)
+    set_all(_SET_Y, tfs, y)
+    set_all(_SET_ANGLE, tfs, a)
 
 
 def write_velocities(targets: Targets, moved: np.ndarray | None, new: np.ndarray) -> None:
     """Write columns vx, vy, w of rows ``new`` to the RigidBodies of the ``moved``
     slots (None: every slot, ``new`` in slot order)."""
     rbs, vx, vy, w = _columns(targets.rigidbodies, 3, moved, new)
-    _set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
-    _set_all(_SET_ANGULAR_VELOCITY, rbs, w)
+    set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
+    set_all(_SET_ANGULAR_VELOCITY, rbs, w)
 
 
 def _columns(
@@ -144,7 +144,8 @@ def slot_setter(cls: type, name: str) -> Callable[[Any, Any], None]:
     return lambda obj, value: raw_set(obj, name, value)
 
 
-def _set_all(setter: Callable[[Any, Any], None], objs: list[Any], values: Any) -> None:
+def set_all(setter: Callable[[Any, Any], None], objs: Any, values: Any) -> None:
+    """``setter(obj, value)`` for each pair, in a C loop (no Python frame per item)."""
     deque(map(setter, objs, values), maxlen=0)
 
 

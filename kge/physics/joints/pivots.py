@@ -42,9 +42,7 @@ after every membership refresh (which every type change triggers).
 
 from __future__ import annotations
 
-from collections import deque
 from dataclasses import dataclass
-from itertools import repeat
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -61,6 +59,7 @@ from kge.physics.joints.positions import (
     MAX_CORRECTION,
 )
 from kge.physics.sync import FIELDS  # the same columns sync-out reads
+from kge.physics.writeback import set_all, slot_setter
 
 if TYPE_CHECKING:
     from kge.physics.joints.revolute import Revolute
@@ -211,15 +210,11 @@ class PivotBatch:
             k for k, j in enumerate(comps)
             if j.break_force is not None or j.break_torque is not None
         ]
-        # each field's slot descriptor, whose __set__ is a C call (when all are one class)
+        # each field's setter: the slot's own (a C call) when all are one class
         kinds = {type(j) for j in comps}
-        kind = kinds.pop() if len(kinds) == 1 else None
-        self._slots = (
-            None
-            if kind is None
-            else {f: getattr(kind, f).__set__ for f in ("angle", "speed", "reaction_force",
-                                                        "motor_torque", "reaction_torque")}
-        )
+        kind = kinds.pop() if len(kinds) == 1 else object  # object: raw_set each
+        self._setters = {f: slot_setter(kind, f) for f in (
+            "angle", "speed", "reaction_force", "motor_torque", "reaction_torque")}
         self.pivots = [h.pivot._constraint for h in handles]  # type: ignore[union-attr]
         self.bodies = bodies
         self.cbodies = [b._body for b in bodies]
@@ -483,15 +478,9 @@ class PivotBatch:
         angle = (t[ib] - t[ia] - self.ref).tolist()
         speed = (w[ib] - w[ia]).tolist()
         reaction = zip((f * bx).tolist(), (f * by).tolist(), strict=True)
-        slots = self._slots
-        if slots is not None:
-            _drain(map(slots["angle"], comps, angle))
-            _drain(map(slots["speed"], comps, speed))
-            _drain(map(slots["reaction_force"], comps, reaction))
-        else:
-            _drain(map(raw_set, comps, repeat("angle"), angle))
-            _drain(map(raw_set, comps, repeat("speed"), speed))
-            _drain(map(raw_set, comps, repeat("reaction_force"), reaction))
+        self._write(comps, "angle", angle)
+        self._write(comps, "speed", speed)
+        self._write(comps, "reaction_force", reaction)
         torque = self._torques(step_time) if self.torqued else None
         if self.breakable:
             hs = self.handles
@@ -516,16 +505,10 @@ class PivotBatch:
             limit[self._limit_rows] = np.fromiter(
                 map(_get_impulse, self._limit_cs), dtype=float, count=len(self._limit_cs))
             limit *= scale
-        comps = self._torqued_comps
-        slots = self._slots
-        if slots is not None:
-            _drain(map(slots["motor_torque"], comps, motor.tolist()))
-            _drain(map(slots["reaction_torque"], comps, limit.tolist()))
-        else:
-            _drain(map(raw_set, comps, repeat("motor_torque"), motor.tolist()))
-            _drain(map(raw_set, comps, repeat("reaction_torque"), limit.tolist()))
+        self._write(self._torqued_comps, "motor_torque", motor.tolist())
+        self._write(self._torqued_comps, "reaction_torque", limit.tolist())
         return limit
 
-def _drain(it: Any) -> None:
-    """Run an iterator of side effects at C speed."""
-    deque(it, maxlen=0)
+    def _write(self, comps: list[Any], field: str, values: Any) -> None:
+        """Set ``field`` of each component (no validation, no dirty mark), in a C loop."""
+        set_all(self._setters[field], comps, values)
