@@ -100,6 +100,7 @@ class PymunkFloor:
 
         from kge.gym import lunar_lander as L
         from kge.gym.lander_vector import SPACING
+        from kge.physics.joints.revolute import ITERATED_LIMIT_ERROR_BIAS
 
         substeps, iterations = L.SOLVER
         self.substeps, self.h = substeps, 1.0 / L.FPS / substeps
@@ -149,7 +150,7 @@ class PymunkFloor:
                 motor.max_force = L.LEG_SPRING_TORQUE
                 lo, hi = L.LEG_TRAVEL
                 limit = pymunk.RotaryLimitJoint(hull, leg, *((lo, hi) if i == -1 else (-hi, -lo)))
-                limit.max_bias = 0.1
+                limit.error_bias = ITERATED_LIMIT_ERROR_BIAS
                 for c in (pivot, motor, limit):
                     c.collide_bodies = False
                 space.add(leg, box, pivot, motor, limit)

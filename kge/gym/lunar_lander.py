@@ -62,13 +62,16 @@ LEG_AWAY, LEG_DOWN, LEG_W, LEG_H = 20, 18, 2, 8
 LEG_SPRING_TORQUE = 40.0  # N m, the leg motors' strength
 LEG_TRAVEL = (0.4, 0.9)  # rad, the hinge's limits (mirrored for the left leg)
 LEG_MOTOR_SPEED = 0.3  # rad/s, slow enough not to hop the lander back up
-#: (pymunk substeps, iterations per substep). Each 0.07 kg leg hangs on a pivot under
-#: the 4.8 kg hull; pymunk's iterative solver needs many passes at that mass ratio, or the
-#: legs hop on the ground and the lander never falls asleep. Heuristic pilot, seeds 0-9,
-#: g = -10, landings that came to rest: 4 x 10 (kge's default) 0, 8 x 15 1, 8 x 23
-#: (Gymnasium's 6 * 30 velocity iterations as kge.box2d maps them) 9, 8 x 40 10; at
-#: g = -5, seeds 0-2: 8 x 23 none, 8 x 40 all. It costs throughput: see docs/rl.md.
-SOLVER = (8, 40)
+#: (pymunk substeps, iterations per substep), with the legs' limits pushing nothing back
+#: (``hinge_limit_push`` 0, Box2D's rule): the motor holds each leg on its stop and the
+#: landed lander falls asleep. Heuristic pilot, seeds 0-49, landings that came to rest:
+#: 8 x 8 47 (pybox2d 49; the misses are seeds pybox2d also lands slowly), as 8 x 40;
+#: 4 x 10 46; 8 x 5 47; 2 x 10 none (the hull touches down). g = -5 and g = -3, seeds
+#: 0-2: all, in pybox2d's number of steps. Eight substeps keep the sweeps of continuous
+#: collision rare (a leg moves less per substep): 4 x 10 cost 40 µs per batched env
+#: step, 8 x 8 about 28 (docs/rl.md). With a 0.1 rad/s push the legs hopped on the
+#: ground for ever below 8 x 40 (4 x 10: no lander of 20 came to rest).
+SOLVER = (8, 8)
 
 
 def leg_joint(hull: int, leg: int, i: int) -> RevoluteJoint:
@@ -211,10 +214,11 @@ class LunarLander(KgeEnv):
 # -- the scene and the rules, shared by LunarLander and its batched form (LunarLanderVector) --
 def solver_settings(gravity: float) -> PhysicsSettings:
     """The physics of the task: iterated hinges, so the leg motors and limits are solved
-    inside pymunk's iterations with the contacts, as Box2D does (see :data:`SOLVER`)."""
+    inside pymunk's iterations with the contacts, as Box2D does, and limits that only stop
+    the legs (no push back: ``hinge_limit_push`` 0; see :data:`SOLVER`)."""
     substeps, iterations = SOLVER
     return PhysicsSettings(gravity=(0.0, gravity), substeps=substeps, iterations=iterations,
-                           iterated_hinges=True)
+                           iterated_hinges=True, hinge_limit_push=0.0)
 
 
 @dataclass(slots=True)

@@ -56,6 +56,11 @@ class JointContext(Protocol):
         """``PhysicsSettings.iterated_hinges``: motors solved in pymunk's iterations."""
         ...
 
+    @property
+    def hinge_limit_push(self) -> float:
+        """``PhysicsSettings.hinge_limit_push``: an iterated limit's push-back speed."""
+        ...
+
     def body(self, entity: int) -> pymunk.Body:
         """The pymunk body of a body entity (a static placeholder for static ones)."""
         ...

@@ -141,6 +141,10 @@ class JointBridge:
         return bool(self.sim.settings.iterated_hinges)
 
     @property
+    def hinge_limit_push(self) -> float:
+        return float(self.sim.settings.hinge_limit_push)
+
+    @property
     def epoch(self) -> tuple[int, int]:
         """Changes whenever a body's type, membership or mass data may have changed:
         joints re-check their bodies then (Composite.before_step), not every step."""

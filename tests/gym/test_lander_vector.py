@@ -20,6 +20,7 @@ from kge.gym.draws import PairDraws
 from kge.gym.errors import InvalidActionError, ObservationError, ResetNeededError
 from kge.gym.lander_vector import SPACING
 from kge.physics.events import PhysicsEvents
+from kge.systems.physics import PhysicsSystem
 
 
 def make_vec(env_id: str, **kwargs: Any) -> Any:
@@ -194,11 +195,13 @@ def _finish_episode(envs: Any, rng: np.random.Generator) -> None:
 def test_a_relaid_scene_starts_as_a_fresh_scene_does(seed: int) -> None:
     """An autoreset re-lays env i's scene (same entities); its episode is the one a fresh
     world would start from the same rng state, to the stated band: the first
-    observation within 1e-3 (measured: at most 3e-4, seeds 0-5). Without the joints'
-    cold start (Physics.reset_joints) the legs kept the warm start of the crash
-    (1.1e-3 on the first step, 8e-3 after 30); before the physics kept a body's
-    origin at a mass update and set the angle before the origin at a teleport, the
-    re-laid lander began 0.1-0.2 m off its start."""
+    observation within 5e-3 (measured: at most 2.6e-3, seeds 0-5). That much is the
+    solver's: a scene re-laid one step after its reset differs as much (3.1e-3 at
+    8 x 8 solver passes, 6.6e-4 at 8 x 16, 4.1e-4 at 8 x 40), with or without the
+    joints' cold start. Without the cold start (Physics.reset_joints) the legs keep the
+    warm start of the crash: seed 3 then differs by 3.7e-2. Before the physics kept a
+    body's origin at a mass update and set the angle before the origin at a teleport,
+    the re-laid lander began 0.1-0.2 m off its start."""
     import copy
 
     envs = make_vec(LUNAR_LANDER, num_envs=1)
@@ -210,7 +213,7 @@ def test_a_relaid_scene_starts_as_a_fresh_scene_does(seed: int) -> None:
     fresh_env = make_vec(LUNAR_LANDER, num_envs=1)
     fresh_env._rngs = [state]  # a fresh world drawing the same episode
     fresh, _ = fresh_env.reset()
-    assert np.abs(relaid - fresh).max() < 1e-3
+    assert np.abs(relaid - fresh).max() < 5e-3
     assert np.abs(relaid - fresh).max() > 0.0  # not the same world: pymunk's caches differ
 
 
@@ -304,7 +307,13 @@ def test_the_benchmark_floor_steps_the_same_bodies() -> None:
     assert hull.mass == pytest.approx(physics.mass_data(scene.lander).mass, rel=1e-3)
     assert hull.moment == pytest.approx(physics.mass_data(scene.lander).inertia, rel=1e-3)
     assert legs[0].mass == pytest.approx(physics.mass_data(scene.legs[0]).mass, rel=1e-3)
-    assert len(floor.space.constraints) == 2 * 6 and floor.space.iterations == 40
+    space = envs.world.get_system(PhysicsSystem).sim.space
+    assert len(floor.space.constraints) == 2 * 6
+    assert floor.space.iterations == space.iterations
+    ours = sorted((type(c).__name__, round(c.error_bias, 6), c.max_force) for c in space.constraints)
+    theirs = sorted((type(c).__name__, round(c.error_bias, 6), c.max_force)
+                    for c in list(floor.space.constraints)[:6])  # its first lander's
+    assert ours == theirs  # the same joints, with the same bias and strength
     y0 = hull.position.y
     for _ in range(20):
         floor.step(np.zeros(2, np.int64))

@@ -37,6 +37,8 @@ class Sim:
         self.errors = CallbackErrors()
         #: PhysicsSettings.iterated_hinges (kge's default: off)
         self.iterated_hinges = False
+        #: PhysicsSettings.hinge_limit_push (kge's default: 0.1 rad/s)
+        self.hinge_limit_push = 0.1
 
     # -- JointContext -----------------------------------------------------------------
     @property

@@ -26,7 +26,12 @@ from pymunk._chipmunk import lib
 from kge.components.joints import RevoluteJoint
 from kge.components.tracked import raw_set
 from kge.physics.joint_api import JointContext, register
-from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite, in_space
+from kge.physics.joints.base import (
+    PROJECTED_ERROR_BIAS,
+    RIGID_ERROR_BIAS,
+    Composite,
+    in_space,
+)
 from kge.physics.joints.positions import (
     ANGULAR_SLOP,
     ITERATED_PIVOT_TOLERANCE,
@@ -43,8 +48,12 @@ _get_angular_velocity = lib.cpBodyGetAngularVelocity
 _get_impulse = lib.cpConstraintGetImpulse
 _local_to_world = lib.cpBodyLocalToWorld
 
-#: iterated hinges: the limit's largest push-back speed, rad/s
-ITERATED_LIMIT_BIAS = 0.1
+#: iterated hinges with no push (``PhysicsSettings.hinge_limit_push`` 0): the limit's
+#: ``error_bias``, so close to 1 that pymunk adds no push-back speed (about 1e-9
+#: rad/s per radian of overshoot): the limit only stops the hinge, as Box2D's
+#: velocity solver does. Not exactly 1: pymunk's RotaryLimitJoint takes a zero bias
+#: for "within the limits" and does nothing at all.
+ITERATED_LIMIT_ERROR_BIAS = 1.0 - 1e-9
 
 
 class Revolute(Composite):
@@ -87,10 +96,8 @@ class Revolute(Composite):
         if limited:
             if self.limit is None:
                 self.limit = pymunk.RotaryLimitJoint(self.a, self.b, 0.0, 0.0)
-                # Box2D: the position pass removes overshoot, not velocity; a slow
-                # bias only stops a motor from creeping past the limit
-                self.limit.max_bias = ITERATED_LIMIT_BIAS
                 self.add(self.limit, enabled=False)
+            self.push_back(self.limit, self.ctx.hinge_limit_push)
             self.limit.min = j.lower_angle + self.ref
             self.limit.max = j.upper_angle + self.ref
         if self.limit is not None:
@@ -101,6 +108,15 @@ class Revolute(Composite):
             self.motor_impulse = 0.0
         if not j.enable_limit:
             self.limit_impulse = 0.0
+
+    @staticmethod
+    def push_back(limit: pymunk.RotaryLimitJoint, speed: float) -> None:
+        """How fast pymunk pushes an overshooting hinge back: at most ``speed`` rad/s
+        (its usual bias, capped), or, for 0, not at all (see ``hinge_limit_push``)."""
+        if speed > 0.0:
+            limit.error_bias, limit.max_bias = RIGID_ERROR_BIAS, speed
+        else:
+            limit.error_bias, limit.max_bias = ITERATED_LIMIT_ERROR_BIAS, math.inf
 
     def solve(self, h: float) -> None:
         j = self.settings
