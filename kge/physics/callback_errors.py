@@ -12,7 +12,7 @@ The contact handlers are wrapped with :meth:`CallbackErrors.guard`; the
 joints' substep solvers and continuous collision's sweeps catch and
 :meth:`CallbackErrors.keep` themselves (no extra frame on a hot path). The
 only callbacks left bare are two whose bodies are a few attribute writes
-(``ForgetImpulse`` and the damping ``velocity_func``). The simulation calls
+(the damping ``velocity_func``). The simulation calls
 :meth:`CallbackErrors.raise_pending` once the step is over and its state is
 consistent, so the first exception reaches the caller of the step; the test
 suite turns anything that still reaches ``sys.unraisablehook`` into a failure.

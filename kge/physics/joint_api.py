@@ -109,9 +109,11 @@ class JointHandle(ABC):
                 return True
         return bt is not None and abs(getattr(component, "reaction_torque", 0.0)) > bt
 
-    def forget_impulses(self) -> None:
-        """Start the next step with no warm-start impulse (after a big position jump)."""
+    def forget_impulses(self) -> list[pymunk.Constraint]:
+        """Start the next step with no warm-start impulse (after a big position jump):
+        the pymunk constraints the physics must drain (see ``JointBridge.drain``)."""
         self.jolted = False
+        return []
 
     def remove(self, space: pymunk.Space) -> None:
         """Take every constraint of this joint out of ``space``."""

@@ -29,6 +29,7 @@ import pymunk
 
 from kge.components.tracked import Tracked, bind, unbind
 from kge.physics import joint_api
+from kge.physics.drain import Drain
 from kge.physics.events import JointBroken, JointDestroyed
 
 if TYPE_CHECKING:
@@ -105,6 +106,9 @@ class JointBridge:
         self.errors = sim.errors
         self.handles: dict[int, joint_api.JointHandle] = {}
         self.components: dict[int, Any] = {}
+        #: constraints to start from zero impulse at the next step (the simulation
+        #: brackets its first substep with ``drain.start`` / ``drain.end``)
+        self.drain = Drain()
         self.pending: set[int] = set()
         self.dirty: set[int] = set()
         self.removed: set[int] = set()
@@ -511,23 +515,23 @@ class JointBridge:
         So does every other joint on the same bodies: far-off joints are usually
         fighting another joint about where a body belongs, and a warm start that
         one of them forgot would leave the other's pushing alone (see
-        :class:`~kge.physics.joints.base.ForgetImpulse`).
+        :class:`~kge.physics.joints.base.Drain`).
         """
         moved = {e for h in jolted for e in (h.body_a, h.body_b) if e >= 0}
         for h in jolted:
-            h.forget_impulses()
+            self.drain.add(h.forget_impulses())
         for body in sorted(moved):  # the joints on those bodies only (the index)
             for e in self.on_body(body):
                 other = self.handles.get(e)
                 if other is not None and body in (other.body_a, other.body_b):
-                    other.forget_impulses()
+                    self.drain.add(other.forget_impulses())
 
     def reset_impulses(self, entities: list[int]) -> None:
         """The live joints among ``entities`` start the next step from zero impulse."""
         for e in entities:
             h = self.handles.get(e)
             if h is not None:
-                h.forget_impulses()
+                self.drain.add(h.forget_impulses())
 
     def body_removed(self, body_entity: int) -> None:
         """A body left: destroy every joint on it (and joints depending on those)."""
@@ -552,6 +556,7 @@ class JointBridge:
                 if self.sim.world.exists(other):
                     self.sim.world.despawn(other)
         h.remove(self.space)
+        self.drain.discard(getattr(h, "parts", h.constraints))
         if event:
             self.sim.events.joint_destroyed.append(JointDestroyed(entity, h.body_a, h.body_b))
 

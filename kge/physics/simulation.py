@@ -772,6 +772,8 @@ class Simulation:
         s = self.settings
         vmax, wmax = s.max_translation / self.dt, s.max_rotation / self.dt
         known = self.poses.by_id()
+        drain = self.joints.drain
+        drained = drain.start(self.space)  # joints starting from zero impulse
         for i in range(n):
             rec.substep = i
             if cap is not None and i:
@@ -779,6 +781,9 @@ class Simulation:
             if forces:
                 self._apply_forces()
             self.space.step(h)
+            if drained:
+                drain.end(drained)
+                drained = []
         forces.clear()
         rec.substep = 0
         self.steps += 1

@@ -104,37 +104,6 @@ MAX_SPRING_OMEGA_H = 1.0
 JOLT = 0.5
 
 
-class ForgetImpulse:
-    """One-shot ``pre_solve``: start a pymunk constraint again from zero impulse.
-
-    pymunk warm-starts every constraint with the impulse it accumulated in the
-    last step, applied along the Jacobian of this one. When a position pass has
-    just moved its bodies a long way, that old impulse points the wrong way. Two
-    joints that disagree about a body's place (two hinges to the ground at
-    anchors that cannot both hold) then feed each other: their equal and opposite
-    impulses grew about 3x per step, from 0.01 to 10^17 N·s in 30 steps, until
-    they no longer cancelled and threw the body 10^11 m. Box2D's position solver
-    moves the body just as far; a constraint that starts from zero stays bounded.
-
-    pymunk has no way to clear the accumulated impulse, but it clamps it to
-    ``max_force·h`` in every iteration: with ``max_force`` 0 for one substep the
-    warm start is undone and the accumulator ends at zero. The next substep puts
-    ``max_force`` back and the constraint carries on from nothing.
-    """
-
-    def __init__(self) -> None:
-        self.saved: float | None = None
-
-    def __call__(self, constraint: pymunk.Constraint, space: pymunk.Space) -> None:
-        if self.saved is None:
-            self.saved = constraint.max_force
-            constraint.max_force = 0.0
-        else:
-            if constraint.max_force == 0.0:  # unless the joint set a new one meanwhile
-                constraint.max_force = self.saved
-            constraint.pre_solve = None
-
-
 def can_join(a: pymunk.Body, b: pymunk.Body) -> bool:
     """Whether pymunk accepts a constraint between ``a`` and ``b``.
 
@@ -448,12 +417,11 @@ class Composite(JointHandle):
         if error > JOLT * limit:
             self.jolted = True
 
-    def forget_impulses(self) -> None:
-        """Let this joint's pymunk constraints start the next step from zero impulse."""
+    def forget_impulses(self) -> list[pymunk.Constraint]:
+        """This joint's pymunk constraints that must start the next step from zero
+        impulse (:class:`Drain`); a carrier's own solver keeps its state."""
         self.jolted = False
-        for c in self.constraints:
-            if c is not self._carrier and c.pre_solve is None:
-                c.pre_solve = ForgetImpulse()
+        return [c for c in self.constraints if c is not self._carrier]
 
     def read_live(self, component: Any, dt: float) -> None:  # pragma: no cover - abstract
         raise NotImplementedError
