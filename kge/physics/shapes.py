@@ -22,13 +22,15 @@ mass itself (:mod:`kge.physics.mass`).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from typing import Any, cast
 
 import pymunk
 
 from kge.components.collider import Collider
-from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
+from kge.components.shapes import Box, Chain, Circle, Edge, Polygon, Shape
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
-from kge.physics.static_bulk import chain_segments
+from kge.physics.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.tiny import flush_point, flush_points
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
@@ -46,18 +48,7 @@ def build_shapes(
     geom = collider.shape
     friction = math.sqrt(collider.friction)
     pf = to_pymunk(collider.filter)
-    rank = RANK_EDGE if isinstance(geom, (Edge, Chain)) else RANK_POLYGON
-    if isinstance(geom, Circle):
-        rank = RANK_CIRCLE
-    attrs = {
-        "kge_collider": collider_entity,
-        "kge_body": body_entity,
-        "kge_rank": rank,
-        "kge_oneway": None,
-        "kge_material": (collider.friction, collider.restitution),
-        "kge_filter": collider.filter,
-        "kge_hit": collider.hit_threshold,
-    }
+    attrs = _attrs(collider, collider_entity, body_entity)
     # coordinates below 1e-100 m are zero to Chipmunk (see kge.physics.tiny)
     if isinstance(geom, Chain):
         # one tight loop: a tile map's outlines are 100,000s of segments
@@ -91,6 +82,80 @@ def build_shapes(
     if collider.sensor:
         shape.sensor = True
     return [shape]
+
+
+def _attrs(collider: Collider, collider_entity: int, body_entity: int | None) -> dict[str, object]:
+    """The kge_* attributes every shape of ``collider`` starts with (but kge_child)."""
+    geom = collider.shape
+    rank = RANK_EDGE if isinstance(geom, (Edge, Chain)) else RANK_POLYGON
+    if isinstance(geom, Circle):
+        rank = RANK_CIRCLE
+    return {
+        "kge_collider": collider_entity,
+        "kge_body": body_entity,
+        "kge_rank": rank,
+        "kge_oneway": None,
+        "kge_material": (collider.friction, collider.restitution),
+        "kge_filter": collider.filter,
+        "kge_hit": collider.hit_threshold,
+    }
+
+
+def same_segments(old: Shape, new: Shape) -> bool:
+    """Whether ``new`` is built of as many segments, joined the same way, as ``old``:
+    an edge and an edge, or chains of as many vertices both open or both loops.
+
+    Then :func:`rebuild_in_place` can give the shapes built for ``old`` the
+    geometry of ``new``.
+    """
+    if type(old) is Edge:
+        return type(new) is Edge
+    return (
+        type(old) is Chain
+        and type(new) is Chain
+        and old.loop == new.loop
+        and len(old.vertices) == len(new.vertices)
+    )
+
+
+def rebuild_in_place(
+    shapes: list[pymunk.Shape],
+    body: pymunk.Body,
+    collider: Collider,
+    collider_entity: int,
+    body_entity: int | None,
+    skin: float,
+) -> None:
+    """Turn ``shapes`` (out of any space; built for a shape of which
+    ``collider.shape`` is :func:`same_segments`) into what :func:`build_shapes`
+    would build for ``collider`` now, keeping the Python objects.
+
+    Chipmunk's fields are initialised as for a new segment
+    (:func:`~kge.physics.static_bulk.reinit_segments`) and the kge_* attributes
+    written again, so nothing of the old geometry or material survives.
+    """
+    geom = collider.shape
+    pf = to_pymunk(collider.filter)
+    ends: tuple[Sequence[Any], ...]
+    if isinstance(geom, Chain):
+        ends = chain_ends(geom.vertices, geom.loop)
+    elif isinstance(geom, Edge):
+        ends = ([flush_point(geom.v1)], [flush_point(geom.v2)])
+    else:
+        raise TypeError(f"rebuild_in_place: {type(geom).__name__} is not made of segments")
+    segments = cast(list[pymunk.Segment], shapes)
+    reinit_segments(
+        segments,
+        body,
+        ends,
+        skin,
+        math.sqrt(collider.friction),
+        None if pf == DEFAULT_FILTER else pf,
+        collider.sensor,
+    )
+    attrs = _attrs(collider, collider_entity, body_entity)
+    for seg in segments:
+        vars(seg).update(attrs)
 
 
 def apply_material(shape: pymunk.Shape, collider: Collider) -> None:

@@ -51,7 +51,13 @@ from kge.physics.events import PhysicsEvents
 from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.settings import PhysicsSettings
-from kge.physics.shapes import apply_material, build_shapes, spread
+from kge.physics.shapes import (
+    apply_material,
+    build_shapes,
+    rebuild_in_place,
+    same_segments,
+    spread,
+)
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
 from kge.physics.static_bulk import add_shapes
 from kge.physics.sync import PoseTable, columns_differ, rows_differ
@@ -89,6 +95,8 @@ class Simulation:
         self.bodies: dict[int, BodyRecord] = {}
         self.colliders: dict[int, ColliderRecord] = {}
         self.pending: set[int] = set()  # colliders waiting for their body
+        #: pending colliders whose reshaped segments wait to go back into the space
+        self._reshaped: dict[int, ColliderRecord] = {}
         self.body_struct: set[int] = set()
         self.collider_struct: set[int] = set()
         self.rb_dirty: set[int] = set()
@@ -441,7 +449,15 @@ class Simulation:
         space = self.space
         to_add: list[pymunk.Shape] = []
         attached: list[int] = []
+        reshaped = self._reshaped
         for c in sorted(self.pending):
+            if c in reshaped:  # its own segments, new again (see _reshape)
+                crec = reshaped.pop(c)
+                if self.bodies[crec.owner].in_space:
+                    shapes = crec.shapes
+                    to_add.extend(shapes if len(shapes) < 64 else spread(shapes))
+                attached.append(c)
+                continue
             col = world.try_get(c, Collider)
             if col is None:
                 attached.append(c)
@@ -486,6 +502,8 @@ class Simulation:
             return
         owner = e if col.body is None else col.body
         if owner != crec.owner or crec.geometry is not col.shape:
+            if owner == crec.owner and self._reshape(crec, col):
+                return
             self.colliders.pop(e)
             self._detach(crec)
             self.pending.add(e)
@@ -504,6 +522,39 @@ class Simulation:
             self.mass_dirty.add(owner)
             if refilter and rec.body.body_type == DYNAMIC and rec.in_space:
                 rec.body.activate()  # Box2D: assigning a filter wakes the body
+
+    def _reshape(self, crec: ColliderRecord, col: Collider) -> bool:
+        """A new shape of the same segments (:func:`same_segments`) for a collider on
+        the same body: reuse its pymunk segments instead of building new ones.
+
+        Everything a rebuild (:meth:`_detach`, then :meth:`_attach_pending`) does
+        happens, in the same order: what touches the body wakes, the segments
+        leave the space (Chipmunk ends their contacts, with separate callbacks,
+        and wakes what touched them), the contact recorder forgets them; they are
+        then initialised as new segments of the new shape
+        (:func:`rebuild_in_place`) and go back into the space with the colliders
+        that :meth:`_attach_pending` adds, in entity order, getting new hash ids as
+        new shapes would (so the space's index, pair order and results are those
+        of a rebuild). What a rebuild would redo for nothing is skipped: an edge's
+        or chain's mass is zero, so a static body's mass data stays (a dynamic or
+        kinematic body's is recomputed as before). False: rebuild instead.
+        """
+        rec = self.bodies.get(crec.owner)
+        if rec is None or not same_segments(crec.geometry, col.shape):  # type: ignore[arg-type]
+            return False
+        e = crec.entity
+        if rec.in_space and crec.shapes:
+            wake_neighbours(rec.body)  # as _detach
+        self._remove_shapes(crec)
+        rebuild_in_place(crec.shapes, rec.body, col, e, rec.kge_body, self.skin)
+        self._configure_shapes(e, col, crec.shapes)
+        crec.geometry = col.shape
+        if rec.body.body_type != STATIC:
+            self.mass_dirty.add(crec.owner)
+        self.ccd_dirty.add(crec.owner)  # the obstacle index re-reads the boxes
+        self._reshaped[e] = crec
+        self.pending.add(e)
+        return True
 
     def _apply_rigidbody(self, e: int) -> None:
         rec = self.bodies.get(e)

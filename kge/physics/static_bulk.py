@@ -42,6 +42,22 @@ def _shape_free(cp_shape: Any) -> None:
     lib.cpShapeFree(cp_shape)
 
 
+def chain_ends(vertices: Sequence[tuple[float, float]], loop: bool) -> tuple[list[Any], ...]:
+    """(A, B, P, N): each segment's ends and its outer neighbours, tiny coordinates flushed.
+
+    Neighbours follow Box2D's chain: a loop's ends wrap, an open chain's end
+    segments have themselves as the outer neighbour (no ghost vertex).
+    """
+    pts = list(vertices)
+    arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+    if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
+        pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
+    # by list slicing: Chipmunk takes the points as they are
+    if loop:
+        return pts, pts[1:] + pts[:1], pts[-1:] + pts[:-1], pts[2:] + pts[:2]
+    return pts[:-1], pts[1:], pts[:1] + pts[:-2], pts[2:] + pts[-1:]
+
+
 def chain_segments(
     body: pymunk.Body,
     vertices: Sequence[tuple[float, float]],
@@ -57,20 +73,9 @@ def chain_segments(
     ``attrs`` (the kge_* attributes shared by every segment of the collider) is
     copied onto each; ``kge_child`` is the segment's index in the chain.
     ``shape_filter`` (None: pymunk's default) and ``sensor`` are set on each.
-    Neighbours follow Box2D's chain: a loop's ends wrap, an open chain's end
-    segments have themselves as the outer neighbour (no ghost vertex).
+    Neighbours: see :func:`chain_ends`.
     """
-    pts = list(vertices)
-    arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
-    if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
-        pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
-    # ends and neighbours by list slicing: Chipmunk takes the points as they are
-    if loop:
-        A, B = pts, pts[1:] + pts[:1]
-        P, N = pts[-1:] + pts[:-1], pts[2:] + pts[:2]
-    else:
-        A, B = pts[:-1], pts[1:]
-        P, N = pts[:1] + pts[:-2], pts[2:] + pts[-1:]
+    A, B, P, N = chain_ends(vertices, loop)
     new_segment = lib.cpSegmentShapeNew
     set_neighbors = lib.cpSegmentShapeSetNeighbors
     set_friction = lib.cpShapeSetFriction
@@ -106,6 +111,63 @@ def chain_segments(
         body_shapes[seg] = None
         append(seg)
     return out
+
+
+def reinit_segments(
+    segments: Sequence[pymunk.Segment],
+    body: pymunk.Body,
+    ends: tuple[Sequence[Any], ...],
+    radius: float,
+    friction: float,
+    shape_filter: pymunk.ShapeFilter | None = None,
+    sensor: bool = False,
+) -> None:
+    """Make ``segments`` (out of any space) new segments of ``body`` in place.
+
+    ``ends`` is (A, B) or (A, B, P, N) as :func:`chain_ends` gives them, one row
+    per segment (P, N: the neighbours; without them none are set, as for an
+    edge). Each Chipmunk shape is initialised again by ``cpSegmentShapeInit``,
+    the call ``cpSegmentShapeNew`` makes after allocating: every Chipmunk field
+    (normal, mass info, tangents, material, filter, type, sensor flag) is what
+    a new segment of these ends has, and the same calls as
+    :func:`chain_segments` then set its user data, neighbours and material. The
+    Python objects and their attributes stay. Why not ``cpSegmentShapeSetEndpoints``:
+    it computes the normal with the opposite sign of ``cpSegmentShapeInit`` (pymunk 7.3).
+
+    Why at all: a new outline of the same topology (an RL episode's terrain)
+    reuses its segments instead of allocating new ones. The shape's hashid is
+    not Chipmunk's to reset; the space gives it a new one when it is added again.
+    """
+    A, B = ends[0], ends[1]
+    neighbours = ends[2:] if len(ends) == 4 else None
+    if len(A) != len(segments):
+        raise ValueError(f"{len(segments)} segments, {len(A)} pairs of ends")
+    init = lib.cpSegmentShapeInit
+    cast = ffi.cast
+    set_neighbors = lib.cpSegmentShapeSetNeighbors
+    set_friction = lib.cpShapeSetFriction
+    set_user_data = lib.cpShapeSetUserData
+    set_filter = lib.cpShapeSetFilter
+    set_sensor = lib.cpShapeSetSensor
+    cp_body = body._body
+    in_space = lib.cpShapeGetSpace
+    null = ffi.NULL
+    for i, seg in enumerate(segments):
+        d = seg.__dict__
+        c = d["_shape"]
+        if d["_body"]() is not body or in_space(c) != null:
+            # re-initialising a shape Chipmunk indexes would corrupt the space
+            raise ValueError("reinit_segments: a segment is in a space or on another body")
+        init(cast("cpSegmentShape *", c), cp_body, A[i], B[i], radius)
+        set_user_data(c, d["_h"])
+        if neighbours is not None:
+            set_neighbors(c, neighbours[0][i], neighbours[1][i])
+        if friction:
+            set_friction(c, friction)
+        if shape_filter is not None:
+            set_filter(c, shape_filter)
+        if sensor:
+            set_sensor(c, True)
 
 
 def add_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
