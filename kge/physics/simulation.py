@@ -59,7 +59,7 @@ from kge.physics.shapes import (
     spread,
 )
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
-from kge.physics.static_bulk import add_shapes
+from kge.physics.static_bulk import add_shapes, remove_shapes
 from kge.physics.sync import PoseTable, columns_differ, rows_differ
 from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_poses, write_velocities
@@ -427,10 +427,7 @@ class Simulation:
         self._restale(rec.entity)
 
     def _remove_shapes(self, crec: ColliderRecord) -> None:
-        space = self.space
-        inside = [s for s in crec.shapes if s.space is space]
-        if inside:
-            space.remove(*inside)  # one call: a chain's thousands of segments
+        remove_shapes(self.space, crec.shapes)  # one call: a chain's thousands of segments
         self.recorder.forget_shapes(crec.shapes)
 
     def _detach(self, crec: ColliderRecord) -> None:
@@ -535,9 +532,10 @@ class Simulation:
         (:func:`rebuild_in_place`) and go back into the space with the colliders
         that :meth:`_attach_pending` adds, in entity order, getting new hash ids as
         new shapes would (so the space's index, pair order and results are those
-        of a rebuild). What a rebuild would redo for nothing is skipped: an edge's
-        or chain's mass is zero, so a static body's mass data stays (a dynamic or
-        kinematic body's is recomputed as before). False: rebuild instead.
+        of a rebuild). What a rebuild would redo for nothing is skipped for a static
+        body: an edge's or chain's mass is zero, so its mass data stays, and it has
+        no continuous collision to re-register (a dynamic or kinematic body's are
+        redone as before). False: rebuild instead.
         """
         rec = self.bodies.get(crec.owner)
         if rec is None or not same_segments(crec.geometry, col.shape):  # type: ignore[arg-type]
@@ -551,7 +549,10 @@ class Simulation:
         crec.geometry = col.shape
         if rec.body.body_type != STATIC:
             self.mass_dirty.add(crec.owner)
-        self.ccd_dirty.add(crec.owner)  # the obstacle index re-reads the boxes
+            self.ccd_dirty.add(crec.owner)
+        # else continuous collision's obstacle index needs no word: the segments come
+        # back with new hash ids, which is how it tells the shapes it must (re-)read
+        # at its next look (kge.physics.ccd.obstacles), as it reads any new shape
         self._reshaped[e] = crec
         self.pending.add(e)
         return True

@@ -30,6 +30,7 @@ from typing import Any
 import numpy as np
 import pymunk
 from pymunk._chipmunk import ffi, lib
+from pymunk._util import _dead_ref
 
 from kge.physics.tiny import TINY
 
@@ -179,7 +180,7 @@ def add_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
     body is not in this one, is refused with pymunk's message and the shapes
     added before it are taken out again.
     """
-    if space._locked or len(shapes) < 16:
+    if space._locked:  # (even one shape is faster here than through space.add)
         space.add(*shapes)
         return
     known = space._shapes
@@ -210,3 +211,35 @@ def add_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
     except BaseException:
         space.remove(*shapes[:done])  # nothing half-added
         raise
+
+
+def remove_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
+    """``space.remove`` of those of ``shapes`` that are in ``space``, without pymunk's
+    per-shape dispatch, asserts and attribute hooks (a re-laid outline's segments).
+
+    Same calls, order and bookkeeping as pymunk's ``Space._remove_shape``: each
+    shape is kept alive until the next step, its space reference cleared,
+    Chipmunk removes it (ending its contacts, with separate callbacks, and
+    waking what touched it) and it leaves ``space.shapes``. Removals a separate
+    callback asked for run afterwards, as ``space.remove`` runs them. A locked
+    space (inside a step) defers like ``space.remove``.
+    """
+    if space._locked:
+        space.remove(*[s for s in shapes if s.space is space])
+        return
+    known = space._shapes
+    kept = space._removed_shapes
+    cp_space = space._space
+    contains = lib.cpSpaceContainsShape
+    remove = lib.cpSpaceRemoveShape
+    for s in shapes:
+        if s not in known:
+            continue
+        kept[s] = None
+        s.__dict__["_space"] = _dead_ref
+        cp_shape = s._shape
+        if contains(cp_space, cp_shape):
+            remove(cp_space, cp_shape)
+        del known[s]
+    if space._remove_later:
+        space.remove()  # what the separate callbacks asked to remove
