@@ -545,7 +545,7 @@ class Simulation:
             wake_neighbours(rec.body)  # as _detach
         self._remove_shapes(crec)
         rebuild_in_place(crec.shapes, rec.body, col, e, rec.kge_body, self.skin)
-        self._configure_shapes(e, col, crec.shapes)
+        self._configure_shapes(e, col, crec.shapes, fresh=True)  # new again
         crec.geometry = col.shape
         if rec.body.body_type != STATIC:
             self.mass_dirty.add(crec.owner)

@@ -32,7 +32,10 @@ import pymunk
 from pymunk._chipmunk import ffi, lib
 from pymunk._util import _dead_ref
 
-from kge.physics.tiny import TINY
+from kge.physics.tiny import TINY, flush
+
+#: up to this many vertices a chain's tiny coordinates are looked for without numpy
+_FEW_POINTS = 32
 
 
 def _shape_free(cp_shape: Any) -> None:
@@ -50,9 +53,12 @@ def chain_ends(vertices: Sequence[tuple[float, float]], loop: bool) -> tuple[lis
     segments have themselves as the outer neighbour (no ghost vertex).
     """
     pts = list(vertices)
-    arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
-    if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
-        pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
+    if len(pts) > _FEW_POINTS:
+        arr = np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+        if np.any((np.abs(arr) < TINY) & (arr != 0.0)):  # see kge.physics.tiny
+            pts = np.where(np.abs(arr) < TINY, 0.0, arr).tolist()
+    elif any(-TINY < v < TINY and v != 0.0 for p in pts for v in p):
+        pts = [(flush(x), flush(y)) for x, y in pts]
     # by list slicing: Chipmunk takes the points as they are
     if loop:
         return pts, pts[1:] + pts[:1], pts[-1:] + pts[:-1], pts[2:] + pts[:2]
@@ -140,34 +146,38 @@ def reinit_segments(
     not Chipmunk's to reset; the space gives it a new one when it is added again.
     """
     A, B = ends[0], ends[1]
-    neighbours = ends[2:] if len(ends) == 4 else None
     if len(A) != len(segments):
         raise ValueError(f"{len(segments)} segments, {len(A)} pairs of ends")
-    init = lib.cpSegmentShapeInit
-    cast = ffi.cast
-    set_neighbors = lib.cpSegmentShapeSetNeighbors
-    set_friction = lib.cpShapeSetFriction
-    set_user_data = lib.cpShapeSetUserData
-    set_filter = lib.cpShapeSetFilter
-    set_sensor = lib.cpShapeSetSensor
-    cp_body = body._body
     in_space = lib.cpShapeGetSpace
     null = ffi.NULL
-    for i, seg in enumerate(segments):
-        d = seg.__dict__
-        c = d["_shape"]
-        if d["_body"]() is not body or in_space(c) != null:
-            # re-initialising a shape Chipmunk indexes would corrupt the space
+    cp_body = body._body
+    for seg in segments:
+        # re-initialising a shape Chipmunk indexes would corrupt the space
+        if seg.__dict__["_body"]() is not body or in_space(seg._shape) != null:
             raise ValueError("reinit_segments: a segment is in a space or on another body")
-        init(cast("cpSegmentShape *", c), cp_body, A[i], B[i], radius)
-        set_user_data(c, d["_h"])
-        if neighbours is not None:
-            set_neighbors(c, neighbours[0][i], neighbours[1][i])
-        if friction:
+    init = lib.cpSegmentShapeInit
+    cast = ffi.cast
+    set_user_data = lib.cpShapeSetUserData
+    cps = [seg._shape for seg in segments]
+    for c, seg, a, b in zip(cps, segments, A, B, strict=True):
+        init(cast("cpSegmentShape *", c), cp_body, a, b, radius)
+        set_user_data(c, seg._h)
+    if len(ends) == 4:
+        set_neighbors = lib.cpSegmentShapeSetNeighbors
+        for c, p, n in zip(cps, ends[2], ends[3], strict=True):
+            set_neighbors(c, p, n)
+    if friction:
+        set_friction = lib.cpShapeSetFriction
+        for c in cps:
             set_friction(c, friction)
-        if shape_filter is not None:
-            set_filter(c, shape_filter)
-        if sensor:
+    if shape_filter is not None:
+        set_filter = lib.cpShapeSetFilter
+        pf = ffi.new("cpShapeFilter *", shape_filter)[0]  # converted once
+        for c in cps:
+            set_filter(c, pf)
+    if sensor:
+        set_sensor = lib.cpShapeSetSensor
+        for c in cps:
             set_sensor(c, True)
 
 

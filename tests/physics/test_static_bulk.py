@@ -13,7 +13,13 @@ import pymunk
 import pytest
 
 from kge.physics.ccd.obstacles import Obstacles
-from kge.physics.static_bulk import add_shapes, chain_segments
+from kge.physics.static_bulk import (
+    add_shapes,
+    chain_ends,
+    chain_segments,
+    reinit_segments,
+    remove_shapes,
+)
 
 LOOP = [(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (2.0, 1.0), (2.0, 3.0), (0.0, 3.0)]
 
@@ -40,7 +46,7 @@ def test_segments_match_pymunks_own() -> None:
     assert set(body.shapes) == set(segs)
     twin = pickle.loads(pickle.dumps(segs[2]))  # pymunk's own pickling works on them
     assert (twin.a, twin.b, twin.friction, twin.filter) == (segs[2].a, segs[2].b, 0.5, pf)
-    add_shapes(space, segs)  # fewer than 16: space.add itself
+    add_shapes(space, segs)
     assert all(s.space is space for s in segs)
     # queries find the segment object itself (the user-data handle is set)
     hit = space.point_query_nearest((3.0, 0.05), 0.2, pymunk.ShapeFilter())
@@ -199,3 +205,83 @@ def test_a_new_static_owner_does_not_reread_every_other_box() -> None:
     obs.refresh(*_read(space), 1)
     s = next(iter(first.shapes))
     assert obs.box[obs.row_of[s]][1] >= 99.0 and sum(counted) == 20
+
+
+def _resting_ball(space: pymunk.Space) -> pymunk.Body:
+    ball = pymunk.Body(1.0, 1.0)
+    ball.position = (1.0, 0.5)
+    space.add(ball, pymunk.Circle(ball, 0.5))
+    space.gravity = (0.0, -10.0)
+    for _ in range(5):
+        space.step(1 / 60)
+    return ball
+
+
+def _removed_with_callbacks(bulk: bool) -> None:
+    space, body = _space()
+    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0, {})
+    add_shapes(space, segs)
+    ball = _resting_ball(space)
+    (circle,) = ball.shapes
+    ended: list[object] = []
+
+    def separate(arb: pymunk.Arbiter, _space: pymunk.Space, _data: Any) -> None:
+        ended.append(arb.shapes)
+        _space.remove(circle)  # a removal asked from the callback: done after
+
+    space.on_collision(separate=separate)
+    stray = pymunk.Segment(body, (0.0, 5.0), (1.0, 5.0), 0.0)  # never added: skipped
+    if bulk:
+        remove_shapes(space, [*segs, stray])
+    else:
+        space.remove(*segs)
+    assert ended and all(seg.space is None for seg in segs)
+    assert set(space.shapes) == set() and circle.space is None
+    add_shapes(space, segs)  # and they can go back in
+    assert [s.space for s in segs] == [space] * 2
+
+
+@pytest.mark.parametrize("bulk", [True, False], ids=["remove_shapes", "space.remove"])
+def test_remove_shapes_is_space_remove(bulk: bool) -> None:
+    """Same callbacks, bookkeeping and deferred removals as pymunk's own remove."""
+    _removed_with_callbacks(bulk)
+
+
+def test_remove_shapes_in_a_locked_space_waits_for_the_step_end() -> None:
+    space, body = _space()
+    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0, {})
+    add_shapes(space, segs)
+    _resting_ball(space)
+    during: list[bool] = []
+
+    def post_solve(arb: pymunk.Arbiter, _space: pymunk.Space, _data: Any) -> None:
+        remove_shapes(_space, segs)
+        during.append(segs[0].space is _space)
+
+    space.on_collision(post_solve=post_solve)
+    space.step(1 / 60)
+    assert during and all(during)
+    assert all(s.space is None for s in segs)
+
+
+def test_reinit_segments_makes_new_segments_in_place() -> None:
+    space, body = _space()
+    old = [(0.0, 0.0), (2.0, 1.0), (4.0, 0.0), (6.0, 1.0)]
+    new = [(0.0, -1.0), (3.0, 2.0), (5.0, 2.0), (8.0, -1.0)]
+    pf = pymunk.ShapeFilter(categories=2, mask=5)
+    segs = chain_segments(body, old, False, 0.01, 0.5, {}, None, False)
+    add_shapes(space, segs)
+    with pytest.raises(ValueError, match="in a space"):
+        reinit_segments(segs, body, chain_ends(new, False), 0.01, 0.5)
+    assert [(s.a, s.b) for s in segs] == [(old[i], old[i + 1]) for i in range(3)]
+    space.remove(*segs)
+    with pytest.raises(ValueError, match="pairs of ends"):
+        reinit_segments(segs[:2], body, chain_ends(new, False), 0.01, 0.5)
+    reinit_segments(segs, body, chain_ends(new, False), 0.02, 0.3, pf, True)
+    fresh = chain_segments(body, new, False, 0.02, 0.3, {}, pf, True)
+    for s, f in zip(segs, fresh, strict=True):
+        assert (s.a, s.b, s.normal, s.radius, s.friction, s.filter, s.sensor) == (
+            f.a, f.b, f.normal, f.radius, f.friction, f.filter, f.sensor)
+    add_shapes(space, segs)
+    hit = space.point_query_nearest((4.0, 2.0), 0.1, pymunk.ShapeFilter(categories=5))
+    assert hit is not None and hit.shape is segs[1]  # the user-data handle is set again
