@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 import pymunk
+from pymunk._chipmunk import lib as _cp
 
 from kge.components.collider import Collider
 from kge.components.platform import OneWayPlatform
@@ -595,17 +596,20 @@ class Simulation:
                 w = 0.0
                 raw_set(rb, "angular_velocity", 0.0)
             vx, vy, w = flush(vx), flush(vy), flush(w)
-            v = body.velocity
+            # Chipmunk's setters directly: pymunk's properties go through a
+            # __setattr__ of its own (a re-laid scene writes three bodies' velocities)
+            cp = body._body
+            v = _cp.cpBodyGetVelocity(cp)
             if (v.x, v.y) != (vx, vy):
-                body.velocity = (vx, vy)
-            if body.angular_velocity != w:
-                body.angular_velocity = w
+                _cp.cpBodySetVelocity(cp, (vx, vy))
+            if _cp.cpBodyGetAngularVelocity(cp) != w:
+                _cp.cpBodySetAngularVelocity(cp, w)
             i = self.poses.slot.get(e)
             if i is not None and not self.poses_stale:
                 # sync-out writes what changed since this: the component now holds it
                 self.poses.state[i, 3:6] = (vx, vy, w)
         configure_dynamics(body, rb, self.dt, self.substeps)
-        body.kge_bullet = rb.bullet
+        vars(body)["kge_bullet"] = rb.bullet  # (pymunk's __setattr__ adds nothing here)
         # a velocity write (a player controller's, every frame) leaves the mass data
         # and continuous collision as they were: rebuilt only when what they are
         # made of changed
@@ -717,14 +721,15 @@ class Simulation:
         if rec is None or t is None:
             return
         body = rec.body
-        p = body.position
+        cp = body._body  # Chipmunk's getters and setters directly (see _apply_rigidbody)
+        p = _cp.cpBodyGetPosition(cp)
         x, y, angle = flush(t.x), flush(t.y), flush(t.angle)
-        if (p.x, p.y, body.angle) == (x, y, angle):
+        if (p.x, p.y, _cp.cpBodyGetAngle(cp)) == (x, y, angle):
             return
         # angle first: Chipmunk turns a body about its centre of gravity, so setting
         # the origin and then the angle would move the origin off the pose again
-        body.angle = angle
-        body.position = (x, y)
+        _cp.cpBodySetAngle(cp, angle)
+        _cp.cpBodySetPosition(cp, (x, y))
         if body.body_type == STATIC and rec.in_space:
             self.space.reindex_shapes_for_body(body)
         self.poses.teleported(e, t.x, t.y, t.angle)
