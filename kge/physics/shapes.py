@@ -101,7 +101,7 @@ def _attrs(collider: Collider, collider_entity: int, body_entity: int | None) ->
     }
 
 
-def same_segments(old: Shape, new: Shape) -> bool:
+def same_segments(old: object, new: Shape) -> bool:
     """Whether ``new`` is built of as many segments, joined the same way, as ``old``:
     an edge and an edge, or chains of as many vertices both open or both loops.
 

@@ -539,7 +539,7 @@ class Simulation:
         redone as before). False: rebuild instead.
         """
         rec = self.bodies.get(crec.owner)
-        if rec is None or not same_segments(crec.geometry, col.shape):  # type: ignore[arg-type]
+        if rec is None or not same_segments(crec.geometry, col.shape):
             return False
         e = crec.entity
         if rec.in_space and crec.shapes:
