@@ -43,6 +43,15 @@ MAX_LENGTH = 1e6
 
 
 def _points(value: Any, owner: str, field: str) -> tuple[Vec2, ...]:
+    if type(value) is tuple or type(value) is list:
+        # what the loop below returns, found without a call per point (an RL reset
+        # validates a new terrain outline every episode); anything else takes the
+        # loop, which says what is wrong
+        pts = tuple(value)
+        if all(type(p) is tuple and len(p) == 2 and type(p[0]) is float and type(p[1]) is float
+               and -MAX_LENGTH <= p[0] <= MAX_LENGTH and -MAX_LENGTH <= p[1] <= MAX_LENGTH
+               for p in pts):
+            return pts
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
         raise ValidationError(f"{owner}.{field} must be a sequence of (x, y) points, got {value!r}")
     return tuple(_point(p, owner, f"{field}[{i}]") for i, p in enumerate(value))

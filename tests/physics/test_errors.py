@@ -34,6 +34,13 @@ BAD_VALUES: list[tuple[Callable[[], Any], type[Exception], str]] = [
     (lambda: Edge((0, 0), (0, 0)), ValidationError, "zero length"),
     (lambda: Chain([(0, 0)]), ValidationError, "at least 2"),
     (lambda: Chain([(0, 0), (1, 0)], loop=True), ValidationError, "loop"),
+    # tuples of floats (the points' fast path) with a bad value take the checked path
+    (lambda: Chain([(0.0, 0.0), (1.0, math.nan)]), ValidationError, "Chain.vertices"),
+    (lambda: Chain([(0.0, 0.0), (math.inf, 1.0)]), ValidationError, "Chain.vertices"),
+    (lambda: Chain(((0.0, 0.0), (2e6, 1.0))), ValidationError, "must lie within 1e"),
+    (lambda: Chain([(0.0, 0.0), (1.0, 0.0), (1.0, 0.0)]), ValidationError, "coincide"),
+    (lambda: Polygon([(0.0, 0.0), (1.0, 0.0, 2.0), (0.0, 1.0)]), ValidationError,
+     "Polygon.vertices"),
     (lambda: Collider(Circle(1.0), density=-1.0), ValidationError, "Collider.density"),
     (lambda: Collider(Circle(1.0), friction=math.nan), ValidationError, "Collider.friction"),
     (lambda: Collider("circle"), ComponentTypeError, "Collider.shape"),  # type: ignore[arg-type]
@@ -107,3 +114,12 @@ def test_despawned_body_reference_is_refused(sim: Sim) -> None:
     a = sim.dynamic(Circle(0.5), 0.0, 3.0)
     sim.world.despawn(a)
     _refused(sim, lambda: sim.spawn(Collider(Circle(1.0), body=a)), "does not exist")
+
+
+def test_points_come_back_as_tuples_of_floats() -> None:
+    """Any sequence of pairs in; a tuple of (float, float) tuples out, on either path."""
+    for given in ([(0.0, 0.0), (1.5, 2.0)], ((0.0, 0.0), (1.5, 2.0)), [[0, 0], (1.5, 2)]):
+        chain = Chain(given)
+        assert chain.vertices == ((0.0, 0.0), (1.5, 2.0))
+        assert all(type(v) is float for p in chain.vertices for v in p)
+        assert type(chain.vertices) is tuple
