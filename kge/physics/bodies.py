@@ -44,6 +44,7 @@ from collections.abc import Callable
 from typing import Any
 
 import pymunk
+from pymunk._chipmunk import ffi as _ffi
 from pymunk._chipmunk import lib as _lib
 
 from kge.components.rigidbody import BodyType, RigidBody
@@ -153,12 +154,19 @@ def _constraint_in(space: pymunk.Space, c: pymunk.Constraint) -> bool:
 def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
     """Non-static bodies touching ``body`` (its arbiters) or jointed to it in ``space``."""
     found: dict[pymunk.Body, None] = {}
+    cp = body._body
+    a_p, b_p = _ffi.new("cpBody *[1]"), _ffi.new("cpBody *[1]")
+    get_bodies, get_type = _lib.cpArbiterGetBodies, _lib.cpBodyGetType
+    get_data, from_handle = _lib.cpBodyGetUserData, _ffi.from_handle
 
     def visit(arb: pymunk.Arbiter) -> None:
-        a, b = arb.bodies
-        other = b if a is body else a
-        if other.body_type != STATIC:
-            found[other] = None
+        # what arb.bodies gives, through Chipmunk's getters (pymunk's goes through both
+        # shapes and their weak body references): the body's user data is its handle
+        get_bodies(arb._arbiter, a_p, b_p)
+        a = a_p[0]
+        other = b_p[0] if a == cp else a
+        if get_type(other) != STATIC:
+            found[from_handle(get_data(other))] = None
 
     body.each_arbiter(visit)
     for c in list(body.constraints):
