@@ -39,7 +39,8 @@ BAD_VALUES: list[tuple[Callable[[], Any], type[Exception], str]] = [
     (lambda: Chain([(0.0, 0.0), (math.inf, 1.0)]), ValidationError, "Chain.vertices"),
     (lambda: Chain(((0.0, 0.0), (2e6, 1.0))), ValidationError, "must lie within 1e"),
     (lambda: Chain([(0.0, 0.0), (1.0, 0.0), (1.0, 0.0)]), ValidationError, "coincide"),
-    (lambda: Polygon([(0.0, 0.0), (1.0, 0.0, 2.0), (0.0, 1.0)]), ValidationError,
+    (lambda: Polygon([(0.0, 0.0), (1.0, 0.0, 2.0), (0.0, 1.0)]),  # type: ignore[list-item]
+     ValidationError,
      "Polygon.vertices"),
     (lambda: Collider(Circle(1.0), density=-1.0), ValidationError, "Collider.density"),
     (lambda: Collider(Circle(1.0), friction=math.nan), ValidationError, "Collider.friction"),
@@ -118,6 +119,7 @@ def test_despawned_body_reference_is_refused(sim: Sim) -> None:
 
 def test_points_come_back_as_tuples_of_floats() -> None:
     """Any sequence of pairs in; a tuple of (float, float) tuples out, on either path."""
+    given: Any
     for given in ([(0.0, 0.0), (1.5, 2.0)], ((0.0, 0.0), (1.5, 2.0)), [[0, 0], (1.5, 2)]):
         chain = Chain(given)
         assert chain.vertices == ((0.0, 0.0), (1.5, 2.0))
