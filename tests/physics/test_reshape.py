@@ -200,14 +200,18 @@ def test_a_sleeper_under_the_new_outline_behaves_as_after_a_rebuild(mode: str) -
     nor Box2D wakes a sleeping body for new static geometry, and neither does a
     reshape (the bit-for-bit test checks it is the same as a rebuild)."""
     sim, ground = _sim()
-    floor = sim.spawn(Transform(0.0, -6.0), Collider(Box(20.0, 0.5)))
+    sim.spawn(Transform(0.0, -6.0), Collider(Box(20.0, 0.5)))
     box = sim.dynamic(Box(0.25, 0.25), x=0.0, y=-5.2, density=1.0)
     sim.step(150)
     assert not sim.world.get(box, RigidBody).awake
+    pose = (sim.t(box).x, sim.t(box).y, sim.t(box).angle)
     sim.world.get(ground, Collider).shape = Chain([(x, y - 5.3) for x, y in HILLS])
-    sim.step()
+    sim.step(5)
     assert not sim.world.get(box, RigidBody).awake
-    assert floor in {h.collider for h in sim.physics.query_point((0.0, -6.0))}
+    assert (sim.t(box).x, sim.t(box).y, sim.t(box).angle) == pose
+    # the new outline cuts through the sleeping box, which stays put
+    assert {h.collider for h in sim.physics.query_aabb((-0.1, -5.4), (0.1, -5.2))} == {
+        ground, box}
 
 
 def test_queries_and_rays_see_the_new_outline_at_once(mode: str) -> None:
@@ -225,22 +229,40 @@ def test_queries_and_rays_see_the_new_outline_at_once(mode: str) -> None:
     assert again is not None and again.point[1] == pytest.approx(1.25, abs=0.02)
 
 
-def test_a_reshaped_chain_on_a_dynamic_body_keeps_its_mass_and_continuous_collision(
-    mode: str,
-) -> None:
+RIM = [(-1.0, 0.0), (0.0, -1.0), (1.0, 0.0)]
+WIDE_RIM = [(-2.0, 0.0), (0.0, -2.0), (2.0, 0.0)]
+
+
+def _rimmed_bullet(rim: list[tuple[float, float]]) -> tuple[Sim, int, int]:
     sim = Sim()
     body = sim.spawn(Transform(0.0, 5.0), RigidBody(BodyType.DYNAMIC, bullet=True))
     sim.spawn(Transform(), Collider(Circle(0.5), density=2.0, body=body))
-    rim = sim.spawn(Transform(), Collider(Chain([(-1.0, 0.0), (0.0, -1.0), (1.0, 0.0)]),
-                                          body=body))
+    e = sim.spawn(Transform(), Collider(Chain(rim), body=body))
     sim.step()
+    return sim, body, e
+
+
+def _sweep(sim: Sim, body: int) -> tuple[float, float, float]:
+    """What continuous collision knows of the body's shapes (kge.physics.ccd.sweep)."""
+    pb = sim.system.sim.bodies[body].body
+    info = sim.system.sim.ccd._tracked[pb.id]
+    return info.core, info.reach, info.extent
+
+
+def test_a_reshaped_chain_on_a_dynamic_body_keeps_its_mass_and_continuous_collision(
+    mode: str,
+) -> None:
+    sim, body, rim = _rimmed_bullet(RIM)
     mass = sim.physics.mass_data(body)
-    sim.world.get(rim, Collider).shape = Chain([(-2.0, 0.0), (0.0, -2.0), (2.0, 0.0)])
+    narrow = _sweep(sim, body)
+    sim.world.get(rim, Collider).shape = Chain(WIDE_RIM)
     sim.step()
     assert sim.physics.mass_data(body) == mass
+    # continuous collision re-read the body's shapes: as if built with the wide rim
+    wide, _, _ = _rimmed_bullet(WIDE_RIM)
+    assert _sweep(sim, body) == _sweep(wide, body) != narrow
     pb = sim.system.sim.bodies[body].body
     assert {s for s in pb.shapes if s.space is not None} >= set(_segments(sim, rim))
-    assert sim.t(body).y < 5.0 and math.isfinite(sim.t(body).y)
 
 
 def test_a_disabled_body_reshapes_out_of_the_space_and_comes_back(mode: str) -> None:
@@ -297,3 +319,19 @@ def _two_grounds(reshape: bool) -> list[Any]:
 
 def test_outlines_re_laid_together_match_a_rebuild_bit_for_bit() -> None:
     assert _two_grounds(True) == _two_grounds(False)
+
+
+def test_continuous_collision_sees_an_outline_moved_far_away(mode: str) -> None:
+    """A fast small box fired at where the outline went (100 m off) stops on it: the
+    obstacle index that screens fast bodies re-read the reused segments' boxes."""
+    sim, ground = _sim()
+    sim.step()
+    sim.world.get(ground, Collider).shape = Chain([(x + 100.0, y) for x, y in HILLS])
+    box = sim.dynamic(Box(0.05, 0.05), x=100.0, y=3.0, density=1.0,
+                      body=RigidBody(BodyType.DYNAMIC, velocity=(0.0, -110.0)))
+    lowest = math.inf
+    for _ in range(30):
+        sim.step()
+        lowest = min(lowest, sim.t(box).y)
+    assert lowest > -0.1  # it never went through (the outline is at y = 0 there)
+    assert abs(sim.t(box).x - 100.0) < 1.0
