@@ -20,7 +20,7 @@ import pymunk.batch
 from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.bulk import BodyReader
 from kge.physics.callback_errors import CallbackErrors
-from kge.physics.ccd.obstacles import Obstacles
+from kge.physics.ccd.obstacles import Nearby, Obstacles
 from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
 from kge.physics.speed_cap import clamp_one, largest, screen
@@ -333,25 +333,33 @@ class ContinuousCollision:
         obstacles.refresh(ids, pose, vel, self._generation)
         x, y = pose[rows, 0], pose[rows, 1]
         reach = index.extent[slots] + motion + self.max_translation
-        # what a neighbour launched by the body could hit (see _arm_neighbours)
+        # what a neighbour launched by the body could hit (see _arm_neighbours): the
+        # obstacle rows in that square, found for all fast bodies in one query, answer
+        # every later question about the body and its neighbours (Nearby.holds)
         wide = reach + 2.0 * self.max_translation + 2.0 * index.max_extent
-        close = obstacles.near_any(x, y, wide)
-        near = close.copy()
-        if close.any():
-            near[close] = obstacles.near_any(x[close], y[close], reach[close])
-        # with no bullet anywhere, a body with nothing close needs no look at all
-        todo = np.arange(len(slots)) if index.bullets else np.flatnonzero(close)
+        around = obstacles.nearby(x, y, wide)
+        bullets = index.bullets
         fast = []
-        for k, slot in zip(todo.tolist(), slots[todo].tolist(), strict=True):
+        for slot, m, near, px, py, r in zip(
+            slots.tolist(), motion.tolist(), around, x.tolist(), y.tolist(), reach.tolist(),
+            strict=True,
+        ):
+            close = bool(near.rows)
+            if not (close or bullets):
+                continue  # with no bullet anywhere, nothing close needs no look at all
             info = index.infos[slot]
-            m = float(motion[k])
-            if (info.bullet or near[k]) and info.near_obstacles(m):
+            if (info.bullet or (close and near.overlaps(px, py, r))) and info.near_obstacles(
+                m, near
+            ):
                 want[id(info)] = info
-            fast.append((info, m, bool(close[k])))
-        self._arm_neighbours(fast, want, index.bullets)
+            fast.append((info, m, close, near))
+        self._arm_neighbours(fast, want, bullets)
 
     def _arm_neighbours(
-        self, fast: list[tuple[Tracked, float, bool]], want: dict[int, Tracked], bullets: bool
+        self,
+        fast: list[tuple[Tracked, float, bool, Nearby]],
+        want: dict[int, Tracked],
+        bullets: bool,
     ) -> None:
         """Arm the bodies a fast body may hit this step.
 
@@ -362,14 +370,15 @@ class ContinuousCollision:
         until it is actually fast. A bullet neighbour is also boosted, so it
         sweeps against the fast body even while it is itself at rest.
 
-        ``fast`` holds (body, step motion, close): ``close`` is False when no
-        static or kinematic shape lies within what any neighbour could reach,
-        so only bullet neighbours matter (none when ``bullets`` is False).
+        ``fast`` holds (body, step motion, close, the obstacle rows around it):
+        ``close`` is False when no static or kinematic shape lies within what any
+        neighbour could reach, so only bullet neighbours matter (none when
+        ``bullets`` is False).
         """
         # a light body hit by a heavy one leaves at up to (1 + e) times its speed,
         # and only armed bodies are capped within the step
         cap = 2.0 * self.max_translation
-        for info, motion, close in fast:
+        for info, motion, close, around in fast:
             if not (close or bullets):
                 continue
             box = info._bounds()
@@ -388,16 +397,18 @@ class ContinuousCollision:
                     near.boost = motion
                     want[id(near)] = near
                 elif (
-                    id(near) not in want and (close or near.bullet) and self._near_within(near, cap)
+                    id(near) not in want
+                    and (close or near.bullet)
+                    and self._near_within(near, cap, around)
                 ):
                     want[id(near)] = near
 
-    def _near_within(self, info: Tracked, reach: float) -> bool:
+    def _near_within(self, info: Tracked, reach: float, around: Nearby) -> bool:
         """``info.near_obstacles(reach)``, asked at most once per body and step."""
         key = id(info)
         hit = self._near_memo.get(key)
         if hit is None:
-            hit = self._near_memo[key] = info.near_obstacles(reach)
+            hit = self._near_memo[key] = info.near_obstacles(reach, around)
         return hit
 
     def _boost_near_movers(

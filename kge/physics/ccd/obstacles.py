@@ -9,6 +9,7 @@ around each of them.
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -16,6 +17,7 @@ import pymunk
 from pymunk._chipmunk import lib
 
 from kge.gcpause import without_gc
+from kge.physics.ccd.sorted_boxes import SortedBoxes
 
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
@@ -27,8 +29,49 @@ def _pose(body: pymunk.Body) -> tuple[float, float, float]:
     return (p.x, p.y, lib.cpBodyGetAngle(body._body))
 
 
-#: rows x fast bodies compared at once by Obstacles.near_any (bounds temporary memory)
-_CHUNK = 1 << 16
+
+@dataclass(slots=True)
+class Nearby:
+    """The rows whose box overlapped a square, with their boxes as read then.
+
+    Rows only leave the table (set to NaN) or get new boxes through the owner's
+    upkeep, which does not run between the read and the questions asked of it
+    (within one ``before_step``); a row dropped meanwhile is skipped by its
+    shape's absence, as the full table would skip it.
+    """
+
+    left: float
+    bottom: float
+    right: float
+    top: float
+    rows: list[int]
+    boxes: list[list[float]]
+    kinematic: list[bool]
+
+    def holds(self, left: float, bottom: float, right: float, top: float) -> bool:
+        """Does the square contain this rectangle (so every row it meets is here)?"""
+        return (
+            left >= self.left and right <= self.right and bottom >= self.bottom and top <= self.top
+        )
+
+    def overlaps(self, x: float, y: float, r: float) -> bool:
+        """Does any row's box overlap the square ``(x, y) ± r``? (The same sums as
+        :meth:`Obstacles.near_any`.)"""
+        right, left, top, bottom = x + r, x - r, y + r, y - r
+        return any(
+            b[0] <= right and b[2] >= left and b[1] <= top and b[3] >= bottom for b in self.boxes
+        )
+
+    def overlapping(self, box: pymunk.BB, still: float, moving: float) -> list[int]:
+        """Rows whose box overlaps ``box`` grown by ``still``, or ``moving`` for a
+        kinematic row (the sums :meth:`Obstacles.candidates` makes)."""
+        out = []
+        bl, bb, br, bt = box.left, box.bottom, box.right, box.top
+        for row, b, kinematic in zip(self.rows, self.boxes, self.kinematic, strict=True):
+            g = moving if kinematic else still
+            if b[0] <= br + g and b[2] >= bl - g and b[1] <= bt + g and b[3] >= bb - g:
+                out.append(row)
+        return out
 
 
 class Obstacles:
@@ -89,6 +132,8 @@ class Obstacles:
         self._read_rows: set[int] = set()
         #: the owners' rows in the bulk read, where every owner is in it (else None)
         self._gather: np.ndarray | None = None
+        #: the rows sorted by left edge, for queries that test only a window of them
+        self.sorted = SortedBoxes()
 
     # ----------------------------------------------------------------- upkeep
 
@@ -202,11 +247,15 @@ class Obstacles:
             newest = self._newest
             if all(s._hashid > newest for s in body._shapes):
                 return  # a new body: the next scan indexes its shapes (they are the newest)
-        own = set(body.shapes)
+        # only the shapes in the space: pymunk keeps a removed shape on its body, so a
+        # static body whose chain is re-laid every episode carries all its old segments
+        # (each would be looked at, then skipped, as in _classify_many)
+        space = self.space
+        own = [s for s in body._shapes if s._space() is space]
         self._classify_many(own)
-        shapes = self.shapes
+        shapes, kept = self.shapes, set(own)
         gone = [shapes[row] for row in self._owner_rows.get(body.id, ())]
-        self._classify_many([g for g in gone if g is not None and g not in own])
+        self._classify_many([g for g in gone if g is not None and g not in kept])
 
     def _classify(self, shape: pymunk.Shape) -> None:
         body = shape.body
@@ -228,6 +277,7 @@ class Obstacles:
             rows.append(row)
         bb = shape.bb
         self.box[row] = (bb.left, bb.bottom, bb.right, bb.top)
+        self.sorted.touched((row,))
         moving = body.body_type == _KINEMATIC
         self.kinematic[row] = moving
         self.any_kinematic |= moving
@@ -284,6 +334,7 @@ class Obstacles:
             moving += fresh_moving
         if rows:
             self.box[rows] = boxes
+            self.sorted.touched(rows)
             self.kinematic[rows] = moving
             self.any_kinematic |= any(moving)
             self._read_rows.update(rows)
@@ -404,6 +455,7 @@ class Obstacles:
         self.owner_of.clear()
         self._free.clear()
         self.box[:] = np.nan
+        self.sorted.clear()
         self.any_kinematic = False
         self._owner_rows.clear()
         self._owners.clear()
@@ -425,40 +477,76 @@ class Obstacles:
     def near_any(self, x: np.ndarray, y: np.ndarray, r: np.ndarray) -> np.ndarray:
         """For each square ``(x, y) ± r``: does it overlap any row's box?"""
         out = np.zeros(len(x), dtype=bool)
-        m = len(self.shapes)
-        if self.live == 0 or m == 0:
-            return out
-        left, bottom, right, top = (self.box[:m, i] for i in range(4))
-        if len(x) == 1:  # the usual single fast body: scalars, no broadcast views
-            x0, y0, r0 = float(x[0]), float(y[0]), float(r[0])
-            out[0] = ((left <= x0 + r0) & (right >= x0 - r0) & (bottom <= y0 + r0)
-                      & (top >= y0 - r0)).any()
-            return out
-        step = max(1, _CHUNK // m)
-        for i in range(0, len(x), step):
-            xs, ys, rs = x[i : i + step, None], y[i : i + step, None], r[i : i + step, None]
-            hit = (left <= xs + rs) & (right >= xs - rs) & (bottom <= ys + rs) & (top >= ys - rs)
-            out[i : i + step] = hit.any(axis=1)
+        query, _ = self.overlapping(x, y, r)
+        out[query] = True
         return out
 
-    def candidates(self, box: pymunk.BB, still: float, moving: float) -> list[pymunk.Shape]:
-        """Shapes whose cached box overlaps ``box`` grown by ``still`` (static) or ``moving``."""
+    def overlapping(
+        self, x: np.ndarray, y: np.ndarray, r: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """(square, row) of every row whose box overlaps square ``(x, y) ± r``,
+        sorted by square then row (see :class:`~kge.physics.ccd.sorted_boxes.SortedBoxes`)."""
+        m = len(self.shapes) if self.live else 0
+        return self.sorted.overlapping(self.box, m, x - r, y - r, x + r, y + r)
+
+    def nearby(self, x: np.ndarray, y: np.ndarray, r: np.ndarray) -> list[Nearby]:
+        """For each square ``(x, y) ± r``, its rows as a :class:`Nearby`: one bulk query
+        for all squares, after which questions about anything inside a square cost a
+        few Python comparisons instead of a pass over the table."""
+        left, bottom, right, top = x - r, y - r, x + r, y + r
+        m = len(self.shapes) if self.live else 0
+        query, rows = self.sorted.overlapping(self.box, m, left, bottom, right, top)
+        k = len(x)
+        found = rows.tolist()
+        boxes = self.box[rows].tolist()
+        moving = self.kinematic[rows].tolist() if self.any_kinematic else [False] * len(found)
+        # the pairs come sorted by square: each square's rows are one slice
+        ends = [0, len(found)] if k == 1 else np.searchsorted(query, np.arange(k + 1)).tolist()
+        return [
+            Nearby(*edges, found[i:j], boxes[i:j], moving[i:j])
+            for edges, i, j in zip(
+                zip(left.tolist(), bottom.tolist(), right.tolist(), top.tolist(), strict=True),
+                ends, ends[1:], strict=False,
+            )
+        ]
+
+    def candidates(
+        self, box: pymunk.BB, still: float, moving: float, near: Nearby | None = None
+    ) -> list[pymunk.Shape]:
+        """Shapes whose cached box overlaps ``box`` grown by ``still`` (static) or ``moving``.
+
+        ``near``: rows found around ``box`` this step; when the grown box lies inside
+        its square, only those rows are tested (any other row misses the square, so
+        it misses the grown box too), else the whole table is.
+        """
         m = len(self.shapes)
         if self.live == 0 or m == 0:
             return []
-        # one growth for every row while none is kinematic (the same sums, as scalars)
-        g: np.ndarray | float = (
-            np.where(self.kinematic[:m], moving, still) if self.any_kinematic else still
-        )
-        b = self.box[:m]
-        hit = (
-            (b[:, 0] <= box.right + g)
-            & (b[:, 2] >= box.left - g)
-            & (b[:, 1] <= box.top + g)
-            & (b[:, 3] >= box.bottom - g)
-        )
+        kinematic = self.any_kinematic and still != moving  # (a NaN differs)
+        # a window wide enough for both growths (a NaN growth matches nothing, as in a
+        # full pass)
+        g = max((v for v in (still, moving) if v == v), default=still) if kinematic else still
+        left, bottom, right, top = box.left - g, box.bottom - g, box.right + g, box.top + g
+        if near is not None and near.holds(left, bottom, right, top):
+            rows = near.overlapping(box, still, moving if kinematic else still)
+        else:
+            _, found = self.sorted.overlapping(
+                self.box, m, np.array([left]), np.array([bottom]), np.array([right]),
+                np.array([top]),
+            )
+            if kinematic and len(found):
+                b = self.box[found]
+                grow = np.where(self.kinematic[found], moving, still)
+                hit = (
+                    (b[:, 0] <= box.right + grow)
+                    & (b[:, 2] >= box.left - grow)
+                    & (b[:, 1] <= box.top + grow)
+                    & (b[:, 3] >= box.bottom - grow)
+                )
+                found = found[hit]
+            rows = found.tolist()
         out = []
-        for row in np.flatnonzero(hit).tolist():
+        for row in rows:
             shape = self.shapes[row]
             if shape is None:
                 continue

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import pymunk
+from pymunk._chipmunk import lib as _lib
 
 from kge.components.filter import Filter
 from kge.physics.ccd.parts import Part
@@ -23,6 +24,7 @@ from kge.physics.speed_cap import clamp_one
 
 if TYPE_CHECKING:
     from kge.physics.ccd.manager import ContinuousCollision
+    from kge.physics.ccd.obstacles import Nearby
 
 
 #: (fraction, carry dx, carry dy, hold normal or None), see Tracked._time_of_impact
@@ -32,6 +34,9 @@ _DEFAULT_FILTER = Filter()
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
 _STATIC = pymunk.Body.STATIC
+_PLAIN = pymunk.Body.update_position
+_shape_bb = _lib.cpShapeGetBB
+_update_position = _lib.cpBodyUpdatePosition
 #: largest rotation (rad) swept as one straight chord (sagitta <= 0.5 % of the reach)
 _MAX_CHORD = 0.2
 
@@ -76,25 +81,33 @@ class Tracked:
         owner = self.owner
         known = self.contacts if self.fresh else None  # valid for this substep only
         self.fresh = False
-        vx, vy = body.velocity
-        w = body.angular_velocity
+        # read through Chipmunk's getters (body.velocity builds a Vec2d): most calls
+        # end at the first test below, an armed body that is not fast this substep
+        cp = body._body
+        v = _lib.cpBodyGetVelocity(cp)
+        vx, vy = v.x, v.y
+        w = _lib.cpBodyGetAngularVelocity(cp)
+        step_dt = owner.step_dt
         # Box2D caps the speed after every solve; collisions inside a step can
         # exceed it, so an armed body is capped again before each substep.
-        nv, nw = clamp_one(
-            vx, vy, w, owner.max_translation / owner.step_dt, owner.max_rotation / owner.step_dt
-        )
-        if nv is not None:
-            body.velocity = nv
-            vx, vy = nv
-        if nw is not None:
-            body.angular_velocity = w = nw
+        vmax, wmax = owner.max_translation / step_dt, owner.max_rotation / step_dt
+        if math.hypot(vx, vy) > vmax or abs(w) > wmax:  # clamp_one's own tests
+            nv, nw = clamp_one(vx, vy, w, vmax, wmax)
+            if nv is not None:
+                body.velocity = nv
+                vx, vy = nv
+            if nw is not None:
+                body.angular_velocity = w = nw
         da = w * dt
         dx, dy = vx * dt, vy * dt
         integrate = self.saved
-        others = self.boost * dt / owner.step_dt
+        others = self.boost * dt / step_dt
         own = math.hypot(dx, dy) + abs(da) * self.reach
         if own + others <= owner.threshold * self.core:
-            integrate(body, dt)
+            if integrate is _PLAIN:
+                _update_position(cp, dt)  # what pymunk's update_position calls
+            else:
+                integrate(body, dt)
             return
         self.sweeps += 1
         if self.bullet:  # dynamic obstacles may close in at up to the speed cap
@@ -295,12 +308,10 @@ class Tracked:
 
     def _bounds(self) -> pymunk.BB | None:
         """The body's current bounding box (its shapes' cached BBs)."""
-        box: pymunk.BB | None = None
-        for shape in self.shapes:
-            box = shape.bb if box is None else box.merge(shape.bb)
-        return box
+        box = bounds_of(self.shapes)
+        return None if box is None else pymunk.BB(*box)
 
-    def near_obstacles(self, motion: float) -> bool:
+    def near_obstacles(self, motion: float, near: Nearby | None = None) -> bool:
         """Could anything stop this body within ``motion`` metres, in any direction?
 
         Static shapes are tested against the body's box grown by ``motion``;
@@ -309,22 +320,29 @@ class Tracked:
         A non-bullet asks the owner's index of static and kinematic shapes
         (the only ones that can stop it), never walking the dynamic shapes
         around it; a bullet, which every body can stop, asks the space.
+        ``near``: obstacle rows already found around the body (see
+        :meth:`~kge.physics.ccd.obstacles.Obstacles.candidates`).
         """
-        box = self._bounds()
+        edges = bounds_of(self.shapes)
         space = self.body.space
-        if box is None or space is None:
+        if edges is None or space is None:
             return False
+        box = pymunk.BB(*edges)
         reach = motion + self.owner.max_translation
         if self.bullet:
             shapes = space.bb_query(grown(box, reach), _ALL)
         else:
-            shapes = self.owner._obstacles.candidates(box, motion, reach)
+            shapes = self.owner._obstacles.candidates(box, motion, reach, near)
         joint_free = JointFree(self.body)
+        left, bottom, right, top = edges
         for shape in shapes:
             if not self._is_obstacle(shape, joint_free):
                 continue
             moving = shape.body is not None and shape.body.body_type != pymunk.Body.STATIC
-            if grown(box, reach if moving else motion).intersects(shape.bb):
+            g = reach if moving else motion
+            # grown(box, g).intersects(shape.bb), without building either BB
+            bb = _shape_bb(shape._shape)
+            if left - g <= bb.r and bb.l <= right + g and bottom - g <= bb.t and bb.b <= top + g:
                 return True
         return False
 
@@ -335,6 +353,29 @@ class Tracked:
         if other.body_type == _DYNAMIC and not self.bullet:
             return False
         return other not in joint_free
+
+
+def bounds_of(shapes: tuple[pymunk.Shape, ...]) -> tuple[float, float, float, float] | None:
+    """The merged cached BBs of ``shapes`` as (left, bottom, right, top); None for none.
+
+    Read through Chipmunk's getter and merged as ``cpBBMerge`` does (its min and max
+    keep the second operand unless the first is smaller, resp. larger, also for a
+    NaN), so the result equals ``shape.bb.merge(...)`` without building a BB per shape.
+    """
+    box = None
+    for shape in shapes:
+        bb = _shape_bb(shape._shape)
+        if box is None:
+            box = (bb.l, bb.b, bb.r, bb.t)
+            continue
+        left, bottom, right, top = box
+        box = (
+            left if left < bb.l else bb.l,
+            bottom if bottom < bb.b else bb.b,
+            right if right > bb.r else bb.r,
+            top if top > bb.t else bb.t,
+        )
+    return box
 
 
 def grown(box: pymunk.BB, by: float) -> pymunk.BB:
