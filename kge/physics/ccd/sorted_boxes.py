@@ -203,8 +203,9 @@ class SortedBoxes:
 
 def _below(left: np.ndarray, span: float) -> np.ndarray:
     """The lowest left edge a row overlapping ``left`` may have, rounded downwards."""
-    low = left - span
-    low = low - 1e-9 * (1.0 + np.abs(low))
+    with np.errstate(invalid="ignore"):  # inf - inf, for an infinite query or span
+        low = left - span
+        low = low - 1e-9 * (1.0 + np.abs(low))
     # inf - inf: a NaN would end the window at the NaN rows; the whole table instead
     return np.where(np.isnan(low), -np.inf, low)
 
