@@ -221,3 +221,51 @@ def test_arming_and_sweeps_are_the_same_without_the_nearby_hints(
 
     monkeypatch.setattr(Obstacles, "candidates", no_hint)
     assert _crowd(False) == fast
+
+
+def _indexed_like_the_space(obs: Obstacles, space: pymunk.Space, bodies: list[pymunk.Body]) -> None:
+    """Every shape of these bodies in the space has its row, box and kind; none other has."""
+    for body in bodies:
+        for shape in body.shapes:
+            row = obs.row_of.get(shape)
+            if shape.space is not space or body.body_type == pymunk.Body.DYNAMIC:
+                assert row is None
+                continue
+            assert row is not None
+            bb = shape.bb
+            assert tuple(obs.box[row]) == (bb.left, bb.bottom, bb.right, bb.top)
+            assert bool(obs.kinematic[row]) == (body.body_type == pymunk.Body.KINEMATIC)
+
+
+def test_reclassify_of_a_relaid_or_retyped_body_indexes_what_the_space_holds() -> None:
+    space = pymunk.Space()
+    moon = pymunk.Body(body_type=pymunk.Body.STATIC)
+    other = pymunk.Body(body_type=pymunk.Body.STATIC)
+    space.add(moon, other)
+    first = chain_segments(moon, [(float(i), 0.0) for i in range(6)], False, 0.01, 0.0, {})
+    add_shapes(space, first)
+    obs = _refreshed(space)
+    obs.reclassify(moon)
+    _indexed_like_the_space(obs, space, [moon, other])
+    for step in range(3):  # re-laid: the old segments leave, new ones join
+        space.remove(*first)
+        first = chain_segments(moon, [(float(i), 1.0 + step) for i in range(6)], False, 0.01,
+                               0.0, {})
+        add_shapes(space, first)
+        obs.reclassify(moon)
+        _indexed_like_the_space(obs, space, [moon, other])
+    # a shape moved to another body while out of the space, then added back
+    moved = first[0]
+    space.remove(moved)
+    moved.body = other
+    space.add(moved)
+    obs.reclassify(moon)
+    obs.reclassify(other)
+    _indexed_like_the_space(obs, space, [moon, other])
+    # the kind changes in place: kinematic, then dynamic
+    moon.body_type = pymunk.Body.KINEMATIC
+    obs.reclassify(moon)
+    _indexed_like_the_space(obs, space, [moon, other])
+    moon.body_type = pymunk.Body.DYNAMIC
+    obs.reclassify(moon)
+    _indexed_like_the_space(obs, space, [moon, other])

@@ -241,12 +241,17 @@ class Obstacles:
 
     def reclassify(self, body: pymunk.Body) -> None:
         """Re-read ``body``'s shapes after its type (or shape set) may have changed."""
-        if body.id not in self._owner_rows:
+        key = body.id
+        rows = self._owner_rows.get(key)
+        if rows is None:
             if body.body_type == _DYNAMIC:
                 return  # the common case (a dynamic body tracked): nothing of it is indexed
             newest = self._newest
             if all(s._hashid > newest for s in body._shapes):
                 return  # a new body: the next scan indexes its shapes (they are the newest)
+        elif self._same_kind(body, rows[0]):
+            self._reread(body, key)
+            return
         # only the shapes in the space: pymunk keeps a removed shape on its body, so a
         # static body whose chain is re-laid every episode carries all its old segments
         # (each would be looked at, then skipped, as in _classify_many)
@@ -256,6 +261,36 @@ class Obstacles:
         shapes, kept = self.shapes, set(own)
         gone = [shapes[row] for row in self._owner_rows.get(body.id, ())]
         self._classify_many([g for g in gone if g is not None and g not in kept])
+
+    def _same_kind(self, body: pymunk.Body, row: int) -> bool:
+        """Is ``body`` still of the kind (static or kinematic) its rows were indexed as?"""
+        kind = body.body_type
+        return kind != _DYNAMIC and bool(self.kinematic[row]) == (kind == _KINEMATIC)
+
+    def _reread(self, body: pymunk.Body, key: int) -> None:
+        """:meth:`reclassify` of an indexed body whose kind did not change (a re-laid
+        chain): what the full pass does, without walking every shape pymunk keeps on
+        the body (it keeps removed ones: a moon re-laid every episode carries all its
+        old chains). Its shapes in the space either have rows or joined the space
+        since the last scan (a shape gets a new hashid whenever it is added), so a
+        scan and its own rows cover them all."""
+        self._scan()
+        space, shapes, fresh = self.space, self.shapes, self._read_rows
+        stay, moved, gone = [], [], []
+        for row in self._owner_rows.get(key, ()):
+            shape = shapes[row]
+            if shape is None or row in fresh:
+                continue  # just read by the scan
+            if shape._space() is not space:
+                gone.append(shape)  # removed from the space: what _classify_many drops
+            elif shape._body() is body:
+                stay.append(shape)
+            else:
+                moved.append(shape)
+        if stay or moved:  # boxes re-read as the full pass does; moved: new owners
+            self._classify_many(stay + moved)
+        if gone:
+            self._drop_many(gone)
 
     def _classify(self, shape: pymunk.Shape) -> None:
         body = shape.body
