@@ -75,10 +75,26 @@ def test_sorted_boxes_match_a_full_pass_through_writes_and_frees(seed: int) -> N
             continue
         k = rng.choice([1, 2, 3, 8, 9, 30])
         left, bottom, right, top = _queries(rng, k)
-        got = index.overlapping(box, m, left, bottom, right, top)
-        want = _full_pass(box[:m], left, bottom, right, top)
-        assert got[0].tolist() == want[0].tolist()
-        assert got[1].tolist() == want[1].tolist()
+        want = _naive(box[:m], left, bottom, right, top)
+        for got in (
+            index.overlapping(box, m, left, bottom, right, top),
+            _full_pass(box[:m], left, bottom, right, top),
+        ):
+            assert got[0].tolist() == want[0].tolist()
+            assert got[1].tolist() == want[1].tolist()
+
+
+def _naive(
+    box: np.ndarray, left: np.ndarray, bottom: np.ndarray, right: np.ndarray, top: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    pairs = [
+        (q, r)
+        for q in range(len(left))
+        for r in range(len(box))
+        if box[r, 0] <= right[q] and box[r, 2] >= left[q] and box[r, 1] <= top[q]
+        and box[r, 3] >= bottom[q]
+    ]
+    return np.array([q for q, _ in pairs], dtype=int), np.array([r for _, r in pairs], dtype=int)
 
 
 def test_sorted_boxes_search_only_a_window_of_a_large_table() -> None:

@@ -213,22 +213,20 @@ def _below(left: np.ndarray, span: float) -> np.ndarray:
 def _full_pass(
     box: np.ndarray, left: np.ndarray, bottom: np.ndarray, right: np.ndarray, top: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """What :meth:`SortedBoxes.overlapping` answers, by testing every row (chunked)."""
+    """What :meth:`SortedBoxes.overlapping` answers, by testing every row (chunked):
+    x first over the table, then y on the pairs that pass (few, in a world laid out
+    along x), the same four comparisons in two rounds."""
     m = len(box)
     step = max(1, _CHUNK // m)
     queries, rows = [], []
     bl, bb, br, bt = (box[:, i] for i in range(4))
     for i in range(0, len(left), step):
         s = slice(i, i + step)
-        hit = (
-            (bl <= right[s, None])
-            & (br >= left[s, None])
-            & (bb <= top[s, None])
-            & (bt >= bottom[s, None])
-        )
-        q, r = np.nonzero(hit)
-        queries.append(q + i)
-        rows.append(r)
+        q, r = np.nonzero((bl <= right[s, None]) & (br >= left[s, None]))
+        q += i
+        keep = (bb[r] <= top[q]) & (bt[r] >= bottom[q])
+        queries.append(q[keep])
+        rows.append(r[keep])
     if len(queries) == 1:
         return queries[0], rows[0]
     return np.concatenate(queries), np.concatenate(rows)
