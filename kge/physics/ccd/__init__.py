@@ -24,7 +24,12 @@ pymunk's C integrator, so a scene of slow bodies pays nothing but the read.
 "Within reach" is answered by a numpy index of the static and kinematic
 shapes (the only ones that stop a non-bullet), which screens all fast bodies
 in one vectorised pass: a swinging chain far from any wall costs no shape
-walk at all, and a bullet in open air a couple of box queries per step.
+walk at all, and a bullet in open air a couple of box queries per step. The
+rows that pass hold everything the body and the neighbours it could launch
+can reach, so their later questions ("anything within my reach?") are a few
+Python comparisons on those rows, not another pass over the table; a table
+of thousands of rows (a tile map) is searched by a window of rows sorted by
+left edge instead of a full pass (:mod:`kge.physics.ccd.sorted_boxes`).
 
 An armed body, at each substep whose motion is still fast, is capped again
 (collisions inside a step can exceed the caps) and sweeps its shapes along

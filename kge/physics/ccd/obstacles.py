@@ -98,7 +98,18 @@ class Obstacles:
       every moving kinematic body) are re-read, also on the next step, so a
       ``reindex`` that lags a move by one step is still seen;
     * **type changes**: :meth:`reclassify`, called by ``track``/``untrack``
-      (the physics system calls one of them after every type change).
+      (the physics system calls one of them after every type change, and after
+      a collider of the body is replaced: a re-laid chain). A body still of the
+      kind its rows were indexed as costs a scan and its own rows, never a walk
+      of ``body.shapes`` (pymunk keeps removed shapes there: a moon re-laid
+      every episode carries every chain it ever had).
+
+    Queries: :meth:`nearby` finds the rows around many squares at once and
+    returns them as :class:`Nearby`, which answers later questions about
+    anything inside its square (:meth:`candidates` with ``near``) exactly as
+    the table would; tables of thousands of rows are searched through
+    :class:`~kge.physics.ccd.sorted_boxes.SortedBoxes`, smaller ones by a full
+    numpy pass.
 
     Rows are candidates only: every hit is re-checked on the live shape.
     """

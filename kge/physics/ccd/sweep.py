@@ -7,6 +7,11 @@ hit, stops at the earliest impact and keeps its velocity, so the contact solver
 of the same substep resolves the collision as for any other contact. An
 exception raised here is kept by the owner's ``errors`` and raised after the
 step (cffi would swallow it).
+
+Most calls are an armed body that is not fast in this substep (a neighbour
+armed in case a collision launches it): it reads its velocity through
+Chipmunk's getters, finds its motion under the threshold and calls Chipmunk's
+own integrator, with no Vec2d or pymunk wrapper in between.
 """
 
 from __future__ import annotations
