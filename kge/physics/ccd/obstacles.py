@@ -8,7 +8,7 @@ around each of them.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -62,16 +62,14 @@ class Nearby:
             b[0] <= right and b[2] >= left and b[1] <= top and b[3] >= bottom for b in self.boxes
         )
 
-    def overlapping(self, box: pymunk.BB, still: float, moving: float) -> list[int]:
+    def overlapping(self, box: pymunk.BB, still: float, moving: float) -> Iterator[int]:
         """Rows whose box overlaps ``box`` grown by ``still``, or ``moving`` for a
-        kinematic row (the sums :meth:`Obstacles.candidates` makes)."""
-        out = []
+        kinematic row (the sums :meth:`Obstacles.candidates` makes), in row order."""
         bl, bb, br, bt = box.left, box.bottom, box.right, box.top
         for row, b, kinematic in zip(self.rows, self.boxes, self.kinematic, strict=True):
             g = moving if kinematic else still
             if b[0] <= br + g and b[2] >= bl - g and b[1] <= bt + g and b[3] >= bb - g:
-                out.append(row)
-        return out
+                yield row
 
 
 class Obstacles:
@@ -565,16 +563,23 @@ class Obstacles:
         its square, only those rows are tested (any other row misses the square, so
         it misses the grown box too), else the whole table is.
         """
+        return list(self.iter_candidates(box, still, moving, near))
+
+    def iter_candidates(
+        self, box: pymunk.BB, still: float, moving: float, near: Nearby | None = None
+    ) -> Iterator[pymunk.Shape]:
+        """:meth:`candidates` one at a time, in the same order: a caller that stops at
+        the first real obstacle (most do: the ground is right there) tests no more."""
         m = len(self.shapes)
         if self.live == 0 or m == 0:
-            return []
+            return
         kinematic = self.any_kinematic and still != moving  # (a NaN differs)
         # a window wide enough for both growths (a NaN growth matches nothing, as in a
         # full pass)
         g = max((v for v in (still, moving) if v == v), default=still) if kinematic else still
         left, bottom, right, top = box.left - g, box.bottom - g, box.right + g, box.top + g
         if near is not None and near.holds(left, bottom, right, top):
-            rows = near.overlapping(box, still, moving if kinematic else still)
+            rows: Iterable[int] = near.overlapping(box, still, moving if kinematic else still)
         else:
             _, found = self.sorted.overlapping(
                 self.box, m, np.array([left]), np.array([bottom]), np.array([right]),
@@ -591,7 +596,6 @@ class Obstacles:
                 )
                 found = found[hit]
             rows = found.tolist()
-        out = []
         for row in rows:
             shape = self.shapes[row]
             if shape is None:
@@ -599,5 +603,4 @@ class Obstacles:
             if shape.space is not self.space:
                 self._drop(shape)
                 continue
-            out.append(shape)
-        return out
+            yield shape

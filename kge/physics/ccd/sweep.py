@@ -17,6 +17,7 @@ own integrator, with no Vec2d or pymunk wrapper in between.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -334,10 +335,11 @@ class Tracked:
             return False
         box = pymunk.BB(*edges)
         reach = motion + self.owner.max_translation
+        shapes: Iterable[pymunk.Shape]
         if self.bullet:
             shapes = space.bb_query(grown(box, reach), _ALL)
-        else:
-            shapes = self.owner._obstacles.candidates(box, motion, reach, near)
+        else:  # one at a time: the first obstacle in reach ends the search
+            shapes = self.owner._obstacles.iter_candidates(box, motion, reach, near)
         joint_free = JointFree(self.body)
         left, bottom, right, top = edges
         for shape in shapes:
