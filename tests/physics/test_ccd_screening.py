@@ -285,3 +285,24 @@ def test_reclassify_of_a_relaid_or_retyped_body_indexes_what_the_space_holds() -
     moon.body_type = pymunk.Body.DYNAMIC
     obs.reclassify(moon)
     _indexed_like_the_space(obs, space, [moon, other])
+
+
+def test_a_replaced_collider_is_not_swept() -> None:
+    """pymunk keeps a removed shape on its body: tracking must see only the space's."""
+    space = pymunk.Space()
+    body = pymunk.Body()
+    old = pymunk.Poly.create_box(body, (4.0, 4.0))
+    old.density = 1.0
+    space.add(body, old)
+    ccd = ContinuousCollision(space)
+    ccd.track(body)
+    space.remove(old)
+    new = pymunk.Circle(body, 0.1)
+    new.density = 1.0
+    space.add(new)
+    assert old in body.shapes  # what pymunk does
+    ccd.track(body)
+    info = ccd._tracked[body.id]
+    assert info.shapes == (new,)
+    assert [part.shape for part in info.parts] == [new]
+    assert info.core == pytest.approx(0.1)

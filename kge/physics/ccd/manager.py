@@ -185,7 +185,10 @@ class ContinuousCollision:
         self._obstacles.reclassify(body)  # its type may have changed in place
         if body.body_type != _DYNAMIC:
             return
-        shapes = tuple(body.shapes)  # pymunk builds a new set per read
+        # only the shapes in the space: pymunk keeps a removed shape on its body (a
+        # replaced collider's old shapes), which must not be swept nor bound the body
+        space = self.space
+        shapes = tuple(s for s in body._shapes if s._space() is space)
         parts, core, reach = parts_of(body, shapes, self.margin)
         self._tracked[key] = info = Tracked(
             self, body, bullet, parts, core, reach, shapes, extent_of(body, shapes, reach)
