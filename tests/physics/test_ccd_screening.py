@@ -306,3 +306,22 @@ def test_a_replaced_collider_is_not_swept() -> None:
     assert info.shapes == (new,)
     assert [part.shape for part in info.parts] == [new]
     assert info.core == pytest.approx(0.1)
+
+
+def test_nearby_rows_that_left_the_space_are_skipped_until_the_table_is_empty() -> None:
+    """Rows found by nearby() whose shapes then leave the space: every later question
+    skips them, also once dropping the last of them has emptied the table."""
+    space = pymunk.Space()
+    ground = pymunk.Body(body_type=pymunk.Body.STATIC)
+    space.add(ground)
+    segments = chain_segments(ground, [(float(i), 0.0) for i in range(4)], False, 0.01, 0.0, {})
+    add_shapes(space, segments)
+    obs = _refreshed(space)
+    near = obs.nearby(np.array([1.5]), np.array([0.0]), np.array([5.0]))[0]
+    assert len(near.rows) == 3
+    space.remove(*segments)
+    assert obs.candidates(pymunk.BB(2.5, -0.1, 2.6, 0.1), 0.0, 0.0, near) == []  # drops one
+    assert obs.live == 2
+    assert obs.candidates(pymunk.BB(0.0, -0.1, 3.0, 0.1), 0.1, 0.1, near) == []  # the rest
+    assert obs.live == 0 and obs.shapes == []
+    assert obs.candidates(pymunk.BB(0.0, -0.1, 3.0, 0.1), 0.1, 0.1, near) == []

@@ -597,6 +597,8 @@ class Obstacles:
                 found = found[hit]
             rows = found.tolist()
         for row in rows:
+            if not self.live:
+                return  # the last row was dropped (the table compacted): nothing left
             shape = self.shapes[row]
             if shape is None:
                 continue
