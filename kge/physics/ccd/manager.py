@@ -349,7 +349,7 @@ class ContinuousCollision:
         ):
             close = bool(near.rows)
             if not (close or bullets):
-                continue  # with no bullet anywhere, nothing close needs no look at all
+                continue  # with no bullet anywhere, a body with nothing close needs no look
             info = index.infos[slot]
             if (info.bullet or (close and near.overlaps(px, py, r))) and info.near_obstacles(
                 m, near
