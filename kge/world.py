@@ -384,6 +384,23 @@ class World:
                 f"{entity!r}"
             ) from None
 
+    def first_missing(self, entities: list[int]) -> int | None:
+        """The first of ``entities`` (ints) that does not exist, or None when all do.
+
+        :meth:`exists` for a batch: a controller pushing 64 bodies every step asks
+        once (a set comparison with the entity table) instead of 64 times.
+
+        >>> world = World()
+        >>> a = world.spawn()
+        >>> world.first_missing([a]), world.first_missing([a, 999])
+        (None, 999)
+        """
+        db = self._db()
+        dying = self._dying
+        if db.keys() >= set(entities) and (not dying or dying.isdisjoint(entities)):
+            return None
+        return next(e for e in entities if not self.exists(e))
+
     def get(self, entity: int, component_type: type[T]) -> T:
         """The entity's component of ``component_type`` (queued adds included)."""
         self._live(entity, "get")

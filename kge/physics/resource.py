@@ -280,9 +280,8 @@ class Physics:
 
     def _records(self, entities: list[int], op: str) -> list[BodyRecord]:
         """:meth:`_record` of every entity (ints), with one sync for them all."""
-        exists = self._world.exists
-        if not all(map(exists, entities)):
-            missing = next(e for e in entities if not exists(e))
+        missing = self._world.first_missing(entities)
+        if missing is not None:
             raise EntityNotFoundError(f"physics.{op}(): entity {missing} does not exist")
         self._synced()
         get = self._sim.bodies.get

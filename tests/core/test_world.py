@@ -233,3 +233,16 @@ def test_close_runs_remove_hooks_for_everything() -> None:
     assert removed == ids
     with pytest.raises(WorldLockedError, match="closed"):
         w.spawn(Health())
+
+
+def test_first_missing_names_the_first_absent_or_despawned_entity() -> None:
+    world = World()
+    a, b, c = world.spawn(), world.spawn(), world.spawn()
+    assert world.first_missing([a, b, c]) is None
+    assert world.first_missing([a, 999, c, 1000]) == 999
+    with world.deferred():
+        world.despawn(b)  # queued: gone for exists() already
+        assert world.first_missing([a, b, c]) == b
+    world.despawn(a)
+    assert world.first_missing([c, a]) == a
+    assert world.first_missing([]) is None
