@@ -404,24 +404,30 @@ class PivotBatch:
             return jolted
         state[:, 0], state[:, 1], state[:, 2] = pos.real, pos.imag, t
         cbodies = self.cbodies
-        moved_rows = []
-        for k, x, y, a in zip(idx.tolist(), pos.real[idx].tolist(), pos.imag[idx].tolist(),
-                              t[idx].tolist(), strict=True):
-            body = cbodies[k]
+        angles = t[idx]
+        xs: list[float] = []
+        ys: list[float] = []
+        for body, x, y, a in zip(map(cbodies.__getitem__, idx.tolist()), pos.real[idx].tolist(),
+                                 pos.imag[idx].tolist(), angles.tolist(), strict=True):
             _set_angle(body, a)
             _set_position(body, (x, y))
             p = _get_position(body)  # Chipmunk's origin: (x, y) to the last bit, or not
-            moved_rows.append((p.x, p.y, a))
-        self._patch(idx, moved_rows)
+            xs.append(p.x)
+            ys.append(p.y)
+        self._patch(idx, xs, ys, angles)
         return jolted
 
-    def _patch(self, idx: np.ndarray, poses: list[tuple[float, float, float]]) -> None:
+    def _patch(self, idx: np.ndarray, xs: list[float], ys: list[float],
+               angles: np.ndarray) -> None:
         """Put the moved bodies' poses into :attr:`raw` (a copy: the buffer is reused)."""
         if self.raw is None or self._mapping is None:
             return
         ids, rows = self.raw
         rows = rows.copy()
-        rows[self._mapping[1][idx - 1], :3] = poses  # slot k >= 1 is row found[k - 1]
+        at = self._mapping[1][idx - 1]  # slot k >= 1 is row found[k - 1]
+        rows[at, 0] = xs
+        rows[at, 1] = ys
+        rows[at, 2] = angles
         self.raw = (ids, rows)
 
     @staticmethod
@@ -438,17 +444,19 @@ class PivotBatch:
         out = np.flatnonzero(below | above)
         turn = turn[out]
         error = np.where(below[out], turn - lower[out], turn - upper[out])
-        error = np.clip(error, -MAX_ANGULAR_CORRECTION, MAX_ANGULAR_CORRECTION)
-        for s, turn, cog in ((a[out], fa[out] * error, ca[out]),
-                             (b[out], -fb[out] * error, cb[out])):
-            live = np.flatnonzero(turn)  # a body that cannot turn stays put
-            if not len(live):
-                continue
+        error = np.minimum(np.maximum(error, -MAX_ANGULAR_CORRECTION), MAX_ANGULAR_CORRECTION)
+        # both ends at once (no movable body appears twice in a colour): A turns by
+        # +fa*error, B by -fb*error, each about its centre of gravity
+        s = np.concatenate((a[out], b[out]))
+        turn = np.concatenate((fa[out] * error, -fb[out] * error))
+        cog = np.concatenate((ca[out], cb[out]))
+        live = turn != 0.0  # a body that cannot turn stays put
+        if not live.all():
             s, turn, cog = s[live], turn[live], cog[live]
-            g = pos[s] + np.exp(1j * t[s]) * cog  # turn about the centre of gravity
-            t[s] = t[s] + turn
-            pos[s] = g - np.exp(1j * t[s]) * cog
-            moved[s] = True
+        g = pos[s] + np.exp(1j * t[s]) * cog
+        t[s] = t[s] + turn
+        pos[s] = g - np.exp(1j * t[s]) * cog
+        moved[s] = True
 
     # -- read-back ------------------------------------------------------------------------
     def read_back(self, state: np.ndarray, dt: float, step_time: float, gravity: Any) -> None:
