@@ -65,12 +65,13 @@ LEG_MOTOR_SPEED = 0.3  # rad/s, slow enough not to hop the lander back up
 #: (pymunk substeps, iterations per substep), with the legs' limits pushing nothing back
 #: (``hinge_limit_push`` 0, Box2D's rule): the motor holds each leg on its stop and the
 #: landed lander falls asleep. Heuristic pilot, seeds 0-49, landings that came to rest:
-#: 8 x 8 47 (pybox2d 49; the misses are seeds pybox2d also lands slowly), as 8 x 40;
-#: 4 x 10 46; 8 x 5 47; 2 x 10 none (the hull touches down). g = -5 and g = -3, seeds
-#: 0-2: all, in pybox2d's number of steps. Eight substeps keep the sweeps of continuous
-#: collision rare (a leg moves less per substep): 4 x 10 cost 40 µs per batched env
-#: step, 8 x 8 about 28 (docs/rl.md). With a 0.1 rad/s push the legs hopped on the
-#: ground for ever below 8 x 40 (4 x 10: no lander of 20 came to rest).
+#: 8 x 8 47 (pybox2d 49), as 8 x 40; 8 x 6 49; 4 x 10 46; 8 x 5 47; 2 x 10 none (the
+#: hull touches down). g = -5 and g = -3, seeds 0-2: all, in about pybox2d's number of
+#: steps. Eight substeps keep continuous collision's sweeps rare (a leg moves less per
+#: substep): over the first episodes 4 x 10 cost 40 µs per batched env step and 8 x 8
+#: 27, and six substeps about 8 µs more than eight (``benchmarks.rl --profile 64``).
+#: With a 0.1 rad/s push the legs hopped on the ground for ever below 8 x 40 (4 x 10:
+#: no lander of 20 came to rest).
 SOLVER = (8, 8)
 
 
