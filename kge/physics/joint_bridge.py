@@ -515,7 +515,7 @@ class JointBridge:
         So does every other joint on the same bodies: far-off joints are usually
         fighting another joint about where a body belongs, and a warm start that
         one of them forgot would leave the other's pushing alone (see
-        :class:`~kge.physics.joints.base.Drain`).
+        :class:`~kge.physics.drain.Drain`).
         """
         moved = {e for h in jolted for e in (h.body_a, h.body_b) if e >= 0}
         for h in jolted:

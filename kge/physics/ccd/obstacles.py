@@ -476,23 +476,7 @@ class Obstacles:
             self._drop_all()
 
     def _drop(self, shape: pymunk.Shape) -> None:
-        row = self.row_of.pop(shape, None)
-        if row is None:
-            return
-        self.shapes[row] = None
-        self.box[row] = np.nan
-        self._free.append(row)
-        self.live -= 1
-        key = self.owner_of[row]
-        rows = self._owner_rows.get(key)
-        if rows is not None and row in rows:
-            rows.remove(row)
-            if not rows:
-                del self._owner_rows[key]
-                self._owners.pop(key, None)
-                self._owners_dirty = True
-        if self.live == 0:  # compact: nothing left to keep
-            self._drop_all()
+        self._drop_many([shape])
 
     def _drop_all(self) -> None:
         self.shapes.clear()
