@@ -80,9 +80,29 @@ def create_window(width: int, height: int, **kwargs: Any) -> Any:
     window_cls = pyglet.window.Window
     queued, window_cls._enable_event_queue = window_cls._enable_event_queue, True
     try:
+        if "config" not in kwargs:
+            try:
+                return window_cls(width, height, config=frame_config(), **kwargs)
+            except pyglet.window.NoSuchConfigException:
+                pass  # a display without 8-bit RGBA and stencil: take its default
         return window_cls(width, height, **kwargs)
     finally:
         window_cls._enable_event_queue = queued
+
+
+def frame_config() -> Any:
+    """The GL framebuffer kge asks for: 8 bits per channel with alpha, and a stencil.
+
+    Mesa's EGL hands out a 16-bit RGB565 surface by default, which bands gradients
+    and turns greys purple in headless frames; every window asks for this instead.
+    """
+    from pyglet import gl
+
+    config_cls: Any = gl.Config  # the platform's concrete class, chosen by pyglet at import
+    return config_cls(
+        red_size=8, green_size=8, blue_size=8, alpha_size=8, stencil_size=8,
+        depth_size=0, double_buffer=True,
+    )
 
 
 def _new_window(app: Host) -> tuple[Any, bool]:
