@@ -1,6 +1,6 @@
 # The two commands of the README. Each bootstraps .venv (and headless GL
 # libraries on Debian when run as root) before it runs.
-.PHONY: demo test lint bench
+.PHONY: demo test lint check bench
 
 PY := .venv/bin/python
 
@@ -10,6 +10,7 @@ demo:
 
 test:
 	@tools/bootstrap.sh
+	@$(MAKE) --no-print-directory check
 	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m pytest
 
 bench:
@@ -24,6 +25,10 @@ bench:
 
 lint:
 	@tools/bootstrap.sh
-	$(PY) -m ruff check kge tests examples benchmarks
-	$(PY) -m mypy
-	.venv/bin/lint-imports
+	@$(MAKE) --no-print-directory check
+
+# The static gates `make test` runs before the suite: ruff, mypy, the import floors.
+check:
+	@echo "check: ruff"; $(PY) -m ruff check -q kge tests examples benchmarks tools
+	@echo "check: mypy"; $(PY) -m mypy
+	@echo "check: import contracts"; .venv/bin/lint-imports
