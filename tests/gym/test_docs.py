@@ -1,21 +1,10 @@
-"""The runnable examples of docs/rl.md run (and their asserts hold)."""
+"""docs/rl.md: the throughput table is filled in and its screenshot script draws.
 
-import re
+Its code blocks run through the shared doc runner (tests/test_docs.py)."""
+
 from pathlib import Path
 
-import pytest
-
 DOC = Path(__file__).resolve().parents[2] / "docs" / "rl.md"
-BLOCKS = re.findall(r"<!-- runnable -->\n```python\n(.*?)```", DOC.read_text(), re.S)
-
-
-def test_the_page_has_runnable_examples() -> None:
-    assert len(BLOCKS) >= 3
-
-
-@pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
-def test_rl_doc_example_runs(code: str) -> None:
-    exec(compile(code, "docs/rl.md", "exec"), {"__name__": "rl_doc"})
 
 
 def test_the_throughput_table_is_filled_in() -> None:
