@@ -141,7 +141,9 @@ def test_space_jumps(kge_app):
 
 README = '''# {{title}}
 
-A game made with [kge](https://pypi.org/project/kge/) 2.
+A game made with kge 2, a data-oriented 2D game engine for Python. kge 2 installs
+from its source folder (`pip install -e path/to/kge`); the package index's `kge` is the
+unrelated KGE 1.0.
 
 ```sh
 pip install -e .          # in the virtual environment that has kge
