@@ -235,7 +235,10 @@ def can_sleep(space: pymunk.Space, body: pymunk.Body) -> bool:
 
 
 def sleep_island(
-    space: pymunk.Space, body: pymunk.Body, wants_sleep: Callable[[pymunk.Body], bool]
+    space: pymunk.Space,
+    body: pymunk.Body,
+    wants_sleep: Callable[[pymunk.Body], bool],
+    looked: set[pymunk.Body] | None = None,
 ) -> list[pymunk.Body]:
     """Put ``body`` and the awake bodies connected to it to sleep, when that is safe.
 
@@ -245,12 +248,28 @@ def sleep_island(
     sleeping bodies it touches form one component (which it joins): then the
     parked arbiters and constraints are exactly those of Chipmunk's own sleeping.
     Otherwise nothing sleeps (Box2D's island solver would wake the body again at
-    the next step) and ``[]`` is returned; else the bodies put to sleep.
+    the next step) and ``[]`` is returned; else the bodies put to sleep. ``looked``,
+    when given, collects every body the search looked at (a caller trying many
+    bodies of one island need not search it again).
     """
     if not can_sleep(space, body):
         return []
     island = [body]
     seen = {body}
+    try:
+        return _sleep_island(space, body, wants_sleep, island, seen)
+    finally:
+        if looked is not None:
+            looked.update(seen)
+
+
+def _sleep_island(
+    space: pymunk.Space,
+    body: pymunk.Body,
+    wants_sleep: Callable[[pymunk.Body], bool],
+    island: list[pymunk.Body],
+    seen: set[pymunk.Body],
+) -> list[pymunk.Body]:
     sleepers: list[pymunk.Body] = []
     for member in island:  # grows while it is walked: a breadth-first search
         for other in neighbours(space, member):
