@@ -328,6 +328,11 @@ class Simulation:
                     self.pending.add(e)
                 else:
                     self.pending.discard(e)
+                rec = self.bodies.get(e)
+                if rec is not None and rec.implicit:
+                    # its collider may have moved onto a body meanwhile (a field write
+                    # this sync-in applies too late for a collider rebuilt here)
+                    self._restructure_body(e)
         if self.pending:
             self._attach_pending()
         if self.rb_dirty:
@@ -510,7 +515,15 @@ class Simulation:
     def _apply_collider(self, e: int) -> None:
         crec = self.colliders.get(e)
         col = self.world.try_get(e, Collider)
-        if crec is None or col is None:
+        if col is None:
+            return
+        if crec is None:
+            # waiting to be (re)built this sync-in (a new skin rebuilds every collider):
+            # its shapes follow ``col.body`` when they are attached, but an implicit
+            # static body of this entity must still go (moved onto a body) or come
+            rec = self.bodies.get(e)
+            if rec is None or rec.implicit:
+                self._restructure_body(e)  # (nothing to do when it already fits)
             return
         owner = e if col.body is None else col.body
         if owner != crec.owner or crec.geometry is not col.shape:

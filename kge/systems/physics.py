@@ -190,15 +190,40 @@ def _fixed_dt(world: World) -> float | None:
     return None if t is None else t.fixed_dt
 
 
+#: event list -> (which begin/end pair it belongs to, True for the begin side); hits
+#: are begins without an end
+_PAIRED = {
+    "contact_begin": ("contact", True),
+    "contact_end": ("contact", False),
+    "sensor_begin": ("sensor", True),
+    "sensor_end": ("sensor", False),
+    "hits": (None, True),
+}
+
+
 class PhysicsEventDelivery(System):
     """Deliver the step's physics events: esper events and Behaviour hooks.
 
     Each contact event goes to the scripts of collider A, collider B and (if
     different) their body entities; a script is called at most once per event.
+
+    A begin (contact, sensor, hit) that names an entity despawned earlier in the
+    same delivery (by a hook or handler reacting to an earlier event) is not
+    delivered: that contact is gone with the entity, as Box2D destroys a body's
+    contacts. Its end, which the despawn brings at the next step, is held back
+    too, so handlers and hooks still see every end after its begin. The
+    ``PhysicsEvents`` lists keep everything the step recorded.
     """
 
     stage = Stage.FIXED
     order = 300
+
+    #: (pair kind, collider_a, collider_b, child_a, child_b) of begins not delivered
+    _withheld: set[tuple[str, int, int, int, int]]
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self._withheld = set()
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -208,11 +233,28 @@ class PhysicsEventDelivery(System):
         from kge.systems.behaviour import runner
 
         run = runner(world)
+        exists = world.exists
+        withheld = self._withheld
         for name, hook in PhysicsEvents.CHANNELS:
             lst = getattr(events, name)
             if not lst:
                 continue
+            pair, begin = _PAIRED.get(name, (None, False))
             for ev in list(lst):
+                if pair is not None or begin:
+                    key = (pair or "", ev.collider_a, ev.collider_b, ev.child_a, ev.child_b)
+                    if begin:
+                        if not (
+                            exists(ev.collider_a) and exists(ev.collider_b)
+                            and (ev.body_a is None or exists(ev.body_a))
+                            and (ev.body_b is None or exists(ev.body_b))
+                        ):
+                            if pair is not None:
+                                withheld.add(key)
+                            continue
+                    elif withheld and key in withheld:
+                        withheld.discard(key)
+                        continue
                 world.dispatch(name, ev)
                 # no script anywhere (an env's scenes): no hook to look for; asked per
                 # event, as a handler may have added a Behaviour meanwhile
