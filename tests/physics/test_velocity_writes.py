@@ -160,3 +160,27 @@ def test_a_jump_written_while_standing_starts_at_once() -> None:
     assert sim.t(e).y - y0 == pytest.approx(0.0806, abs=0.003)
     assert sim.rb(e).velocity[1] == pytest.approx(5.0 - 10.0 / 60.0, abs=1e-6)
     sim.close()
+
+
+def test_many_bodies_pushed_at_once_hold_at_the_slop() -> None:
+    """A row of 16 walkers pushed by one bulk impulse call every step, each into its own
+    wall (more bodies than the contact lists are walked for one by one)."""
+    sim = Sim()
+    sim.ground()
+    walkers = []
+    for k in range(16):
+        y = 0.515 + 2.0 * k
+        sim.spawn(Transform(FACE + 1.5, y), Collider(Box(1.5, 0.45)))  # a wall per row
+        if k:
+            sim.spawn(Transform(FACE - 3.0, y - 0.515 - 0.25), Collider(Box(8.0, 0.25)))  # a shelf
+        walkers.append(sim.dynamic(Box(0.5, 0.5), FACE - 0.5 - 2 * SKIN - 0.3, y,
+                                   body=RigidBody(type=BodyType.DYNAMIC, fixed_rotation=True)))
+    deepest = 0.0
+    for _ in range(60):
+        pushes = [(sim.physics.mass_data(e).mass * (12.0 - sim.rb(e).velocity[0]), 0.0)
+                  for e in walkers]
+        sim.physics.apply_linear_impulses(walkers, pushes)
+        sim.step()
+        deepest = max(deepest, max(sim.t(e).x + 0.5 + SKIN - (FACE - SKIN) for e in walkers))
+    assert deepest <= TOLERANCE
+    sim.close()
