@@ -47,9 +47,11 @@ def settle(arb: Any, slop: float, h: float) -> Moves:
     a_p, b_p = _PAIR
     _lib.cpArbiterGetBodies(arb, a_p, b_p)
     b0, b1 = a_p[0], b_p[0]
-    dyn0 = _lib.cpBodyGetType(b0) == _DYNAMIC
-    dyn1 = _lib.cpBodyGetType(b1) == _DYNAMIC
-    if (dyn0 and _lib.cpBodyIsSleeping(b0)) or (dyn1 and _lib.cpBodyIsSleeping(b1)):
+    # the bodies that may be moved back: dynamic and awake (a sleeper hit by a body
+    # is woken by Chipmunk after this pass; it stays where it slept)
+    dyn0 = _lib.cpBodyGetType(b0) == _DYNAMIC and not _lib.cpBodyIsSleeping(b0)
+    dyn1 = _lib.cpBodyGetType(b1) == _DYNAMIC and not _lib.cpBodyIsSleeping(b1)
+    if not (dyn0 or dyn1):
         return []
     cps = _lib.cpArbiterGetContactPointSet(arb)
     # the deepest point; distances follow the bodies' current positions
@@ -71,9 +73,9 @@ def settle(arb: Any, slop: float, h: float) -> Moves:
     back = min(depth, approach * h)
     if not back > 0.0:
         return []  # it did not arrive by moving: overlapping from the start
-    # rewind the dynamic bodies along the normal by what each contributed (a body
-    # at rest, or moving away, stays where it is); a kinematic body cannot be
-    # rewound, so what it drove in is taken back from the dynamic one
+    # rewind the movable bodies along the normal by what each contributed (a body
+    # at rest, or moving away, stays where it is); a kinematic or sleeping body
+    # cannot be rewound, so what it drove in is taken back from the other one
     w0, w1 = max(in0, 0.0), max(in1, 0.0)
     if w0 + w1 <= 0.0:
         w0, w1 = float(dyn0), float(dyn1)

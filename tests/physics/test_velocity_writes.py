@@ -184,3 +184,24 @@ def test_many_bodies_pushed_at_once_hold_at_the_slop() -> None:
         deepest = max(deepest, max(sim.t(e).x + 0.5 + SKIN - (FACE - SKIN) for e in walkers))
     assert deepest <= TOLERANCE
     sim.close()
+
+
+@pytest.mark.parametrize("substeps", (1, 4))
+def test_a_sleeping_crate_is_met_at_the_slop(substeps: int) -> None:
+    """The walker's first touch of a crate that fell asleep is settled on the walker's
+    side (the sleeper cannot be moved back; Chipmunk wakes it after the contact)."""
+    sim = Sim(PhysicsSettings(substeps=substeps))
+    sim.ground()
+    crate = sim.dynamic(Box(0.5, 0.5), FACE + 0.5 + SKIN, 0.5 + 2 * SKIN - SLOP)
+    e = sim.dynamic(Box(0.5, 0.5), FACE - 6.0, 0.5 + 2 * SKIN - SLOP,
+                    body=RigidBody(type=BodyType.DYNAMIC, fixed_rotation=True))
+    sim.step(40)
+    assert not sim.rb(crate).awake
+    deepest = 0.0
+    for _ in range(30):
+        sim.rb(e).velocity = (30.0, sim.rb(e).velocity[1])
+        sim.step()
+        deepest = max(deepest, sim.t(e).x + 0.5 + SKIN - (sim.t(crate).x - 0.5 - SKIN))
+    assert sim.rb(crate).awake
+    assert deepest <= TOLERANCE
+    sim.close()
