@@ -8,8 +8,10 @@ scene can do (DESIGN.md "Performance traps"), so kge registers:
   kinematic pairs never touch; positive filter groups (exact Box2D rule); the
   one-way platform; the user's contact filter; restitution ``max(a, b)`` only
   above the 1 m/s threshold (Chipmunk recomputes the arbiter's restitution from
-  the shapes every step, so a value set here lasts for the impact only); and it
-  records the begin event. ``separate`` records the matching end event.
+  the shapes every step, so a value set here lasts for the impact only); Box2D's
+  time of impact for the pairs that get one (a body that arrived deeper than the
+  linear slop is moved back to it, :mod:`kge.physics.impact`); and it records the
+  begin event. ``separate`` records the matching end event.
 * ``pre_solve`` / ``post_solve`` only on :data:`HOOKED` collision type, given to
   colliders with ``contact_hooks=True``, for the user's per-step hooks.
 
