@@ -29,7 +29,7 @@ import functools
 import os
 import sys
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
@@ -46,7 +46,12 @@ from kge.transitions import ActiveTransition, Transition
 from kge.validate import boolean, integer, non_negative
 from kge.world import World
 
+if TYPE_CHECKING:
+    from kge.snapshot import Restorable
+
 SystemFactory = Callable[[], System]
+#: what App, push_scene and replace_scene take: a scene, or a scene file's path
+SceneSource = SceneLike | str | os.PathLike[str]
 
 #: ``App()`` with no scene (push one later); distinct from ``App(None)``, which is refused
 NO_SCENE: Any = type("NoScene", (), {"__repr__": lambda self: "NO_SCENE"})()
@@ -62,7 +67,7 @@ class App(Host):
 
     def __init__(
         self,
-        scene: SceneLike = NO_SCENE,
+        scene: SceneSource = NO_SCENE,
         *,
         headless: bool | None = None,
         size: tuple[int, int] = (960, 540),
@@ -175,7 +180,7 @@ class App(Host):
         return [s for s, _ in self._stack]
 
     def push_scene(
-        self, scene: SceneLike, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+        self, scene: SceneSource, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
     ) -> None:
         """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
 
@@ -183,7 +188,7 @@ class App(Host):
         the scene below stays frozen, or keeps running (without input) when
         ``run_below=True``. Popping returns to it with its state intact.
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if run_below and not overlay:
             raise ValueError("push_scene(run_below=True) needs overlay=True")
         self._schedule(lambda: self._push(target, kwargs, overlay=(run_below if overlay else None)))
@@ -193,14 +198,14 @@ class App(Host):
         self._schedule(self._pop)
 
     def replace_scene(
-        self, scene: SceneLike, *, transition: Transition | None = None, **kwargs: Any
+        self, scene: SceneSource, *, transition: Transition | None = None, **kwargs: Any
     ) -> None:
         """Close the top scene and start ``scene`` (with kwargs) in its place.
 
         ``transition`` (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``,
         ``Wipe``) plays over the change; the scene changes when it is due.
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if transition is not None and not isinstance(transition, Transition):
             raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
 
@@ -300,8 +305,9 @@ class App(Host):
             world.add_system(factory())
         return world
 
-    def restore(self, data: bytes) -> None:
-        """Replace the current scene's world with one restored from ``world.snapshot()``.
+    def restore(self, data: bytes | Restorable) -> None:
+        """Replace the current scene's world with one restored from ``world.snapshot()``
+        (in memory) or from a save file read by ``kge.load_game(path)``.
 
         The scene object stays; its ``setup`` is not run again. Systems are rebuilt,
         and the physics system recreates every body from the restored components.
@@ -316,7 +322,10 @@ class App(Host):
             raise RuntimeError("App.restore() needs a running scene")
         world = self._make_world(self._stack[-1][0])
         try:
-            restore_into(world, data)
+            if isinstance(data, bytes | bytearray):
+                restore_into(world, data)
+            else:
+                data.restore_into(world)
         except BaseException:
             world.close()
             raise
@@ -489,12 +498,21 @@ class App(Host):
 
 
 def run(
-    scene: SceneLike, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
+    scene: SceneSource, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
 ) -> App:
     """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
     app = App(scene, title=title, size=size, **kwargs)
     app.run()
     return app
+
+
+def _as_scene(scene: SceneSource) -> Scene:
+    """A Scene from a Scene, a setup function or a scene file's path (``App("a.scene.toml")``)."""
+    if isinstance(scene, str | os.PathLike):
+        from kge.scenefile.scene import SceneFile
+
+        return SceneFile(scene)
+    return as_scene(scene)
 
 
 @functools.cache
