@@ -150,6 +150,13 @@ def _map_hint(hint: Any) -> Any:
     return Any
 
 
+def _admits_none(hint: Any) -> bool:
+    origin = typing.get_origin(hint)
+    return (origin is typing.Union or origin is types.UnionType) and type(None) in typing.get_args(
+        hint
+    )
+
+
 def _enum_hint(hint: Any) -> type[enum.Enum] | None:
     for h in _union_args(hint):
         if isinstance(h, type) and issubclass(h, enum.Enum):
@@ -225,6 +232,9 @@ class Decoder:
         kwargs.update(preset or {})
         for f in info.fields:
             if f.init and f.name not in kwargs and info.default(f) is dataclasses.MISSING:
+                if _admits_none(info.hint(f.name)):
+                    kwargs[f.name] = None  # a required reference left out: None (the ground)
+                    continue
                 raise SceneFileError(
                     self._at(dataclasses.replace(base, field=f.name), toml_path),
                     f"{info.name}.{f.name} is required",
@@ -451,6 +461,10 @@ class Encoder:
             default = info.default(f)
             if default is not dataclasses.MISSING and same(value, default):
                 continue
+            if default is dataclasses.MISSING and value is None and _admits_none(
+                info.hint(f.name)
+            ):
+                continue  # a required field that may be None reads back as None when absent
             here = dataclasses.replace(where, field=f.name)
             if value is None:
                 table[f.name] = {}

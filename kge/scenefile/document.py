@@ -255,7 +255,8 @@ def expand(
             target = doc.source.paths.prefab(entry.prefab, doc.source.where(
                 (*entry.toml_path, "prefab"), entity=key, entity_name=entry.name))
             if target in chain or target == doc.source.path:
-                loop = " -> ".join(p.name for p in (*chain, target))
+                trail = [p for p in (*chain, doc.source.path) if p is not None]
+                loop = " -> ".join(p.name for p in (*trail, target))
                 raise SceneFileError(where, f"prefab cycle: {loop}")
             sub = opener(target)
             if sub.kind != "prefab":

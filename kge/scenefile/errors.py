@@ -31,7 +31,7 @@ class Where:
         head = "" if self.path is None else str(self.path)
         if self.line is not None:
             head += f":{self.line}"
-        parts = [head] if head else []
+        parts: list[str] = []
         if self.entity is not None:
             who = f"entity {self.entity!r}"
             if self.entity_name and self.entity_name != self.entity:
@@ -41,7 +41,8 @@ class Where:
             parts.append(self.component if self.field is None else f"{self.component}.{self.field}")
         elif self.field is not None:
             parts.append(self.field)
-        return ", ".join(parts)
+        details = ", ".join(parts)
+        return f"{head}: {details}" if head and details else head or details
 
 
 class SceneFileError(KgeError, ValueError):
@@ -53,6 +54,9 @@ class SceneFileError(KgeError, ValueError):
 
     def __init__(self, where: Where, reason: str) -> None:
         self.where = where
+        named = f"{where.component}.{where.field} "
+        if where.field is not None and reason.startswith(named):
+            reason = reason[len(named):]  # the place already says which field
         self.reason = reason
         place = where.describe()
         super().__init__(f"{place}: {reason}" if place else reason)

@@ -21,6 +21,7 @@ from kge.assets.store import assets_for
 from kge.components.collider import Collider
 from kge.components.name import Name
 from kge.components.transform import Transform
+from kge.errors import KgeError
 from kge.scenefile.codec import LIMITS, Decoder, Source
 from kge.scenefile.default import default_registry
 from kge.scenefile.document import Document, Row, entry_pose, expand, open_file
@@ -122,9 +123,12 @@ class Loader:
         maps = self.maps(doc, spawners)
         try:
             ids = world.spawn_linked(len(rows), build)
-        except BaseException:
+        except BaseException as exc:
             for ref in maps:
                 ref.handle.unload()
+            if isinstance(exc, KgeError) and not isinstance(exc, SceneFileError):
+                raise SceneFileError(Where(path=doc.source.path),
+                                     _by_key(str(exc), keys)) from exc
             raise
         for res in resources:
             world.insert_resource(res)
@@ -149,10 +153,14 @@ class Loader:
 
             return Behaviour
         info = self.registry.get(name)
-        if info is None or COMPONENT not in info.kinds:
-            kind = "resource" if info is not None else "component"
+        if info is not None and COMPONENT not in info.kinds:
+            hint = " (put it under [resources])" if RESOURCE in info.kinds else ""
             raise SceneFileError(
-                where, f"unknown {kind} {name!r}{self.registry.suggest(name, COMPONENT)} "
+                where, f"{name} is a {sorted(info.kinds)[0]}, not a component{hint}"
+            )
+        if info is None:
+            raise SceneFileError(
+                where, f"unknown component {name!r}{self.registry.suggest(name, COMPONENT)} "
                 "(only registered components can appear in a file; register the game's own "
                 "with kge.register_type)"
             )
@@ -312,6 +320,19 @@ class Loader:
                     state.members[e] = (key, row.member)
             state.instances[key] = inst
         state.maps.extend(maps)
+
+
+def _by_key(message: str, keys: Mapping[str, int]) -> str:
+    """A world validator's message with the file's keys beside the entity ids it names."""
+    import re
+
+    names = {e: k for k, e in keys.items()}
+
+    def sub(m: re.Match[str]) -> str:
+        key = names.get(int(m.group(1)))
+        return m.group(0) if key is None else f"{m.group(0)} ({key!r})"
+
+    return re.sub(r"\bentity (\d+)", sub, message)
 
 
 def load_scene(
