@@ -104,6 +104,8 @@ class App(Host):
         self._stack: list[tuple[Scene, World]] = []
         #: worlds pushed as overlays: True if the scene below keeps running
         self._overlays: dict[World, bool] = {}
+        #: the keyword arguments each world's setup ran with (reload_scene runs it again)
+        self._setup_kwargs: dict[World, dict[str, Any]] = {}
         self.transition: ActiveTransition | None = None
         self._swap: Callable[[], None] | None = None
         self._plugins: list[Plugin] = []
@@ -272,15 +274,47 @@ class App(Host):
             below.on_pause(below_world)
         world = self._make_world(scene)
         self._stack.append((scene, world))
+        self._setup_kwargs[world] = kwargs
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
         scene.setup(world, **kwargs)
         world.flush()
 
+    def reload_scene(self) -> None:
+        """Build the top scene again from its setup, and swap it in only if that succeeds.
+
+        Hot reload calls this when a scene file or map changes. On any error the new
+        world is closed, the error is raised, and the running world carries on as it was.
+        """
+        if not self._stack:
+            raise RuntimeError("App.reload_scene() needs a running scene")
+        scene, old = self._stack[-1]
+        kwargs = self._setup_kwargs.get(old, {})
+        world = self._make_world(scene)
+        try:
+            scene.setup(world, **kwargs)
+            world.flush()
+        except BaseException:
+            world.close()
+            raise
+
+        def op() -> None:
+            _, current = self._stack.pop()
+            overlay = self._overlays.pop(current, None)
+            self._setup_kwargs.pop(current, None)
+            current.close()
+            self._stack.append((scene, world))
+            self._setup_kwargs[world] = kwargs
+            if overlay is not None:
+                self._overlays[world] = overlay
+
+        self._schedule(op)
+
     def _close_top(self) -> None:
         scene, world = self._stack.pop()
         self._overlays.pop(world, None)
+        self._setup_kwargs.pop(world, None)
         scene.on_exit(world)
         world.close()
 
@@ -498,11 +532,34 @@ class App(Host):
 
 
 def run(
-    scene: SceneSource, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
+    scene: SceneSource,
+    *,
+    title: str = "kge",
+    size: tuple[int, int] = (960, 540),
+    hot_reload: bool | None = None,
+    **kwargs: Any,
 ) -> App:
-    """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
+    """One-line entry point: ``kge.run(my_scene, title="Pong")``.
+
+    ``hot_reload`` (default: on when a window opens, or when ``KGE_HOT_RELOAD=1``)
+    reloads changed scene, prefab, map, image, sound and Python files while the
+    game runs (:mod:`kge.hotreload`).
+    """
     app = App(scene, title=title, size=size, **kwargs)
-    app.run()
+    if hot_reload is None:
+        env = os.environ.get("KGE_HOT_RELOAD")
+        hot_reload = env == "1" if env in ("0", "1") else not app.headless
+    reloader = None
+    if hot_reload:
+        from kge.hotreload import HotReloadPlugin
+
+        reloader = HotReloadPlugin()
+        app.add_plugins(reloader)
+    try:
+        app.run()
+    finally:
+        if reloader is not None:
+            reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
 
 

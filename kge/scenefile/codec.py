@@ -80,48 +80,76 @@ class Source:
 
 
 # -- checks on raw parsed data --------------------------------------------------------------
-def check_raw(data: Any, source: Source, toml_path: tuple[Any, ...] = (), depth: int = 0) -> None:
+def check_raw(data: Any, source: Source) -> None:
     """Refuse what no field may hold, anywhere in a parsed file: NaN and infinities,
     integers beyond 64 bits, dates, too deep nesting, too long arrays and strings."""
+    _check(data, source, data, (), 0)
+
+
+def _place(source: Source, root: Any, path: tuple[Any, ...]) -> Where:
+    """The entity, component and field a raw path points at (for messages)."""
+    parts: dict[str, Any] = {}
+    if len(path) >= 2 and path[0] == "entity" and isinstance(path[1], int):
+        try:
+            entry = root["entity"][path[1]]
+            parts["entity"] = str(entry.get("id", f"#{path[1] + 1}"))
+            parts["entity_name"] = entry.get("name") if isinstance(entry.get("name"), str) else None
+        except (KeyError, IndexError, TypeError, AttributeError):
+            pass
+        rest = path[2:]
+    elif len(path) >= 2 and path[0] == "resources":
+        rest = path[1:]
+    else:
+        rest = ()
+    names = [p for p in rest if isinstance(p, str)]
+    if names:
+        parts["component"] = names[0]
+    if len(names) > 1:
+        parts["field"] = names[1]
+    return source.where(path, **parts)
+
+
+def _check(data: Any, source: Source, root: Any, toml_path: tuple[Any, ...], depth: int) -> None:
     if depth > LIMITS.max_depth + 6:  # the document's own tables sit a few levels down
         raise SceneFileError(
-            source.where(toml_path), f"nested deeper than {LIMITS.max_depth} levels"
+            _place(source, root, toml_path), f"nested deeper than {LIMITS.max_depth} levels"
         )
     if isinstance(data, bool):
         return
     if isinstance(data, int):
         if not -INT_RANGE <= data < INT_RANGE:
-            raise SceneFileError(source.where(toml_path), f"integer {data} is beyond 64 bits")
+            raise SceneFileError(_place(source, root, toml_path),
+                                 f"integer {data} is beyond 64 bits")
         return
     if isinstance(data, float):
         if not math.isfinite(data):
             raise SceneFileError(
-                source.where(toml_path), f"{data!r} is not a finite number (NaN and inf are "
-                "refused everywhere)"
+                _place(source, root, toml_path), f"{data!r} is not a finite number (NaN and "
+                "inf are refused everywhere)"
             )
         return
     if isinstance(data, str):
         if len(data) > LIMITS.max_string:
             raise SceneFileError(
-                source.where(toml_path), f"a string of {len(data)} characters (at most "
+                _place(source, root, toml_path), f"a string of {len(data)} characters (at most "
                 f"{LIMITS.max_string})"
             )
         return
     if isinstance(data, dict):
         if len(data) > LIMITS.max_items:
-            raise SceneFileError(source.where(toml_path), f"a table of {len(data)} keys")
+            raise SceneFileError(_place(source, root, toml_path), f"a table of {len(data)} keys")
         for k, v in data.items():
-            check_raw(v, source, (*toml_path, k), depth + 1)
+            _check(v, source, root, (*toml_path, k), depth + 1)
         return
     if isinstance(data, list):
         if len(data) > LIMITS.max_items:
-            raise SceneFileError(source.where(toml_path), f"an array of {len(data)} items")
+            raise SceneFileError(_place(source, root, toml_path), f"an array of {len(data)} items")
         for i, v in enumerate(data):
-            check_raw(v, source, (*toml_path, i) if depth < 4 else toml_path, depth + 1)
+            _check(v, source, root, (*toml_path, i) if depth < 4 else toml_path, depth + 1)
         return
     raise SceneFileError(
-        source.where(toml_path), f"{type(data).__name__} values (dates, times) are not used in "
-        "kge files"
+        _place(source, root, toml_path), f"{type(data).__name__} values (dates, times) are not "
+        "used in kge files"
     )
 
 

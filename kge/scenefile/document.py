@@ -57,6 +57,7 @@ class Document:
     root: str | None = None
     next_id: int | None = None
     name: str | None = None
+    text: str = ""  #: the file's text as read (hot reload compares a prefab's old and new)
 
 
 def read_text(path: Path) -> str:
@@ -130,7 +131,7 @@ def parse(text: str, path: Path | None, paths: AssetPaths) -> Document:
     if not isinstance(maps, list) or not all(isinstance(m, dict) for m in maps):
         raise SceneFileError(source.where(("tilemap",)), "tilemap must be an array of tables "
                              "([[tilemap]])")
-    doc = Document(source, kind, entries, resources, maps)
+    doc = Document(source, kind, entries, resources, maps, text=text)
     if kind == "prefab":
         root = data.get("root")
         if root is not None and (not isinstance(root, str) or root not in seen):

@@ -90,12 +90,24 @@ class Loader:
     def paths(self, folder: Path) -> AssetPaths:
         return AssetPaths(folder, self.store, self.roots)
 
+    def preload(self, texts: Mapping[Path, str]) -> None:
+        """Read these files from the given texts, not from disk (the state a world was
+        loaded from, which hot reload compares with a changed prefab)."""
+        from kge.scenefile.document import parse
+
+        for path, text in texts.items():
+            self._opened[path] = parse(text, path, self.paths(path.parent))
+
     def open(self, path: Path) -> Document:
         real = Path(os.path.realpath(path))
         doc = self._opened.get(real)
         if doc is None:
             doc = self._opened[real] = open_file(real, self.paths)
         return doc
+
+    def texts(self) -> dict[Path, str]:
+        """The text of every file this load read, by path."""
+        return {path: doc.text for path, doc in self._opened.items()}
 
     @property
     def files(self) -> list[Path]:
@@ -320,6 +332,7 @@ class Loader:
                     state.members[e] = (key, row.member)
             state.instances[key] = inst
         state.maps.extend(maps)
+        state.files.update(self.texts())
 
 
 def _by_key(message: str, keys: Mapping[str, int]) -> str:

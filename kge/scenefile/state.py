@@ -56,6 +56,8 @@ class SceneState:
     #: entity -> (instance key, member key)
     members: dict[int, tuple[str, str]] = field(default_factory=dict)
     maps: list[MapRef] = field(default_factory=list)
+    #: the text of every file the world was loaded from (scene, prefabs), by path
+    files: dict[Path, str] = field(default_factory=dict)
 
     def key_of(self, entity: int) -> str | None:
         return self.keys.get(entity)
