@@ -82,6 +82,7 @@ from kge.errors import (
     KgeError,
     MissingComponentError,
     MissingResourceError,
+    SceneStackError,
     ValidationError,
     WorldLockedError,
 )
@@ -297,6 +298,7 @@ __all__ = [
     "Scene",
     "SceneFile",
     "SceneFileError",
+    "SceneStackError",
     "Script",
     "SensorBegin",
     "SensorEnd",

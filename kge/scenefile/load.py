@@ -17,7 +17,6 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from kge.assets.store import assets_for
 from kge.components.collider import Collider
 from kge.components.name import Name
 from kge.components.transform import Transform
@@ -60,7 +59,7 @@ def resolve_file(world: World, source: PathLike) -> Path:
     path = Path(text)
     if path.is_absolute():
         return path
-    store = assets_for(world)
+    store = _assets_for(world)
     found = store.find(text)
     if found is None or found.path is None:
         raise SceneFileError(
@@ -83,7 +82,7 @@ class Loader:
         self.world = world
         self.save = save
         self.registry = registry or default_registry()
-        self.store = assets_for(world)
+        self.store = _assets_for(world)
         self.roots = [Path(os.fspath(r)) for r in asset_roots]
         self._opened: dict[Path, Document] = {}
 
@@ -414,3 +413,11 @@ def instantiate(
     doc = Document(entry_source, "scene", [entry], {}, [])
     rows = expand(doc, loader.open)
     return loader.spawn(doc, rows)
+
+
+def _assets_for(world: World) -> Any:
+    """The world's asset store (imported when a file is read: a physics-only App never
+    loads the asset modules)."""
+    from kge.assets.store import assets_for
+
+    return assets_for(world)

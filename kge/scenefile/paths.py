@@ -19,11 +19,12 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from pathlib import Path, PurePosixPath, PureWindowsPath
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from kge.assets.locate import DirLocation
-from kge.assets.store import Assets
 from kge.scenefile.errors import SceneFileError, Where
+
+if TYPE_CHECKING:
+    from kge.assets.store import Assets
 
 #: longest asset path accepted, characters
 MAX_PATH = 1024
@@ -47,6 +48,8 @@ class AssetPaths:
         self.store = store
         allowed = [self.folder, *(Path(os.path.realpath(r)) for r in roots)]
         if store is not None:
+            from kge.assets.locate import DirLocation
+
             allowed += [
                 Path(os.path.realpath(loc.root)) for loc in store.locations
                 if isinstance(loc, DirLocation)

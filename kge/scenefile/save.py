@@ -14,7 +14,6 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from kge.assets.store import assets_for
 from kge.components.name import Name
 from kge.components.transform import Transform
 from kge.scenefile.codec import Encoder
@@ -55,7 +54,7 @@ class Writer:
         self.kind = kind
         self.save = kind == "save"
         self.registry = registry or default_registry()
-        self.paths = AssetPaths(folder, assets_for(world), [Path(os.fspath(r))
+        self.paths = AssetPaths(folder, _assets_for(world), [Path(os.fspath(r))
                                                             for r in asset_roots])
         state = world.try_resource(SceneState)
         self.state = state if state is not None else SceneState()
@@ -277,3 +276,11 @@ def save_game(world: World, path: PathLike, *, registry: TypeRegistry | None = N
 def dumps_value(v: Any) -> str:
     """The TOML text of a plain value (for tools writing overrides by hand)."""
     return value(v)
+
+
+def _assets_for(world: World) -> Any:
+    """The world's asset store (imported when a file is read: a physics-only App never
+    loads the asset modules)."""
+    from kge.assets.store import assets_for
+
+    return assets_for(world)
