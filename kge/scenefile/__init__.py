@@ -13,7 +13,13 @@
 from kge.scenefile.codec import LIMITS, Limits
 from kge.scenefile.default import default_registry, register_script, register_type
 from kge.scenefile.errors import SceneFileError, Where
-from kge.scenefile.load import instantiate, load_scene, resolve_file, scene_state
+from kge.scenefile.load import (
+    instantiate,
+    load_scene,
+    load_scene_text,
+    resolve_file,
+    scene_state,
+)
 from kge.scenefile.migrate import FORMAT, migration
 from kge.scenefile.registry import TypeInfo, TypeRegistry
 from kge.scenefile.save import dumps, save_game, save_prefab, save_scene
@@ -38,6 +44,7 @@ __all__ = [
     "instantiate",
     "load_game",
     "load_scene",
+    "load_scene_text",
     "migration",
     "register_script",
     "register_type",

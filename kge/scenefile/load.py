@@ -378,6 +378,34 @@ def load_scene(
     return ids
 
 
+def load_scene_text(
+    world: World,
+    text: str,
+    path: PathLike,
+    *,
+    registry: TypeRegistry | None = None,
+    asset_roots: Iterable[PathLike] = (),
+    spawners: Any = None,
+) -> list[int]:
+    """:func:`load_scene` from ``text`` (a scene file's content not written to disk yet:
+    the editor's play mode and undo). ``path`` is where it would live: its folder
+    resolves assets and prefabs, and errors name it."""
+    from kge.scenefile.document import parse
+
+    real = Path(os.path.realpath(os.fspath(path)))
+    loader = Loader(world, registry, asset_roots)
+    doc = parse(text, real, loader.paths(real.parent))
+    if doc.kind != "scene":
+        raise SceneFileError(Where(path=real), f"a {doc.kind} file, not a scene")
+    rows = expand(doc, loader.open)
+    ids = loader.spawn(doc, rows, spawners=spawners)
+    state = scene_state(world)
+    state.files[real] = text
+    if state.source is None:
+        state.source = real
+    return ids
+
+
 def instantiate(
     world: World,
     prefab: PathLike,
