@@ -95,6 +95,8 @@ class EditorModel:
     def __init__(self, world: World, path: str | os.PathLike[str] | None = None) -> None:
         self.world = world
         self.path = None if path is None else Path(os.path.realpath(path))
+        #: resources the editor puts in the edited world (its debug overlay): not saved
+        self.own_resources: set[type] = set()
         self.selection: list[int] = []
         self.undo_stack: list[Step] = []
         self.redo_stack: list[Step] = []
@@ -192,7 +194,8 @@ class EditorModel:
 
     def text(self) -> str:
         folder = self.path.parent if self.path is not None else Path.cwd()
-        return dumps(self.world, folder, entities=self.entities())
+        return dumps(self.world, folder, entities=self.entities(),
+                     exclude_resources=self.own_resources)
 
     def pick(self, point: Vec2) -> int | None:
         """The entity under a world point: inside a collider, else near its position
@@ -690,7 +693,8 @@ class EditorModel:
         target = Path(os.path.realpath(path)) if path is not None else self.path
         if target is None:
             raise SceneFileError(_where(None), "no file yet: save as a path first")
-        saved = save_scene(self.world, target, entities=self.entities())
+        saved = save_scene(self.world, target, entities=self.entities(),
+                           exclude_resources=self.own_resources)
         self.path = Path(os.path.realpath(saved))
         self.state.source = self.path
         self.saved_text = self.text()

@@ -48,9 +48,10 @@ class Writer:
 
     def __init__(
         self, world: World, folder: Path, registry: TypeRegistry | None, kind: str,
-        asset_roots: Iterable[PathLike] = (),
+        asset_roots: Iterable[PathLike] = (), exclude_resources: Iterable[type] = (),
     ) -> None:
         self.world = world
+        self.exclude = set(exclude_resources)
         self.kind = kind
         self.save = kind == "save"
         self.registry = registry or default_registry()
@@ -131,7 +132,7 @@ class Writer:
             info = self.registry.get(name)
             assert info is not None
             res = self.world.try_resource(info.cls)
-            if res is None or type(res) is not info.cls:
+            if res is None or type(res) is not info.cls or info.cls in self.exclude:
                 continue
             table = encoder.fields(info, res, Where(component=name))
             if not table:
@@ -198,11 +199,15 @@ def dumps(
     kind: str = "scene",
     root: str | None = None,
     registry: TypeRegistry | None = None,
+    exclude_resources: Iterable[type] = (),
 ) -> str:
-    """The text of ``world`` (or of ``entities``) as a file in ``folder``."""
+    """The text of ``world`` (or of ``entities``) as a file in ``folder``
+    (``exclude_resources``: resource types left out, e.g. a tool's own settings)."""
     if kind not in ("scene", "prefab", "save"):
         raise SceneFileError(Where(), f"kind must be scene, prefab or save, got {kind!r}")
-    return Writer(world, Path(os.fspath(folder)), registry, kind).text(entities, root)
+    writer = Writer(world, Path(os.fspath(folder)), registry, kind,
+                    exclude_resources=exclude_resources)
+    return writer.text(entities, root)
 
 
 def write_text(path: PathLike, text: str) -> Path:
@@ -226,6 +231,7 @@ def save_scene(
     *,
     entities: Iterable[int] | None = None,
     registry: TypeRegistry | None = None,
+    exclude_resources: Iterable[type] = (),
 ) -> Path:
     """Write ``world`` (or just ``entities``) as the scene file ``path``; returns the path.
 
@@ -234,7 +240,8 @@ def save_scene(
     :class:`SceneFileError` names the entity, component and field.
     """
     target = Path(os.fspath(path)).absolute()
-    text = dumps(world, target.parent, entities=entities, registry=registry)
+    text = dumps(world, target.parent, entities=entities, registry=registry,
+                 exclude_resources=exclude_resources)
     state = world.try_resource(SceneState)
     if state is not None and entities is None:
         state.source = target
