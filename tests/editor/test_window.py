@@ -159,7 +159,7 @@ def test_save_and_the_unsaved_changes_prompt(editor: tuple[App, Editor]) -> None
     app.world.get(field, TextInput).text = str(target)
     save = next(e for e in ed.dialog if app.world.has(e, Button)
                 and app.world.get(e, Button).text == "Save")
-    app.input.click(at=box_of(app, save).center)  # type: ignore[attr-defined]
+    app.input.click(at=app.world.resource(UIState).layout.boxes[save].center)
     app.step()
     assert target.exists() and ed.model.path == target
 
