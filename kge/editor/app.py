@@ -41,7 +41,7 @@ from kge.components.ui import (
 )
 from kge.editor.fields import FieldKind, asset_files, kind_of, parse, show
 from kge.editor.model import EditorModel, EditorOnly
-from kge.input import Input
+from kge.input import Input, KeyEvent
 from kge.keys import Key, Mod, Mouse
 from kge.scene import Scene
 from kge.scenefile import SceneFileError, default_registry, load_scene_text
@@ -476,27 +476,27 @@ class EditorInput(System):
 
     # -- keys  ---------------------------------------------------------------------------------
     def keys(self) -> None:
+        """Shortcuts, read from this frame's key events (a whole ctrl+s can arrive inside
+        one frame, the Ctrl key already up when the editor looks)."""
         ed = self.ed
         inp = self.world.resource(Input)
-        ctrl = inp.any_held(Key.LCTRL, Key.RCTRL) if hasattr(Key, "RCTRL") else inp.held(
-            Key.LCTRL)
         state = self.world.resource(UIState)
         typing = state.focused is not None and self.world.exists(state.focused) and \
             self.world.has(state.focused, TextInput)
-        if ctrl and inp.pressed(Key.Z):
-            ed.run("redo" if inp.modifiers & Mod.SHIFT else "undo")
-        elif ctrl and inp.pressed(Key.Y):
-            ed.run("redo")
-        elif ctrl and inp.pressed(Key.S):
-            ed.run("save")
-        elif ctrl and inp.pressed(Key.D):
-            ed.run("duplicate")
-        elif ctrl and inp.pressed(Key.Q):
-            ed.run("quit")
-        elif inp.pressed(Key.DELETE) and not typing:
-            ed.run("delete")
-        elif inp.pressed(Key.F5):
-            ed.run("play")
+        for ev in list(inp.events):
+            if not isinstance(ev, KeyEvent) or not ev.down:
+                continue
+            ctrl, shift = bool(ev.modifiers & Mod.CTRL), bool(ev.modifiers & Mod.SHIFT)
+            name = None
+            if ctrl:
+                name = {Key.Z: "redo" if shift else "undo", Key.Y: "redo", Key.S: "save",
+                        Key.D: "duplicate", Key.Q: "quit"}.get(ev.key)
+            elif ev.key == Key.DELETE and not typing:
+                name = "delete"
+            elif ev.key == Key.F5:
+                name = "play"
+            if name is not None:
+                ed.run(name)
 
     # -- the viewport  -------------------------------------------------------------------------
     def viewport(self) -> None:
