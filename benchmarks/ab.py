@@ -5,7 +5,10 @@ and after it. Two copies of kge cannot share a process, so each checkout runs in
 a worker process of its own that builds the scene once and then steps frames on
 request; the parent asks them for blocks of frames in turn (A, B, A, B, ...), so
 background load on a shared machine hits both alike, and reports the median
-frame time of each and their ratio, the way ``kge bench`` compares engines.
+frame time of each and their ratio, the way ``kge bench`` compares engines. It
+reports each frame's CPU time too (``time.process_time`` of the worker), which a
+busy machine disturbs far less than the wall clock: on a loaded machine, compare
+the CPU ratio.
 
     python benchmarks/ab.py /path/to/main /path/to/branch pyramid:rows=40 rain:count=1000
 
@@ -34,9 +37,9 @@ for line in sys.stdin:
     times = []
     gc.disable()
     for _ in range(n):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         app.step()
-        times.append((time.perf_counter() - t0) * 1000.0)
+        times.append(((time.perf_counter() - t0) * 1000.0, (time.process_time() - c0) * 1000.0))
     gc.enable()
     print(json.dumps(times), flush=True)
 app.close()
@@ -60,11 +63,12 @@ def _worker(tree: str, slug: str, params: dict[str, Any]) -> subprocess.Popen[st
     )
 
 
-def _frames(proc: subprocess.Popen[str], n: int) -> list[float]:
+def _frames(proc: subprocess.Popen[str], n: int) -> list[tuple[float, float]]:
+    """(wall ms, CPU ms) of ``n`` frames of one worker."""
     assert proc.stdin is not None and proc.stdout is not None
     proc.stdin.write(f"{n}\n")
     proc.stdin.flush()
-    return list(json.loads(proc.stdout.readline()))
+    return [(w, c) for w, c in json.loads(proc.stdout.readline())]
 
 
 def compare(tree_a: str, tree_b: str, scene: str, warmup: int = 30, frames: int = 40,
@@ -75,7 +79,7 @@ def compare(tree_a: str, tree_b: str, scene: str, warmup: int = 30, frames: int 
     try:
         for p in procs:
             _frames(p, warmup)
-        times: list[list[float]] = [[], []]
+        times: list[list[tuple[float, float]]] = [[], []]
         for _ in range(blocks):
             for k, p in enumerate(procs):
                 times[k] += _frames(p, frames)
@@ -84,8 +88,12 @@ def compare(tree_a: str, tree_b: str, scene: str, warmup: int = 30, frames: int 
             if p.stdin is not None:
                 p.stdin.close()
             p.wait()
-    a, b = (statistics.median(t) for t in times)
-    return {"scene": scene, "a_ms": round(a, 3), "b_ms": round(b, 3), "b_over_a": round(b / a, 3)}
+    a, b = (statistics.median(w for w, _ in t) for t in times)
+    ca, cb = (statistics.median(c for _, c in t) for t in times)
+    return {
+        "scene": scene, "a_ms": round(a, 3), "b_ms": round(b, 3), "b_over_a": round(b / a, 3),
+        "a_cpu_ms": round(ca, 3), "b_cpu_ms": round(cb, 3), "cpu_b_over_a": round(cb / ca, 3),
+    }
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -223,7 +223,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", help="write the results as JSON here")
     args = parser.parse_args(argv)
     result = measure(args.quick)
-    text = json.dumps(result, indent=1)
+    # one row per line: diffable, and a tenth of an indented dump
+    text = "{\n" + ",\n".join(
+        f"{json.dumps(name)}: [\n" + ",\n".join(json.dumps(row) for row in rows) + "\n]"
+        for name, rows in result.items()
+    ) + "\n}"
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             f.write(text + "\n")

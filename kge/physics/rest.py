@@ -46,6 +46,8 @@ class RestClock:
     def __init__(self) -> None:
         self._key: tuple[int, int] | None = None
         self._watched = np.empty(0, dtype=bool)  # by slot: a body of a restless joint
+        self._any = False  # some slot is watched
+        self._counting = False  # the clocks ran at the last tick (else they read 0)
 
     def tick(
         self,
@@ -64,16 +66,6 @@ class RestClock:
         body that kept an island awake is watched too: bump the epoch).
         """
         state = poses.state
-        if not len(state):
-            return []
-        v = state[:, 3:6]
-        slow = (v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1] <= speed * speed) & (
-            np.abs(v[:, 2]) <= ANGULAR_TOLERANCE
-        )
-        slow &= poses.dynamic & ~poses.asleep
-        before = poses.rest
-        after = np.where(slow, before + dt, 0.0)
-        poses.rest = after
         key = (poses.epoch, watched_epoch)
         if key != self._key:
             mask = np.zeros(len(state), dtype=bool)
@@ -82,7 +74,23 @@ class RestClock:
                 i = slot.get(e)
                 if i is not None:
                     mask[i] = True
-            self._watched, self._key = mask, key
+            self._watched, self._key, self._any = mask, key, bool(mask.any())
+        if not self._any:
+            # nothing watched (no joint solved one by one: the revolute batch leaves
+            # Chipmunk's timer alone): no clock to keep; they start again from zero
+            if self._counting:
+                poses.rest[:] = 0.0
+                self._counting = False
+            return []
+        self._counting = True
+        v = state[:, 3:6]
+        slow = (v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1] <= speed * speed) & (
+            np.abs(v[:, 2]) <= ANGULAR_TOLERANCE
+        )
+        slow &= poses.dynamic & ~poses.asleep
+        before = poses.rest
+        after = np.where(slow, before + dt, 0.0)
+        poses.rest = after
         due = time_to_sleep - 1e-9  # thirty 1/60 s steps are 0.5 s, not 0.49999...
         crossed = np.flatnonzero(self._watched & (after >= due) & (before < due))
         if not len(crossed):
