@@ -35,6 +35,11 @@ from kge.physics.events import JointBroken, JointDestroyed
 
 _DYNAMIC = _lib.CP_BODY_TYPE_DYNAMIC
 
+
+def _awake(h: joint_api.JointHandle) -> bool:
+    """:meth:`JointBridge.asleep` when no body sleeps."""
+    return False
+
 if TYPE_CHECKING:
     from kge.physics.joints.revolute import Revolute
     from kge.physics.simulation import Simulation
@@ -396,6 +401,11 @@ class JointBridge:
             b for e, h in self.handles.items() if e not in batched for b in (h.body_a, h.body_b)
         ]
 
+    def _some_asleep(self) -> bool:
+        """Might any body be asleep? (No: no joint needs looking at; one numpy call.)"""
+        poses = self.sim.poses
+        return bool(poses.asleep.any()) or self.sim.poses_stale
+
     def asleep(self, h: joint_api.JointHandle) -> bool:
         """Are the dynamic bodies of ``h`` (at least one) all asleep? Box2D does not
         solve a sleeping island, and a pass that wrote to its bodies would wake them."""
@@ -423,7 +433,7 @@ class JointBridge:
     def before_step(self, dt: float, raw: Any = None) -> None:
         """``raw``: sync-out's bulk read when nothing touched a body since (or None)."""
         ordered = self.ordered()
-        asleep = self.asleep
+        asleep = self.asleep if self._some_asleep() else _awake
         if self._batch_epoch != self.types_epoch:
             for _, h in ordered:
                 if not asleep(h):
@@ -485,9 +495,10 @@ class JointBridge:
             others = self._box2d_positions(loop, dt, unsettled)
             jolted += [h for _, h in loop + unsettled if h.jolted]
         else:
+            asleep = self.asleep if self._some_asleep() else _awake
             for e, h in loop:
                 comp = self.components.get(e)
-                if comp is None or self.asleep(h):
+                if comp is None or asleep(h):
                     continue  # a sleeping joint keeps what it last read
                 h.read_back(comp, dt)
                 if h.jolted:
