@@ -50,7 +50,7 @@ from kge import (
     World,
     draw,
 )
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import SensorBegin
 from kge.systems.animation import shake
 
 ASSETS = Assets(anchor=__file__)
@@ -195,7 +195,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             a, b = sorted((ev.collider_a, ev.collider_b))
             kinds = {_kind(world, a): a, _kind(world, b): b}
             if "shot" in kinds and "enemy" in kinds:

@@ -82,6 +82,7 @@ from kge.errors import (
     KgeError,
     MissingComponentError,
     MissingResourceError,
+    ScheduleError,
     ValidationError,
     WorldLockedError,
 )
@@ -106,7 +107,7 @@ from kge.platform import has_display
 from kge.plugin import FunctionPlugin, Plugin, PluginError
 from kge.plugins import default_plugins
 from kge.scene import Scene, Time
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
@@ -283,6 +284,7 @@ __all__ = [
     "RigidBody",
     "RopeJoint",
     "Scene",
+    "ScheduleError",
     "Script",
     "SensorBegin",
     "SensorEnd",
@@ -295,6 +297,7 @@ __all__ = [
     "Sprite",
     "Stage",
     "System",
+    "SystemSet",
     "Text",
     "TileCollider",
     "TileMap",
@@ -316,6 +319,7 @@ __all__ = [
     "World",
     "WorldLockedError",
     "checker",
+    "collision",
     "default_plugins",
     "draw",
     "ease",

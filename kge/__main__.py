@@ -1,5 +1,5 @@
 """Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
-command), ``kge testbed``, ``kge bench``.
+command), ``kge testbed``, ``kge bench``, ``kge schedule`` (the frame order).
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -68,11 +68,18 @@ def _new(args: list[str]) -> int:
     return new_main(args)
 
 
+def _schedule(args: list[str]) -> int:
+    from kge.schedule_cli import main as schedule_main
+
+    return schedule_main(args)
+
+
 COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
     "new": (_new, "create a small game project with a test: kge new NAME"),
     "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
     "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
+    "schedule": (_schedule, "print the frame order: stages, sets, systems (kge schedule --help)"),
 }
 
 
@@ -93,7 +100,7 @@ def version() -> str:
 def usage() -> str:
     names = ",".join(COMMANDS)
     lines = [f"usage: kge [--version] {{{names}}} [options]", ""]
-    lines += [f"  {name:<8} {text}" for name, (_, text) in COMMANDS.items()]
+    lines += [f"  {name:<9} {text}" for name, (_, text) in COMMANDS.items()]
     lines += ["", "Each command has its own help: kge COMMAND --help"]
     return "\n".join(lines)
 

@@ -59,3 +59,8 @@ def where(entity: int | None, component: str, field: str | None = None) -> str:
 
 class DisplayError(KgeError, RuntimeError):
     """A window was asked for and the display cannot give one (a stale ``DISPLAY``...)."""
+
+
+class ScheduleError(KgeError, ValueError):
+    """A system's place in the frame is impossible: an unknown set, an anchor in another
+    stage, or ``before`` / ``after`` constraints that form a cycle."""

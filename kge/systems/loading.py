@@ -68,7 +68,6 @@ class LoadingScreen(Scene):
 
 class _Loader(System):
     stage = Stage.UPDATE
-    order = 0
 
     def __init__(self, screen: LoadingScreen, bar: int, text: int) -> None:
         self.screen, self.bar, self.text = screen, bar, text

@@ -47,14 +47,14 @@ def test_impacts_fire_once_per_qualifying_hit_with_speed_scaled_volume(
         Transform(), ImpactSound("blip.wav", min_speed=1.0, max_speed=10.0, volume=0.8)
     )
     wall = world.spawn(Transform())  # no ImpactSound: silent
-    world.dispatch("contact_begin", contact(ball, wall, 0.5))  # too slow
+    world.emit(contact(ball, wall, 0.5))  # too slow
     app.step(1)
     assert plays == []
-    world.dispatch("contact_begin", contact(ball, wall, 5.0))
+    world.emit(contact(ball, wall, 5.0))
     app.step(1)
     assert plays == [("blip.wav", pytest.approx(0.4))]
-    world.dispatch("contact_begin", contact(wall, ball, 25.0))  # B side, capped volume
-    world.dispatch("contact_begin", contact(ball, wall, 2.0))
+    world.emit(contact(wall, ball, 25.0))  # B side, capped volume
+    world.emit(contact(ball, wall, 2.0))
     app.step(1)
     assert [v for _, v in plays[1:]] == [pytest.approx(0.8), pytest.approx(0.16)]
     app.step(3)
@@ -70,10 +70,10 @@ def test_both_entities_and_compound_bodies_play_once_each(
     body = world.spawn(Transform(), ImpactSound("beep.wav", min_speed=0.0))
     part = world.spawn(ImpactSound("blip.wav", min_speed=0.0))  # a collider of `body`
     other = world.spawn(Transform(), ImpactSound("blip.wav", min_speed=3.0))
-    world.dispatch("contact_begin", contact(part, other, 2.0, body_a=body, body_b=other))
+    world.emit(contact(part, other, 2.0, body_a=body, body_b=other))
     app.step(1)
     assert sorted(name for name, _ in plays) == ["beep.wav", "blip.wav"]  # other: too slow
-    world.dispatch("contact_begin", contact(body, other, 4.0))  # body is its own collider
+    world.emit(contact(body, other, 4.0))  # body is its own collider
     app.step(1)
     assert sorted(name for name, _ in plays[2:]) == ["beep.wav", "blip.wav"]
 
@@ -84,11 +84,11 @@ def test_cooldown_limits_replays(store: Assets, monkeypatch: pytest.MonkeyPatch)
     world = app.world
     e = world.spawn(ImpactSound("blip.wav", min_speed=0.0, cooldown=0.1))
     for _ in range(3):
-        world.dispatch("contact_begin", contact(e, 999, 5.0))
+        world.emit(contact(e, 999, 5.0))
         app.step(1)
     assert len(plays) == 1
     app.step(6)  # 0.1 s later
-    world.dispatch("contact_begin", contact(e, 999, 5.0))
+    world.emit(contact(e, 999, 5.0))
     app.step(1)
     assert len(plays) == 2
 
@@ -107,7 +107,6 @@ def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.
     from kge.components.collider import Collider
     from kge.components.rigidbody import RigidBody
     from kge.components.shapes import Box, Circle
-    from kge.physics.events import PhysicsEvents
 
     plays = record_plays(monkeypatch)
     impact = ImpactSound("blip.wav", min_speed=1.5, max_speed=12.0, volume=1.0)
@@ -123,7 +122,7 @@ def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.
     qualifying: list[float] = []
     for _ in range(240):
         app.step(1)
-        for ev in app.world.resource(PhysicsEvents).contact_begin:
+        for ev in app.world.events(ContactBegin):
             if ev.approach_speed >= impact.min_speed:
                 qualifying.append(ev.approach_speed)
     assert len(qualifying) >= 2  # the drop and at least one bounce
