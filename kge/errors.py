@@ -61,6 +61,10 @@ class DisplayError(KgeError, RuntimeError):
     """A window was asked for and the display cannot give one (a stale ``DISPLAY``...)."""
 
 
+class SceneStackError(KgeError, RuntimeError):
+    """A scene-stack change that cannot be made (popping the App's last scene)."""
+
+
 class ScheduleError(KgeError, ValueError):
     """A system's place in the frame is impossible: an unknown set, an anchor in another
     stage, or ``before`` / ``after`` constraints that form a cycle."""
