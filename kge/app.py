@@ -542,6 +542,11 @@ class App(Host):
         """Stop :meth:`run` after the current frame."""
         self._running = False
 
+    @property
+    def running(self) -> bool:
+        """True while :meth:`run` loops (a window, or headless), until ``quit``."""
+        return self._running
+
     def run(self, frames: int | None = None, screenshot: str | None = None) -> None:
         """Open a window and run until it closes (headless: until ``quit`` or ``frames``).
 
