@@ -54,7 +54,6 @@ from __future__ import annotations
 
 import heapq
 import itertools
-import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import IntEnum, StrEnum
@@ -62,6 +61,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
 
 import esper
 
+from kge import deprecation
 from kge.errors import ScheduleError
 
 if TYPE_CHECKING:
@@ -321,12 +321,10 @@ class Schedule:
             legacy = None
         set_name = system.in_set
         if legacy is not None:
-            warnings.warn(
-                f"{_name(system)}.order = {legacy} is deprecated (kge 2.0): place the system "
-                "with in_set = SystemSet.<NAME> and before= / after= (kge schedule prints "
-                "the frame); the integer keeps working for one release",
-                DeprecationWarning,
-                stacklevel=4,
+            deprecation.warn(
+                f"{_name(system)}.order = {legacy}: place the system with "
+                "in_set = SystemSet.<NAME> and before= / after= (kge schedule prints the "
+                "frame); the integer still places it"
             )
             if set_name is None:
                 set_name = _legacy_set(stage, legacy)

@@ -34,7 +34,6 @@ False
 from __future__ import annotations
 
 import itertools
-import warnings
 import weakref
 from collections import defaultdict
 from collections.abc import Callable, Iterator
@@ -43,6 +42,7 @@ from typing import Any, TypeVar, overload
 
 import esper
 
+from kge import deprecation
 from kge.errors import (
     ComponentTypeError,
     EntityNotFoundError,
@@ -588,11 +588,7 @@ class World:
         """
         instead = _DEPRECATED_HANDLERS.get(name)
         if instead is not None:
-            warnings.warn(
-                f"world.set_handler({name!r}, ...) is deprecated (kge 2.0): {instead}",
-                DeprecationWarning,
-                stacklevel=2,
-            )
+            deprecation.warn(f"world.set_handler({name!r}, ...): {instead}")
         self._handlers[name].append(handler)
 
     def remove_handler(self, name: str, handler: Callable[..., Any]) -> None:
@@ -693,9 +689,6 @@ class World:
 
 
 def _warn_deprecated(resource_type: type) -> None:
-    warnings.warn(
-        f"the {resource_type.__name__} resource is deprecated (kge 2.0): "
-        f"{_DEPRECATED_RESOURCES[resource_type]}",
-        DeprecationWarning,
-        stacklevel=3,
+    deprecation.warn(
+        f"the {resource_type.__name__} resource: {_DEPRECATED_RESOURCES[resource_type]}"
     )

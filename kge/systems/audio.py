@@ -16,7 +16,7 @@ Added to a world, the system
 * once a world has an ``ImpactSound``, reads the frame's physics
   ``ContactBegin`` events (``world.events``) and plays an entity's
   ``ImpactSound`` once per contact whose ``approach_speed`` reaches its
-  ``min_speed``, at a volume scaled by the speed.
+  ``hit_threshold``, at a volume scaled by the speed.
 
 It runs in the LATE stage's ``AUDIO`` set, after camera follow, so panning uses this frame's
 camera. Importing this module does not import pyglet; the mixer does, when the
@@ -170,7 +170,7 @@ class AudioSystem(System):
                 continue
             seen.append(entity)
             impact = self.world.try_get(entity, ImpactSound)
-            if impact is not None and speed >= impact.min_speed and impact.gain(speed) > 0:
+            if impact is not None and speed >= impact.hit_threshold and impact.gain(speed) > 0:
                 self._impacts.append((entity, impact, speed, point))
 
     # -- per frame ------------------------------------------------------------------------

@@ -169,7 +169,7 @@ class ParticleTriggers(System):
         particles = world.resource(Particles)
         for mine, sign in ((a, 1.0), (b, -1.0)):
             trig = world.try_get(mine, BurstOnHit)
-            if trig is None or (contact and not trig.contacts) or speed < trig.min_speed:
+            if trig is None or (contact and not trig.contacts) or speed < trig.hit_threshold:
                 continue
             if not world.exists(trig.emitter) or not world.has(trig.emitter, ParticleEmitter):
                 continue

@@ -205,7 +205,7 @@ def test_the_deprecated_integer_order_still_places_a_system() -> None:
             log.append("early")
 
     app = App(lambda world: None, headless=True)
-    with pytest.warns(DeprecationWarning, match=r"Between.order = 250 is deprecated"):
+    with pytest.warns(DeprecationWarning, match=r"Between.order = 250: place the system.*deprecated"):
         app.world.add_system(Between())
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", DeprecationWarning)

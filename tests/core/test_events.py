@@ -173,7 +173,7 @@ def test_contacts_reach_world_events_and_the_deprecated_resource() -> None:
     for _ in range(120):
         app.step(1)
         now = app.world.events(ContactBegin)
-        with pytest.warns(DeprecationWarning, match="PhysicsEvents resource is deprecated"):
+        with pytest.warns(DeprecationWarning, match="the PhysicsEvents resource: read world.events"):
             old = app.world.resource(PhysicsEvents).contact_begin
         assert now == old
         begins += now
