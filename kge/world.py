@@ -217,8 +217,8 @@ class World:
         if self._lock_depth:
             raise WorldLockedError(
                 f"world.{op}() inside a physics callback: the world is locked during the "
-                "step (as in Box2D). Queue the change from a Behaviour hook or read "
-                "PhysicsEvents after the step instead."
+                "step (as in Box2D). Make the change from a Behaviour hook (on_contact_begin...) "
+                "or a system after the step instead."
             )
         if self._closed:
             raise WorldLockedError(f"world.{op}() on a closed world ({self.name})")
