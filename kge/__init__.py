@@ -153,6 +153,7 @@ if TYPE_CHECKING:
     from kge.audio import Audio, SoundHandle
     from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.export import ExportError
     from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
@@ -174,6 +175,7 @@ _LAZY = {
     "Assets": "kge.assets",
     "DecoderMissingError": "kge.assets",
     "ScaffoldError": "kge.scaffold",
+    "ExportError": "kge.export",
     "GoldenMismatch": "kge.testing",
     "StepTimeout": "kge.testing",
     "Audio": "kge.audio",
@@ -264,6 +266,7 @@ __all__ = [
     "EmitLine",
     "EmitPoint",
     "EntityNotFoundError",
+    "ExportError",
     "Filter",
     "FixedTimestep",
     "FrameRef",
