@@ -151,9 +151,9 @@ if TYPE_CHECKING:
         DecoderMissingError,
     )
     from kge.audio import Audio, SoundHandle
+    from kge.export import ExportError
     from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
-    from kge.export import ExportError
     from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin

@@ -54,7 +54,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from enum import IntEnum, StrEnum
 from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
@@ -463,7 +463,7 @@ class Schedule:
                 lo, hi = (x, y) if (x.legacy or 0) < (y.legacy or 0) else (y, x)
                 graph.edge(("system", id(lo.system)), ("system", id(hi.system)))
         names = {("system", id(e.system)): _name(e.system) for e in mine}
-        ordered = graph.sort(lambda n: names.get(n) or f"set {n[1]!r} ({n[0]})", stage)
+        ordered = graph.sort(lambda n: names.get(n) or f"set {n[1]!r} ({n[0]})", stage.name)
         by_id = {id(e.system): e.system for e in mine}
         systems = [by_id[n[1]] for n in ordered if n[0] == "system"]
         ties = [
@@ -505,6 +505,27 @@ class Schedule:
         return [("system", id(e.system)) for e in found if e is not entry]
 
 
+def order_items(
+    labels: Sequence[str], edges: Iterable[tuple[int, int]], what: str
+) -> tuple[list[int], list[tuple[int, int]]]:
+    """Indices of ``labels`` in an order honouring ``edges`` (a, b: a runs first), ties
+    broken by index, and the consecutive pairs nothing orders (the ties).
+
+    The same rules as the schedule's, for other ordered lists (render passes). A cycle
+    raises :class:`~kge.errors.ScheduleError` naming ``what`` and the labels on it.
+
+    >>> order_items(["lights", "tiles", "particles"], [(1, 0)], "pass")
+    ([1, 0, 2], [(0, 2)])
+    """
+    graph = _Graph()
+    for i in range(len(labels)):
+        graph.node(i, (0.0, 0, i))
+    for a, b in edges:
+        graph.edge(a, b)
+    order = graph.sort(lambda n: labels[n], what)
+    return order, [(a, b) for a, b in itertools.pairwise(order) if not graph.reaches(a, b)]
+
+
 def _legacy_set(stage: Stage, order: int) -> SystemSet:
     """The set a deprecated integer ``order`` stands for (see ``_LEGACY_ORDER``)."""
     table = _LEGACY_ORDER[stage]
@@ -530,7 +551,7 @@ class _Graph:
         self.succ.setdefault(a, set()).add(b)
         self.succ.setdefault(b, set())
 
-    def sort(self, label: Any, stage: Stage) -> list[Any]:
+    def sort(self, label: Any, what: str) -> list[Any]:
         indegree = dict.fromkeys(self.succ, 0)
         for targets in self.succ.values():
             for t in targets:
@@ -550,7 +571,7 @@ class _Graph:
         if len(out) < len(self.succ):
             cycle = self._cycle({n for n, d in indegree.items() if d})
             raise ScheduleError(
-                f"the {stage.name} order has a cycle: "
+                f"the {what} order has a cycle: "
                 + " -> ".join(label(n) for n in cycle)
                 + " (check in_set, before= and after=)"
             )

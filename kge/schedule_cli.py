@@ -26,6 +26,7 @@ from typing import Any
 
 from kge.app import App
 from kge.plugin import PluginLike
+from kge.render.passes import RenderPasses
 
 
 def _load(ref: str, what: str) -> Any:
@@ -68,10 +69,19 @@ def frame_table(
                       for st, a, b in ties]  # fmt: skip
         else:
             lines.append("ties: none (every pair of systems is ordered)")
+        passes = world.try_resource(RenderPasses)
+        if passes is not None:
+            lines.append(
+                "render passes: before the batch: "
+                + (", ".join(passes.names("before")) or "none")
+                + "; after it: "
+                + (", ".join(passes.names("after")) or "none")
+            )
+            lines += [f"  pass TIE ({phase}): {a} then {b}" for phase, a, b in passes.ties()]
         if not render and app.frontend is not None:
             lines.append(
-                "drawing: App.render() adds RenderStepClock (FIXED, first), "
-                "RenderStepRecorder (FIXED, last) and RenderSystem (RENDER, draw); "
+                "drawing: App.render() adds RenderStepClock (FIXED, FIRST), "
+                "RenderStepRecorder (FIXED, LAST) and RenderSystem (RENDER, DRAW); "
                 "--render shows them"
             )
         return "\n".join(lines)

@@ -400,4 +400,4 @@ class AnimationPlugin(Plugin):
             TweenSystem(), ShakeApply(),
         ):  # fmt: skip
             world.add_system(system)
-        passes_for(world).add(_AtlasPass(world, anims), phase="before", order=-100)
+        passes_for(world).add(_AtlasPass(world, anims), phase="before", name="animation")

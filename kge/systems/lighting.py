@@ -59,7 +59,9 @@ class LightingPlugin(Plugin):
                 lm = holder["map"] = LightMap(world, frame.batch, frame.groups, occluders)
             lm.draw(frame, lighting)
 
-        passes_for(world).add(draw, phase="before", order=200)
+        passes_for(world).add(
+            draw, phase="before", name="lighting", after=["animation", "tilemap", "particles"]
+        )
         world.add_system(_LightMapOwner(holder))
 
 

@@ -263,4 +263,6 @@ class ParticlesPlugin(Plugin):
                 d = drawer["d"] = ParticleDrawer(world, frame.batch, frame.groups)
             d.draw(frame)
 
-        passes_for(world).add(draw, phase="before", order=100)
+        passes_for(world).add(
+            draw, phase="before", name="particles", after=["animation", "tilemap"]
+        )

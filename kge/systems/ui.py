@@ -105,7 +105,7 @@ class UIPlugin(Plugin):
 
             draw_ui(frame, world)
 
-        passes_for(world).add(draw, phase="after", order=1000)
+        passes_for(world).add(draw, phase="after", name="ui")
 
 
 def focus(world: World, entity: int | None) -> None:

@@ -257,3 +257,24 @@ def test_the_architecture_page_shows_the_live_frame() -> None:
     assert shown is not None
     app = App(lambda world: None, headless=True)
     assert shown.group(1) == app.world.schedule.describe(plugins=True)
+
+
+def test_render_passes_run_in_named_order_with_no_tie() -> None:
+    from kge.render.passes import RenderPasses
+
+    app = App(lambda world: None, headless=True)
+    passes = app.world.resource(RenderPasses)
+    assert passes.names("before") == ["animation", "tilemap", "particles", "lighting"]
+    assert passes.names("after") == ["ui"]
+    assert passes.ties() == []
+    log: list[str] = []
+    passes.add(lambda frame: log.append("fog"), phase="before", name="fog",
+               after=["particles"], before=["lighting"])  # fmt: skip
+    assert passes.names("before")[-2:] == ["fog", "lighting"]
+    with pytest.raises(ScheduleError, match="cycle"):
+        passes.add(print, name="loop", after=["lighting"], before=["animation"])
+    assert "loop" not in passes.names("before")
+    with pytest.warns(DeprecationWarning, match=r"RenderPasses.add\(order=150\)"):
+        passes.add(lambda frame: None, name="old", order=150)  # between particles and lights
+    names = passes.names("before")
+    assert names.index("particles") < names.index("old") < names.index("lighting")
