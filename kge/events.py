@@ -35,6 +35,7 @@ Inside an :class:`~kge.app.App` nothing else is needed. A bare World run by hand
 from __future__ import annotations
 
 from bisect import bisect_left
+from collections.abc import Callable
 from typing import Any, TypeVar
 
 T = TypeVar("T")
@@ -122,6 +123,27 @@ class EventLog:
 
     def leave(self, outer: int | None) -> None:
         self._start = outer
+
+    def run(
+        self,
+        systems: list[Any],
+        fixed: bool,
+        call: Callable[[Callable[[float], None], float], None],
+        dt: float,
+    ) -> None:
+        """``call(system.process, dt)`` for each system, each reading from its own
+        position (:meth:`enter` / :meth:`leave` inlined: this runs every stage)."""
+        marks = self._marks
+        fallback = self._prev_step_start if fixed else self._prev_frame_start
+        outer = self._start
+        try:
+            for system in systems:
+                key = id(system)
+                self._start = marks.get(key, fallback)
+                marks[key] = self._next
+                call(system.process, dt)
+        finally:
+            self._start = outer
 
     def forget(self, system: object) -> None:
         """``system`` left the schedule."""

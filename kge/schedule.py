@@ -360,14 +360,7 @@ class Schedule:
     def run(self, stage: Stage, dt: float) -> None:
         """Run every system of ``stage`` in order, flushing queued changes after each."""
         world = self.world
-        log = world.eventlog
-        fixed = stage is Stage.FIXED
-        for system in self._order[stage]:
-            outer = log.enter(system, fixed)
-            try:
-                world.run_deferred(system.process, dt)
-            finally:
-                log.leave(outer)
+        world.eventlog.run(self._order[stage], stage is Stage.FIXED, world.run_deferred, dt)
 
     def systems(self, stage: Stage | None = None) -> list[System]:
         """The systems of ``stage`` in the order they run (all stages, in frame order)."""
