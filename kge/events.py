@@ -109,21 +109,6 @@ class EventLog:
         return items[bisect_left(serials, start) :]
 
     # -- reading positions (the schedule) ---------------------------------------------------
-    def enter(self, system: object, fixed: bool) -> int | None:
-        """``system`` starts running: it reads from where it began last time. Returns
-        the previous reader's window, for :meth:`leave`."""
-        outer = self._start
-        key = id(system)
-        mark = self._marks.get(key)
-        if mark is None:  # its first run: one cycle back
-            mark = self._prev_step_start if fixed else self._prev_frame_start
-        self._marks[key] = self._next
-        self._start = mark
-        return outer
-
-    def leave(self, outer: int | None) -> None:
-        self._start = outer
-
     def run(
         self,
         systems: list[Any],
@@ -131,8 +116,9 @@ class EventLog:
         call: Callable[[Callable[[float], None], float], None],
         dt: float,
     ) -> None:
-        """``call(system.process, dt)`` for each system, each reading from its own
-        position (:meth:`enter` / :meth:`leave` inlined: this runs every stage)."""
+        """``call(system.process, dt)`` for each system, in order. While a system runs,
+        it reads the events emitted since it began last time (on its first run: since
+        the previous step or frame began)."""
         marks = self._marks
         fallback = self._prev_step_start if fixed else self._prev_frame_start
         outer = self._start
