@@ -30,9 +30,9 @@ from kge import (
     Key,
     MapObject,
     Physics,
-    PhysicsEvents,
     RigidBody,
     Script,
+    SensorBegin,
     Spawn,
     Spawners,
     Text,
@@ -80,7 +80,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             for a, b in ((ev.collider_a, ev.collider_b), (ev.collider_b, ev.collider_a)):
                 if not (world.exists(a) and world.exists(b)) or not world.has(a, Behaviour):
                     continue

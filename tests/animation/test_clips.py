@@ -15,6 +15,7 @@ from kge import (
     Behaviour,
     Camera,
     Clip,
+    Loop,
     MissingComponentError,
     Script,
     Sprite,
@@ -162,10 +163,10 @@ class Listener(Script):
 
 
 def test_finished_event_hooks_queue_and_end_transition(sheet: Any) -> None:
-    attack = Clip.grid(sheet, (4, 1), frames=[2, 3], duration=0.1, loop="once",
+    attack = Clip.grid(sheet, (4, 1), frames=[2, 3], duration=0.1, loop=Loop.ONCE,
                        events={1: "hit"})
     idle = Clip.grid(sheet, (4, 1), frames=[0], duration=0.1)
-    rest = Clip.grid(sheet, (4, 1), frames=[1], duration=0.1, loop="hold")
+    rest = Clip.grid(sheet, (4, 1), frames=[1], duration=0.1, loop=Loop.HOLD)
     script = Listener()
 
     def setup(world: World) -> None:
