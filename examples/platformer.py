@@ -103,7 +103,7 @@ class Referee(Script):
 def _hud(world: World) -> None:
     score = world.resource(Score)
     for _, (t,) in world.query(Text):
-        t.value = f"level {score.level}   coins {score.coins}"
+        t.text = f"level {score.level}   coins {score.coins}"
 
 
 def player_start(spawn: Spawn) -> list[Any]:

@@ -81,7 +81,7 @@ class Score(Script):
 
     def add(self) -> None:
         self.points += 1
-        self.get(Text).value = str(self.points)
+        self.get(Text).text = str(self.points)
         self.world.resource(Tweens).start(self.entity, SCORE_POP)  # the number pops
         if self.hud is not None:  # the HUD corner shows it, and pops the same way
             self.world.get(self.hud, kge.Label).text = f"{self.side}  {self.points}"
@@ -297,7 +297,7 @@ def main() -> None:
         app.input.press(Key.SPACE)
         app.step(2)
         app.step(60 * 8)
-        scores = {n.value: t.value for _, (n, t) in app.world.query(Name, Text)
+        scores = {n.value: t.text for _, (n, t) in app.world.query(Name, Text)
                   if n.value.startswith("score")}
         print(f"kge {kge.__version__} pong, 8 s headless with an idle player: {scores}")
         app.screenshot("out/pong.png")

@@ -293,8 +293,8 @@ class Hud(Script):
         if ships:
             self.score = ships[0][1][1].script.score
         text = f"Score : {self.score}"
-        if self.get(Text).value != text:
-            self.get(Text).value = text
+        if self.get(Text).text != text:
+            self.get(Text).text = text
             if self.label is not None:
                 self.world.get(self.label, kge.Label).text = text
 
@@ -379,7 +379,7 @@ def main() -> None:
                 app.input.move_mouse(*app.world_to_screen((t.x, t.y)))
             app.step()
         hud = next(t for _, (n, t) in app.world.query(Name, Text) if n.value == "score")
-        print(f"kge {kge.__version__} shooter, 10 s headless with auto-aim: {hud.value}")
+        print(f"kge {kge.__version__} shooter, 10 s headless with auto-aim: {hud.text}")
         app.screenshot("out/shooter.png")
         print("screenshot: out/shooter.png")
         app.close()

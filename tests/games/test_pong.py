@@ -7,7 +7,7 @@ from kge.testbed.samples.build import named
 
 
 def score(app: App, who: str) -> str:
-    return app.world.get(named(app.world, f"score-{who}")[0], Text).value
+    return app.world.get(named(app.world, f"score-{who}")[0], Text).text
 
 
 def start(seed: int = 1) -> App:

@@ -105,7 +105,7 @@ def test_the_list_opens_only_the_current_category() -> None:
     from kge.testbed import all_samples
 
     app = open_testbed("hello-world")
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     categories = sorted({s.category for s in all_samples()})
     basics = [s.name for s in all_samples() if s.category == "Basics"]
     assert len(texts) == len(categories) + len(basics)  # one line per closed category
@@ -118,12 +118,12 @@ def test_the_list_opens_only_the_current_category() -> None:
 
 def test_clicking_the_list_switches_sample_and_category() -> None:
     app = open_testbed("hello-world")
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     basics = texts.index("- Basics")  # then "> Hello World", "  Tumbler"
     app.input.click(Mouse.LEFT, at=row_at(app, basics + 2))
     app.step()
     assert app.scene.name == "Tumbler"
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     joints = next(i for i, t in enumerate(texts) if t.startswith("+ Joints"))
     app.input.click(Mouse.LEFT, at=row_at(app, joints))
     app.step()
