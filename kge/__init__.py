@@ -113,6 +113,18 @@ from kge.plugin import FunctionPlugin, Plugin, PluginError
 from kge.plugins import default_plugins
 from kge.scene import Scene, Time
 from kge.scene_carry import RestoreWarning
+from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md)
+    SceneFile,
+    SceneFileError,
+    instantiate,
+    load_game,
+    load_scene,
+    register_script,
+    register_type,
+    save_game,
+    save_prefab,
+    save_scene,
+)
 from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import SnapshotError
 from kge.sound import SoundData
@@ -328,6 +340,8 @@ __all__ = [
     "RopeJoint",
     "ScaffoldError",
     "Scene",
+    "SceneFile",
+    "SceneFileError",
     "SceneStackError",
     "ScheduleError",
     "Script",
@@ -373,8 +387,16 @@ __all__ = [
     "from_array",
     "gif_clip",
     "has_display",
+    "instantiate",
+    "load_game",
     "load_map",
+    "load_scene",
+    "register_script",
+    "register_type",
     "run",
+    "save_game",
+    "save_prefab",
+    "save_scene",
     "shake",
     "solid",
 ]
