@@ -34,6 +34,7 @@ Inside an :class:`~kge.app.App` nothing else is needed. A bare World run by hand
 
 from __future__ import annotations
 
+import heapq
 from bisect import bisect_left
 from collections.abc import Callable
 from typing import Any, TypeVar
@@ -107,6 +108,18 @@ class EventLog:
         if serials[0] >= start:
             return list(items)
         return items[bisect_left(serials, start) :]
+
+    def read_many(self, event_types: tuple[type, ...]) -> list[Any]:
+        """The events of any of ``event_types`` the current reader may see, in the order
+        they were emitted."""
+        start = self._outside if self._start is None else self._start
+        runs = []
+        for kind in dict.fromkeys(event_types):  # each type once
+            entry = self._types.get(kind)
+            if entry is not None and entry[0] and entry[0][-1] >= start:
+                i = bisect_left(entry[0], start)
+                runs.append(zip(entry[0][i:], entry[1][i:], strict=True))
+        return [event for _, event in heapq.merge(*runs, key=lambda pair: pair[0])]
 
     # -- reading positions (the schedule) ---------------------------------------------------
     def run(

@@ -641,15 +641,26 @@ class World:
         """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`)."""
         self.eventlog.emit(event)
 
-    def events(self, event_type: type[T]) -> list[T]:
+    @overload
+    def events(self, event_type: type[T], /) -> list[T]: ...
+    @overload
+    def events(self, *event_types: type) -> list[Any]: ...
+    def events(self, *event_types: type) -> list[Any]:
         """The events of ``event_type`` this code may read: those emitted since the same
         point of the previous fixed step (in fixed-step code) or frame (elsewhere).
 
         Reading never consumes: every reader sees every event (see :mod:`kge.events`).
+        With several types, their events together, in the order they were emitted
+        (``world.events(ButtonClicked, ValueChanged)``).
         """
-        if not isinstance(event_type, type):
-            _check_type(event_type, "events")
-        return self.eventlog.read(event_type)
+        for t in event_types:
+            if not isinstance(t, type):
+                _check_type(t, "events")
+        if len(event_types) == 1:
+            return self.eventlog.read(event_types[0])
+        if not event_types:
+            raise ComponentTypeError("world.events(): name at least one event type")
+        return self.eventlog.read_many(event_types)
 
     def clear_events(self) -> None:
         """Drop every event now (a bare World stepped by hand; an App needs no call)."""

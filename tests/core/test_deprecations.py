@@ -5,6 +5,7 @@ an unknown string is still refused at the call."""
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import pytest
 
@@ -68,3 +69,26 @@ def test_raycast_modes_are_an_enum_with_typed_results() -> None:
         assert physics.raycast((0, 10), (0, -10), mode="all") == every
     with pytest.raises(ValidationError, match="mode must be one of RayMode.CLOSEST"):
         physics.raycast((0, 10), (0, -10), mode="nearest")
+
+
+def test_enum_choices_round_trip_through_scene_files(tmp_path: Path) -> None:
+    """Scene files write an enum by its member's name; a file from before the enum (the
+    plain string value) still loads, as the member."""
+    from kge import load_scene, save_scene
+
+    def fresh() -> World:
+        return App(lambda world: None, headless=True).world
+
+    world = fresh()
+    world.spawn(Transform(), ParticleEmitter(blend=Blend.ADDITIVE, collide=ParticleCollision.DIE))
+    path = save_scene(world, tmp_path / "fx.scene.toml")
+    text = path.read_text()
+    assert 'blend = "ADDITIVE"' in text and 'collide = "DIE"' in text
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)
+        for source in (text, text.replace('"ADDITIVE"', '"additive"')):
+            target = fresh()
+            path.write_text(source)
+            (entity,) = load_scene(target, path)
+            emitter = target.get(entity, ParticleEmitter)
+            assert emitter.blend is Blend.ADDITIVE and emitter.collide is ParticleCollision.DIE

@@ -193,3 +193,17 @@ def test_the_deprecated_resources_and_handler_names_warn_but_work() -> None:
     for resource in (AnimationEvents, UIEvents):
         with pytest.warns(DeprecationWarning, match=f"{resource.__name__} resource"):
             app.world.resource(resource)
+
+
+@dataclass(frozen=True)
+class Tock:
+    n: int
+
+
+def test_several_types_are_read_together_in_emission_order() -> None:
+    world = World()
+    for event in (Tick(1), Tock(2), Tick(3), Tock(4), Tock(5)):
+        world.emit(event)
+    assert world.events(Tick, Tock) == [Tick(1), Tock(2), Tick(3), Tock(4), Tock(5)]
+    assert world.events(Tock, Tick, Tock) == world.events(Tick, Tock)
+    assert world.events(Tock) == [Tock(2), Tock(4), Tock(5)]

@@ -37,12 +37,11 @@ class _Status(Script):
 
     def on_update(self, dt: float) -> None:
         world = self.world
-        for kind in (ButtonClicked, ValueChanged, TextSubmitted):
-            for ev in world.events(kind):
-                shown = getattr(ev, "value", getattr(ev, "text", ""))
-                if isinstance(shown, float):
-                    shown = round(shown, 2)
-                world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
+        for ev in world.events(ButtonClicked, ValueChanged, TextSubmitted):  # in order
+            shown = getattr(ev, "value", getattr(ev, "text", ""))
+            if isinstance(shown, float):
+                shown = round(shown, 2)
+            world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
 
 
 def _root(world: World) -> int:
