@@ -130,6 +130,7 @@ from kge.snapshot import SnapshotError
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
+from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
 from kge.world import World
@@ -281,6 +282,7 @@ __all__ = [
     "ExportError",
     "Filter",
     "FixedTimestep",
+    "FontWarning",
     "FrameRef",
     "FrictionJoint",
     "FunctionPlugin",
