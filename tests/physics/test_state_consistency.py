@@ -51,7 +51,7 @@ def test_an_extreme_gravity_scale_leaves_poses_finite(gravity: float, scale: flo
 
 
 @pytest.mark.parametrize("joint", ["prismatic", "wheel", "revolute"])
-@pytest.mark.parametrize(("speed", "force"), [(1e308, 1e308), (-1e308, 1e308), (1e308, 1e300)])
+@pytest.mark.parametrize(("speed", "force"), [(1e308, 1e308), (-1e308, 1e308), (1e308, 1e300), (5.0, 1e308), (-5.0, 1e308)])
 def test_extreme_motor_speeds_and_forces_leave_poses_finite(
     joint: str, speed: float, force: float
 ) -> None:
@@ -129,6 +129,70 @@ def test_a_begin_naming_an_entity_despawned_earlier_in_the_delivery_is_not_deliv
     assert not any(ball in pair for pair in scripts[0].seen for ball in others)
     # every end a handler sees follows a begin it saw
     assert sorted(ends) == sorted(p for p in begins if p in ends) and (2, first) in ends
+    app.close()
+
+
+class _SensorSweeper(Script):
+    """A sensor zone (or a plank reporting hits) that, at its first begin, despawns
+    every ball; it records every sensor begin, sensor end and hit it is given."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.balls: list[int] = []
+        self.seen: list[tuple[str, int]] = []
+
+    def _record(self, kind: str, event: object) -> None:
+        self.seen.append((kind, event.collider_b))  # type: ignore[attr-defined]
+        if kind != "end":
+            for e in self.balls:
+                if self.world.exists(e):
+                    self.world.despawn(e)
+
+    def on_sensor_begin(self, event: object) -> None:
+        self._record("begin", event)
+
+    def on_sensor_end(self, event: object) -> None:
+        self._record("end", event)
+
+    def on_hit(self, event: object) -> None:
+        self._record("hit", event)
+
+
+@pytest.mark.parametrize("kind", ["sensor", "hit"])
+def test_sensor_begins_and_hits_naming_a_despawned_entity_are_not_delivered(kind: str) -> None:
+    """Three balls enter a sensor (or hit a plank) in one step: the hook of the first
+    despawns all three; the other two begins (hits) never reach a hook, nor the sensor
+    ends their despawn brings, while ``world.events`` keeps the step's whole record."""
+    from kge.physics.events import Hit, SensorBegin
+
+    ids: dict[str, list[int]] = {}
+    scripts: list[_SensorSweeper] = []
+    recorded: list[int] = []
+
+    def level(world: World) -> None:
+        sweeper = _SensorSweeper()
+        scripts.append(sweeper)
+        zone = (Collider(Box(3.0, 0.1), sensor=True) if kind == "sensor"
+                else Collider(Box(3.0, 0.1), hit_threshold=1.0))
+        world.spawn(Transform(0.0, 0.6), zone, Behaviour(sweeper))
+        sweeper.balls = ids["balls"] = [
+            world.spawn(Transform(-1.0 + i, 1.5), RigidBody(velocity=(0.0, -5.0)),
+                        Collider(Circle(0.2))) for i in range(3)
+        ]
+
+    app = App(level, headless=True)
+    for _ in range(30):
+        app.step()
+        kinds = (SensorBegin,) if kind == "sensor" else (Hit,)
+        recorded += [ev.collider_b for k in kinds for ev in app.world.events(k)]
+    first, *others = ids["balls"]
+    seen = scripts[0].seen
+    begin = "begin" if kind == "sensor" else "hit"
+    assert (begin, first) in seen
+    assert not any(ball in others for _, ball in seen), seen
+    if kind == "sensor":
+        assert seen.count(("end", first)) == 1  # the despawn brings the first ball's end
+    assert sorted(recorded) == sorted(ids["balls"])  # the record keeps all three
     app.close()
 
 
