@@ -26,7 +26,7 @@ TOLERANCE = SLOP + 0.001  # the linear slop plus 1 mm
 SKIN = 0.01
 FACE = 5.0
 SPEEDS = (1.0, 3.0, 6.0, 12.0, 30.0, 60.0)
-SUBSTEPS = (1, 2, 4, 8)
+SUBSTEPS = tuple(range(1, 9))
 #: where the skinned face of the wall behind the pressed crate starts (at the slop)
 WALL_BEHIND = FACE + 1.0 + 2 * SKIN - SLOP
 
