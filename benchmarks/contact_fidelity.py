@@ -1,13 +1,14 @@
 """Box2D fidelity of contacts and sleep: velocity writes, landings, jointed islands.
 
 Measures, on kge alone (imports nothing but kge, so the same file measures any
-checkout: ``PYTHONPATH=path/to/kge python benchmarks/contact_depth.py``):
+checkout: ``PYTHONPATH=path/to/kge python benchmarks/contact_fidelity.py``):
 
 * **walk**: a body whose ``RigidBody.velocity`` (or an impulse to that velocity) is
   written every step, walking into a wall: a static box 3 m thick, an edge, a chain
   of either winding, a dynamic box pressed against a static wall and a free dynamic
-  box. Speeds 1-60 m/s, 1-8 substeps, a box and a circle.
-* **land**: a box or circle landing on the ground at 0.2-50 m/s.
+  box. Speeds 1-60 m/s, a box and a circle; every substep count 1-8 against the
+  static box wall (the other walls at 1, 2, 4 and 8).
+* **land**: a box or circle landing on the ground at 0.2-50 m/s, 1-8 substeps.
 * **sleep**: the step at which bodies held by each joint type, starting at rest,
   fall asleep (pybox2d 2.3.10 on the same scenes: 30 steps, the wheel 113).
 
@@ -17,6 +18,9 @@ after each step: what a pre-solve hook, a renderer or a query sees. Box2D holds 
 velocity written every step at its linear slop, 0.005 m.
 
 ``python benchmarks/contact_fidelity.py --out benchmarks/results/contact-fidelity-after.json``
+(and, with a checkout before a change on ``PYTHONPATH``, ``...-before.json``);
+``python benchmarks/contact_fidelity.py --markdown BEFORE.json AFTER.json`` prints the
+tables of ``benchmarks/results/contact-fidelity.md``.
 """
 
 from __future__ import annotations
@@ -44,6 +48,8 @@ SKIN = 0.01
 FACE = 5.0  # x of the wall's face the walker meets
 SPEEDS = (1.0, 3.0, 6.0, 12.0, 30.0, 60.0)
 SUBSTEPS = (1, 2, 4, 8)
+#: against the static box wall and on landings: every substep count
+ALL_SUBSTEPS = tuple(range(1, 9))
 WALLS = ("box", "edge", "chain-ccw", "chain-cw", "pressed-box", "free-box")
 LANDINGS = (0.2, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 50.0)
 
@@ -203,13 +209,14 @@ def _table(fn: Callable[..., dict[str, float]], rows: list[dict[str, Any]]) -> l
 def measure(quick: bool = False) -> dict[str, Any]:
     speeds = (6.0, 60.0) if quick else SPEEDS
     subs = (1, 4) if quick else SUBSTEPS
+    every = (1, 4) if quick else ALL_SUBSTEPS
     walls = ("box", "edge") if quick else WALLS
     walks = [dict(speed=v, substeps=n, wall=wl, mover=m, mode=mode)
              for wl in walls for m in ("box", "circle") for mode in ("velocity", "impulse")
-             for v in speeds for n in subs
+             for v in speeds for n in (every if wl == "box" else subs)
              if mode == "velocity" or (wl == "box" and m == "box")]
     lands = [dict(speed=v, substeps=n, mover=m) for m in ("box", "circle")
-             for v in (LANDINGS[:3] if quick else LANDINGS) for n in subs]
+             for v in (LANDINGS[:3] if quick else LANDINGS) for n in every]
     kinds = ("distance", "revolute", "prismatic", "pulley", "weld", "wheel", "rope")
     sleeps = [dict(kind=k) for k in kinds]
     return {
@@ -217,11 +224,97 @@ def measure(quick: bool = False) -> dict[str, Any]:
     }
 
 
+def _mm(row: dict[str, Any] | None, key: str = "max") -> str:
+    """A depth in mm (in m from a metre on), T when the walker's centre passed the face."""
+    if row is None:
+        return "-"
+    d = row[key]
+    text = f"{d:.2f} m" if d >= 1.0 else f"{d * 1000:.1f}"
+    return text + (" T" if row.get("tunnelled") else "")
+
+
+def _grid(before: list[dict[str, Any]], after: list[dict[str, Any]], cell: Callable[..., str],
+          first: str, **match: Any) -> list[str]:
+    """One before → after table: a row per speed, a column per substep count."""
+    def pick(rows: list[dict[str, Any]]) -> dict[tuple[float, int], dict[str, Any]]:
+        return {(r["speed"], r["substeps"]): r for r in rows
+                if all(r.get(k) == v for k, v in match.items())}
+
+    b, a = pick(before), pick(after)
+    speeds = sorted({v for v, _ in a})
+    subs = sorted({n for _, n in a})
+    head = [f"{n} substep{'s' if n > 1 else ''} before → after" for n in subs]
+    lines = [f"| {first} | " + " | ".join(head) + " |",
+             "|---:|" + "---:|" * len(subs)]
+    for v in speeds:
+        cells = [f"{cell(b.get((v, n)))} → {cell(a.get((v, n)))}" for n in subs]
+        lines.append(f"| {v:g} | " + " | ".join(cells) + " |")
+    return lines
+
+
+def markdown(before: dict[str, Any], after: dict[str, Any]) -> str:
+    """The before → after tables of ``benchmarks/results/contact-fidelity.md``."""
+    walk_tables = [
+        ("Box walking into a static box wall 3 m thick, velocity written every step: "
+         "deepest overlap", dict(wall="box", mover="box", mode="velocity"), "max"),
+        ("Same, steady state (deepest over the last half second)",
+         dict(wall="box", mover="box", mode="velocity"), "steady"),
+        ("Impulse to the walking speed every step (box wall)",
+         dict(wall="box", mover="box", mode="impulse"), "max"),
+        ("Box walking into an edge", dict(wall="edge", mover="box", mode="velocity"), "max"),
+        ("Box walking into a chain (ccw winding)",
+         dict(wall="chain-ccw", mover="box", mode="velocity"), "max"),
+        ("Box walking into a chain (cw winding)",
+         dict(wall="chain-cw", mover="box", mode="velocity"), "max"),
+        ("Circle walking into a static box wall",
+         dict(wall="box", mover="circle", mode="velocity"), "max"),
+        ("Box pressing a 1 kg crate against a static wall (walker-crate and crate-wall, "
+         "deepest)", dict(wall="pressed-box", mover="box", mode="velocity"), "max"),
+        ("Box pushing a free 1 kg crate (deepest walker-crate overlap, first touch included)",
+         dict(wall="free-box", mover="box", mode="velocity"), "max"),
+    ]
+    out: list[str] = []
+    for title, match, key in walk_tables:
+        out += [f"### {title}", ""]
+        out += _grid(before["walk"], after["walk"], lambda r, k=key: _mm(r, k),
+                     "speed m/s", **match)
+        out.append("")
+
+    def landing(r: dict[str, Any] | None) -> str:
+        return "-" if r is None else f"{r['max'] * 1000:.1f}/{r['rest'] * 1000:.1f}"
+
+    for mover in ("box", "circle"):
+        out += [f"### {mover.capitalize()} thrown down onto the ground from 5 cm: "
+                "deepest / resting overlap (mm)", ""]
+        out += _grid(before["land"], after["land"], landing, "speed m/s", mover=mover)
+        out.append("")
+
+    def asleep(rows: list[dict[str, Any]], kind: str) -> str:
+        at = next((r["asleep_step"] for r in rows if r["kind"] == kind), None)
+        return "-" if at is None else "never (600 steps)" if at < 0 else f"{at:.0f}"
+
+    out += ["### Jointed bodies at rest: step at which they fall asleep "
+            "(pybox2d 2.3.10: 30; wheel 113)", "", "| joint | before | after |", "|---|---:|---:|"]
+    for r in after["sleep"]:
+        out.append(f"| {r['kind']} | {asleep(before['sleep'], r['kind'])} | "
+                   f"{asleep(after['sleep'], r['kind'])} |")
+    return "\n".join(out)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=(__doc__ or "").split("\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--out", help="write the results as JSON here")
+    parser.add_argument("--markdown", nargs=2, metavar=("BEFORE", "AFTER"),
+                        help="print the before → after tables of two result files")
     args = parser.parse_args(argv)
+    if args.markdown:
+        loaded = []
+        for path in args.markdown:
+            with open(path, encoding="utf-8") as f:
+                loaded.append(json.load(f))
+        print(markdown(*loaded))
+        return 0
     result = measure(args.quick)
     # one row per line: diffable, and a tenth of an indented dump
     text = "{\n" + ",\n".join(
