@@ -58,7 +58,8 @@ from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 
 # particles and lights (issue 18): components here, plugins and the resource on first use
-from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
+from kge.components.material import Material, Shader, ShaderWarning
 from kge.components.particles import (
     BurstOnHit,
     EmitBox,
@@ -69,9 +70,11 @@ from kge.components.particles import (
     ParticleBurst,
     ParticleEmitter,
 )
+from kge.components.post import CRT, Bloom, ColorGrade, Vignette
+from kge.components.resolution import Resolution
 from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
-from kge.components.text import Text
+from kge.components.text import Text, TextStyle
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
 from kge.components.tween import Delay, Parallel, Sequence, Tween
 from kge.coroutines import Coroutine, Wait, WaitFrames
@@ -138,7 +141,14 @@ if TYPE_CHECKING:
     from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
     from kge.audio import Audio, SoundHandle
     from kge.particles import Particles
-    from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.render.images import (
+        ImageRegion,
+        PixelImage,
+        RenderTexture,
+        checker,
+        from_array,
+        solid,
+    )
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.lighting import LightingPlugin
@@ -159,6 +169,8 @@ _LAZY = {
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
+    "ImageRegion": "kge.render.images",
+    "RenderTexture": "kge.render.images",
     "checker": "kge.render.images",
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
@@ -189,6 +201,7 @@ def __getattr__(name: str) -> Any:
 __version__ = "2.0.0a1"
 
 __all__ = [
+    "CRT",
     "AnimationEvent",
     "AnimationEvents",
     "AnimationFinished",
@@ -206,6 +219,7 @@ __all__ = [
     "AudioSource",
     "Behaviour",
     "BehaviourPlugin",
+    "Bloom",
     "BodyType",
     "Box",
     "BurstOnHit",
@@ -215,12 +229,14 @@ __all__ = [
     "Circle",
     "Clip",
     "Collider",
+    "ColorGrade",
     "ComponentTypeError",
     "ContactBegin",
     "ContactEnd",
     "Coroutine",
     "DebugDraw",
     "Delay",
+    "DirectionalLight",
     "DistanceJoint",
     "Edge",
     "EmitBox",
@@ -237,6 +253,7 @@ __all__ = [
     "GearJoint",
     "Hit",
     "HookSignatureError",
+    "ImageRegion",
     "ImpactSound",
     "Input",
     "Joint",
@@ -250,6 +267,7 @@ __all__ = [
     "LightingPlugin",
     "MapObject",
     "MassData",
+    "Material",
     "MissingComponentError",
     "MissingResourceError",
     "Mod",
@@ -279,6 +297,8 @@ __all__ = [
     "QueryHit",
     "RayHit",
     "RenderPlugin",
+    "RenderTexture",
+    "Resolution",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
@@ -287,6 +307,8 @@ __all__ = [
     "SensorBegin",
     "SensorEnd",
     "Sequence",
+    "Shader",
+    "ShaderWarning",
     "ShadowCaster",
     "SoundData",
     "SoundHandle",
@@ -296,6 +318,7 @@ __all__ = [
     "Stage",
     "System",
     "Text",
+    "TextStyle",
     "TileCollider",
     "TileMap",
     "TilemapError",
@@ -309,6 +332,7 @@ __all__ = [
     "TweenHandle",
     "Tweens",
     "ValidationError",
+    "Vignette",
     "Wait",
     "WaitFrames",
     "WeldJoint",

@@ -139,6 +139,26 @@ def frequency(value: Any, owner: str, field: str) -> float:
     return v
 
 
+def choice(options: tuple[str, ...]) -> Callable[[Any, str, str], str]:
+    """A check accepting one of ``options`` (a mode, a blend, an alignment).
+
+    >>> choice(("a", "b"))("c", "Thing", "mode")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Thing.mode must be one of 'a', 'b', got 'c'
+    """
+
+    def check(value: Any, owner: str, field: str) -> str:
+        if value not in options:
+            raise ValidationError(
+                f"{_label(owner, field)} must be one of {', '.join(map(repr, options))}, "
+                f"got {value!r}"
+            )
+        return str(value)
+
+    return check
+
+
 def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:
     v = finite(value, owner, field)
     if not lo <= v <= hi:

@@ -25,9 +25,10 @@ from dataclasses import KW_ONLY, dataclass
 from typing import Any, ClassVar
 
 from kge.components.color import RGBA, Color, rgba
+from kge.components.sprite import BLENDS
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.validate import Vec2, boolean, choice, integer, positive, vec2
 
 _WHITE: RGBA = (255, 255, 255, 255)
 
@@ -65,6 +66,7 @@ _COMMON: dict[str, Check] = {
     "layer": _int,
     "order": _int,
     "visible": boolean,
+    "blend": choice(BLENDS),
 }
 
 
@@ -79,6 +81,8 @@ class _Drawn(Tracked):
     layer: int = 0
     order: int = 0
     visible: bool = True
+    #: ``"alpha"``, ``"add"``, ``"multiply"``, ``"screen"`` or ``"premultiplied"``
+    blend: str = "alpha"
 
 
 @dataclass(slots=True)

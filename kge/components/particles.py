@@ -21,9 +21,10 @@ move them, in metres, seconds and radians:
 * **how they look**: ``size`` (metres), ``color`` (RGB 0-255) and ``alpha``
   (0..1) over life, each a single value or a sequence of evenly spaced keys
   interpolated linearly from birth to death; ``texture`` (None: a generated soft
-  dot; else an asset name or image) or ``flat`` squares; ``blend`` ``"alpha"`` or
-  ``"additive"``; ``space`` ``"world"`` (particles stay where they were born) or
-  ``"local"`` (they move with the entity); ``layer`` / ``order`` as sprites.
+  dot; else an asset name or image) or ``flat`` squares; ``blend`` ``"alpha"``,
+  ``"additive"`` (or ``"add"``), ``"multiply"`` or ``"screen"``; ``space``
+  ``"world"`` (particles stay where they were born) or ``"local"`` (they move with
+  the entity); ``layer`` / ``order`` as sprites.
 * ``max_particles`` caps the live count: further particles are dropped, the
   arrays never grow past it. ``seed`` makes the emitter deterministic (the same
   seed gives the same particles); None derives one from the entity id.
@@ -69,7 +70,7 @@ TAU = 2.0 * math.pi
 LIMIT = 1e6
 #: the largest ``max_particles`` an emitter may ask for (arrays are allocated up to it)
 MAX_PARTICLES = 1_000_000
-BLENDS = ("alpha", "additive")
+BLENDS = ("alpha", "additive", "add", "multiply", "screen")
 SPACES = ("world", "local")
 COLLIDE = ("none", "bounce", "die")
 

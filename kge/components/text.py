@@ -45,7 +45,7 @@ from typing import Any, ClassVar, Literal
 from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, finite, integer, vec2
+from kge.validate import Vec2, boolean, choice, finite, integer, vec2
 
 #: the largest font size, points (FreeType fails on a glyph millions of pixels tall)
 MAX_FONT_SIZE = 1000.0
@@ -108,17 +108,6 @@ def _weight(value: Any, owner: str, field: str) -> int:
     if not 1 <= w <= 1000:
         raise ValidationError(f"{owner}.{field} must be in 1..1000, got {w}")
     return w
-
-
-def _choice(options: tuple[str, ...]) -> Check:
-    def check(value: Any, owner: str, field: str) -> str:
-        if value not in options:
-            raise ValidationError(
-                f"{owner}.{field} must be one of {', '.join(map(repr, options))}, got {value!r}"
-            )
-        return str(value)
-
-    return check
 
 
 def _box(value: Any, owner: str, field: str) -> float | None:
@@ -187,14 +176,14 @@ STYLE_CHECKS: dict[str, Check] = {
     "font": _font,
     "weight": _weight,
     "italic": boolean,
-    "align": _choice(ALIGNS),
-    "valign": _choice(VALIGNS),
+    "align": choice(ALIGNS),
+    "valign": choice(VALIGNS),
     "width": _box,
     "height": _box,
     "wrap": boolean,
     "line_spacing": _spacing,
     "letter_spacing": _letter_spacing,
-    "overflow": _choice(OVERFLOWS),
+    "overflow": choice(OVERFLOWS),
     "max_lines": _max_lines,
     "outline": _effect_px,
     "outline_color": rgba,
