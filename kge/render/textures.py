@@ -16,11 +16,31 @@ with other options is another texture.
 
 from __future__ import annotations
 
+import os
+import weakref
 from collections.abc import Callable
 from typing import Any
 
 from kge.errors import ValidationError
 from kge.render.images import FILTERS, WRAPS, ImageRegion, PixelImage, RenderTexture
+
+
+def _resolves_to(name: str, world: Any) -> str | None:
+    if world is not None:
+        from kge.assets import assets_for
+
+        found = assets_for(world).find(name)
+        return None if found is None or found.path is None else os.path.realpath(found.path)
+    return os.path.realpath(name)
+
+
+def forget_file(path: str) -> list[str]:
+    """Every cache drops the textures made from the file ``path`` (its image changed);
+    returns the image names that pointed at it, so their sprites can be redrawn."""
+    names: list[str] = []
+    for cache in list(_CACHES):
+        names += cache.forget_file(path)
+    return names
 
 
 def _load_path(name: str, world: Any) -> Any:
@@ -43,6 +63,10 @@ def check_options(filter: str, wrap: str) -> None:
         raise ValidationError(f"texture wrap must be one of {WRAPS}, got {wrap!r}")
 
 
+#: every live cache, so a changed image file reaches them all (hot reload)
+_CACHES: weakref.WeakSet[TextureCache] = weakref.WeakSet()
+
+
 class TextureCache:
     """Image value (and sampling options) -> pyglet texture (with its pixel size)."""
 
@@ -51,6 +75,19 @@ class TextureCache:
         self._cache: dict[Any, Any] = {}
         #: ``fn(name) -> texture``: the textures cameras draw into (set by the renderer)
         self.render_textures: Callable[[str], Any] | None = None
+        _CACHES.add(self)
+
+    def forget_file(self, path: str) -> list[str]:
+        """Drop the textures of image names that resolve to the file ``path`` (with any
+        sampling options); the names."""
+        target = os.path.realpath(path)
+        dropped: list[str] = []
+        for key in [k for k in self._cache if isinstance(k[0], str)]:
+            if _resolves_to(key[0], self.world) == target:
+                del self._cache[key]
+                if key[0] not in dropped:
+                    dropped.append(key[0])
+        return dropped
 
     @staticmethod
     def key(image: Any) -> Any:
