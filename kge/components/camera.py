@@ -53,7 +53,7 @@ kge.errors.ValidationError: Camera.viewport (0.5, 0.0, 0.6, 1.0) must lie inside
 from __future__ import annotations
 
 import math
-from collections.abc import Set as AbstractSet
+from collections.abc import Collection
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -118,12 +118,12 @@ def _viewport(value: Any, owner: str, field: str) -> Viewport:
     return (x, y, w, h)
 
 
-def _layers(value: Any, owner: str, field: str) -> frozenset[int] | None:
+def _layers(value: Any, owner: str, field: str) -> tuple[int, ...] | None:
     if value is None:
         return None
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
         raise ComponentTypeError(f"{owner}.{field} must be None or layer numbers, got {value!r}")
-    return frozenset(integer(v, owner, f"{field}[]") for v in value)
+    return tuple(sorted({integer(v, owner, f"{field}[]") for v in value}))
 
 
 def _target(value: Any, owner: str, field: str) -> str | None:
@@ -205,8 +205,8 @@ class Camera(Tracked):
     rotation: float = 0.0
     #: (x, y, w, h) of the window, as fractions from the bottom-left
     viewport: Viewport = FULL
-    #: the layers this camera draws (None: every layer); any set of ints, kept frozen
-    layers: AbstractSet[int] | None = None
+    #: the layers this camera draws (None: every layer); any ints, kept as a sorted tuple
+    layers: Collection[int] | None = None
     #: cameras draw in ascending order (ties: entity id)
     order: int = 0
     #: draw into the texture of this name (``RenderTexture(name)``) instead of the window

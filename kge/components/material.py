@@ -85,7 +85,7 @@ class Shader:
     source: str
     name: str = "shader"
     #: ``{name: glsl type}`` of the uniforms it declares (read from the source)
-    uniforms: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
+    uniforms: dict[str, str] = field(default_factory=dict, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.source, str):
