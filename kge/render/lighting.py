@@ -19,7 +19,9 @@ uploaded once per frame; the vertex shader extrudes each away from each light an
 drops edges facing the light (closed outlines) or out of its reach.
 
 Normal-mapped sprites are drawn into a normal buffer first (same size); each light
-is then multiplied by ``N . L`` there, with the light ``height`` metres above.
+is then multiplied there by ``N . L`` over what a flat surface would get (``L.z``),
+with the light ``height`` metres above: a normal map adds relief without making a
+sprite darker than an unmapped one.
 
 The scene is multiplied by the map by a quad that lives *in the world's batch*, in
 the VIEW space of layer ``Lighting.unlit_layer - 1``: layers below are lit, layers
@@ -107,8 +109,11 @@ void main()
     c *= k.rgb * k.a * step(abs(local.x), 1.0) * step(abs(local.y), 1.0);
 #endif
 #ifdef NORMALS
+    // relief relative to a flat surface: a normal facing the viewer is lit exactly as an
+    // unmapped sprite, one turned to the light brighter, one turned away darker
     vec4 n = texture(normals, gl_FragCoord.xy / map_size);
-    att *= n.a > 0.5 ? max(dot(normalize(n.xyz * 2.0 - 1.0), to_light), 0.0) : 1.0;
+    float relief = max(dot(normalize(n.xyz * 2.0 - 1.0), to_light), 0.0) / max(to_light.z, 0.25);
+    att *= n.a > 0.5 ? min(relief, 2.5) : 1.0;
 #endif
     frag = vec4(c * att, 0.0);
 }
@@ -278,6 +283,10 @@ _RING = np.stack([np.cos(np.arange(8) * np.pi / 4 + np.pi / 8),
 _OCTAGON = _RING[[i for k in range(1, 7) for i in (0, k, k + 1)]].astype(np.float32)
 #: vertices per light
 VERTS = len(_OCTAGON)
+#: the square around the unit circle in as many vertices (two triangles, the rest empty):
+#: a shadowed light covers its whole scissor square, so its draw resets all the alpha
+#: its shadows wrote there (an octagon would leave the corners to the next light)
+_SQUARE = np.concatenate([_CORNERS, np.zeros((VERTS - len(_CORNERS), 2), np.float32)])
 #: (end, far) of the 6 vertices of an edge's wedge
 _WEDGE = np.array([[0, 0], [1, 0], [1, 1], [0, 0], [1, 1], [0, 1]], np.float32)
 #: a light's halo reaches this share of its radius
@@ -285,14 +294,15 @@ GLOW_REACH = 0.5
 
 
 def light_rows(lights: list[tuple[Light, tuple[float, float, float]]]) -> np.ndarray:
-    """(L * 18, 17) vertices: an octagon around each light's radius (pure numpy)."""
+    """(L * 18, 17) vertices: an octagon around each light's radius, a square around a
+    shadowed one's (pure numpy)."""
     if not lights:
         return np.zeros((0, _LIGHT_FLOATS), np.float32)
     rows = np.empty((len(lights), VERTS, _LIGHT_FLOATS), np.float32)
     for i, (light, (x, y, a)) in enumerate(lights):
         k = light.intensity / 255.0
         r = light.radius
-        rows[i, :, 0:2] = (x, y) + _OCTAGON * r
+        rows[i, :, 0:2] = (x, y) + (_SQUARE if light.shadows else _OCTAGON) * r
         rows[i, :, 2:4] = (x, y)
         rows[i, :, 4:7] = tuple(c * k for c in light.color)
         rows[i, :, 7:10] = tuple(c * k for c in light.shadow_color)
@@ -584,15 +594,16 @@ class LightMap:
     @staticmethod
     def _scissor(pose: tuple[float, float, float], radius: float, to_clip: tuple[float, ...],
                  size: tuple[int, int]) -> tuple[int, int, int, int] | None:  # fmt: skip
-        """The light's square in light-map pixels (None: off the map)."""
+        """The whole light-map pixels inside the light's square (None: off the map); inside,
+        so that every pixel its shadows may darken is one its square's draw resets."""
         m = np.array(to_clip).reshape(4, 4).T
         corners = np.array([[pose[0] + dx * radius, pose[1] + dy * radius, 0.0, 1.0]
                             for dx in (-1, 1) for dy in (-1, 1)]).T  # fmt: skip
         clip = (m @ corners)[:2]
         xs = (clip[0] * 0.5 + 0.5) * size[0]
         ys = (clip[1] * 0.5 + 0.5) * size[1]
-        x0, x1 = max(math.floor(xs.min()) - 1, 0), min(math.ceil(xs.max()) + 1, size[0])
-        y0, y1 = max(math.floor(ys.min()) - 1, 0), min(math.ceil(ys.max()) + 1, size[1])
+        x0, x1 = max(math.ceil(xs.min()), 0), min(math.floor(xs.max()), size[0])
+        y0, y1 = max(math.ceil(ys.min()), 0), min(math.floor(ys.max()), size[1])
         if x1 <= x0 or y1 <= y0:
             return None
         return (x0, y0, x1 - x0, y1 - y0)

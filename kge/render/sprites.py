@@ -280,6 +280,12 @@ class SpriteStore:
         tw, th = comp.tile if comp.tile is not None else (w / ppm, h / ppm)
         u0, v0 = comp.scroll
         u1, v1 = u0 + wm / tw, v0 + hm / th
+        # an axis that shows one copy or less stays half a texel inside it: filtering at
+        # its edge would otherwise blend in the opposite edge of the image
+        if u0 >= 0.0 and u1 <= 1.0 + 1e-6:
+            u0, u1 = max(u0, 0.5 / w), min(u1, 1.0 - 0.5 / w)
+        if v0 >= 0.0 and v1 <= 1.0 + 1e-6:
+            v0, v1 = max(v0, 0.5 / h), min(v1, 1.0 - 0.5 / h)
         ps._vertex_list.tex_coords[:] = (u0, v0, 0.0, u1, v0, 0.0, u1, v1, 0.0, u0, v1, 0.0)
 
     @staticmethod

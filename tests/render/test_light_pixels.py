@@ -216,3 +216,22 @@ def test_the_light_map_resolution_is_a_setting(make_app) -> None:
     full = make_app(lit_scene(light))
     full.world.resource(Lighting).resolution = 1.0
     assert abs(int(px_at(pixels(full), -1.0, 0.0)[0]) - (40 + 128)) <= TOL
+
+
+def test_the_shadows_of_one_light_never_darken_another(make_app) -> None:
+    """Each light's shadows live in the map's alpha under its own square, which its
+    draw resets: a light drawn later (here, moonlight over everything) is untouched."""
+    def boxes_and_moon() -> list[tuple]:
+        return [(Transform(x, y), Collider(Box(0.1, 2.0))) for x, y in ((-0.7, 0.0), (0.7, 0.0))
+                ] + [(DirectionalLight(intensity=0.5, angle=-1.0, shadows=True),)]  # fmt: skip
+
+    alone = make_app(lit_scene(*boxes_and_moon(), ambient=(0, 0, 0)))
+    alone.step(1)
+    only_moon = pixels(alone).astype(int)
+    lamp = (Transform(0.0, 0.0), Light(radius=3.0, falloff=1.0, shadows=True))
+    both = make_app(lit_scene(*boxes_and_moon(), lamp, ambient=(0, 0, 0)))
+    both.step(1)
+    px = pixels(both).astype(int)
+    ys, xs = np.mgrid[0 : px.shape[0], 0 : px.shape[1]]
+    outside = np.hypot(xs - SIZE[0] / 2, ys - SIZE[1] / 2) > 3.0 * PPM + 3  # past the lamp
+    assert np.abs(px - only_moon)[outside].max() <= 2
