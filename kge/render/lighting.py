@@ -231,19 +231,20 @@ void main()
 _COMPOSITE_VS = """#version 150 core
 in vec2 position;
 out vec2 uv;
+uniform vec2 extent;    // share of the map texture in use
 void main()
 {
     gl_Position = vec4(position, 0.0, 1.0);
-    uv = position * 0.5 + 0.5;
+    uv = (position * 0.5 + 0.5) * extent;
 }
 """
 
+# a bare texture read: the multiply is the blending (software GL's cheapest full-screen pass)
 _COMPOSITE_FS = """#version 150 core
 in vec2 uv;
 out vec4 frag;
 uniform sampler2D light_map;
-uniform vec2 extent;    // share of the map texture in use
-void main() { frag = vec4(texture(light_map, uv * extent).rgb, 1.0); }
+void main() { frag = texture(light_map, uv); }
 """
 
 _GLOW_VS = """#version 150 core
@@ -387,8 +388,8 @@ class CompositeGroup(pyglet.graphics.Group):
         prog["extent"] = lm.extent
         gl.glActiveTexture(gl.GL_TEXTURE0)
         gl.glBindTexture(tex.target, tex.id)
-        gl.glEnable(gl.GL_BLEND)
-        gl.glBlendFunc(gl.GL_DST_COLOR, gl.GL_ZERO)
+        gl.glEnable(gl.GL_BLEND)  # colour times the map's; alpha kept
+        gl.glBlendFuncSeparate(gl.GL_ZERO, gl.GL_SRC_COLOR, gl.GL_ZERO, gl.GL_ONE)
 
     def unset_state(self) -> None:
         self.light_map.draw_glows()
@@ -596,14 +597,15 @@ class LightMap:
                  size: tuple[int, int]) -> tuple[int, int, int, int] | None:  # fmt: skip
         """The whole light-map pixels inside the light's square (None: off the map); inside,
         so that every pixel its shadows may darken is one its square's draw resets."""
-        m = np.array(to_clip).reshape(4, 4).T
-        corners = np.array([[pose[0] + dx * radius, pose[1] + dy * radius, 0.0, 1.0]
-                            for dx in (-1, 1) for dy in (-1, 1)]).T  # fmt: skip
-        clip = (m @ corners)[:2]
-        xs = (clip[0] * 0.5 + 0.5) * size[0]
-        ys = (clip[1] * 0.5 + 0.5) * size[1]
-        x0, x1 = max(math.ceil(xs.min()), 0), min(math.floor(xs.max()), size[0])
-        y0, y1 = max(math.ceil(ys.min()), 0), min(math.floor(ys.max()), size[1])
+        m = to_clip  # column-major: x' = m0 x + m4 y + m12, y' = m1 x + m5 y + m13
+        xs, ys = [], []
+        for dx in (-radius, radius):
+            for dy in (-radius, radius):
+                x, y = pose[0] + dx, pose[1] + dy
+                xs.append((m[0] * x + m[4] * y + m[12]) * 0.5 + 0.5)
+                ys.append((m[1] * x + m[5] * y + m[13]) * 0.5 + 0.5)
+        x0, x1 = max(math.ceil(min(xs) * size[0]), 0), min(math.floor(max(xs) * size[0]), size[0])
+        y0, y1 = max(math.ceil(min(ys) * size[1]), 0), min(math.floor(max(ys) * size[1]), size[1])
         if x1 <= x0 or y1 <= y0:
             return None
         return (x0, y0, x1 - x0, y1 - y0)

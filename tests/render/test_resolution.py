@@ -96,3 +96,19 @@ def test_zero_or_huge_resolutions_are_refused(w, h):
         Resolution(w, h)
     with pytest.raises(ValidationError, match="mode"):
         Resolution(100, 100, mode="zoom")  # type: ignore[arg-type]
+
+
+def test_snapping_puts_sprites_and_the_camera_on_whole_design_pixels(make_app):
+    def frame(x: float, snap: bool) -> np.ndarray:
+        def scene(world):
+            world.insert_resource(Resolution(200, 100, mode="integer", snap=snap))
+            world.insert_resource(Camera(pixels_per_meter=10, center=(0.031, 0.0)))
+            world.spawn(Transform(x, 0.0), Sprite(checker(4, 4, 1, (0, 0, 0), (255, 255, 255)),
+                                                  size=(0.4, 0.4), filter="linear"))  # fmt: skip
+
+        return pixels(make_app(scene, size=WINDOW))
+
+    snapped = [frame(x, True) for x in (0.0, 0.02, 0.04)]
+    assert all(np.array_equal(snapped[0], other) for other in snapped[1:])
+    loose = [frame(x, False) for x in (0.0, 0.04)]
+    assert not np.array_equal(loose[0], loose[1])  # a fifth of a pixel, filtered in between
