@@ -66,6 +66,8 @@ def street(world: Any, lights: int = 6, softness: float = 0.0, bare: bool = Fals
         ParticleEmitter,
         Sprite,
         Text,
+        TextureFilter,
+        TextureWrap,
         Transform,
     )  # fmt: skip
     from kge.components.shapes import Box
@@ -80,12 +82,13 @@ def street(world: Any, lights: int = 6, softness: float = 0.0, bare: bool = Fals
                                             size=(31.0, 18.0)))  # fmt: skip
     else:
         world.spawn(Transform(0, 0), Sprite(from_array(paint.sky()), size=(31.0, 18.0),
-                                            filter="linear"))  # fmt: skip
+                                            filter=TextureFilter.LINEAR))  # fmt: skip
         for y, color in ((-1.0, (70, 90, 110)), (-3.0, (60, 110, 80))):
             world.spawn(Transform(0, y), Sprite(from_array(paint.hills(color=color)),
-                                                size=(31.0, 10.0), filter="linear", wrap="repeat",
+                                                size=(31.0, 10.0), filter=TextureFilter.LINEAR,
+                                                wrap=TextureWrap.REPEAT,
                                                 tile=(15.5, 10.0)))  # fmt: skip
-        world.spawn(Transform(0, -6.5), Sprite(crate, size=(31.0, 4.0), wrap="repeat",
+        world.spawn(Transform(0, -6.5), Sprite(crate, size=(31.0, 4.0), wrap=TextureWrap.REPEAT,
                                                tile=(1.0, 1.0)))  # fmt: skip
     for x, y in rng.uniform((-14, -4), (14, 7), (36, 2)):
         world.spawn(Transform(float(x), float(y), float(rng.uniform(0, 3))),
@@ -98,7 +101,7 @@ def street(world: Any, lights: int = 6, softness: float = 0.0, bare: bool = Fals
         return
     world.spawn(Transform(0, 9), ParticleEmitter(
         rate=600.0, shape=EmitBox(30.0, 0.1), direction=-math.pi / 2, speed=(9.0, 11.0),
-        lifetime=1.6, size=0.06, color=(170, 190, 230), alpha=0.6, flat=True, seed=3))
+        lifetime=1.6, size=0.06, color=(170, 190, 230), opacity=153, flat=True, seed=3))
     world.spawn(Text("score 1200", size=18, screen_space=True, offset=(12, 528), anchor=(0, 1)))
 
 

@@ -36,13 +36,15 @@ from kge import (
     Key,
     MapObject,
     Physics,
-    PhysicsEvents,
     RigidBody,
     Script,
+    SensorBegin,
     Spawn,
     Spawners,
     Sprite,
     Text,
+    TextureFilter,
+    TextureWrap,
     Transform,
     World,
     from_array,
@@ -88,7 +90,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             for a, b in ((ev.collider_a, ev.collider_b), (ev.collider_b, ev.collider_a)):
                 if not (world.exists(a) and world.exists(b)) or not world.has(a, Behaviour):
                     continue
@@ -124,14 +126,14 @@ def player_start(spawn: Spawn) -> list[Any]:
     return [
         RigidBody(fixed_rotation=True),
         Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
-        Sprite(HERO, size=(1.0, 1.0), filter="linear", layer=2),
+        Sprite(HERO, size=(1.0, 1.0), filter=TextureFilter.LINEAR, layer=2),
         Behaviour(Player()),
     ]
 
 
 def coin(spawn: Spawn) -> list[Any]:
     """A glowing orb instead of the tile: bright enough for the camera's bloom."""
-    return [Sprite(COIN, size=(0.8, 0.8), filter="linear", layer=2)]
+    return [Sprite(COIN, size=(0.8, 0.8), filter=TextureFilter.LINEAR, layer=2)]
 
 
 SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": coin, "Door": lambda s: None})
@@ -142,10 +144,10 @@ def scenery(world: World, bounds: tuple[float, float, float, float]) -> None:
     x0, y0, x1, y1 = bounds
     w, h = x1 - x0, y1 - y0
     world.spawn(Transform((x0 + x1) / 2, (y0 + y1) / 2), Sprite(
-        SKY, size=(w + 20.0, h + 20.0), filter="linear", layer=-10))  # fmt: skip
+        SKY, size=(w + 20.0, h + 20.0), filter=TextureFilter.LINEAR, layer=-10))  # fmt: skip
     world.spawn(Transform((x0 + x1) / 2, y0 + 3.0), Sprite(
-        HILLS, size=(w + 20.0, 6.0), filter="linear", wrap="repeat", tile=(16.0, 6.0),
-        layer=-9))  # fmt: skip
+        HILLS, size=(w + 20.0, 6.0), filter=TextureFilter.LINEAR, wrap=TextureWrap.REPEAT,
+        tile=(16.0, 6.0), layer=-9))  # fmt: skip
 
 
 def level(world: World, path: Path | None = None, score: Score | None = None) -> None:

@@ -40,12 +40,12 @@ from kge import (
     Name,
     RigidBody,
     Script,
-    Sequence,
     Sprite,
     Text,
     Transform,
     Tween,
     Tweens,
+    TweenSequence,
     Wait,
     World,
 )
@@ -89,9 +89,9 @@ class Score(Script):
 
 
 #: a point scored: the score grows quickly, then bounces back to its size
-SCORE_POP = Sequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
+SCORE_POP = TweenSequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
                      Tween(Text, "size", 15.0, 0.35, ease="bounce_out"), name="score-pop")
-HUD_POP = Sequence(Tween(kge.Label, "size", 30.0, 0.12, ease="quad_out", start=22.0),
+HUD_POP = TweenSequence(Tween(kge.Label, "size", 30.0, 0.12, ease="quad_out", start=22.0),
                    Tween(kge.Label, "size", 22.0, 0.35, ease="bounce_out"), name="hud-pop")
 
 

@@ -52,8 +52,9 @@ from kge.components import (
     WheelJoint,
 )
 from kge.components import drawables as draw
-from kge.components.animation import Animator, Clip, FrameRef, Transition
+from kge.components.animation import Animator, Clip, FrameRef, Loop, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
+from kge.components.blend import Blend
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 
@@ -68,24 +69,28 @@ from kge.components.particles import (
     EmitLine,
     EmitPoint,
     ParticleBurst,
+    ParticleCollision,
     ParticleEmitter,
+    ParticleSpace,
 )
 from kge.components.post import CRT, Bloom, ColorGrade, Vignette
-from kge.components.resolution import Resolution
+from kge.components.resolution import Resolution, ScaleMode
 from kge.components.shake import CameraShake
-from kge.components.sprite import Sprite
-from kge.components.text import Text, TextStyle
+from kge.components.sprite import Sprite, TextureFilter, TextureWrap
+from kge.components.text import Text, TextAlign, TextOverflow, TextStyle, VerticalAlign
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
-from kge.components.tween import Delay, Parallel, Sequence, Tween
+from kge.components.tween import Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
+    DisplayError,
     EntityNotFoundError,
     HookSignatureError,
     KgeError,
     MissingComponentError,
     MissingResourceError,
     SceneStackError,
+    ScheduleError,
     ValidationError,
     WorldLockedError,
 )
@@ -103,13 +108,14 @@ from kge.physics.events import (
     SensorEnd,
 )
 from kge.physics.mass import MassData
-from kge.physics.queries import QueryHit, RayHit
+from kge.physics.queries import QueryHit, RayHit, RayMode
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.platform import has_display
 from kge.plugin import FunctionPlugin, Plugin, PluginError
 from kge.plugins import default_plugins
 from kge.scene import Scene, Time
+from kge.scene_carry import RestoreWarning
 from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md)
     SceneFile,
     SceneFileError,
@@ -122,10 +128,12 @@ from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md
     save_prefab,
     save_scene,
 )
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
+from kge.snapshot import SnapshotError
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
+from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
 from kge.world import World
@@ -151,8 +159,15 @@ from kge.transitions import Crossfade, Fade, Slide, Wipe  # base class: kge.tran
 from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
 
 if TYPE_CHECKING:
-    from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
+    from kge.assets import (
+        AssetDecodeError,
+        AssetError,
+        AssetNotFoundError,
+        Assets,
+        DecoderMissingError,
+    )
     from kge.audio import Audio, SoundHandle
+    from kge.export import ExportError
     from kge.particles import Particles
     from kge.render.images import (
         ImageRegion,
@@ -162,12 +177,14 @@ if TYPE_CHECKING:
         from_array,
         solid,
     )
+    from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.tilemap import TilemapPlugin
+    from kge.testing import GoldenMismatch, StepTimeout
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -179,6 +196,11 @@ _LAZY = {
     "AssetError": "kge.assets",
     "AssetNotFoundError": "kge.assets",
     "Assets": "kge.assets",
+    "DecoderMissingError": "kge.assets",
+    "ScaffoldError": "kge.scaffold",
+    "ExportError": "kge.export",
+    "GoldenMismatch": "kge.testing",
+    "StepTimeout": "kge.testing",
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
@@ -202,7 +224,19 @@ _LAZY = {
 }
 
 
+#: old names kept for one release: name -> (module, new name); reading one warns
+_RENAMED = {
+    "Sequence": ("kge.components.tween", "TweenSequence"),  # shadowed typing.Sequence
+}
+
+
 def __getattr__(name: str) -> Any:
+    renamed = _RENAMED.get(name)
+    if renamed is not None:
+        from kge.deprecation import warn
+
+        warn(f"kge.{name} is now kge.{renamed[1]}")
+        return getattr(import_module(renamed[0]), renamed[1])
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'kge' has no attribute {name!r}")
@@ -232,6 +266,7 @@ __all__ = [
     "AudioSource",
     "Behaviour",
     "BehaviourPlugin",
+    "Blend",
     "Bloom",
     "BodyType",
     "Box",
@@ -248,8 +283,10 @@ __all__ = [
     "ContactEnd",
     "Coroutine",
     "DebugDraw",
+    "DecoderMissingError",
     "Delay",
     "DirectionalLight",
+    "DisplayError",
     "DistanceJoint",
     "Edge",
     "EmitBox",
@@ -258,12 +295,15 @@ __all__ = [
     "EmitLine",
     "EmitPoint",
     "EntityNotFoundError",
+    "ExportError",
     "Filter",
     "FixedTimestep",
+    "FontWarning",
     "FrameRef",
     "FrictionJoint",
     "FunctionPlugin",
     "GearJoint",
+    "GoldenMismatch",
     "Hit",
     "HookSignatureError",
     "ImageRegion",
@@ -278,6 +318,7 @@ __all__ = [
     "Light",
     "Lighting",
     "LightingPlugin",
+    "Loop",
     "MapObject",
     "MassData",
     "Material",
@@ -292,7 +333,9 @@ __all__ = [
     "OneWayPlatform",
     "Parallel",
     "ParticleBurst",
+    "ParticleCollision",
     "ParticleEmitter",
+    "ParticleSpace",
     "Particles",
     "ParticlesPlugin",
     "Physics",
@@ -309,32 +352,43 @@ __all__ = [
     "PulleyJoint",
     "QueryHit",
     "RayHit",
+    "RayMode",
     "RenderPlugin",
     "RenderTexture",
     "Resolution",
+    "RestoreWarning",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
+    "ScaffoldError",
+    "ScaleMode",
     "Scene",
     "SceneFile",
     "SceneFileError",
     "SceneStackError",
+    "ScheduleError",
     "Script",
     "SensorBegin",
     "SensorEnd",
-    "Sequence",
     "Shader",
     "ShaderWarning",
     "ShadowCaster",
+    "SnapshotError",
     "SoundData",
     "SoundHandle",
     "Spawn",
     "Spawners",
     "Sprite",
     "Stage",
+    "StepTimeout",
     "System",
+    "SystemSet",
     "Text",
+    "TextAlign",
+    "TextOverflow",
     "TextStyle",
+    "TextureFilter",
+    "TextureWrap",
     "TileCollider",
     "TileMap",
     "TilemapError",
@@ -346,8 +400,10 @@ __all__ = [
     "Tween",
     "TweenFinished",
     "TweenHandle",
+    "TweenSequence",
     "Tweens",
     "ValidationError",
+    "VerticalAlign",
     "Vignette",
     "Wait",
     "WaitFrames",
@@ -356,6 +412,7 @@ __all__ = [
     "World",
     "WorldLockedError",
     "checker",
+    "collision",
     "default_plugins",
     "draw",
     "ease",

@@ -1,6 +1,6 @@
 """Running tweens: every live tween is a row of numpy arrays, eased in one pass per frame.
 
-A started spec (a :class:`~kge.components.tween.Tween`, or a Sequence/Parallel
+A started spec (a :class:`~kge.components.tween.Tween`, or a TweenSequence/Parallel
 tree of them) becomes one *group* and one *channel* per Tween: the tree is
 flattened into start offsets inside the group, so sequences and parallel
 groups cost nothing per frame beyond their channels. Each pass:
@@ -35,7 +35,7 @@ from kge.animation.easing import apply, easing_code
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import Tracked, raw_set
 from kge.components.transform import Transform
-from kge.components.tween import Delay, Parallel, Sequence, Tween
+from kge.components.tween import Delay, Parallel, Tween, TweenSequence
 from kge.errors import ComponentTypeError, ValidationError, where
 from kge.validate import MAX_COORDINATE, coordinate, finite
 
@@ -120,16 +120,18 @@ def _flatten(spec: Any, offset: float, out: list[_Plan], top: bool) -> float:
         return spec.total
     if isinstance(spec, Parallel):
         return max(_flatten(s, offset, out, False) for s in spec.steps)
-    if isinstance(spec, Sequence):
+    if isinstance(spec, TweenSequence):
         if spec.repeat < 0 and not top:
-            raise ValidationError("Sequence(repeat=-1) repeats forever: only the outermost may")
+            raise ValidationError(
+                "TweenSequence(repeat=-1) repeats forever: only the outermost may"
+            )
         reps = 1 if spec.repeat < 0 else spec.repeat + 1
         t = offset
         for _ in range(reps):
             for s in spec.steps:
                 t += _flatten(s, t, out, False)
         return (t - offset) if spec.repeat >= 0 else math.inf
-    raise ComponentTypeError(f"cannot start {spec!r}: expected a Tween, Sequence or Parallel")
+    raise ComponentTypeError(f"cannot start {spec!r}: expected a Tween, TweenSequence or Parallel")
 
 
 class TweenTable:
@@ -190,7 +192,7 @@ class TweenTable:
         """
         plans: list[_Plan] = []
         top_total = _flatten(spec, 0.0, plans, True)
-        forever_seq = isinstance(spec, Sequence) and spec.repeat < 0
+        forever_seq = isinstance(spec, TweenSequence) and spec.repeat < 0
         period = spec.once if forever_seq else top_total
         if not plans:
             raise ValidationError(f"{spec!r} animates nothing (only delays)")

@@ -4,14 +4,14 @@ Insert it as a resource and the game's screen coordinates (cameras, HUD text,
 screen-space UI, the mouse) are *design pixels*, ``width`` x ``height``, whatever the
 window's size or pixel density:
 
-* ``"letterbox"`` scales the design uniformly to fit and centres it, with bars of
-  ``bars`` colour on the two other sides; everything is drawn at the window's
-  resolution (sharp text and edges);
-* ``"stretch"`` fills the window, scaling x and y separately;
-* ``"integer"`` scales by the largest whole number that fits (1 at least) and draws
-  the game into a design-sized texture first, magnified with nearest filtering:
-  pixel-perfect pixel art (with ``snap``, sprites and the camera sit on whole design
-  pixels).
+* ``ScaleMode.LETTERBOX`` scales the design uniformly to fit and centres it, with
+  bars of ``bars`` colour on the two other sides; everything is drawn at the
+  window's resolution (sharp text and edges);
+* ``ScaleMode.STRETCH`` fills the window, scaling x and y separately;
+* ``ScaleMode.INTEGER`` scales by the largest whole number that fits (1 at least)
+  and draws the game into a design-sized texture first, magnified with nearest
+  filtering: pixel-perfect pixel art (with ``snap``, sprites and the camera sit on
+  whole design pixels).
 
 ``snap`` rounds the camera and every sprite to whole design pixels (no shimmer when
 pixel art moves slowly). Sizes are validated: zero, negative or beyond 16384 pixels
@@ -22,7 +22,7 @@ raise at the call.
 (0.0, 40.0, 1280.0, 720.0)
 >>> r.to_design((640.0, 400.0), (1280, 800))
 (160.0, 90.0)
->>> Resolution(320, 180, mode="integer").fit((1000, 600))
+>>> Resolution(320, 180, mode=ScaleMode.INTEGER).fit((1000, 600))
 (20.0, 30.0, 960.0, 540.0)
 >>> Resolution(0, 180)
 Traceback (most recent call last):
@@ -34,7 +34,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal
+from enum import StrEnum
+from typing import Any, ClassVar
 
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
@@ -43,8 +44,15 @@ from kge.validate import Vec2, boolean, choice, integer
 
 #: the largest design size, pixels per side
 MAX_SIZE = 16384
-MODES = ("letterbox", "stretch", "integer")
-Mode = Literal["letterbox", "stretch", "integer"]
+
+
+class ScaleMode(StrEnum):
+    """How a design resolution is fitted to the window (see the module docstring)."""
+
+    LETTERBOX = "letterbox"  #: scaled uniformly to fit, bars on the other sides
+    STRETCH = "stretch"  #: x and y scaled separately to fill the window
+    INTEGER = "integer"  #: the largest whole-number scale, pixel-perfect
+
 Rect = tuple[float, float, float, float]
 
 
@@ -60,12 +68,12 @@ class Resolution(Tracked):
     """The design size and how it is fitted to the window (see the module docstring)."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "width": _side, "height": _side, "mode": choice(MODES), "snap": boolean, "bars": rgb,
+        "width": _side, "height": _side, "mode": choice(ScaleMode), "snap": boolean, "bars": rgb,
     }  # fmt: skip
 
     width: int
     height: int
-    mode: Mode = "letterbox"
+    mode: ScaleMode = ScaleMode.LETTERBOX
     snap: bool = False
     bars: RGB = (0, 0, 0)
 

@@ -15,16 +15,17 @@ sprite costs nothing to sync).
   image's top-left corner (as image editors show it), or a frame index into a
   ``grid=(columns, rows)`` counted row by row from the top-left.
 * ``layer`` then ``order`` decide drawing order: higher draws on top.
-* ``filter``: ``"nearest"`` (crisp pixel art, the default) or ``"linear"`` (painted
-  art scaled or turned); ``mipmaps=True`` adds smaller copies for art drawn much
-  smaller than its pixels.
-* ``wrap="repeat"`` (or ``"mirror"``) tiles the image over ``size``, one copy per
-  ``tile`` metres (default: the image's own size): a whole sky is one sprite;
-  ``scroll`` shifts the pattern (fractions of a tile; tween it for parallax).
+* ``filter``: :class:`TextureFilter` ``NEAREST`` (crisp pixel art, the default) or
+  ``LINEAR`` (painted art scaled or turned); ``mipmaps=True`` adds smaller copies
+  for art drawn much smaller than its pixels.
+* ``wrap``: :class:`TextureWrap` ``REPEAT`` (or ``MIRROR``) tiles the image over
+  ``size``, one copy per ``tile`` metres (default: the image's own size): a whole
+  sky is one sprite; ``scroll`` shifts the pattern (fractions of a tile; tween it
+  for parallax).
 * ``nine_patch=(left, bottom, right, top)`` pixels of border stay their size while
   the middle stretches to ``size`` (panels, buttons, speech bubbles).
-* ``blend``: ``"alpha"``, ``"add"`` (glows, fire), ``"multiply"`` (shadows, tints),
-  ``"screen"`` (soft light) or ``"premultiplied"``.
+* ``blend``: a :class:`~kge.components.blend.Blend` (``ALPHA``, ``ADDITIVE`` for glows
+  and fire, ``MULTIPLY`` for shade, ``SCREEN`` for soft light, ``PREMULTIPLIED``).
 * ``normal_map``: an image of surface normals (same size as the sprite's pixels) that
   lights shade it with (:mod:`kge.components.lights`).
 
@@ -45,8 +46,10 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Any, ClassVar
 
+from kge.components.blend import Blend
 from kge.components.color import RGB, byte, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
@@ -54,9 +57,22 @@ from kge.validate import Vec2, boolean, choice, integer, positive, vec2
 
 Rect4 = tuple[int, int, int, int]
 #: how a drawable's colour combines with what is under it
-BLENDS = ("alpha", "add", "multiply", "screen", "premultiplied")
-FILTERS = ("nearest", "linear")
-WRAPS = ("clamp", "repeat", "mirror")
+
+
+class TextureFilter(StrEnum):
+    """How an image is sampled when drawn at another size or turned."""
+
+    NEAREST = "nearest"  #: crisp pixels (pixel art)
+    LINEAR = "linear"  #: smooth (painted art)
+
+
+class TextureWrap(StrEnum):
+    """What lies past an image's edge when a sprite is larger than one copy of it."""
+
+    CLAMP = "clamp"  #: one copy, stretched over the size
+    REPEAT = "repeat"  #: copies side by side
+    MIRROR = "mirror"  #: copies, every other one mirrored (no seams)
+
 
 
 def _optional_image(value: Any, owner: str, field: str) -> Any:
@@ -155,13 +171,13 @@ class Sprite(Tracked):
         "size": _optional_size,
         "region": _region,
         "grid": _grid,
-        "filter": choice(FILTERS),
+        "filter": choice(TextureFilter),
         "mipmaps": boolean,
-        "wrap": choice(WRAPS),
+        "wrap": choice(TextureWrap),
         "tile": _optional_size,
         "scroll": vec2,
         "nine_patch": _nine_patch,
-        "blend": choice(BLENDS),
+        "blend": choice(Blend),
         "normal_map": _optional_image,
     }
 
@@ -177,15 +193,15 @@ class Sprite(Tracked):
     order: int = 0
     region: int | Rect4 | None = None
     grid: tuple[int, int] | None = None
-    filter: str = "nearest"
+    filter: TextureFilter = TextureFilter.NEAREST
     mipmaps: bool = False
-    wrap: str = "clamp"
+    wrap: TextureWrap = TextureWrap.CLAMP
     #: metres per repeat of the image when ``wrap`` repeats (None: its own size)
     tile: Vec2 | None = None
     #: the repeated pattern's shift, in tiles
     scroll: Vec2 = (0.0, 0.0)
     nine_patch: Rect4 | None = None
-    blend: str = "alpha"
+    blend: Blend = Blend.ALPHA
     normal_map: Any = None
 
     def __post_init__(self) -> None:

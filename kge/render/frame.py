@@ -26,7 +26,7 @@ from kge.components.text import Text
 from kge.components.tracked import bind, unbind
 from kge.components.transform import Transform
 from kge.host import Host
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin, ContactEnd
 from kge.physics.resource import Physics
 from kge.render.cameras import (
     CameraPasses,
@@ -175,6 +175,9 @@ class WorldView:
                 if row is not None:
                     lag = poses[row, :2] - self.poses.last_live[row, :2]
                     center = (center[0] + float(lag[0]), center[1] + float(lag[1]))
+            # inside the bounds as drawn: the lag, or a first frame before the camera
+            # system ran, never shows past them
+            center = cam.clamped(center, canvas.size)
             views.append(make_view(entity, cam, center, canvas, snap))
         return views
 
@@ -323,13 +326,11 @@ class WorldView:
 
     def _count_contacts(self) -> None:
         """Touching collider pairs, kept from begin/end events (no per-contact query)."""
-        ev = self.world.try_resource(PhysicsEvents)
-        if ev is None:
-            return
         pairs = self._touching
-        for c in ev.contact_begin:
+        world = self.world
+        for c in world.events(ContactBegin):  # this step's (RenderStepRecorder runs last)
             pairs.add((c.collider_a, c.collider_b))
-        for c in ev.contact_end:
+        for c in world.events(ContactEnd):
             pairs.discard((c.collider_a, c.collider_b))
             pairs.discard((c.collider_b, c.collider_a))
 

@@ -16,6 +16,7 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.blend import Blend
 from kge.render.bulk import BulkPoser
 from kge.render.glutil import per_context
 from kge.render.poses import PoseTable
@@ -31,7 +32,9 @@ from kge.render.programs import (
 class MeshGroup(pyglet.graphics.Group):
     """Binds a shape program with a blend mode (one per parent group, program and blend)."""
 
-    def __init__(self, program: Any, parent: pyglet.graphics.Group, blend: str = "alpha") -> None:
+    def __init__(
+        self, program: Any, parent: pyglet.graphics.Group, blend: Blend = Blend.ALPHA
+    ) -> None:
         super().__init__(parent=parent)
         self.program = program
         self.blend = blend
@@ -85,7 +88,7 @@ class MeshStore:
     def __len__(self) -> int:
         return len(self.lists)
 
-    def group_for(self, parent: pyglet.graphics.Group, blend: str = "alpha",
+    def group_for(self, parent: pyglet.graphics.Group, blend: Blend = Blend.ALPHA,
                   program: Any = None) -> MeshGroup:  # fmt: skip
         prog = program or self.program
         key = (parent, blend, id(prog))
@@ -117,7 +120,7 @@ class MeshStore:
         parent: pyglet.graphics.Group,
         mode: int = gl.GL_TRIANGLES,
         posed: bool = True,
-        blend: str = "alpha",
+        blend: Blend = Blend.ALPHA,
         program: Any = None,
     ) -> Any:
         """(Re)build the vertex list of ``key`` from local ``points`` (n, 2)."""

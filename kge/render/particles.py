@@ -20,6 +20,7 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.blend import Blend
 from kge.components.material import Material
 from kge.components.particles import ParticleEmitter
 from kge.errors import KgeError, ValidationError
@@ -103,7 +104,7 @@ def _vertex_rows(n: int) -> np.ndarray:
 class ParticleGroup(pyglet.graphics.Group):
     """Texture, blend mode and shader of particles in one layer."""
 
-    def __init__(self, texture: Any, blend: str, program: Any, parent: Any) -> None:
+    def __init__(self, texture: Any, blend: Blend, program: Any, parent: Any) -> None:
         super().__init__(order=0, parent=parent)
         self.texture = texture
         self.blend = blend

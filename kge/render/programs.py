@@ -32,20 +32,20 @@ from typing import Any
 import pyglet
 from pyglet import gl
 
+from kge.components.blend import Blend
 from kge.components.material import Shader, ShaderWarning
 from kge.render.glutil import program
 
 BLEND_FACTORS = {
-    "alpha": (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_ALPHA),
-    "premultiplied": (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_ALPHA),
-    "add": (gl.GL_ONE, gl.GL_ONE),
-    "additive": (gl.GL_ONE, gl.GL_ONE),
-    "multiply": (gl.GL_DST_COLOR, gl.GL_ONE_MINUS_SRC_ALPHA),
-    "screen": (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_COLOR),
+    Blend.ALPHA: (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_ALPHA),
+    Blend.PREMULTIPLIED: (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_ALPHA),
+    Blend.ADDITIVE: (gl.GL_ONE, gl.GL_ONE),
+    Blend.MULTIPLY: (gl.GL_DST_COLOR, gl.GL_ONE_MINUS_SRC_ALPHA),
+    Blend.SCREEN: (gl.GL_ONE, gl.GL_ONE_MINUS_SRC_COLOR),
 }
 
 
-def set_blend(mode: str) -> None:
+def set_blend(mode: Blend) -> None:
     """Enable blending in ``mode`` (alpha always accumulates as "over")."""
     src, dst = BLEND_FACTORS[mode]
     gl.glEnable(gl.GL_BLEND)

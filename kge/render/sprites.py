@@ -22,6 +22,7 @@ from typing import Any
 import numpy as np
 import pyglet
 
+from kge.components.blend import Blend
 from kge.components.material import Material
 from kge.components.sprite import Sprite
 from kge.errors import KgeError, ValidationError
@@ -208,8 +209,11 @@ class SpriteStore:
         return default_program("sprite", output), parent
 
     @staticmethod
-    def _blend(comp: Sprite) -> str:
-        return "premultiplied" if isinstance(comp.image, RenderTexture) else comp.blend
+    def _blend(comp: Sprite) -> Blend:
+        # a camera's render texture holds premultiplied colour
+        if isinstance(comp.image, RenderTexture) and comp.blend is Blend.ALPHA:
+            return Blend.PREMULTIPLIED
+        return comp.blend
 
     def sync(self, entity: int, comp: Sprite, transform: Any, ppm: float,
              material: Material | None = None) -> None:  # fmt: skip

@@ -32,21 +32,30 @@ from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
 _VERTEX = """#version 330 core
 in vec2 position;
 in vec2 tex_coords;
+in vec4 uv_rect;
 out vec2 uv;
+flat out vec4 rect;
 uniform WindowBlock { mat4 projection; mat4 view; } window;
 uniform vec2 shift;
 void main() {
     uv = tex_coords;
+    rect = uv_rect;
     gl_Position = window.projection * window.view * vec4(position + shift, 0.0, 1.0);
 }
 """
 _FRAGMENT = """#version 330 core
 in vec2 uv;
+flat in vec4 rect;
 out vec4 color;
 uniform sampler2D tile_texture;
 uniform vec4 tint;
 void main() {
-    color = texture(tile_texture, uv) * tint;
+    // stay half a texel inside the tile's own image: a fragment on a tile's edge,
+    // wherever the camera sits, never samples the next tile of the sheet
+    vec2 inset = 0.5 / vec2(textureSize(tile_texture, 0));
+    vec2 lo = min(rect.xy, rect.zw) + inset;
+    vec2 hi = max(rect.xy, rect.zw) - inset;
+    color = texture(tile_texture, clamp(uv, lo, max(lo, hi))) * tint;
 }
 """
 _program_cache: list[Any] = []
@@ -131,6 +140,15 @@ def tile_uvs(
     out[..., 0] = b[:, 0, None] + u * (b[:, 2, None] - b[:, 0, None])
     out[..., 1] = b[:, 1, None] + v * (b[:, 3, None] - b[:, 1, None])
     return out
+
+
+def uv_rects(uvs: np.ndarray) -> np.ndarray:
+    """(n, 4, 4) per-corner (u0, v0, u1, v1) of each tile's image, from (n, 4, 2) uvs.
+
+    The fragment shader clamps sampling inside it (no bleeding from neighbours).
+    """
+    rect = np.concatenate([uvs.min(axis=1), uvs.max(axis=1)], axis=-1)
+    return np.repeat(rect[:, None, :], 4, axis=1).astype(np.float32)
 
 
 def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarray) -> np.ndarray:
@@ -280,6 +298,7 @@ class MapDrawing:
                 group=g,
                 position=("f", quads[sel].ravel()),
                 tex_coords=("f", uvs[sel].ravel()),
+                uv_rect=("f", uv_rects(uvs[sel]).ravel()),
             )
             chunk.lists.append(vl)
         return chunk
@@ -314,6 +333,7 @@ class MapDrawing:
                     group=g,
                     position=("f", pos),
                     tex_coords=("f", uv),
+                    uv_rect=("f", np.tile(np.array(b, np.float32), 4)),
                 )
                 entry = self.images[i] = (vl, g)
             entry[1].shift = _shift(frame, data, layer.style)

@@ -1,15 +1,15 @@
 """Animation systems and the plugin that installs them: sprite clips, tweens, camera shake.
 
-===========================  ==============  ===========================================
-system                       stage (order)   does
-===========================  ==============  ===========================================
-``AnimationFrameStart``      INPUT (-1000)   clears this frame's ``AnimationEvents``
-``FixedTweens``              FIXED (150)     tweens of physics bodies: velocities
-``ShakeRestore``             UPDATE (0)      takes last frame's shake offset off
-``AnimationSystem``          UPDATE (200)    advances every Animator, events, hooks
-``TweenSystem``              UPDATE (210)    advances every other tween
-``ShakeApply``               LATE (300)      decays trauma, adds this frame's offset
-===========================  ==============  ===========================================
+===========================  ======================  ===================================
+system                       stage, set              does
+===========================  ======================  ===================================
+``AnimationFrameStart``      INPUT, FIRST            clears the deprecated lists
+``FixedTweens``              FIXED, PRE_PHYSICS      tweens of physics bodies: velocities
+``ShakeRestore``             UPDATE, FIRST           takes last frame's shake offset off
+``AnimationSystem``          UPDATE, ANIMATION       advances every Animator, events, hooks
+``TweenSystem``              UPDATE, ANIMATION       every other tween (after the clips)
+``ShakeApply``               LATE, CAMERA_EFFECTS    decays trauma, adds this frame's offset
+===========================  ======================  ===================================
 
 Everything runs on game time: the dt the App hands to the UPDATE stage is
 scaled by ``time_scale``, zero while paused, one fixed step on ``single_step``,
@@ -36,9 +36,15 @@ from kge.errors import MissingComponentError
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.scene import Time
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.systems.behaviour import BehaviourRunner
-from kge.world import World
+from kge.world import World, deprecate_resource, stored_resource
+
+deprecate_resource(
+    AnimationEvents,
+    "read world.events(AnimationEvent) (or AnimationFinished, TweenFinished), "
+    "or the Behaviour hooks (on_animation_event...)",
+)
 
 
 class Animations:
@@ -188,7 +194,8 @@ def tweens_of(world: World) -> Tweens:
 
 
 def events_of(world: World) -> AnimationEvents:
-    found = world.try_resource(AnimationEvents)
+    """The deprecated per-frame lists (kept filled for one release)."""
+    found = stored_resource(world, AnimationEvents)
     if found is None:
         found = world.insert_resource(AnimationEvents())
     return found
@@ -201,10 +208,10 @@ def _hook(world: World, entity: int | None, name: str, event: Any) -> None:
 
 
 class AnimationFrameStart(System):
-    """Clears the per-frame animation event lists (first thing in a frame)."""
+    """Clears the deprecated ``AnimationEvents`` lists (first thing in a frame)."""
 
     stage = Stage.INPUT
-    order = -1000
+    in_set = SystemSet.FIRST
 
     def process(self, dt: float) -> None:
         events_of(self.world).clear()
@@ -214,7 +221,7 @@ class AnimationSystem(System):
     """Advances every Animator with numpy, then delivers frame and end events."""
 
     stage = Stage.UPDATE
-    order = 200
+    in_set = SystemSet.ANIMATION
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -236,6 +243,7 @@ class AnimationSystem(System):
             clip = str(anim.current) if anim is not None else ""
             ev = AnimationEvent(entity, clip, name, frame)
             self.events.frame.append(ev)
+            world.emit(ev)
             _hook(world, entity, "on_animation_event", ev)
         ended = sorted(int(state.entity[r]) for r in crossings.finished.tolist())
         for entity in ended:
@@ -244,6 +252,7 @@ class AnimationSystem(System):
                 continue
             fin = AnimationFinished(entity, str(anim.current))
             self.events.finished.append(fin)
+            world.emit(fin)
             _hook(world, entity, "on_animation_end", fin)
             anims._after_end(entity, anim)
 
@@ -253,6 +262,7 @@ def _finished(world: World, handles: list[TweenHandle]) -> None:
     for h in handles:
         ev = TweenFinished(h.entity, h, h.name)
         events.tweens.append(ev)
+        world.emit(ev)
         _hook(world, h.entity, "on_tween_end", ev)
 
 
@@ -260,7 +270,8 @@ class TweenSystem(System):
     """Advances every tween not driving a physics body (game time, once per frame)."""
 
     stage = Stage.UPDATE
-    order = 210
+    in_set = SystemSet.ANIMATION
+    after = (AnimationSystem,)
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -274,7 +285,7 @@ class FixedTweens(System):
     """Advances tweens of physics bodies' Transforms in the fixed step, before physics."""
 
     stage = Stage.FIXED
-    order = 150
+    in_set = SystemSet.PRE_PHYSICS
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -297,7 +308,7 @@ class ShakeRestore(System):
     """Takes last frame's shake offset off the camera before this frame's updates."""
 
     stage = Stage.UPDATE
-    order = 0
+    in_set = SystemSet.FIRST
     applied: tuple[Camera, tuple[float, float]] | None = None
 
     def process(self, dt: float) -> None:
@@ -312,7 +323,7 @@ class ShakeApply(System):
     """Decays trauma and adds this frame's shake offset to the active camera (LATE)."""
 
     stage = Stage.LATE
-    order = 300
+    in_set = SystemSet.CAMERA_EFFECTS
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -403,4 +414,4 @@ class AnimationPlugin(Plugin):
             TweenSystem(), ShakeApply(),
         ):  # fmt: skip
             world.add_system(system)
-        passes_for(world).add(_AtlasPass(world, anims), phase="before", order=-100)
+        passes_for(world).add(_AtlasPass(world, anims), phase="before", name="animation")

@@ -18,7 +18,7 @@ from kge.components.rigidbody import RigidBody
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import keep_resource
 from kge.world import World
 
@@ -64,7 +64,7 @@ class LightingPlugin(Plugin):
                                               textures)  # fmt: skip
             lm.draw(frame, lighting, view.sprites.normals if view is not None else None)
 
-        passes_for(world).add(draw, phase="view", order=200)
+        passes_for(world).add(draw, phase="view", name="lighting")
         world.add_system(_LightMapOwner(holder))
 
 
@@ -73,7 +73,7 @@ class _LightMapOwner(System):
     window's context, so they are deleted there and then, not by the garbage collector)."""
 
     stage = Stage.RENDER
-    order = 1_000_000
+    in_set = SystemSet.LAST
 
     def __init__(self, holder: dict[str, Any]) -> None:
         self.holder = holder

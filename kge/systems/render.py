@@ -32,7 +32,7 @@ from kge.host import Host
 from kge.input import Input
 from kge.keys import Key
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.world import World
 
 
@@ -40,7 +40,7 @@ class RenderSystem(System):
     """Draws the world's drawables with the active camera (RENDER stage)."""
 
     stage = Stage.RENDER
-    order = 0
+    in_set = SystemSet.DRAW
 
     def attach(self, world: Any) -> None:
         super().attach(world)
@@ -60,7 +60,7 @@ class RenderStepClock(System):
     """Starts the fixed-step timer (first in the FIXED stage)."""
 
     stage = Stage.FIXED
-    order = -1_000_000
+    in_set = SystemSet.FIRST
     started = 0.0
 
     def process(self, dt: float) -> None:
@@ -71,7 +71,7 @@ class RenderStepRecorder(System):
     """Records poses for interpolation and the step time (last in the FIXED stage)."""
 
     stage = Stage.FIXED
-    order = 1_000_000
+    in_set = SystemSet.LAST
 
     def process(self, dt: float) -> None:
         renderer = self.world.get_system(RenderSystem)
@@ -86,7 +86,7 @@ class CameraFollow(System):
     """Moves every camera with ``follow`` set towards its target (LATE stage)."""
 
     stage = Stage.LATE
-    order = 200
+    in_set = SystemSet.CAMERA
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -117,7 +117,7 @@ class DebugKeys(System):
     """
 
     stage = Stage.INPUT
-    order = 50
+    in_set = SystemSet.DEBUG
 
     def process(self, dt: float) -> None:
         keys = self.world.try_resource(Input)

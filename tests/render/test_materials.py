@@ -6,7 +6,7 @@ import warnings
 
 import pytest
 
-from kge import ParticleEmitter, Transform, Tween, Tweens
+from kge import Blend, ParticleEmitter, Transform, Tween, Tweens
 from kge.components.camera import Camera
 from kge.components.drawables import Rect
 from kge.components.material import Material, Shader, ShaderWarning
@@ -110,10 +110,10 @@ BACK = (200, 100, 50)
 
 
 @pytest.mark.parametrize(("blend", "color", "expected"), [
-    ("alpha", (255, 0, 0, 128), (228, 50, 25)),
-    ("add", (0, 100, 200, 255), (200, 200, 250)),
-    ("multiply", (128, 128, 128, 255), (100, 50, 25)),
-    ("screen", (128, 128, 128, 255), (228, 178, 153)),
+    (Blend.ALPHA, (255, 0, 0, 128), (228, 50, 25)),
+    (Blend.ADDITIVE, (0, 100, 200, 255), (200, 200, 250)),
+    (Blend.MULTIPLY, (128, 128, 128, 255), (100, 50, 25)),
+    (Blend.SCREEN, (128, 128, 128, 255), (228, 178, 153)),
 ])  # fmt: skip
 def test_blend_modes_combine_with_what_is_below(make_app, blend, color, expected):
     def scene(world):

@@ -10,8 +10,8 @@ import pytest
 from kge import Text, Transform
 from kge.components.camera import Camera
 from kge.components.drawables import Rect
-from kge.components.resolution import Resolution
-from kge.components.sprite import Sprite
+from kge.components.resolution import Resolution, ScaleMode
+from kge.components.sprite import Sprite, TextureFilter
 from kge.errors import ValidationError
 from kge.render.images import checker
 
@@ -31,7 +31,7 @@ def _design(mode: Any, **kw):
 
 
 def test_letterbox_scales_uniformly_with_bars(make_app):
-    app = make_app(_design("letterbox"), size=WINDOW, background=(0, 60, 0))
+    app = make_app(_design(ScaleMode.LETTERBOX), size=WINDOW, background=(0, 60, 0))
     px = pixels(app)
     # 200 x 100 at 2x is 400 x 200: 50-pixel bars above and below
     assert tuple(px[10, 200, :3]) == BARS and tuple(px[290, 200, :3]) == BARS
@@ -42,7 +42,7 @@ def test_letterbox_scales_uniformly_with_bars(make_app):
 
 
 def test_stretch_fills_the_window(make_app):
-    px = pixels(make_app(_design("stretch"), size=WINDOW))
+    px = pixels(make_app(_design(ScaleMode.STRETCH), size=WINDOW))
     x0, x1, y0, y1 = bbox(mask(px, RED))
     assert (x1 - x0 + 1, y1 - y0 + 1) == (40, 60)  # 2x across, 3x up
     assert not mask(px, BARS, 2).any()
@@ -50,7 +50,7 @@ def test_stretch_fills_the_window(make_app):
 
 def test_integer_scaling_keeps_pixels_square_and_whole(make_app):
     def scene(world):
-        _design("integer")(world)
+        _design(ScaleMode.INTEGER)(world)
         world.spawn(Transform(-5.0, 0.0), Sprite(checker(8, 8, 1, (0, 0, 0), (255, 255, 255)),
                                                  size=(0.8, 0.8)))  # fmt: skip
 
@@ -66,7 +66,7 @@ def test_integer_scaling_keeps_pixels_square_and_whole(make_app):
 
 
 def test_screen_coordinates_are_design_pixels(make_app):
-    app = make_app(_design("letterbox"), size=WINDOW)
+    app = make_app(_design(ScaleMode.LETTERBOX), size=WINDOW)
     assert app.screen_to_world((100.0, 50.0)) == pytest.approx((0.0, 0.0))
     assert app.screen_to_world((110.0, 50.0)) == pytest.approx((1.0, 0.0))
     res = app.world.resource(Resolution)
@@ -75,7 +75,7 @@ def test_screen_coordinates_are_design_pixels(make_app):
 
 def test_hud_text_is_placed_in_design_pixels_and_baked_at_window_size(make_app):
     def scene(world):
-        _design("letterbox")(world)
+        _design(ScaleMode.LETTERBOX)(world)
         world.spawn(Text("HI", size=12, color=(0, 255, 0, 255), screen_space=True,
                          offset=(10, 90), anchor=(0, 1)))  # fmt: skip
 
@@ -101,10 +101,10 @@ def test_zero_or_huge_resolutions_are_refused(w, h):
 def test_snapping_puts_sprites_and_the_camera_on_whole_design_pixels(make_app):
     def frame(x: float, snap: bool) -> np.ndarray:
         def scene(world):
-            world.insert_resource(Resolution(200, 100, mode="integer", snap=snap))
+            world.insert_resource(Resolution(200, 100, mode=ScaleMode.INTEGER, snap=snap))
             world.insert_resource(Camera(pixels_per_meter=10, center=(0.031, 0.0)))
             world.spawn(Transform(x, 0.0), Sprite(checker(4, 4, 1, (0, 0, 0), (255, 255, 255)),
-                                                  size=(0.4, 0.4), filter="linear"))  # fmt: skip
+                                                  size=(0.4, 0.4), filter=TextureFilter.LINEAR))  # fmt: skip
 
         return pixels(make_app(scene, size=WINDOW))
 

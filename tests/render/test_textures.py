@@ -10,7 +10,7 @@ import pytest
 
 from kge import Animator, Clip, Transform
 from kge.components.camera import Camera
-from kge.components.sprite import Sprite
+from kge.components.sprite import Sprite, TextureFilter, TextureWrap
 from kge.errors import ValidationError
 from kge.render.images import ImageRegion, PixelImage, checker, from_array
 
@@ -29,7 +29,7 @@ def _row(make_app, sprite: Sprite, ppm: float = 20.0) -> np.ndarray:
 
 def test_nearest_keeps_pixel_edges_linear_blends_them(make_app):
     nearest = _row(make_app, Sprite(BLACK_WHITE, size=(4.0, 1.0)))
-    linear = _row(make_app, Sprite(BLACK_WHITE, size=(4.0, 1.0), filter="linear"))
+    linear = _row(make_app, Sprite(BLACK_WHITE, size=(4.0, 1.0), filter=TextureFilter.LINEAR))
     inside = slice(SIZE[0] // 2 - 38, SIZE[0] // 2 + 38)
     assert set(np.unique(nearest[inside, 1])) == {0, 255}
     mids = ((linear[inside, 1] > 10) & (linear[inside, 1] < 245)).sum()
@@ -48,16 +48,16 @@ def test_mipmaps_average_a_pattern_drawn_much_smaller_than_its_pixels(make_app):
         cy, cx = SIZE[1] // 2, SIZE[0] // 2
         return float(px[cy - 3 : cy + 3, cx - 3 : cx + 3, 1].std())
 
-    assert spread(filter="linear", mipmaps=True) < 12  # an even grey
+    assert spread(filter=TextureFilter.LINEAR, mipmaps=True) < 12  # an even grey
     assert spread() > 60  # nearest picks black or white texels: noise
 
 
 def test_repeat_tiles_one_image_over_the_sprite(make_app):
-    row = _row(make_app, Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap="repeat", tile=(1.0, 1.0)))
+    row = _row(make_app, Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap=TextureWrap.REPEAT, tile=(1.0, 1.0)))
     inside = row[SIZE[0] // 2 - 80 : SIZE[0] // 2 + 80, 1]
     rises = np.count_nonzero(np.diff((inside > 128).astype(int)) == 1)
     assert rises == 8  # eight copies, one rising edge each
-    mirrored = _row(make_app, Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap="mirror", tile=(1.0, 1.0)))
+    mirrored = _row(make_app, Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap=TextureWrap.MIRROR, tile=(1.0, 1.0)))
     inside = mirrored[SIZE[0] // 2 - 80 : SIZE[0] // 2 + 80, 1]
     assert np.count_nonzero(np.diff((inside > 128).astype(int)) == 1) == 4  # pairs meet
 
@@ -65,7 +65,7 @@ def test_repeat_tiles_one_image_over_the_sprite(make_app):
 def test_scrolling_a_repeated_sprite_shifts_the_pattern(make_app):
     def scene(world):
         world.insert_resource(Camera(pixels_per_meter=20))
-        world.spawn(Transform(), Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap="repeat",
+        world.spawn(Transform(), Sprite(BLACK_WHITE, size=(8.0, 1.0), wrap=TextureWrap.REPEAT,
                                         tile=(1.0, 1.0)))  # fmt: skip
 
     app = make_app(scene, background=(255, 0, 0))
@@ -104,7 +104,7 @@ def test_a_nine_patch_wider_border_than_its_image_is_refused(make_app):
     with pytest.raises(ValidationError, match="nine_patch"):
         pixels(app)
     with pytest.raises(ValidationError, match="nine_patch"):
-        Sprite("x.png", nine_patch=(1, 1, 1, 1), wrap="repeat")
+        Sprite("x.png", nine_patch=(1, 1, 1, 1), wrap=TextureWrap.REPEAT)
 
 
 def test_image_regions_are_images(make_app):

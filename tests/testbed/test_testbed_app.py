@@ -142,7 +142,7 @@ def test_tab_hides_the_list_and_clicks_then_reach_the_scene() -> None:
 
 def test_escape_quits() -> None:
     app = open_testbed("hello-world")
-    app._running = True
     app.input.press(Key.ESCAPE)
-    app.step()
-    assert not app._running
+    frames = app.frame_count
+    app.run(frames=100)  # headless: stops at quit
+    assert app.frame_count == frames + 1 and not app.running

@@ -11,6 +11,7 @@ import math
 from typing import Any
 
 from kge.components import Behaviour, Name, Script, Transform
+from kge.components.blend import Blend
 from kge.components.camera import Camera
 from kge.components.collider import Collider
 from kge.components.debug import DebugDraw
@@ -22,8 +23,8 @@ from kge.components.particles import EmitCircle, ParticleEmitter
 from kge.components.post import CRT, Bloom, ColorGrade, Vignette
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle, Polygon
-from kge.components.sprite import Sprite
-from kge.components.text import Align, Overflow, Text
+from kge.components.sprite import Sprite, TextureFilter
+from kge.components.text import Text, TextAlign, TextOverflow
 from kge.components.tween import Tween
 from kge.input import Input
 from kge.keys import Key
@@ -34,6 +35,8 @@ from kge.testbed.registry import sample
 from kge.testbed.samples.build import named
 from kge.world import World
 
+#: painted art: sampled smoothly when scaled or turned
+SMOOTH = TextureFilter.LINEAR
 PARAGRAPH = ("Long labels wrap inside their box, lines sit where align puts them, and text "
              "that does not fit is clipped, ends with an ellipsis or shrinks to fit.")
 def _clean(world: World) -> None:
@@ -41,15 +44,15 @@ def _clean(world: World) -> None:
     world.insert_resource(DebugDraw(enabled=False))
 
 
-BOXES: tuple[tuple[Align, Overflow, dict[str, Any]], ...] = (
-    ("left", "visible", {}),
-    ("center", "visible", {}),
-    ("right", "visible", {}),
-    ("justify", "visible", {}),
-    ("left", "clip", {"height": 0.75}),
-    ("left", "ellipsis", {"height": 0.75}),
-    ("left", "shrink", {"height": 0.75}),
-    ("center", "visible", {"line_spacing": 1.6}),
+BOXES: tuple[tuple[TextAlign, TextOverflow, dict[str, Any]], ...] = (
+    (TextAlign.LEFT, TextOverflow.VISIBLE, {}),
+    (TextAlign.CENTER, TextOverflow.VISIBLE, {}),
+    (TextAlign.RIGHT, TextOverflow.VISIBLE, {}),
+    (TextAlign.JUSTIFY, TextOverflow.VISIBLE, {}),
+    (TextAlign.LEFT, TextOverflow.CLIP, {"height": 0.75}),
+    (TextAlign.LEFT, TextOverflow.ELLIPSIS, {"height": 0.75}),
+    (TextAlign.LEFT, TextOverflow.SHRINK, {"height": 0.75}),
+    (TextAlign.CENTER, TextOverflow.VISIBLE, {"line_spacing": 1.6}),
 )
 
 
@@ -169,7 +172,7 @@ def shader_materials(world: World) -> None:
     _clean(world)
     crate_image = from_array(paint.crate(64))
     crate = world.spawn(Transform(-4.0, 0.5), Name("dissolving"),
-                        Sprite(crate_image, size=(3.0, 3.0), filter="linear"),
+                        Sprite(crate_image, size=(3.0, 3.0), filter=SMOOTH),
                         Material(DISSOLVE, {"amount": 0.0}))  # fmt: skip
     tweens_of(world).start(crate, Tween(Material, "uniforms.amount", 1.0, 2.2, ease="sine_in_out",
                                         repeat=-1, yoyo=True))  # fmt: skip
@@ -195,12 +198,12 @@ def _the_dissolve_moves(app) -> None:  # type: ignore[no-untyped-def]
 def blend_modes(world: World) -> None:
     _clean(world)
     world.spawn(Transform(0.0, 0.0), Sprite(from_array(paint.sky(256, 128)), size=(20.0, 10.0),
-                                            filter="linear"))  # fmt: skip
+                                            filter=SMOOTH))  # fmt: skip
     orb = from_array(paint.orb(64, (90, 170, 255)))
-    for i, mode in enumerate(("alpha", "add", "multiply", "screen")):
+    for i, mode in enumerate((Blend.ALPHA, Blend.ADDITIVE, Blend.MULTIPLY, Blend.SCREEN)):
         x = -6.75 + 4.5 * i
         world.spawn(Transform(x, 3.4), Text(mode, size=14, outline=2.0, layer=2))
-        world.spawn(Transform(x, 1.3), Sprite(orb, size=(3.0, 3.0), filter="linear", blend=mode,
+        world.spawn(Transform(x, 1.3), Sprite(orb, size=(3.0, 3.0), filter=SMOOTH, blend=mode,
                                               layer=1))  # fmt: skip
         world.spawn(Transform(x, -2.0), Rect(2.6, 2.6, color=(140, 140, 140, 200), blend=mode,
                                              layer=1))  # fmt: skip
@@ -209,7 +212,7 @@ def blend_modes(world: World) -> None:
 @blend_modes.claim
 def _four_modes(app) -> None:  # type: ignore[no-untyped-def]
     modes = sorted({s.blend for _, (s,) in app.world.query(Sprite)})
-    assert modes == ["add", "alpha", "multiply", "screen"]
+    assert modes == ["additive", "alpha", "multiply", "screen"]
 
 
 class _ToggleEffects(Script):
@@ -234,17 +237,17 @@ def post_effects(world: World) -> None:
         Behaviour(_ToggleEffects()))  # fmt: skip
     world.spawn(Transform(0.0, 0.0), Sprite(from_array(paint.sky(256, 128, (20, 24, 60),
                                                                  (90, 60, 110))),
-                                            size=(26.0, 14.0), filter="linear"))  # fmt: skip
+                                            size=(26.0, 14.0), filter=SMOOTH))  # fmt: skip
     world.spawn(Transform(0.0, -4.0), Collider(Box(12.0, 0.5)), Rect(24.0, 1.0, color=(50, 60, 80)))
     orb = from_array(paint.orb(64))
     for i in range(7):
         world.spawn(Transform(-7.5 + 2.5 * i, 1.0 + 1.5 * math.sin(i)), RigidBody(),
                     Collider(Circle(0.5), restitution=0.6),
-                    Sprite(orb, size=(1.0, 1.0), filter="linear"))  # fmt: skip
+                    Sprite(orb, size=(1.0, 1.0), filter=SMOOTH))  # fmt: skip
     crate = from_array(paint.crate(64))
     for i in range(4):
         world.spawn(Transform(-3.0 + 2.0 * i, -3.0), RigidBody(), Collider(Box(0.5, 0.5)),
-                    Sprite(crate, size=(1.0, 1.0), filter="linear"))  # fmt: skip
+                    Sprite(crate, size=(1.0, 1.0), filter=SMOOTH))  # fmt: skip
 
 
 @post_effects.claim
@@ -260,7 +263,7 @@ def _terrain(world: World) -> None:
         world.spawn(Transform(), Collider(Polygon(quad)),
                     Shape(quad, color=(70, 100, 70), layer=1))  # fmt: skip
     world.spawn(Transform(0.0, 2.0), Sprite(from_array(paint.sky(256, 128)), size=(100.0, 50.0),
-                                            filter="linear"))  # fmt: skip
+                                            filter=SMOOTH))  # fmt: skip
 
 
 @sample("Cameras", "Split Screen", help="Two balls roll down a long slope; each half of "
@@ -273,7 +276,7 @@ def split_screen(world: World) -> None:
         ball = world.spawn(Transform(x, 13.0), Name(f"ball-{i}"), RigidBody(),
                            Collider(Circle(0.6), friction=0.9 - 0.5 * i),
                            Sprite(from_array(paint.hero(64, body)) if i else hero, size=(1.2, 1.2),
-                                  filter="linear"))  # fmt: skip
+                                  filter=SMOOTH))  # fmt: skip
         world.spawn(Name(f"camera-{i}"), Camera(
             pixels_per_meter=32, follow=ball, smoothing=0.2,
             viewport=(0.5 * i, 0.0, 0.5, 1.0)))  # fmt: skip
@@ -303,13 +306,13 @@ def minimap(world: World) -> None:
     _terrain(world)
     ball = world.spawn(Transform(-34.0, 13.0), Name("ball"), RigidBody(),
                        Collider(Circle(0.6), friction=0.9),
-                       Sprite(from_array(paint.hero(64)), size=(1.2, 1.2), filter="linear"),
+                       Sprite(from_array(paint.hero(64)), size=(1.2, 1.2), filter=SMOOTH),
                        Disc(1.2, color=(255, 80, 60), layer=5))  # fmt: skip
     world.spawn(Camera(pixels_per_meter=32, follow=ball, layers=(0, 1, 2)))
     world.spawn(Camera(pixels_per_meter=3, center=(0.0, 0.0), viewport=(0.72, 0.7, 0.26, 0.28),
                        background=(10, 12, 20), layers=(1, 5), order=1))  # fmt: skip
     world.spawn(Transform(100.0, 0.0), Name("spinner"), Behaviour(_Spin()),
-                Sprite(from_array(paint.crate(64)), size=(2.0, 2.0), filter="linear", layer=9))
+                Sprite(from_array(paint.crate(64)), size=(2.0, 2.0), filter=SMOOTH, layer=9))
     world.spawn(Camera(center=(100.0, 0.0), pixels_per_meter=24, target="monitor",
                        target_size=(128, 96), background=(30, 40, 70), layers=(9,)))  # fmt: skip
     world.spawn(Transform(-28.0, 14.0), Name("monitor"),
@@ -346,7 +349,7 @@ def camera_rotation(world: World) -> None:
     for row in range(6):
         world.spawn(Transform(0.0, 0.5 + row * 1.0), Name("crate"), RigidBody(),
                     Collider(Box(0.5, 0.5), friction=0.8),
-                    Sprite(crate, size=(1.0, 1.0), filter="linear"))  # fmt: skip
+                    Sprite(crate, size=(1.0, 1.0), filter=SMOOTH))  # fmt: skip
     world.spawn(Transform(0.0, 7.5), Text("turning camera", size=18, outline=2.0))
 
 
