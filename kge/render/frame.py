@@ -19,6 +19,7 @@ from kge.components.camera import Camera
 from kge.components.camera import cameras as camera_list
 from kge.components.debug import DebugDraw
 from kge.components.drawables import DRAWABLE_TYPES
+from kge.components.lights import Lighting
 from kge.components.material import Material
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
@@ -45,11 +46,12 @@ from kge.render.glutil import drawing_into
 from kge.render.groups import WORLD, Groups, ViewState
 from kge.render.meshes import MeshStore
 from kge.render.passes import Frame, RenderPasses
+from kge.render.passtime import PassTimer
 from kge.render.poses import PoseTable
 from kge.render.programs import FrameUniforms
 from kge.render.setup import Renderer, ensure_renderer
 from kge.render.sprites import SpriteStore
-from kge.render.stats import StatsOverlay
+from kge.render.stats import StatsOverlay, light_note
 from kge.render.text.store import TextStore
 from kge.render.textures import TextureCache
 
@@ -73,6 +75,7 @@ class WorldView:
         self.labels = TextStore(self.batch, self.groups, self.poses, self.textures)
         self.debug = DebugDrawer(world, self.batch, self.groups, self.poses)
         self.stats = StatsOverlay(self.batch, self.groups)
+        self.timer = PassTimer()  # the light pass's share, while the overlay is shown
         self.cameras = CameraPasses(self.state, self.textures)
         self.integer = IntegerCanvas()
         self.dirty: set[int] = set()
@@ -212,6 +215,7 @@ class WorldView:
             self.debug.update(settings, poses, self._game_time())
             self.debug.meshes.poser.write(poses)
         shown = settings is not None and settings.stats
+        self.timer.start(shown)
         self.stats.update(
             shown, canvas.size[1], self.stat_values() if shown else {},
             throttle=not self.app.headless,
@@ -235,6 +239,7 @@ class WorldView:
         window.projection = ortho(window.width, window.height)
         window.view = pyglet.math.Mat4()
         self.cameras.forget({v.entity for v in views if v.camera.post})
+        self.timer.finish()
         r.clock.frame()
 
     def _frame(self, alpha: float, v: CameraView, view: Any, poses: Any, canvas: Canvas,
@@ -253,13 +258,14 @@ class WorldView:
         if self.renderer.clear:
             letterbox(canvas, self.app.background)
         snap = canvas.resolution is not None and canvas.resolution.snap
-        view_passes = passes.view() if passes is not None else []
+        view_passes = (list(zip(passes.names("view"), passes.view(), strict=True))
+                       if passes is not None else [])  # fmt: skip
 
         def scene(v: CameraView, rect: tuple[int, int, int, int]) -> None:
             self.cameras.scene_pass(window, v, rect, snap)
             frame = self._frame(alpha, v, v.view, poses, canvas, rect)
-            for view_pass in view_passes:
-                view_pass(frame)
+            for name, view_pass in view_passes:
+                self.timer.run(name, view_pass, frame)
             self.cameras.scene_pass(window, v, rect, snap)  # a pass may have moved GL state
             self.batch.draw()
 
@@ -268,8 +274,8 @@ class WorldView:
             self.cameras.scene_pass(window, v, canvas.rect, snap)
             self.state.shows = None
             frame = self._frame(alpha, v, v.view, poses, canvas)
-            for view_pass in view_passes:
-                view_pass(frame)
+            for name, view_pass in view_passes:
+                self.timer.run(name, view_pass, frame)
             self.cameras.scene_pass(window, v, canvas.rect, snap)
             self.state.shows = None
             gl.glDisable(gl.GL_SCISSOR_TEST)
@@ -311,6 +317,9 @@ class WorldView:
         values["bodies"] = len(self.world.query(RigidBody))
         values["contacts"] = len(self._touching)
         values["sprites"] = f"{len(self.sprites) - self.culled}/{len(self.sprites)}"
+        lighting = self.world.try_resource(Lighting)
+        if lighting is not None and lighting.enabled and self.timer.frame_ms > 0.0:
+            values["lights"] = light_note(self.timer.ms("lighting"), self.timer.frame_ms)
         return values
 
     # -- fixed-step hooks ----------------------------------------------------------------------
