@@ -116,7 +116,7 @@ void main()
 """
 )
 
-_FS_HEAD = """#version 150 core
+FS_HEAD = """#version 150 core
 in vec4 v_color;
 in vec2 v_uv;
 in vec2 v_world;
@@ -140,7 +140,7 @@ SHAPE_EFFECT = """vec4 effect(vec4 color, sampler2D tex, vec2 uv, vec2 world)
     return color;
 }
 """
-_HEAD_LINES = _FS_HEAD.count("\n")
+_HEAD_LINES = FS_HEAD.count("\n")
 _VERTEX = {"sprite": SPRITE_VS, "shape": SHAPE_VS}
 
 
@@ -172,7 +172,7 @@ def normal_program() -> Any:
 
 def fragment_source(effect: str, output: str = "straight") -> str:
     """The whole fragment shader around an ``effect`` function."""
-    return _FS_HEAD + effect + _FS_MAIN[output]
+    return FS_HEAD + effect + _FS_MAIN[output]
 
 
 def default_program(kind: str, output: str = "straight") -> Any:
@@ -197,7 +197,7 @@ def compile_error(exc: BaseException, head_lines: int) -> str:
 
 
 def material_program(shader: Shader, kind: str, vertex: str | None = None,
-                     head: str = _FS_HEAD, main: str | None = None) -> Any | None:  # fmt: skip
+                     head: str = FS_HEAD, main: str | None = None) -> Any | None:  # fmt: skip
     """The compiled program of ``shader`` for a drawable ``kind`` (cached), or None when it
     does not compile (reported once with a :class:`ShaderWarning`)."""
     key = (kind, hash(shader))

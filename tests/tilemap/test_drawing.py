@@ -260,3 +260,59 @@ def test_a_bounded_follow_camera_never_shows_past_the_map(
         app.render()
         px = frame_pixels(app)
     assert not strips, f"frames with background showing (frame, pixels): {strips}"
+
+
+TONE = """
+uniform vec3 tone;
+vec4 effect(vec4 color, sampler2D tex, vec2 uv, vec2 world) {
+    vec4 t = texture(tex, uv);
+    return vec4(tone * t.rgb, t.a) * color;
+}
+"""
+
+
+def test_a_tile_layer_drawn_with_a_material(tmp_path: Path, apps: list[App]) -> None:
+    """A Material on a tile layer: its shader draws every tile of that layer (uniforms
+    read each frame, so set() shows at once), other layers stay plain; None undoes it."""
+    import warnings
+
+    from kge.components.material import Material, Shader, ShaderWarning
+    from kge.tilemap.errors import TilemapError
+    from kge.tilemap.runtime import TileMaps
+
+    g = np.zeros((8, 10), np.int64)
+    g[7, :] = GROUND  # bottom row, (200, 60, 40)
+    other = np.zeros((8, 10), np.int64)
+    other[2, 3] = ONE_WAY  # (40, 200, 60), another layer
+    path = write_level(tmp_path, g, extra_layers=[TileLayerSpec("Top", other)])
+    tone = Material(Shader(TONE, name="tone"), {"tone": (0.5, 1.0, 0.0)})
+
+    def setup(world: Any) -> None:
+        world.insert_resource(Camera(center=(5.0, 4.0), pixels_per_meter=PPM))
+        load_map(world, path).set_material("Ground", tone)
+
+    app, px = render(apps, setup)
+    assert at(px, 4.5, 0.5) == (100, 60, 0)  # red halved, green kept, blue gone
+    assert at(px, 3.5, 5.5) == COLORS[1]  # the other layer is drawn plainly
+    tone.set("tone", (1.0, 0.0, 1.0))
+    app.render()
+    from kge.render.setup import frame_pixels
+
+    assert at(frame_pixels(app), 4.5, 0.5) == (200, 0, 40)
+    (tmap,) = app.world.resource(TileMaps).maps
+    tmap.set_material("Ground", None)
+    app.render()
+    assert at(frame_pixels(app), 4.5, 0.5) == COLORS[0]
+    broken = Material(Shader("vec4 effect(vec4 c, sampler2D t, vec2 uv, vec2 w) { return nope; }",
+                             name="broken"))  # fmt: skip
+    tmap.set_material("Ground", broken)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        app.render()
+    assert any(issubclass(w.category, ShaderWarning) and "broken" in str(w.message)
+               for w in caught)  # fmt: skip
+    assert at(frame_pixels(app), 4.5, 0.5) == COLORS[0]  # drawn plainly meanwhile
+    with pytest.raises(TilemapError, match="no tile layer 'Water'"):
+        tmap.set_material("Water", tone)
+    with pytest.raises(TilemapError, match="expected a Material"):
+        tmap.set_material("Ground", "tone")  # type: ignore[arg-type]
