@@ -12,7 +12,9 @@ of this process, so CPU time counts all of its work and little of other jobs'):
   unlit frame there is). The goal: lit / unlit <= 2;
 * ``text``: 100 labels, static (drawn only), and one label of the 100 changing its
   text every frame (laid out and baked again);
-* ``materials``: 1,000 sprites through a custom material shader beside the plain one;
+* ``materials``: 1,000 sprites through a custom material shader beside the plain one
+  (equal uniforms: they share one draw call); ``materials_each`` with a different
+  uniform value each (a draw call each, as animated materials are drawn);
 * ``post``: one camera with bloom, colour grading, vignette and CRT beside none;
 * ``cameras``: split screen plus a minimap (three cameras) beside one camera.
 
@@ -124,7 +126,7 @@ vec4 effect(vec4 color, sampler2D tex, vec2 uv, vec2 world)
 """
 
 
-def _sprites(world: Any, material: bool, n: int = 1000) -> None:
+def _sprites(world: Any, material: bool, n: int = 1000, distinct: bool = False) -> None:
     from kge import Camera, Material, Shader, Sprite, Transform
 
     world.insert_resource(Camera(pixels_per_meter=32))
@@ -132,8 +134,9 @@ def _sprites(world: Any, material: bool, n: int = 1000) -> None:
 
     crate, shader = from_array(paint.crate(32)), Shader(_SHADER, name="wave")
     rng = np.random.default_rng(1)
-    for x, y in rng.uniform((-14, -8), (14, 8), (n, 2)):
-        extra = (Material(shader, {"wave": 2.0}),) if material else ()
+    for i, (x, y) in enumerate(rng.uniform((-14, -8), (14, 8), (n, 2))):
+        wave = 2.0 + 0.001 * i if distinct else 2.0  # distinct values: a draw call each
+        extra = (Material(shader, {"wave": wave}),) if material else ()
         world.spawn(Transform(float(x), float(y)), Sprite(crate, size=(0.5, 0.5)), *extra)
 
 
@@ -209,10 +212,11 @@ def measure_text(frames: int) -> Row:
     return row
 
 
-def measure_materials(frames: int) -> Row:
+def measure_materials(frames: int, distinct: bool = False) -> Row:
     from kge import App
 
-    apps = [App(lambda w, m=m: _sprites(w, m), headless=True, size=SIZE) for m in (True, False)]
+    apps = [App(lambda w, m=m: _sprites(w, m, distinct=distinct), headless=True, size=SIZE)
+            for m in (True, False)]  # fmt: skip
     for app in apps:
         app.step(1)
     a_cpu, b_cpu = [], []
@@ -284,6 +288,7 @@ def run_section(quick: bool, progress: Callable[[str], None]) -> tuple[dict[str,
                          ("lights_bare", lambda: measure_lights(frames, bare=True)),
                          ("text", lambda: measure_text(frames)),
                          ("materials", lambda: measure_materials(frames)),
+                         ("materials_each", lambda: measure_materials(frames, True)),
                          ("post", lambda: measure_post(frames)),
                          ("cameras", lambda: measure_cameras(frames))):  # fmt: skip
             progress(f"rendering [{name}]")
@@ -298,7 +303,8 @@ _LABELS = {
     "lights_soft": ("6 lights, 0.3 m soft shadows", "lighting off"),
     "lights_bare": ("6 lights over a bare frame", "lighting off"),
     "text": ("100 labels, one changing each frame", "100 static labels"),
-    "materials": ("1,000 sprites, custom material", "1,000 plain sprites"),
+    "materials": ("1,000 sprites, one alike material", "1,000 plain sprites"),
+    "materials_each": ("1,000 sprites, each its own uniforms", "1,000 plain sprites"),
     "post": ("bloom + grade + vignette + CRT", "no post effects"),
     "cameras": ("split screen + minimap (3 cameras)", "one camera"),
 }

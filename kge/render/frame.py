@@ -156,6 +156,8 @@ class WorldView:
                 self.dirty.update(self.sprites.sprites)
                 self.dirty.update(self.labels.labels)
             self._ppm = ppm
+        # sprites whose material changed since they joined a shared group: drawn alone now
+        self.dirty.update(self.sprites.shared.diverged())
         if self.dirty:
             todo = sorted(self.dirty)
             self.dirty.clear()

@@ -29,6 +29,7 @@ from kge.errors import KgeError, ValidationError
 from kge.render.bulk import BulkPoser
 from kge.render.groups import WORLD, Groups
 from kge.render.images import RenderTexture
+from kge.render.material_share import SharedMaterials
 from kge.render.poses import PoseTable
 from kge.render.programs import (
     BLEND_FACTORS,
@@ -172,6 +173,8 @@ class SpriteStore:
         self._keys: dict[int, tuple[Any, ...]] = {}
         self._rows: dict[int, int] = {}
         self._material_groups: dict[int, MaterialGroup] = {}
+        #: alike materials share a group (one draw call); changed ones are drawn alone
+        self.shared = SharedMaterials()
         self.normals = NormalStore(textures)
         #: ``fn(entity) -> (texture, (x, y, w, h)) | None``: where an entity's pixels come
         #: from when not from ``Sprite.image`` (animated sprites draw from an atlas)
@@ -198,6 +201,10 @@ class SpriteStore:
         if material is not None:
             prog = material_program(material.shader, "sprite")
             if prog is not None:
+                shared = self.shared.group(entity, material, prog, parent, self.textures)
+                if shared is not None:
+                    self._material_groups.pop(entity, None)
+                    return prog, shared
                 group = self._material_groups.get(entity)
                 if group is None or group.material is not material or group.parent is not parent:
                     group = self._material_groups[entity] = MaterialGroup(
@@ -205,6 +212,7 @@ class SpriteStore:
                     )
                 return prog, group
         self._material_groups.pop(entity, None)
+        self.shared.forget(entity)
         output = "premultiplied" if self._blend(comp) == "premultiplied" else "straight"
         return default_program("sprite", output), parent
 
@@ -328,6 +336,7 @@ class SpriteStore:
         self._drop(entity)
         self.normals.remove(entity)
         self._material_groups.pop(entity, None)
+        self.shared.forget(entity, gone=True)
         if self._rows.pop(entity, None) is not None:
             self.poses.release(entity)
 

@@ -8,8 +8,8 @@ from benchmarks.rendering import lines, run_section, targets
 def test_every_rendering_row_runs_and_reports_both_variants() -> None:
     rows, why = run_section(quick=True, progress=lambda msg: None)
     assert why is None, why
-    assert set(rows) == {"lights", "lights_soft", "lights_bare", "text", "materials", "post",
-                         "cameras"}  # fmt: skip
+    assert set(rows) == {"lights", "lights_soft", "lights_bare", "text", "materials",
+                         "materials_each", "post", "cameras"}  # fmt: skip
     for name, r in rows.items():
         assert r["a_cpu"] > 0.0 and r["b_cpu"] > 0.0, name
         assert r["ratio"] == r["a_cpu"] / r["b_cpu"]

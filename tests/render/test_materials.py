@@ -127,3 +127,38 @@ def test_blend_modes_combine_with_what_is_below(make_app, blend, color, expected
     for y in (CENTER[0], CENTER[0] + 30):  # the shape, then the sprite
         got = px[y, CENTER[1], :3].astype(int)
         assert max(abs(got - expected)) <= 2, f"{blend}: {got.tolist()} != {expected}"
+
+
+def test_alike_materials_share_one_draw_and_a_changed_one_leaves(make_app):
+    """Sprites whose materials are equal share one group (one draw call); a material
+    changed later (set, tween) is drawn alone with its own values, the others unchanged."""
+    from kge.systems.render import RenderSystem
+
+    xs = [-3.6 + 1.2 * i for i in range(7)]
+
+    def scene(world):
+        world.insert_resource(Camera(pixels_per_meter=20))
+        for x in xs:
+            world.spawn(Transform(x, 0.0), Sprite(solid(4, 4, (0, 0, 255)), size=(0.8, 0.8)),
+                        Material(TINT, {"level": 1.0}))  # fmt: skip
+
+    app = make_app(scene)
+    px = pixels(app)
+    at = [(CENTER[0], int(SIZE[0] / 2 + x * 20)) for x in xs]
+    assert all(tuple(px[p][:3]) == (255, 0, 0) for p in at)
+    shared = app.world.get_system(RenderSystem).view.sprites.shared
+    assert len(shared) == 1 and not shared.alone  # seven sprites, one group
+    entities = [e for e, _ in app.world.query(Material)]
+    app.world.get(entities[3], Material).set("level", 0.0)  # no tracked write: still seen
+    px = pixels(app)
+    assert tuple(px[at[3]][:3]) == (0, 255, 0)
+    assert all(tuple(px[p][:3]) == (255, 0, 0) for i, p in enumerate(at) if i != 3)
+    assert shared.alone == {entities[3]} and len(shared) == 1
+    app.world.get(entities[3], Material).set("level", 1.0)  # alone for good: reads its own
+    app.world.get(entities[3], Material).set("level", 0.5)
+    assert 110 <= int(pixels(app)[at[3]][0]) <= 145
+    for e in entities:
+        app.world.despawn(e)
+    app.step(1)
+    pixels(app)
+    assert len(shared) == 0 and not shared.alone  # nothing kept for gone sprites
