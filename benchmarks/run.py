@@ -345,6 +345,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.particles_lights import game_lines
 
         out += game_lines(report["game"])
+    if report.get("rendering"):
+        from benchmarks.rendering import lines as rendering_lines
+
+        out += rendering_lines(report["rendering"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -505,9 +509,20 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ntile map:", tilemap.table(tiles))
+    drawing: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import rendering
+
+        drawing, why = rendering.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\n".join(rendering.lines(drawing)))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
+    if drawing:
+        goals += rendering.targets(drawing)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -531,6 +546,7 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "rendering": drawing,
         "targets": goals,
         "skipped": skipped,
     }

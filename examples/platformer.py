@@ -7,6 +7,11 @@ planks one-way platforms, and the map's objects (player start, coins, door)
 entities through a spawner registry. The door replaces the scene with the next
 level (``app.replace_scene``); the score travels along as a scene argument.
 
+The art around the tiles is painted in code (``kge.testbed.paint``) and drawn with
+linear filtering: a dusk sky, hills repeated along the level (one sprite), the hero
+and glowing coins. The camera's post stack blooms the coins; a second camera draws
+a minimap of the level in the corner.
+
 Keys: left/right (or A/D) run, space/up jumps. Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 """
@@ -23,6 +28,7 @@ import kge
 from kge import (
     App,
     Behaviour,
+    Bloom,
     Box,
     Camera,
     Collider,
@@ -35,11 +41,15 @@ from kge import (
     SensorBegin,
     Spawn,
     Spawners,
+    Sprite,
     Text,
+    TextureFilter,
+    TextureWrap,
     Transform,
     World,
+    from_array,
 )
-from kge.components import drawables as draw
+from kge.testbed import paint
 from kge.testbed.samples.tilemaps import levels
 
 WIDTH, HEIGHT = 960, 600
@@ -106,23 +116,51 @@ def _hud(world: World) -> None:
         t.text = f"level {score.level}   coins {score.coins}"
 
 
+HERO = from_array(paint.hero(64))
+COIN = from_array(paint.orb(32))
+SKY = from_array(paint.sky(256, 128))
+HILLS = from_array(paint.hills(256, 96))
+
+
 def player_start(spawn: Spawn) -> list[Any]:
     return [
         RigidBody(fixed_rotation=True),
         Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
-        draw.Rect(0.8, 0.9, color=(220, 60, 60, 255), layer=1),
+        Sprite(HERO, size=(1.0, 1.0), filter=TextureFilter.LINEAR, layer=2),
         Behaviour(Player()),
     ]
 
 
-SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": lambda s: None, "Door": lambda s: None})
+def coin(spawn: Spawn) -> list[Any]:
+    """A glowing orb instead of the tile: bright enough for the camera's bloom."""
+    return [Sprite(COIN, size=(0.8, 0.8), filter=TextureFilter.LINEAR, layer=2)]
+
+
+SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": coin, "Door": lambda s: None})
+
+
+def scenery(world: World, bounds: tuple[float, float, float, float]) -> None:
+    """A painted sky behind the level and hills repeated along it (one sprite)."""
+    x0, y0, x1, y1 = bounds
+    w, h = x1 - x0, y1 - y0
+    world.spawn(Transform((x0 + x1) / 2, (y0 + y1) / 2), Sprite(
+        SKY, size=(w + 20.0, h + 20.0), filter=TextureFilter.LINEAR, layer=-10))  # fmt: skip
+    world.spawn(Transform((x0 + x1) / 2, y0 + 3.0), Sprite(
+        HILLS, size=(w + 20.0, 6.0), filter=TextureFilter.LINEAR, wrap=TextureWrap.REPEAT,
+        tile=(16.0, 6.0), layer=-9))  # fmt: skip
 
 
 def level(world: World, path: Path | None = None, score: Score | None = None) -> None:
     world.insert_resource(score or Score())
     m = kge.load_map(world, path or levels()[0], spawners=SPAWNERS)
     player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
-    world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
+    world.spawn(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds,
+                       post=(Bloom(threshold=0.75, intensity=1.3, radius=10.0),)))  # fmt: skip
+    x0, y0, x1, y1 = m.bounds
+    world.spawn(Camera(center=((x0 + x1) / 2, (y0 + y1) / 2), order=1,  # the minimap
+                       pixels_per_meter=min(220.0 / (x1 - x0), 120.0 / (y1 - y0)),
+                       viewport=(0.74, 0.76, 0.24, 0.22), background=(15, 20, 35)))  # fmt: skip
+    scenery(world, m.bounds)
     world.spawn(Behaviour(Referee()))
     hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
     hud.offset = (12.0, float(HEIGHT - 10))

@@ -54,13 +54,14 @@ from kge.components import (
 from kge.components import drawables as draw
 from kge.components.animation import Animator, Clip, FrameRef, Loop, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
+from kge.components.blend import Blend
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 
 # particles and lights (issue 18): components here, plugins and the resource on first use
-from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
+from kge.components.material import Material, Shader, ShaderWarning
 from kge.components.particles import (
-    Blend,
     BurstOnHit,
     EmitBox,
     EmitCircle,
@@ -72,9 +73,11 @@ from kge.components.particles import (
     ParticleEmitter,
     ParticleSpace,
 )
+from kge.components.post import CRT, Bloom, ColorGrade, Vignette
+from kge.components.resolution import Resolution, ScaleMode
 from kge.components.shake import CameraShake
-from kge.components.sprite import Sprite
-from kge.components.text import Text
+from kge.components.sprite import Sprite, TextureFilter, TextureWrap
+from kge.components.text import Text, TextAlign, TextOverflow, TextStyle, VerticalAlign
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
 from kge.components.tween import Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
@@ -166,7 +169,14 @@ if TYPE_CHECKING:
     from kge.audio import Audio, SoundHandle
     from kge.export import ExportError
     from kge.particles import Particles
-    from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.render.images import (
+        ImageRegion,
+        PixelImage,
+        RenderTexture,
+        checker,
+        from_array,
+        solid,
+    )
     from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
@@ -194,6 +204,8 @@ _LAZY = {
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
+    "ImageRegion": "kge.render.images",
+    "RenderTexture": "kge.render.images",
     "checker": "kge.render.images",
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
@@ -236,6 +248,7 @@ def __getattr__(name: str) -> Any:
 __version__ = "2.0.0a1"
 
 __all__ = [
+    "CRT",
     "AnimationEvent",
     "AnimationEvents",
     "AnimationFinished",
@@ -254,6 +267,7 @@ __all__ = [
     "Behaviour",
     "BehaviourPlugin",
     "Blend",
+    "Bloom",
     "BodyType",
     "Box",
     "BurstOnHit",
@@ -263,6 +277,7 @@ __all__ = [
     "Circle",
     "Clip",
     "Collider",
+    "ColorGrade",
     "ComponentTypeError",
     "ContactBegin",
     "ContactEnd",
@@ -270,6 +285,7 @@ __all__ = [
     "DebugDraw",
     "DecoderMissingError",
     "Delay",
+    "DirectionalLight",
     "DisplayError",
     "DistanceJoint",
     "Edge",
@@ -290,6 +306,7 @@ __all__ = [
     "GoldenMismatch",
     "Hit",
     "HookSignatureError",
+    "ImageRegion",
     "ImpactSound",
     "Input",
     "Joint",
@@ -304,6 +321,7 @@ __all__ = [
     "Loop",
     "MapObject",
     "MassData",
+    "Material",
     "MissingComponentError",
     "MissingResourceError",
     "Mod",
@@ -336,11 +354,14 @@ __all__ = [
     "RayHit",
     "RayMode",
     "RenderPlugin",
+    "RenderTexture",
+    "Resolution",
     "RestoreWarning",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
     "ScaffoldError",
+    "ScaleMode",
     "Scene",
     "SceneFile",
     "SceneFileError",
@@ -349,6 +370,8 @@ __all__ = [
     "Script",
     "SensorBegin",
     "SensorEnd",
+    "Shader",
+    "ShaderWarning",
     "ShadowCaster",
     "SnapshotError",
     "SoundData",
@@ -361,6 +384,11 @@ __all__ = [
     "System",
     "SystemSet",
     "Text",
+    "TextAlign",
+    "TextOverflow",
+    "TextStyle",
+    "TextureFilter",
+    "TextureWrap",
     "TileCollider",
     "TileMap",
     "TilemapError",
@@ -375,6 +403,8 @@ __all__ = [
     "TweenSequence",
     "Tweens",
     "ValidationError",
+    "VerticalAlign",
+    "Vignette",
     "Wait",
     "WaitFrames",
     "WeldJoint",

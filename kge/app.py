@@ -40,7 +40,8 @@ from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
-from kge.components.camera import Camera, active_camera
+from kge.components.camera import Camera, active_camera, camera_at
+from kge.components.resolution import canvas_size
 from kge.errors import SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
@@ -160,16 +161,22 @@ class App(Host):
         return self.timestep.alpha
 
     def screen_to_world(self, point: tuple[float, float]) -> tuple[float, float]:
-        """Window pixels (origin bottom-left) to world metres through the active camera.
+        """Screen pixels (origin bottom-left; design pixels with a ``Resolution``) to world
+        metres, through the camera whose viewport is under the point.
 
-        Live: it always uses the current scene's camera and the current window size,
+        Live: it always uses the current scene's cameras and the current window size,
         so mouse positions are right after a scene change or a resize, headless too.
         """
-        return self._camera().screen_to_world(point, self.size)
+        canvas = self._canvas()
+        cam = camera_at(self.world, point, canvas) if self._stack else None
+        return (cam or _default_camera()).screen_to_world(point, canvas)
 
     def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
-        """World metres to window pixels through the active camera (the inverse)."""
-        return self._camera().world_to_screen(point, self.size)
+        """World metres to screen pixels through the active camera (the inverse)."""
+        return self._camera().world_to_screen(point, self._canvas())
+
+    def _canvas(self) -> tuple[int, int]:
+        return canvas_size(self.world if self._stack else None, self.size)
 
     def _camera(self) -> Camera:
         """The active camera of the current scene, or a default one (shared, never written)."""

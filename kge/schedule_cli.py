@@ -74,6 +74,8 @@ def frame_table(
             lines.append(
                 "render passes: before the batch: "
                 + (", ".join(passes.names("before")) or "none")
+                + "; per camera: "
+                + (", ".join(passes.names("view")) or "none")
                 + "; after it: "
                 + (", ".join(passes.names("after")) or "none")
             )

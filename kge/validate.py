@@ -23,11 +23,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import Any
+from enum import Enum
+from typing import Any, TypeVar
 
+from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
 
 Vec2 = tuple[float, float]
+E = TypeVar("E", bound=Enum)
 
 
 def _label(owner: str, field: str) -> str:
@@ -150,6 +153,27 @@ def frequency(value: Any, owner: str, field: str) -> float:
     if v > MAX_FREQUENCY:
         raise ValidationError(f"{_label(owner, field)} must be <= {MAX_FREQUENCY:g} Hz, got {v!r}")
     return v
+
+
+def choice(kind: type[E]) -> Callable[[Any, str, str], E]:
+    """A check accepting a member of the enum ``kind`` (a mode, a blend, an alignment);
+    its string value converts, with a DeprecationWarning.
+
+    >>> from enum import StrEnum
+    >>> class Mode(StrEnum):
+    ...     A = "a"
+    >>> choice(Mode)(Mode.A, "Thing", "mode")
+    <Mode.A: 'a'>
+    >>> choice(Mode)("c", "Thing", "mode")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Thing.mode must be one of Mode.A, got 'c'
+    """
+
+    def check(value: Any, owner: str, field: str) -> E:
+        return enum_value(kind, value, owner, field)
+
+    return check
 
 
 def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:

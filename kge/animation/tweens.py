@@ -73,6 +73,9 @@ class TweenHandle:
 
 
 def _field_ok(cls: type, name: str) -> bool:
+    tweenable = getattr(cls, "tweenable", None)  # fields a component names itself
+    if callable(tweenable) and tweenable(name):
+        return True
     if dataclasses.is_dataclass(cls) and any(
         f.name == name and not f.name.startswith("_") for f in dataclasses.fields(cls)
     ):

@@ -24,10 +24,11 @@ from collections.abc import Sequence
 from dataclasses import KW_ONLY, dataclass
 from typing import Any, ClassVar
 
+from kge.components.blend import Blend
 from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.validate import Vec2, boolean, choice, integer, positive, vec2
 
 _WHITE: RGBA = (255, 255, 255, 255)
 
@@ -65,6 +66,7 @@ _COMMON: dict[str, Check] = {
     "layer": _int,
     "order": _int,
     "visible": boolean,
+    "blend": choice(Blend),
 }
 
 
@@ -79,6 +81,8 @@ class _Drawn(Tracked):
     layer: int = 0
     order: int = 0
     visible: bool = True
+    #: how it is drawn over what is behind (:class:`~kge.components.blend.Blend`)
+    blend: Blend = Blend.ALPHA
 
 
 @dataclass(slots=True)

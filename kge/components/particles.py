@@ -22,9 +22,9 @@ move them, in metres, seconds and radians:
   (0-255, as ``Sprite.opacity``) over life, each a single value or a sequence of
   evenly spaced keys interpolated linearly from birth to death; ``texture`` (None:
   a generated soft dot; else an asset name or image) or ``flat`` squares; ``blend``
-  (:class:`Blend`: ``ALPHA`` or ``ADDITIVE``); ``space`` (:class:`ParticleSpace`:
-  ``WORLD``, particles stay where they were born, or ``LOCAL``, they move with the
-  entity); ``layer`` / ``order`` as sprites.
+  (:class:`~kge.components.blend.Blend`, as for sprites); ``space``
+  (:class:`ParticleSpace`: ``WORLD``, particles stay where they were born, or
+  ``LOCAL``, they move with the entity); ``layer`` / ``order`` as sprites.
 * ``max_particles`` caps the live count: further particles are dropped, the
   arrays never grow past it. ``seed`` makes the emitter deterministic (the same
   seed gives the same particles); None derives one from the entity id.
@@ -50,13 +50,15 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any, ClassVar, cast
 
+from kge.components.blend import Blend
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
-from kge.deprecation import enum_value, renamed_fields
+from kge.deprecation import renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import (
     Vec2,
     boolean,
+    choice,
     finite,
     in_range,
     integer,
@@ -72,13 +74,6 @@ TAU = 2.0 * math.pi
 LIMIT = 1e6
 #: the largest ``max_particles`` an emitter may ask for (arrays are allocated up to it)
 MAX_PARTICLES = 1_000_000
-
-
-class Blend(StrEnum):
-    """How particles are drawn over what is behind them."""
-
-    ALPHA = "alpha"  #: ordinary transparency
-    ADDITIVE = "additive"  #: colours add up (fire, sparks, glows)
 
 
 class ParticleSpace(StrEnum):
@@ -259,15 +254,6 @@ def _colors(value: Any, owner: str, field: str) -> tuple[RGB, ...]:
     return tuple(rgb(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field)))
 
 
-def _choice(kind: type[StrEnum]) -> Check:
-    """A check turning a choice into its enum member (its string, deprecated, warns)."""
-
-    def check(value: Any, owner: str, field: str) -> StrEnum:
-        return enum_value(kind, value, owner, field)
-
-    return check
-
-
 def _shape(value: Any, owner: str, field: str) -> EmitShape:
     if not isinstance(value, EMIT_SHAPES):
         names = ", ".join(t.__name__ for t in EMIT_SHAPES)
@@ -384,9 +370,9 @@ class ParticleEmitter(Tracked):
         "opacity": _opacities,
         "texture": _texture,
         "flat": boolean,
-        "blend": _choice(Blend),
-        "space": _choice(ParticleSpace),
-        "collide": _choice(ParticleCollision),
+        "blend": choice(Blend),
+        "space": choice(ParticleSpace),
+        "collide": choice(ParticleCollision),
         "bounciness": _unit,
         "max_particles": _max_particles,
         "seed": _seed,

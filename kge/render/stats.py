@@ -1,4 +1,5 @@
-"""The stats overlay: FPS, fixed-step time, bodies, contacts, sprites drawn.
+"""The stats overlay: FPS, fixed-step time, bodies, contacts, sprites drawn, and with
+lighting on the light pass's share of the frame (:func:`light_note`).
 
 FPS and step time are averaged over the last half second, so the numbers are
 readable rather than flickering; in a window the label text is rebuilt at most
@@ -42,6 +43,26 @@ class FrameClock:
     def step_ms(self) -> float:
         last = list(self.steps)[-30:]
         return 1000.0 * sum(last) / len(last) if last else 0.0
+
+
+#: the share of the frame above which the overlay says the light pass dominates
+LIGHTS_DOMINATE = 0.5
+
+
+def light_note(light_ms: float, frame_ms: float) -> str:
+    """The overlay's ``lights`` entry: the light pass's time per frame, and whether it
+    takes more than half the frame (then fewer shadowed lights, smaller radii or a lower
+    ``Lighting.resolution`` help most).
+
+    >>> light_note(2.0, 10.0)
+    '2.0 ms of 10.0'
+    >>> light_note(7.5, 10.0)
+    '7.5 ms of 10.0 (the light pass dominates the frame)'
+    """
+    text = f"{light_ms:.1f} ms of {frame_ms:.1f}"
+    if frame_ms > 0.0 and light_ms > LIGHTS_DOMINATE * frame_ms:
+        text += " (the light pass dominates the frame)"
+    return text
 
 
 class StatsOverlay:

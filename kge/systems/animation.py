@@ -395,6 +395,7 @@ class _AtlasPass:
         self.world = world
         self.anims = anims
         self.frames: Any = None
+        self.current: Frame | None = None
 
     def __call__(self, frame: Frame) -> None:
         from kge.systems.render import RenderSystem
@@ -412,6 +413,7 @@ class _AtlasPass:
             )
             view.sprites.frame_source = self.frames.frame_region
             self.anims.redraw = view.dirty.add
+            self.frames.migrate = self._migrate
             # sprites made before the atlas existed move onto it now
             known = [e for e in self.anims.state.rows if e in view.sprites.sprites]
             if known:
@@ -419,7 +421,19 @@ class _AtlasPass:
                 view.sync(frame.camera.pixels_per_meter)
                 frame.poses = view.poses.blend(frame.alpha)
                 view.sprites.poser.write(frame.poses, frame.view)
+        self.current = frame
         self.frames.write()
+
+    def _migrate(self, entities: list[int]) -> None:
+        """Sync these sprites now: onto the atlas page of the frame they show."""
+        from kge.systems.render import RenderSystem
+
+        rs, frame = self.world.get_system(RenderSystem), self.current
+        if rs is None or frame is None:
+            return
+        rs.view.dirty.update(entities)
+        rs.view.sync(frame.camera.pixels_per_meter)
+        rs.view.sprites.poser.write(frame.poses, frame.view)
 
 
 class AnimationPlugin(Plugin):

@@ -13,6 +13,7 @@ from kge import (
     AudioListener,
     AudioSource,
     Behaviour,
+    Bloom,
     BodyType,
     Box,
     BurstOnHit,
@@ -24,6 +25,7 @@ from kge import (
     Clip,
     Collider,
     DebugDraw,
+    DirectionalLight,
     DistanceJoint,
     Dropdown,
     Edge,
@@ -35,6 +37,7 @@ from kge import (
     Label,
     Light,
     Lighting,
+    Material,
     MotorJoint,
     MouseJoint,
     Name,
@@ -51,6 +54,7 @@ from kge import (
     RopeJoint,
     Script,
     ScrollList,
+    Shader,
     ShadowCaster,
     Slider,
     Sprite,
@@ -60,6 +64,7 @@ from kge import (
     Transform,
     UIImage,
     UINode,
+    Vignette,
     WeldJoint,
     WheelJoint,
     World,
@@ -149,7 +154,12 @@ def everything(world: World, art: Path) -> None:
                 Light(color=(255, 240, 200), radius=6.0, shadows=True), AudioListener(),
                 Camera(zoom=2.0, follow=hull, bounds=(-20.0, -5.0, 20.0, 15.0)),
                 CameraShake(decay=2.0))
-    world.spawn(Transform(2.0, 1.0), draw.Circle(0.5, segments=12), Name("Dot"))
+    world.spawn(Transform(2.0, 1.0), draw.Circle(0.5, segments=12), Name("Dot"),
+                Material(Shader("uniform float glow;\nvec4 effect(vec4 c, sampler2D t, vec2 u, "
+                                "vec2 w) { return c * glow; }", name="glow"), {"glow": 1.5}))
+    world.spawn(DirectionalLight(angle=-1.2, shadows=True, shadow_softness=0.1),
+                Camera(viewport=(0.75, 0.75, 0.25, 0.25), layers=(0, 2), order=1,
+                       background=(0, 0, 40), post=(Bloom(intensity=2.0), Vignette())))
     world.spawn(Transform(3.0, 1.0), draw.Triangle((0.0, 0.0), (1.0, 0.0), (0.0, 1.0)))
     world.spawn(Transform(4.0, 1.0), draw.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]))
     world.spawn(Transform(5.0, 1.0), draw.Line((0.0, 0.0), (1.0, 1.0), thickness=0.1))

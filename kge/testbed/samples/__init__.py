@@ -15,6 +15,7 @@ from kge.testbed.samples import (  # noqa: F401
     materials,
     particles,
     queries,
+    rendering,
     stacking,
     tilemaps,
     ui,
