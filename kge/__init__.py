@@ -55,6 +55,7 @@ from kge.components import drawables as draw
 from kge.components.animation import Animator, Clip, FrameRef, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
+from kge.components.character import Capsule, CharacterBody, CharacterMode  # docs/character.md
 from kge.components.debug import DebugDraw
 
 # particles and lights (issue 18): components here, plugins and the resource on first use
@@ -109,6 +110,7 @@ from kge.scene import Scene, Time
 from kge.schedule import Stage, System
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
+from kge.systems.character import CharacterPlugin
 from kge.systems.physics import PhysicsPlugin
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
@@ -211,7 +213,11 @@ __all__ = [
     "BurstOnHit",
     "Camera",
     "CameraShake",
+    "Capsule",
     "Chain",
+    "CharacterBody",
+    "CharacterMode",
+    "CharacterPlugin",
     "Circle",
     "Clip",
     "Collider",
