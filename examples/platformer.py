@@ -7,7 +7,8 @@ planks one-way platforms, and the map's objects (player start, coins, door)
 entities through a spawner registry. The door replaces the scene with the next
 level (``app.replace_scene``); the score travels along as a scene argument.
 
-Keys: left/right (or A/D) run, space/up jumps. Run it:
+Keys: left/right (or A/D) run, space/up jumps (hold for higher), down drops through a
+plank. The player is a ``CharacterBody`` (docs/character.md). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 """
 
@@ -25,13 +26,11 @@ from kge import (
     Behaviour,
     Box,
     Camera,
-    Collider,
+    CharacterBody,
     Input,
     Key,
     MapObject,
-    Physics,
     PhysicsEvents,
-    RigidBody,
     Script,
     Spawn,
     Spawners,
@@ -54,25 +53,16 @@ class Score:
 
 
 class Player(Script):
-    """Runs with the arrows, jumps when something is under its feet."""
+    """Runs with the arrows; jumps while standing (higher the longer space is held);
+    down drops through the plank underfoot."""
 
     def on_fixed_update(self, dt: float) -> None:
         inp = self.world.resource(Input)
-        rb = self.get(RigidBody)
-        vx = RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D))
-        vy = rb.velocity[1]
-        if inp.any_held(Key.SPACE, Key.UP) and self.grounded() and vy <= 0.1:
-            vy = JUMP_SPEED
-        rb.velocity = (vx, vy)
-
-    def grounded(self) -> bool:
-        t = self.transform
-        physics = self.world.resource(Physics)
-        for dx in (-0.35, 0.0, 0.35):
-            hit = physics.raycast((t.x + dx, t.y - 0.45), (t.x + dx, t.y - 0.6))
-            if hit is not None:
-                return True
-        return False
+        body = self.get(CharacterBody)
+        body.velocity = (RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D)),
+                         body.velocity[1])
+        body.jump = inp.any_held(Key.SPACE, Key.UP)
+        body.drop_through = inp.any_held(Key.DOWN, Key.S)
 
 
 class Referee(Script):
@@ -108,8 +98,7 @@ def _hud(world: World) -> None:
 
 def player_start(spawn: Spawn) -> list[Any]:
     return [
-        RigidBody(fixed_rotation=True),
-        Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
+        CharacterBody(Box(0.4, 0.45), jump_speed=JUMP_SPEED),
         draw.Rect(0.8, 0.9, color=(220, 60, 60, 255), layer=1),
         Behaviour(Player()),
     ]
