@@ -82,18 +82,26 @@ def walkable(batch: Batch, rows: np.ndarray, pos: np.ndarray, normal: np.ndarray
     return batch.platformer[rows] & ((nu >= batch.floor_cos[rows]) | edge)
 
 
-def _plane_offsets(pairs: Pairs, idx: np.ndarray, sd: np.ndarray) -> np.ndarray:
-    """How far along its normal each plane needs the move to go (see planes.solve)."""
+def _plane_offsets(pairs: Pairs, idx: np.ndarray, sd: np.ndarray, n: np.ndarray,
+                   want: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """How far along its normal each plane needs the move to go, and how far it may
+    push (see planes.solve): surfaces without limit; another character pushes itself
+    out of half the overlap and stops its own move into the other, no more (so three
+    characters squeezed together settle instead of pushing each other for ever)."""
     offset = pairs.target[idx] - sd
+    limit = np.full(len(idx), np.inf)
     soft = pairs.kind[idx] == CHARACTER
-    if soft.any():  # another character: each pushes itself out of half the overlap
+    if soft.any():
         offset = np.where(soft, np.where(sd < 0.0, -0.5 * sd, -sd), offset)
-    return offset
+        into = np.maximum(-np.einsum("pd,pd->p", n[soft], want[soft]), 0.0)
+        limit[soft] = np.maximum(offset[soft], 0.0) + into
+    return offset, limit
 
 
 def _steep_walls(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, idx: np.ndarray,
-                 at: np.ndarray, n: np.ndarray, point: np.ndarray, offset: np.ndarray
-                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+                 at: np.ndarray, n: np.ndarray, point: np.ndarray, offset: np.ndarray,
+                 limit: np.ndarray
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """A platformer does not walk up a slope too steep to stand on: each such slope it
     touches also stops its sideways motion into it, as an upright wall would (falling
     down the slope is left alone, so it still slides off)."""
@@ -104,11 +112,12 @@ def _steep_walls(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, 
     if steep.any():
         steep &= ~walkable(batch, r, pos, n, point)
     if not steep.any():
-        return idx, at, n, offset
+        return idx, at, n, offset, limit
     side = n[steep] - nu[steep, None] * up[steep]
     side /= np.hypot(side[:, 0], side[:, 1])[:, None]
     return (np.concatenate([idx, idx[steep]]), np.concatenate([at, at[steep]]),
-            np.concatenate([n, side]), np.concatenate([offset, np.minimum(offset[steep], 0.0)]))
+            np.concatenate([n, side]), np.concatenate([offset, np.minimum(offset[steep], 0.0)]),
+            np.concatenate([limit, limit[steep]]))
 
 
 def cast(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, delta: np.ndarray,
@@ -177,11 +186,12 @@ def slide(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, delta: 
         sd, n, q = pairs.measure(batch, idx, here[at])
         near = sd < pairs.target[idx] + MARGIN
         p_idx, p_at, p_n, p_q = idx[near], at[near], n[near], q[near]
-        offset = _plane_offsets(pairs, p_idx, sd[near])
-        p_idx, p_at, p_n, offset = _steep_walls(
-            batch, pairs, r, here[p_at], p_idx, p_at, p_n, p_q, offset
+        want = goal[active] - here
+        offset, limit = _plane_offsets(pairs, p_idx, sd[near], p_n, want[p_at])
+        p_idx, p_at, p_n, offset, limit = _steep_walls(
+            batch, pairs, r, here[p_at], p_idx, p_at, p_n, p_q, offset, limit
         )
-        moves, push = planes.solve(goal[active] - here, p_n, offset, p_at)
+        moves, push = planes.solve(want, p_n, offset, p_at, limit)
         pushed = (push > 0.0) & (pairs.kind[p_idx] != CHARACTER)
         k = len(near.nonzero()[0])  # planes beyond k are the steep walls' upright twins
         real = pushed.copy()

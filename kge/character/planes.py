@@ -30,7 +30,7 @@ import numpy as np
 #: Gauss-Seidel passes at most (Box2D's b2SolvePlanes uses 20)
 PASSES = 20
 #: total push (m) below which the passes stop
-TOLERANCE = 1e-9
+TOLERANCE = 1e-7
 #: a plane is met when the move is at most this far short of it (m): rounding in the
 #: distances never makes a resting character push (and creep) by a few ulps; a plane
 #: that does push pushes all the way
@@ -52,10 +52,13 @@ def ranks(owner: np.ndarray) -> np.ndarray:
 
 
 def solve(
-    delta: np.ndarray, normal: np.ndarray, offset: np.ndarray, owner: np.ndarray
+    delta: np.ndarray, normal: np.ndarray, offset: np.ndarray, owner: np.ndarray,
+    limit: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """(moves (M, 2), push of each plane (Q,)): each row's ``delta`` moved out of its
-    planes (``owner[q]`` is the row of plane q)."""
+    planes (``owner[q]`` is the row of plane q). ``limit`` caps how far each plane may
+    push in all (Box2D's ``pushLimit``: a soft surface gives way, and two that cannot
+    both be met no longer push each other for ever); None: no cap."""
     moves = delta.copy()
     q = len(owner)
     push = np.zeros(q)
@@ -63,9 +66,11 @@ def solve(
         return moves, push
     rank = ranks(owner)
     k = int(rank.max()) + 1
+    if limit is None:
+        limit = np.full(q, np.inf)
     if k == 1:  # one plane each: the push is exact in one pass
         sep = np.einsum("qd,qd->q", normal, moves[owner]) - offset
-        push = np.where(sep < -SLACK, -sep, 0.0)
+        push = np.minimum(np.where(sep < -SLACK, -sep, 0.0), limit)
         moves[owner] += push[:, None] * normal
         return moves, push
     rows = np.unique(owner)
@@ -73,9 +78,11 @@ def solve(
     m = len(rows)
     n_pad = np.zeros((m, k, 2))
     o_pad = np.zeros((m, k))
+    cap = np.zeros((m, k))
     valid = np.zeros((m, k), bool)
     n_pad[slot, rank] = normal
     o_pad[slot, rank] = offset
+    cap[slot, rank] = limit
     valid[slot, rank] = True
     o_pad[~valid] = -np.inf  # padding never pushes
     acc = np.zeros((m, k))
@@ -86,7 +93,7 @@ def solve(
             nj = n_pad[:, j]
             sep = nj[:, 0] * d[:, 0] + nj[:, 1] * d[:, 1] - o_pad[:, j]
             sep = np.where(np.abs(sep) > SLACK, sep, 0.0)
-            new = np.maximum(acc[:, j] - sep, 0.0)
+            new = np.clip(acc[:, j] - sep, 0.0, cap[:, j])
             step = new - acc[:, j]
             acc[:, j] = new
             d += step[:, None] * nj

@@ -27,6 +27,7 @@ COLUMNS: dict[str, tuple[type, float]] = {
     "component": (np.int64, 0),  # id() of the component written to (0: none yet)
     "shown_flags": (np.int64, 0),  # on_floor, on_wall, on_ceiling, jumped, landed, hard: bits
     "shown_collider": (np.int64, -1),
+    "shown_wall_collider": (np.int64, -1),
     "shown_landing": (float, 0.0),
     "shown_floor_n": (float, 0.0),  # x; _y columns follow
     "shown_floor_n_y": (float, 0.0),
@@ -53,22 +54,27 @@ class CharacterState:
         self.passing: dict[int, set[int]] = {}
         #: sensor pieces (collider, child) each character overlaps
         self.sensors: dict[int, set[tuple[int, int]]] = {}
+        #: which rows of the last :meth:`rows` call were new characters
+        self.fresh = np.zeros(0, bool)
 
     def rows(self, entities: np.ndarray) -> np.ndarray:
-        """The slots of ``entities`` (new ones start from the defaults); characters not
-        listed are forgotten."""
+        """The slots of ``entities`` (new ones start from the defaults, and ``fresh``
+        says which they were); characters not listed are forgotten."""
         present = entities.tolist()
         keep = set(present)
         for e in [e for e in self.slot if e not in keep]:
             self._free.append(self.slot.pop(e))
             self.passing.pop(e, None)
         out = np.empty(len(present), np.int64)
+        fresh = np.zeros(len(present), bool)
         for k, e in enumerate(present):
             s = self.slot.get(e)
             if s is None:
                 s = self._new()
                 self.slot[e] = s
+                fresh[k] = True
             out[k] = s
+        self.fresh = fresh
         return out
 
     def _new(self) -> int:

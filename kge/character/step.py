@@ -62,6 +62,7 @@ class Result:
     wall_normal: np.ndarray
     ceiling_normal: np.ndarray
     floor_collider: np.ndarray
+    wall_collider: np.ndarray
     floor_velocity: np.ndarray
     jumped: np.ndarray
     landed: np.ndarray
@@ -102,7 +103,26 @@ class Stepper:
         up = batch.up
         plat = batch.platformer
         was_floor = state["on_floor"][slots] & plat
+        floor_body = state["floor_body"][slots]
         v = batch.velocity.copy()
+        g = np.array(gravity, dtype=np.float64)
+
+        # -- pairs within reach of anything this step can do -----------------------------
+        carry = np.zeros((c, 2))
+        riding = np.flatnonzero(was_floor & (floor_body >= 0))
+        if len(riding):
+            carry[riding], _ = bodies.motion(floor_body[riding], batch.pos[riding])
+        speed = (np.hypot(v[:, 0], v[:, 1]) + batch.jump_speed
+                 + float(np.hypot(*g)) * np.abs(batch.gravity_scale) * dt)
+        others = float(np.abs(bodies.velocity[:, :2]).max(initial=0.0))  # dynamic bodies
+        reach = (speed + 2.0 * others) * dt + np.hypot(carry[:, 0], carry[:, 1])
+        reach += np.maximum(batch.step, batch.snap) + SKIN + MARGIN
+        pairs = build(batch, obstacles.static, obstacles.moving, reach, colliders)
+        self._one_way(batch, pairs, bodies)
+        fresh = np.flatnonzero(state.fresh & plat)
+        if len(fresh):  # a character spawned standing on something stands from its first step
+            was_floor, floor_body = self._first_floor(batch, pairs, bodies, fresh, was_floor,
+                                                      floor_body, carry)
 
         # -- 1. intent -------------------------------------------------------------------
         pressed = batch.jump & ~state["jump_held"][slots]
@@ -124,25 +144,13 @@ class Stepper:
         v -= ((1.0 - batch.jump_cut) * np.where(cut, vu, 0.0))[:, None] * up
         rising = rising & ~cut & (_dot(v, up) > 0.0)
         airborne = plat & (~was_floor | do_jump | (_dot(v, up) > 1e-12))
-        g = np.array(gravity, dtype=np.float64)
         v[airborne] += (g[None, :] * batch.gravity_scale[airborne, None]) * dt
         standing = plat & ~airborne
         into = np.minimum(_dot(v, up), 0.0)
         v[standing] -= into[standing, None] * up[standing]
         delta = v * dt
-        floor_body = state["floor_body"][slots]
-        carry_rows = np.flatnonzero(standing & (floor_body >= 0))
-        if len(carry_rows):
-            carry, _ = bodies.motion(floor_body[carry_rows], batch.pos[carry_rows])
-            delta[carry_rows] += carry
+        delta[standing] += carry[standing]
         step_ok = standing & (batch.step > 0.0)
-
-        # -- pairs within reach of this step's move ----------------------------------------
-        reach = np.hypot(delta[:, 0], delta[:, 1])
-        pushed_by_allowance = float(np.abs(bodies.velocity[:, :2]).max(initial=0.0)) * 2.0 * dt
-        reach = reach + np.maximum(batch.step, batch.snap) + SKIN + MARGIN + pushed_by_allowance
-        pairs = build(batch, obstacles.static, obstacles.moving, reach, colliders)
-        self._one_way(batch, pairs, bodies)
 
         # -- 2. dynamic bodies pushing in ----------------------------------------------------
         shove = self._pushed(batch, pairs, bodies, v, physics)
@@ -223,15 +231,17 @@ class Stepper:
         on_ceiling = np.zeros(c, bool)
         wall_normal = np.zeros((c, 2))
         ceiling_normal = np.zeros((c, 2))
-        for mask, flag, normal in ((b_wall, on_wall, wall_normal),
-                                   (b_ceiling & b_solid, on_ceiling, ceiling_normal)):
+        wall_collider = np.full(c, -1, np.int64)
+        for mask, flag, normal, which in ((b_wall, on_wall, wall_normal, wall_collider),
+                                          (b_ceiling & b_solid, on_ceiling, ceiling_normal, None)):
             k = np.flatnonzero(mask)
             if len(k):
                 last = k[_first_per_row(b_row[k], -np.arange(len(k)))]
                 flag[b_row[last]] = True
                 normal[b_row[last]] = b_n[last]
+                if which is not None:
+                    which[b_row[last]] = pairs.collider[b_pair[last]]
 
-        # -- velocity out: nothing left pushing into what blocked it -------------------------
         # a platformer keeps its sideways speed landing on a slope (the floor takes what
         # falls into it, along up) and gains no upward speed from a steep slope it runs
         # into (that takes the sideways part, as an upright wall)
@@ -268,8 +278,31 @@ class Stepper:
         state["floor_vx"][slots] = floor_velocity[:, 0]
         state["floor_vy"][slots] = floor_velocity[:, 1]
         return Result(end, out, on_floor, on_wall, on_ceiling, floor_normal, wall_normal,
-                      ceiling_normal, floor_collider, floor_velocity, jumped, landed, hard,
+                      ceiling_normal, floor_collider, wall_collider, floor_velocity, jumped,
+                      landed, hard,
                       landing_speed, impulses)
+
+    def _first_floor(self, batch: Batch, pairs: Pairs, bodies: Bodies, rows: np.ndarray,
+                     was_floor: np.ndarray, floor_body: np.ndarray, carry: np.ndarray
+                     ) -> tuple[np.ndarray, np.ndarray]:
+        """New characters touching a floor where they are stand on it (and ride it)."""
+        t_idx, t_at, t_sd, t_n, t_pt = touching(batch, pairs, rows, batch.pos[rows])
+        on = walkable(batch, rows[t_at], batch.pos[rows[t_at]], t_n, t_pt) & (
+            pairs.kind[t_idx] != CHARACTER
+        )
+        f = np.flatnonzero(on)
+        if len(f) == 0:
+            return was_floor, floor_body
+        best = f[_first_per_row(t_at[f], t_sd[f])]
+        r = rows[t_at[best]]
+        was_floor = was_floor.copy()
+        floor_body = floor_body.copy()
+        was_floor[r] = True
+        moving = pairs.kind[t_idx[best]] != 0
+        floor_body[r[moving]] = pairs.body[t_idx[best][moving]]
+        if moving.any():
+            carry[r[moving]], _ = bodies.motion(floor_body[r[moving]], batch.pos[r[moving]])
+        return was_floor, floor_body
 
     # -- one-way platforms ------------------------------------------------------------------------
     def _one_way(self, batch: Batch, pairs: Pairs, bodies: Bodies) -> None:

@@ -249,7 +249,8 @@ class CharacterBody(Tracked):
     Read back after each step (written by the character system): ``on_floor``,
     ``on_wall``, ``on_ceiling`` and ``floor_normal``, ``wall_normal``,
     ``ceiling_normal`` (unit, pointing away from the surface; (0, 0) when not
-    touching), ``floor_collider`` (the collider entity stood on, or None),
+    touching), ``floor_collider`` and ``wall_collider`` (the collider entity stood on
+    or blocked by, or None: a crate it is pushing is a wall too),
     ``floor_velocity`` (the floor's velocity under the feet: a moving platform's),
     ``jumped`` and ``landed`` (this step), ``landing_speed`` (m/s into the floor when
     it landed) and ``hard_landing``. ``velocity`` comes back as it was after sliding
@@ -314,6 +315,7 @@ class CharacterBody(Tracked):
     wall_normal: Vec2 = field(default=(0.0, 0.0), init=False)
     ceiling_normal: Vec2 = field(default=(0.0, 0.0), init=False)
     floor_collider: int | None = field(default=None, init=False)
+    wall_collider: int | None = field(default=None, init=False)
     floor_velocity: Vec2 = field(default=(0.0, 0.0), init=False)
     jumped: bool = field(default=False, init=False)
     landed: bool = field(default=False, init=False)

@@ -52,7 +52,8 @@ _DEFAULT_BITS = (Filter().category_bits, Filter().mask_bits, Filter().group_inde
 _WRITES = {
     name: slot_setter(CharacterBody, name)
     for name in ("velocity", "on_floor", "on_wall", "on_ceiling", "floor_normal", "wall_normal",
-                 "ceiling_normal", "floor_collider", "floor_velocity", "jumped", "landed",
+                 "ceiling_normal", "floor_collider", "wall_collider", "floor_velocity",
+                 "jumped", "landed",
                  "hard_landing", "landing_speed")
 }
 _SET_X = slot_setter(Transform, "x")
@@ -271,12 +272,14 @@ class CharacterSystem(System):
                 values = ((flags[rows] >> bit) & 1).astype(bool).tolist()
                 set_all(_WRITES[name], [bodies[k] for k in rows.tolist()], values)
         state["shown_flags"][slots] = flags
-        mask = fresh | (state["shown_collider"][slots] != r.floor_collider)
-        changed_rows = np.flatnonzero(mask).tolist()
-        if changed_rows:
-            values = [None if c < 0 else c for c in r.floor_collider[changed_rows].tolist()]
-            set_all(_WRITES["floor_collider"], [bodies[k] for k in changed_rows], values)
-        state["shown_collider"][slots] = r.floor_collider
+        for name, column, values in (("floor_collider", "shown_collider", r.floor_collider),
+                                     ("wall_collider", "shown_wall_collider", r.wall_collider)):
+            mask = fresh | (state[column][slots] != values)
+            changed_rows = np.flatnonzero(mask).tolist()
+            if changed_rows:
+                entities = [None if e < 0 else e for e in values[changed_rows].tolist()]
+                set_all(_WRITES[name], [bodies[k] for k in changed_rows], entities)
+            state[column][slots] = values
         mask = fresh | (state["shown_landing"][slots] != r.landing_speed)
         changed_rows = np.flatnonzero(mask).tolist()
         if changed_rows:
