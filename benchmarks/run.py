@@ -356,6 +356,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
 
         out += ["", "Gymnasium LunarLander, env steps per second in one process (random "
                 "actions, episodes reset as they end):", "", rl_table(report["rl"], True)]
+    if report.get("characters"):
+        from benchmarks.character import markdown_lines as character_lines
+
+        out += character_lines(report["characters"])
     if report.get("costs"):
         from benchmarks.costs import markdown as costs_markdown
 
@@ -493,9 +497,22 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ntile map:", tilemap.table(tiles))
+    characters: dict[str, float] = {}
+    if not args.scene:  # character controllers beside the same bodies as dynamic bodies
+        from benchmarks import character
+
+        characters, why = character.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\ncharacters:", character.table(characters))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
+    if characters:
+        from benchmarks import character
+
+        goals += character.targets(characters)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -518,6 +535,7 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "characters": characters,
         "targets": goals,
         "skipped": skipped,
     }

@@ -38,6 +38,7 @@ class Batch:
     lo: np.ndarray  # (C, 2) the shape's box, relative to the entity
     hi: np.ndarray
     foot: np.ndarray  # (C,) the shape's lowest point along up, relative to the entity
+    small: np.ndarray  # (C,) bool: a core of at most two vertices (capsule, circle)
     velocity: np.ndarray  # (C, 2) as the components hold it
     platformer: np.ndarray  # (C,) bool
     up: np.ndarray  # (C, 2)
@@ -65,9 +66,9 @@ class Batch:
         return self.core[rows] + pos[:, None, :]
 
 
-def _cores(shapes: tuple[CharacterShape, ...]) -> tuple[np.ndarray, np.ndarray]:
-    """(core vertices (C, k, 2), radii (C,)) of each shape: each distinct shape is
-    converted once and the rows are one gather."""
+def _cores(shapes: tuple[CharacterShape, ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(core vertices (C, k, 2), radii (C,), vertex counts (C,)) of each shape: each
+    distinct shape is converted once and the rows are one gather."""
     by_id: dict[int, int] = {}  # characters made alike share one shape object
     by_value: dict[CharacterShape, int] = {}
     firsts: list[CharacterShape] = []
@@ -85,8 +86,9 @@ def _cores(shapes: tuple[CharacterShape, ...]) -> tuple[np.ndarray, np.ndarray]:
     k = max((len(c) for c, _ in cores), default=1)
     table = np.array([np.concatenate([c, np.repeat(c[-1:], k - len(c), 0)]) for c, _ in cores])
     radii = np.array([r for _, r in cores], dtype=np.float64)
+    counts = np.array([len(c) for c, _ in cores], dtype=np.int64)
     rows = np.array(which, dtype=np.intp)
-    return table.reshape(len(cores), k, 2)[rows], radii[rows]
+    return table.reshape(len(cores), k, 2)[rows], radii[rows], counts[rows]
 
 
 def read(entities: list[int], bodies: list[CharacterBody], positions: list[tuple[float, float]],
@@ -98,7 +100,7 @@ def read(entities: list[int], bodies: list[CharacterBody], positions: list[tuple
     def pairs(i: int) -> np.ndarray:
         return np.fromiter(chain.from_iterable(cols[i]), np.float64, 2 * n).reshape(n, 2)
 
-    core, radius = _cores(cols[0])
+    core, radius, counts = _cores(cols[0])
     lo = core.min(axis=1) - radius[:, None]
     hi = core.max(axis=1) + radius[:, None]
     up = pairs(3)
@@ -116,6 +118,7 @@ def read(entities: list[int], bodies: list[CharacterBody], positions: list[tuple
         lo=lo,
         hi=hi,
         foot=foot,
+        small=counts <= 2,
         velocity=pairs(1),
         platformer=np.fromiter((m is _PLATFORMER for m in cols[2]), bool, n),
         up=up,

@@ -56,6 +56,7 @@ class Pairs:
     child: np.ndarray  # (P,)
     kind: np.ndarray  # (P,) STATIC, KINEMATIC, DYNAMIC or CHARACTER
     oneway: np.ndarray  # (P, 3) up x, up y, min cos; NaN when not one-way
+    simple: np.ndarray  # (P,) both cores have at most two vertices (the closed form)
     first: np.ndarray  # (C,) first pair of each character
     count: np.ndarray  # (C,)
     #: pairs a character may currently meet (one-way platforms it is not above, or drops
@@ -77,7 +78,8 @@ class Pairs:
         """(distance, normal, point on the obstacle) of pairs ``idx`` with their
         characters at ``pos`` (one row per pair)."""
         a = batch.vertices(self.char[idx], pos)
-        return signed_distance(a, batch.radius[self.char[idx]], self.verts[idx], self.radius[idx])
+        return signed_distance(a, batch.radius[self.char[idx]], self.verts[idx], self.radius[idx],
+                               self.simple[idx])
 
 
 def _from_pieces(pieces: Pieces, grid: Grid, batch: Batch, qlo: np.ndarray, qhi: np.ndarray
@@ -90,7 +92,8 @@ def _from_pieces(pieces: Pieces, grid: Grid, batch: Batch, qlo: np.ndarray, qhi:
     if len(c) == 0:
         return None
     return (c, pieces.gather(p), pieces.radius[p], np.full(len(c), SKIN), pieces.collider[p],
-            pieces.body[p], pieces.child[p], pieces.kind[p].astype(np.int64), pieces.oneway[p])
+            pieces.body[p], pieces.child[p], pieces.kind[p].astype(np.int64), pieces.oneway[p],
+            (pieces.count[p] <= 2) & batch.small[c])
 
 
 def _from_characters(batch: Batch, qlo: np.ndarray, qhi: np.ndarray, colliders: np.ndarray
@@ -104,7 +107,7 @@ def _from_characters(batch: Batch, qlo: np.ndarray, qhi: np.ndarray, colliders: 
     n = len(c)
     return (c, batch.vertices(o, batch.pos[o]), batch.radius[o], np.zeros(n), colliders[o],
             batch.entity[o], np.zeros(n, np.int64), np.full(n, CHARACTER, np.int64),
-            np.full((n, 3), np.nan))
+            np.full((n, 3), np.nan), batch.small[o] & batch.small[c])
 
 
 def build(batch: Batch, static: Pieces, moving: Pieces, reach: np.ndarray,
@@ -129,13 +132,16 @@ def build(batch: Batch, static: Pieces, moving: Pieces, reach: np.ndarray,
     if not found:
         z = np.zeros(0, np.int64)
         return Pairs(z, np.zeros((0, 1, 2)), np.zeros(0), np.zeros(0), z, z, z, z,
-                     np.zeros((0, 3)), np.zeros(c_count, np.int64), np.zeros(c_count, np.int64),
-                     np.zeros(0, bool))
+                     np.zeros((0, 3)), np.zeros(0, bool), np.zeros(c_count, np.int64),
+                     np.zeros(c_count, np.int64), np.zeros(0, bool))
     n = max(p[1].shape[1] for p in found)
-    cols = [np.concatenate([p[i] if i != 1 else _pad(p[1], n) for p in found]) for i in range(9)]
+    cols = [np.concatenate([p[i] if i != 1 else _pad(p[1], n) for p in found])
+            for i in range(10)]
     order = np.argsort(cols[0], kind="stable")
-    char, verts, radius, target, collider, body, child, kind, oneway = (x[order] for x in cols)
+    char, verts, radius, target, collider, body, child, kind, oneway, simple = (
+        x[order] for x in cols
+    )
     first = np.searchsorted(char, np.arange(c_count), "left")
     count = np.searchsorted(char, np.arange(c_count), "right") - first
-    return Pairs(char, verts, radius, target, collider, body, child, kind, oneway, first, count,
-                 np.ones(len(char), bool))
+    return Pairs(char, verts, radius, target, collider, body, child, kind, oneway, simple,
+                 first, count, np.ones(len(char), bool))

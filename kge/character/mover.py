@@ -151,7 +151,7 @@ def cast(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, delta: n
     a = batch.vertices(c, pos[at])
     t, hit, hn, hp = time_of_impact(
         a, batch.radius[c], pairs.verts[idx], pairs.radius[idx], delta[at], pairs.target[idx],
-        tolerance=CAST_TOLERANCE, start=(sd, n, q),
+        tolerance=CAST_TOLERANCE, start=(sd, n, q), simple=pairs.simple[idx],
     )
     if not hit.any():
         return frac, hit_pair, normal, point

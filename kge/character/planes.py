@@ -64,44 +64,52 @@ def solve(
     push = np.zeros(q)
     if q == 0:
         return moves, push
-    rank = ranks(owner)
-    k = int(rank.max()) + 1
     if limit is None:
         limit = np.full(q, np.inf)
-    if k == 1:  # one plane each: the push is exact in one pass
-        sep = np.einsum("qd,qd->q", normal, moves[owner]) - offset
-        push = np.minimum(np.where(sep < -SLACK, -sep, 0.0), limit)
-        moves[owner] += push[:, None] * normal
+    rank = ranks(owner)
+    many = np.bincount(owner, minlength=len(delta))[owner] > 1
+    one = np.flatnonzero(~many)
+    if len(one):  # one plane for the row: the push is exact in one pass
+        rows = owner[one]
+        sep = np.einsum("qd,qd->q", normal[one], moves[rows]) - offset[one]
+        push[one] = np.minimum(np.where(sep < -SLACK, -sep, 0.0), limit[one])
+        moves[rows] += push[one, None] * normal[one]
+    several = np.flatnonzero(many)
+    if len(several) == 0:
         return moves, push
-    rows = np.unique(owner)
-    slot = np.searchsorted(rows, owner)
-    m = len(rows)
+    owners = owner[several]
+    rows = np.unique(owners)
+    slot = np.searchsorted(rows, owners)
+    r = rank[several]
+    m, k = len(rows), int(r.max()) + 1
     n_pad = np.zeros((m, k, 2))
-    o_pad = np.zeros((m, k))
+    o_pad = np.full((m, k), -np.inf)  # padding never pushes
     cap = np.zeros((m, k))
-    valid = np.zeros((m, k), bool)
-    n_pad[slot, rank] = normal
-    o_pad[slot, rank] = offset
-    cap[slot, rank] = limit
-    valid[slot, rank] = True
-    o_pad[~valid] = -np.inf  # padding never pushes
+    n_pad[slot, r] = normal[several]
+    o_pad[slot, r] = offset[several]
+    cap[slot, r] = limit[several]
     acc = np.zeros((m, k))
     d = moves[rows]
+    live = np.arange(m)
     for _ in range(PASSES):
-        total = np.zeros(m)
+        total = np.zeros(len(live))
+        dl = d[live]
         for j in range(k):
-            nj = n_pad[:, j]
-            sep = nj[:, 0] * d[:, 0] + nj[:, 1] * d[:, 1] - o_pad[:, j]
+            nj = n_pad[live, j]
+            sep = nj[:, 0] * dl[:, 0] + nj[:, 1] * dl[:, 1] - o_pad[live, j]
             sep = np.where(np.abs(sep) > SLACK, sep, 0.0)
-            new = np.clip(acc[:, j] - sep, 0.0, cap[:, j])
-            step = new - acc[:, j]
-            acc[:, j] = new
-            d += step[:, None] * nj
+            before = acc[live, j]
+            new = np.clip(before - sep, 0.0, cap[live, j])
+            acc[live, j] = new
+            step = new - before
+            dl += step[:, None] * nj
             total += np.abs(step)
-        if total.max() < TOLERANCE:
+        d[live] = dl
+        live = live[total >= TOLERANCE]  # rows whose planes still moved it go round again
+        if len(live) == 0:
             break
     moves[rows] = d
-    push = acc[slot, rank]
+    push[several] = acc[slot, r]
     return moves, push
 
 

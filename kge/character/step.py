@@ -92,13 +92,15 @@ class Stepper:
     def __init__(self) -> None:
         self.state = CharacterState()
         self.dt = 1.0 / 60.0
+        #: the state rows of the last batch advanced
+        self.slots = np.zeros(0, np.int64)
 
     def advance(self, batch: Batch, colliders: np.ndarray, obstacles: Obstacles, bodies: Bodies,
                 gravity: tuple[float, float], dt: float, max_translation: float,
                 physics: object) -> Result:
         state = self.state
         self.dt = dt
-        slots = state.rows(batch.entity)
+        slots = self.slots = state.rows(batch.entity)
         c = len(batch)
         up = batch.up
         plat = batch.platformer

@@ -37,7 +37,7 @@ from typing import Any, ClassVar
 from kge.components.shapes import LINEAR_SLOP, Box, Circle
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, finite, in_range, integer, non_negative, vec2
+from kge.validate import FAST, Vec2, boolean, finite, in_range, integer, non_negative, vec2
 
 #: Largest character shape accepted, metres (half extent): a character is a moving body,
 #: and Box2D tunes moving bodies for 0.1 to 10 m.
@@ -206,6 +206,20 @@ def _slides(value: Any, owner: str, name: str) -> int:
     if not 1 <= v <= MAX_SLIDES:
         raise ValidationError(f"{owner}.{name} must be in [1, {MAX_SLIDES}], got {v!r}")
     return v
+
+
+def _speed_pair(v: Any) -> bool:
+    if type(v) is not tuple or len(v) != 2:
+        return False
+    x, y = v
+    return type(x) is float and type(y) is float and -MAX_SPEED <= x <= MAX_SPEED and (
+        -MAX_SPEED <= y <= MAX_SPEED
+    )
+
+
+# values the checks would return unchanged pass without a call (written every step)
+FAST[_velocity] = _speed_pair
+FAST[_mode] = lambda v: type(v) is CharacterMode
 
 
 def height_along(shape: CharacterShape, up: Vec2) -> float:

@@ -117,14 +117,19 @@ class CharacterSystem(System):
         self.stepper = Stepper()
         #: characters whose collider the plugin added: (collider, the shape it was made for)
         self.auto: dict[int, tuple[Collider, CharacterShape]] = {}
-        #: each character's RigidBody and Collider (or None), kept by the hooks below
-        self._parts: dict[int, tuple[RigidBody | None, Collider | None]] = {}
+        #: the characters (entity, body, transform, rigid body, collider) by entity, made
+        #: again when one of those components comes or goes on a character (hooks below)
+        self._roster: list[tuple[int, CharacterBody, Transform, Any, Any]] | None = None
+        self._entities: set[int] = set()
+        #: collision bits by Filter object (filters are frozen; assigning one replaces it)
+        self._bits: dict[int, tuple[Any, tuple[int, int, int]]] = {}
         world.on_add(CharacterBody, self._character_added)
+        world.on_add(CharacterBody, lambda e, c: self._forget_roster())
         world.on_remove(CharacterBody, self._character_removed)
         world.on_add(RigidBody, self._rigidbody_added)
-        for ctype in (RigidBody, Collider):
-            world.on_add(ctype, self._forget_parts)
-            world.on_remove(ctype, self._forget_parts)
+        for ctype in (RigidBody, Collider, Transform):
+            world.on_add(ctype, self._part_changed)
+            world.on_remove(ctype, self._part_changed)
         world.validator(CharacterBody, self._check_character)
         world.validator(RigidBody, self._check_rigidbody)
 
@@ -168,24 +173,45 @@ class CharacterSystem(System):
         settings = self.world.try_resource(PhysicsSettings)
         return (settings or PhysicsSettings()).polygon_radius
 
+    def _forget_roster(self) -> None:
+        self._roster = None
+
     def _character_removed(self, entity: int, body: CharacterBody) -> None:
         self.auto.pop(entity, None)
-        self._parts.pop(entity, None)
+        self._roster = None
 
-    def _forget_parts(self, entity: int, component: Any) -> None:
-        self._parts.pop(entity, None)
+    def _part_changed(self, entity: int, component: Any) -> None:
+        if entity in self._entities or self.world.try_get(entity, CharacterBody) is not None:
+            self._roster = None
 
-    def _parts_of(self, entity: int) -> tuple[RigidBody | None, Collider | None]:
-        parts = self._parts.get(entity)
-        if parts is None:
+    def _characters(self) -> list[tuple[int, CharacterBody, Transform, Any, Any]]:
+        roster = self._roster
+        if roster is None:
             world = self.world
-            parts = self._parts[entity] = (world.try_get(entity, RigidBody),
-                                           world.try_get(entity, Collider))
-        return parts
+            roster = sorted(
+                ((e, body, t, world.try_get(e, RigidBody), world.try_get(e, Collider))
+                 for e, (body, t) in world.query(CharacterBody, Transform)),
+                key=lambda row: row[0],
+            )
+            self._roster = roster
+            self._entities = {row[0] for row in roster}
+        return roster
+
+    def _bits_of(self, col: Collider | None) -> tuple[int, int, int]:
+        if col is None:
+            return _DEFAULT_BITS
+        f = col.filter
+        found = self._bits.get(id(f))
+        if found is None or found[0] is not f:
+            if len(self._bits) > 1024:
+                self._bits.clear()
+            found = self._bits[id(f)] = (f, (f.category_bits, f.mask_bits, f.group_index))
+        return found[1]
 
     def _rigidbody_added(self, entity: int, rb: RigidBody) -> None:
         if self.world.try_get(entity, CharacterBody) is not None:
             bind(rb, entity, self.obstacles.dirty, self.world.validate)
+            self._roster = None
 
     # -- the step -------------------------------------------------------------------------------
     def process(self, dt: float) -> None:
@@ -194,25 +220,18 @@ class CharacterSystem(System):
         if physics is None:
             return
         settings = world.resource(PhysicsSettings)
-        found = world.query(CharacterBody, Transform)
-        if not found:
+        roster = self._characters()
+        if not roster:
             return
-        found.sort(key=lambda item: item[0])
-        movers: list[tuple[int, CharacterBody, Transform, RigidBody | None]] = []
-        bits = []
-        parts_of = self._parts_of
-        for e, (body, t) in found:
-            rb, col = parts_of(e)
-            if rb is not None and not rb.enabled:
-                continue
-            movers.append((e, body, t, rb))
-            f = None if col is None else col.filter
-            bits.append(_DEFAULT_BITS if f is None else (f.category_bits, f.mask_bits,
-                                                         f.group_index))
-            auto = self.auto.get(e)
-            if auto is not None and auto[1] != body.shape:  # a new shape: a new collider
-                auto[0].shape = collider_shape(body.shape, settings.polygon_radius)
-                self.auto[e] = (auto[0], body.shape)
+        movers = [row for row in roster if row[3] is None or row[3].enabled]
+        bits = [self._bits_of(row[4]) for row in movers]
+        auto = self.auto
+        for e, body, *_ in movers:
+            made = auto.get(e)
+            if made is not None and body.shape is not made[1] and body.shape != made[1]:
+                # a new shape: a new collider
+                made[0].shape = collider_shape(body.shape, settings.polygon_radius)
+                auto[e] = (made[0], body.shape)
         if not movers:
             return
         if self.obstacles.skin != settings.polygon_radius:
@@ -254,7 +273,7 @@ class CharacterSystem(System):
         written (most characters' flags stay the same from one step to the next)."""
         bodies = batch.bodies
         state = self.stepper.state
-        slots = state.rows(batch.entity)
+        slots = self.stepper.slots  # (the rows advance() just used)
         ids = np.fromiter(map(id, bodies), np.int64, len(bodies))
         fresh = state["component"][slots] != ids  # a component never written to
         state["component"][slots] = ids
@@ -403,7 +422,8 @@ class CharacterSensorSystem(System):
 
 def _distances(batch: Any, c: np.ndarray, pieces: Pieces, p: np.ndarray) -> np.ndarray:
     a = batch.vertices(c, batch.pos[c])
-    return signed_distance(a, batch.radius[c], pieces.gather(p), pieces.radius[p])[0]
+    simple = (pieces.count[p] <= 2) & batch.small[c]
+    return signed_distance(a, batch.radius[c], pieces.gather(p), pieces.radius[p], simple)[0]
 
 
 class CharacterPlugin(Plugin):

@@ -148,3 +148,25 @@ def test_moving_along_a_touching_surface_is_free() -> None:
     frac, hit, _, _ = time_of_impact(a, np.array([0.3]), b, np.array([0.0]),
                                   np.array([[1.0, -0.1]]), np.array([0.005]))
     assert hit[0] and frac[0] < 1e-9
+
+
+def test_the_closed_form_for_segments_matches_the_general_test() -> None:
+    """Capsules, circles, edges: the segment formula gives the general test's answers."""
+    from kge.character.narrowphase import _convex, _segments
+
+    rng = np.random.default_rng(11)
+    n = 2000
+    a = rng.uniform(-2, 2, (n, 2, 2))
+    b = rng.uniform(-2, 2, (n, 2, 2))
+    a[: n // 4, 1] = a[: n // 4, 0]  # points (circles)
+    b[n // 8: n // 3, 1] = b[n // 8: n // 3, 0]
+    b[n // 2: n // 2 + 50] = a[n // 2: n // 2 + 50] + np.array([0.3, 0.0])  # parallel
+    ra, rb = rng.uniform(0, 0.5, n), rng.uniform(0, 0.5, n)
+    sd1, n1, q1 = _segments(a, ra, b, rb)
+    sd2, n2, q2 = _convex(a, ra, b, rb)
+    assert np.allclose(sd1, sd2, atol=1e-9)
+    apart = sd2 > -ra - rb + 1e-6
+    assert np.allclose(n1[apart], n2[apart], atol=1e-6)
+    unique = apart.copy()
+    unique[n // 2: n // 2 + 50] = False  # parallel segments: many closest points
+    assert np.allclose(q1[unique], q2[unique], atol=1e-6)
