@@ -100,10 +100,10 @@ class _World:
         self.app = App(_scene(kind, n), headless=True,
                        plugins=[PhysicsPlugin(), CharacterPlugin(), BehaviourPlugin()])
         world = self.app.world
-        ctype = CharacterBody if kind == "characters" else RigidBody
+        ctype: type[Any] = CharacterBody if kind == "characters" else RigidBody
         found = sorted(world.query(ctype))
         self.entities = np.array([e for e, _ in found], dtype=np.int64)
-        self.components = [c for _, (c,) in found]
+        self.components: list[Any] = [c for _, (c,) in found]
         self.physics = world.resource(Physics)
         self.tick = 0
 
