@@ -101,7 +101,7 @@ def _plane_offsets(pairs: Pairs, idx: np.ndarray, sd: np.ndarray, n: np.ndarray,
 def _steep_walls(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, idx: np.ndarray,
                  at: np.ndarray, n: np.ndarray, point: np.ndarray, offset: np.ndarray,
                  limit: np.ndarray
-                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+                 ) -> tuple[np.ndarray, ...]:
     """A platformer does not walk up a slope too steep to stand on: each such slope it
     touches also stops its sideways motion into it, as an upright wall would (falling
     down the slope is left alone, so it still slides off)."""
@@ -112,12 +112,14 @@ def _steep_walls(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, 
     if steep.any():
         steep &= ~walkable(batch, r, pos, n, point)
     if not steep.any():
-        return idx, at, n, offset, limit
+        return idx, at, n, offset, limit, np.zeros(0, np.int64)
     side = n[steep] - nu[steep, None] * up[steep]
     side /= np.hypot(side[:, 0], side[:, 1])[:, None]
-    return (np.concatenate([idx, idx[steep]]), np.concatenate([at, at[steep]]),
-            np.concatenate([n, side]), np.concatenate([offset, np.minimum(offset[steep], 0.0)]),
-            np.concatenate([limit, limit[steep]]))
+    # the upright twins go first: the solver then never lifts the move up the slope only
+    # to take the sideways part back (what an unconverged pass would leave is a climb)
+    return (np.concatenate([idx[steep], idx]), np.concatenate([at[steep], at]),
+            np.concatenate([side, n]), np.concatenate([np.minimum(offset[steep], 0.0), offset]),
+            np.concatenate([limit[steep], limit]), np.flatnonzero(steep))
 
 
 def cast(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, delta: np.ndarray,
@@ -188,15 +190,15 @@ def slide(batch: Batch, pairs: Pairs, rows: np.ndarray, pos: np.ndarray, delta: 
         p_idx, p_at, p_n, p_q = idx[near], at[near], n[near], q[near]
         want = goal[active] - here
         offset, limit = _plane_offsets(pairs, p_idx, sd[near], p_n, want[p_at])
-        p_idx, p_at, p_n, offset, limit = _steep_walls(
+        real_n = p_n
+        p_idx, p_at, p_n, offset, limit, src = _steep_walls(
             batch, pairs, r, here[p_at], p_idx, p_at, p_n, p_q, offset, limit
         )
         moves, push = planes.solve(want, p_n, offset, p_at, limit)
         pushed = (push > 0.0) & (pairs.kind[p_idx] != CHARACTER)
-        k = len(near.nonzero()[0])  # planes beyond k are the steep walls' upright twins
-        real = pushed.copy()
-        real[k:] = False
-        blocks.add(r[p_at[real]], p_n[real], p_q[real[:k]], p_idx[real], here[p_at[real]])
+        # (a steep wall's upright twin comes first; when it pushes, the slope blocked)
+        by = np.concatenate([src, np.arange(len(p_q))])[pushed]
+        blocks.add(r[p_at[pushed]], real_n[by], p_q[by], p_idx[pushed], here[p_at[pushed]])
         frac, hit_pair, hit_n, hit_q = cast(batch, pairs, r, here, moves, (idx, at, sd, n, q))
         pos[active] += frac[:, None] * moves
         hit = hit_pair >= 0

@@ -335,3 +335,21 @@ def test_top_down_mode_slides_along_walls_without_gravity(app_of) -> None:
     assert t.x == pytest.approx(2.0, abs=1e-6)
     assert body.on_wall and body.wall_normal == pytest.approx((0.0, -1.0))
     assert not body.on_floor and not body.on_ceiling
+
+
+@pytest.mark.parametrize("snap", [0.0, 0.2])
+def test_walking_into_a_steep_face_from_the_flat_never_climbs_it(app_of, snap) -> None:
+    def scene(world):
+        ground(world)
+        world.spawn(Transform(4.0, 0.0, math.radians(60)), Collider(Box(3.0, 0.1)))
+        _standing(world, SHAPES["capsule"], y=1.0, snap_length=snap)
+
+    app = app_of(scene)
+    body, t = app.world.get(3, CharacterBody), app.world.get(3, Transform)
+    app.step(20)
+    rest = t.y
+    for _ in range(120):
+        body.velocity = (3.0, body.velocity[1])
+        app.step()
+        assert t.y < rest + 1e-6, "it walked up a face steeper than max_floor_angle"
+    assert body.on_wall and body.on_floor
