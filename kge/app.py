@@ -14,7 +14,12 @@ One frame, in the order of DESIGN.md:
    ``alpha`` = leftover accumulator / fixed_dt.
 
 Scene changes requested during a frame (``replace_scene`` from a script, say)
-take effect when the frame ends, never half-way through a step.
+take effect when the frame ends, never half-way through a step. Changes requested
+while another one is being made (from ``on_exit``, ``on_destroy`` or a setup) queue
+behind it and apply in order, each to the stack as the ones before it left it. A
+scene whose setup raises leaves the stack as it was (its error propagates, and the
+changes queued behind it are dropped), and the App never loses its last scene:
+``pop_scene`` refuses to (use ``replace_scene``, or ``quit``).
 
 Headless use, as in tests::
 
@@ -29,11 +34,11 @@ import functools
 import os
 import sys
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
-from kge.errors import ValidationError, WorldLockedError
+from kge.errors import SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
@@ -46,7 +51,12 @@ from kge.transitions import ActiveTransition, Transition
 from kge.validate import boolean, integer, non_negative
 from kge.world import World
 
+if TYPE_CHECKING:
+    from kge.snapshot import Restorable
+
 SystemFactory = Callable[[], System]
+#: what App, push_scene and replace_scene take: a scene, or a scene file's path
+SceneSource = SceneLike | str | os.PathLike[str]
 
 #: ``App()`` with no scene (push one later); distinct from ``App(None)``, which is refused
 NO_SCENE: Any = type("NoScene", (), {"__repr__": lambda self: "NO_SCENE"})()
@@ -62,7 +72,7 @@ class App(Host):
 
     def __init__(
         self,
-        scene: SceneLike = NO_SCENE,
+        scene: SceneSource = NO_SCENE,
         *,
         headless: bool | None = None,
         size: tuple[int, int] = (960, 540),
@@ -99,10 +109,17 @@ class App(Host):
         self._stack: list[tuple[Scene, World]] = []
         #: worlds pushed as overlays: True if the scene below keeps running
         self._overlays: dict[World, bool] = {}
+        #: the keyword arguments each world's setup ran with (reload_scene runs it again)
+        self._setup_kwargs: dict[World, dict[str, Any]] = {}
         self.transition: ActiveTransition | None = None
         self._swap: Callable[[], None] | None = None
         self._plugins: list[Plugin] = []
-        self._scene_ops: list[Callable[[], None]] = []
+        #: scene changes waiting for the frame (or the change being made) to end, with
+        #: how many scenes each adds to the stack
+        self._scene_ops: list[tuple[int, Callable[[], None]]] = []
+        self._applying = False
+        self._closing = False
+        self._leaving = 0  #: scenes a replace being made will close once its setup ends
         self._in_frame = False
         self._running = False
         self.frame_count = 0
@@ -172,10 +189,16 @@ class App(Host):
 
     @property
     def scenes(self) -> list[Scene]:
+        """The scenes of the stack, bottom first."""
         return [s for s, _ in self._stack]
 
+    @property
+    def worlds(self) -> list[World]:
+        """The worlds of the stack's scenes, bottom first (``worlds[-1]`` is ``world``)."""
+        return [w for _, w in self._stack]
+
     def push_scene(
-        self, scene: SceneLike, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+        self, scene: SceneSource, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
     ) -> None:
         """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
 
@@ -183,37 +206,57 @@ class App(Host):
         the scene below stays frozen, or keeps running (without input) when
         ``run_below=True``. Popping returns to it with its state intact.
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if run_below and not overlay:
             raise ValueError("push_scene(run_below=True) needs overlay=True")
-        self._schedule(lambda: self._push(target, kwargs, overlay=(run_below if overlay else None)))
+        keeps_running = run_below if overlay else None
+        self._schedule(+1, lambda: self._push(target, kwargs, overlay=keeps_running))
 
     def pop_scene(self) -> None:
-        """Close the top scene and resume the one below."""
-        self._schedule(self._pop)
+        """Close the top scene and resume the one below.
+
+        Refused with :class:`~kge.errors.SceneStackError` when it would pop the App's
+        last scene (counting the changes already queued): change scene with
+        :meth:`replace_scene`, or stop with :meth:`quit`.
+        """
+        if self._depth_when_queued() <= 1:
+            raise SceneStackError(
+                "pop_scene() would leave the App with no scene: use replace_scene() to "
+                "change scene, or app.quit() to stop"
+            )
+        self._schedule(-1, self._pop)
 
     def replace_scene(
-        self, scene: SceneLike, *, transition: Transition | None = None, **kwargs: Any
+        self, scene: SceneSource, *, transition: Transition | None = None, **kwargs: Any
     ) -> None:
         """Close the top scene and start ``scene`` (with kwargs) in its place.
 
-        ``transition`` (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``,
-        ``Wipe``) plays over the change; the scene changes when it is due.
+        The new scene is set up first and the old one exits once it is ready, so a
+        setup that raises leaves the old scene running. ``transition``
+        (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``, ``Wipe``)
+        plays over the change and the scene changes when it is due: the scene on top
+        when it starts (after the changes asked for before it) leaves then, with any
+        scene pushed over it meanwhile (a pause menu opened during the fade).
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if transition is not None and not isinstance(transition, Transition):
             raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
-
-        def op() -> None:
-            if self._stack:
-                self._close_top()
-            self._push(target, kwargs, resume_below=False)
-
+        grows = 0 if self._depth_when_queued() else 1
         if transition is None:
-            self._schedule(op)
-        else:  # the newest transition wins; the scene changes when it is due
-            self._swap = op
-            self.transition = ActiveTransition(transition)
+            self._schedule(grows, lambda: self._replace(target, kwargs, None))
+            return
+
+        def begin() -> None:  # in order with the changes queued before it
+            leaving = self._stack[-1][1] if self._stack else None
+            self._swap = lambda: self._replace(target, kwargs, leaving)
+            self.transition = ActiveTransition(transition)  # the newest one wins
+
+        self._schedule(0, begin)
+
+    def _depth_when_queued(self) -> int:
+        """How many scenes the stack will hold once the queued changes are made."""
+        queued = sum(grows for grows, _ in self._scene_ops)
+        return len(self._stack) - self._leaving + queued
 
     def _advance_transition(self, real_dt: float) -> None:
         """Play the running transition: change the scene when due, end it when done."""
@@ -225,7 +268,7 @@ class App(Host):
         if active.swap_due and swap is not None:
             active.swapped = True
             self._swap = None
-            swap()
+            self._schedule(0, swap)
         if active.done:
             self.transition = None
 
@@ -249,44 +292,115 @@ class App(Host):
             worlds.append(world)
         return worlds
 
-    def _schedule(self, op: Callable[[], None]) -> None:
-        if self._in_frame:
-            self._scene_ops.append(op)
-        else:
-            op()
+    def _schedule(self, grows: int, op: Callable[[], None]) -> None:
+        """Queue a scene change; make it now unless a frame or another change runs."""
+        if self._closing:
+            return
+        self._scene_ops.append((grows, op))
+        if not self._in_frame:
+            self._run_scene_ops()
 
     def _push(
         self,
         scene: Scene,
         kwargs: dict[str, Any],
-        resume_below: bool = True,
         overlay: bool | None = None,
     ) -> None:
-        if self._stack and resume_below:
-            below, below_world = self._stack[-1]
-            below.on_pause(below_world)
+        below = self._stack[-1] if self._stack else None
+        if below is not None:
+            below[0].on_pause(below[1])
+        try:
+            self._start(scene, kwargs, overlay)
+        except BaseException:
+            if below is not None:
+                below[0].on_resume(below[1])
+            raise
+
+    def _replace(self, scene: Scene, kwargs: dict[str, Any], leaving: World | None) -> None:
+        """Start ``scene``, then close ``leaving`` and every scene above it (the top
+        scene when ``leaving`` is None; nothing when it has already left)."""
+        worlds = [w for _, w in self._stack]
+        if leaving is None:
+            first = len(worlds) - 1 if worlds else 0
+        else:
+            first = worlds.index(leaving) if leaving in worlds else len(worlds)
+        self._leaving = len(worlds) - first  # for pops its setup asks for
+        try:
+            self._start(scene, kwargs, None)
+        finally:
+            self._leaving = 0
+        new = self._stack.pop()
+        while len(self._stack) > first:
+            self._close_top()
+        self._stack.append(new)
+
+    def _start(self, scene: Scene, kwargs: dict[str, Any], overlay: bool | None) -> None:
+        """Make a world for ``scene`` on top and set it up; on any error, take it off
+        again (closing it) and leave the stack as it was."""
         world = self._make_world(scene)
         self._stack.append((scene, world))
+        self._setup_kwargs[world] = kwargs
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
-        scene.setup(world, **kwargs)
-        world.flush()
+        try:
+            scene.setup(world, **kwargs)
+            world.flush()
+        except BaseException:
+            self._stack.pop()
+            self._overlays.pop(world, None)
+            self._setup_kwargs.pop(world, None)
+            world.close()
+            raise
+
+    def reload_scene(self) -> None:
+        """Build the top scene again from its setup, and swap it in only if that succeeds.
+
+        Hot reload calls this when a scene file or map changes. On any error the new
+        world is closed, the error is raised, and the running world carries on as it was.
+        """
+        if not self._stack:
+            raise RuntimeError("App.reload_scene() needs a running scene")
+        scene, old = self._stack[-1]
+        kwargs = self._setup_kwargs.get(old, {})
+        world = self._make_world(scene)
+        try:
+            scene.setup(world, **kwargs)
+            world.flush()
+        except BaseException:
+            world.close()
+            raise
+
+        def op() -> None:
+            if not self._stack or self._stack[-1][1] is not old:
+                world.close()  # the scene changed meanwhile: the rebuilt world is stale
+                return
+            self._stack.pop()
+            overlay = self._overlays.pop(old, None)
+            self._setup_kwargs.pop(old, None)
+            scene.on_exit(old)
+            old.close()
+            self._stack.append((scene, world))
+            self._setup_kwargs[world] = kwargs
+            if overlay is not None:
+                self._overlays[world] = overlay
+
+        self._schedule(0, op)
 
     def _close_top(self) -> None:
         scene, world = self._stack.pop()
         self._overlays.pop(world, None)
+        self._setup_kwargs.pop(world, None)
         scene.on_exit(world)
         world.close()
 
     def _pop(self) -> None:
-        if not self._stack:
-            raise RuntimeError("pop_scene() with no scene on the stack")
+        if len(self._stack) <= 1:
+            raise SceneStackError("pop_scene() would leave the App with no scene")
         self._close_top()
         self.input.reset()
-        if self._stack:
-            scene, world = self._stack[-1]
-            scene.on_resume(world)
+        scene, world = self._stack[-1]
+        scene.on_resume(world)
 
     def _make_world(self, scene: Scene) -> World:
         world = World(name=scene.name or type(scene).__name__)
@@ -300,8 +414,9 @@ class App(Host):
             world.add_system(factory())
         return world
 
-    def restore(self, data: bytes) -> None:
-        """Replace the current scene's world with one restored from ``world.snapshot()``.
+    def restore(self, data: bytes | Restorable) -> None:
+        """Replace the current scene's world with one restored from ``world.snapshot()``
+        (in memory) or from a save file read by ``kge.load_game(path)``.
 
         The scene object stays; its ``setup`` is not run again. Systems are rebuilt,
         and the physics system recreates every body from the restored components.
@@ -316,7 +431,10 @@ class App(Host):
             raise RuntimeError("App.restore() needs a running scene")
         world = self._make_world(self._stack[-1][0])
         try:
-            restore_into(world, data)
+            if isinstance(data, bytes | bytearray):
+                restore_into(world, data)
+            else:
+                data.restore_into(world)
         except BaseException:
             world.close()
             raise
@@ -327,7 +445,7 @@ class App(Host):
             old.close()
             self._stack.append((scene, world))
 
-        self._schedule(op)
+        self._schedule(0, op)
 
     # -- plugins ----------------------------------------------------------------------------
     def add_plugins(self, *plugins: PluginLike) -> None:
@@ -429,9 +547,21 @@ class App(Host):
         schedule.run(Stage.LATE, game_dt)
 
     def _run_scene_ops(self) -> None:
-        ops, self._scene_ops = self._scene_ops, []
-        for op in ops:
-            op()
+        """Make the queued scene changes in order; one asked for while another is being
+        made (from on_exit, on_destroy, a setup) waits for it. If a change raises, the
+        error propagates and the changes behind it are dropped with it."""
+        if self._applying:
+            return
+        self._applying = True
+        try:
+            while self._scene_ops:
+                _, op = self._scene_ops.pop(0)
+                op()
+        except BaseException:
+            self._scene_ops.clear()
+            raise
+        finally:
+            self._applying = False
 
     def _frontend(self, what: str) -> Frontend:
         if self.frontend is None:
@@ -481,7 +611,12 @@ class App(Host):
 
     def close(self) -> None:
         """Close every scene (despawning all entities), then let each plugin clean up
-        (the audio plugin stops the App's music)."""
+        (the audio plugin stops the App's music). Scene changes asked for while the
+        App closes (from on_exit or on_destroy) are dropped."""
+        self._closing = True
+        self._scene_ops.clear()
+        self._swap = None
+        self.transition = None
         while self._stack:
             self._close_top()
         for plugin in reversed(self._plugins):
@@ -489,12 +624,44 @@ class App(Host):
 
 
 def run(
-    scene: SceneLike, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
+    scene: SceneSource,
+    *,
+    title: str = "kge",
+    size: tuple[int, int] = (960, 540),
+    hot_reload: bool | None = None,
+    **kwargs: Any,
 ) -> App:
-    """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
+    """One-line entry point: ``kge.run(my_scene, title="Pong")``.
+
+    ``hot_reload`` (default: on when a window opens, or when ``KGE_HOT_RELOAD=1``)
+    reloads changed scene, prefab, map, image, sound and Python files while the
+    game runs (:mod:`kge.hotreload`).
+    """
     app = App(scene, title=title, size=size, **kwargs)
-    app.run()
+    if hot_reload is None:
+        env = os.environ.get("KGE_HOT_RELOAD")
+        hot_reload = env == "1" if env in ("0", "1") else not app.headless
+    reloader = None
+    if hot_reload:
+        from kge.hotreload import HotReloadPlugin
+
+        reloader = HotReloadPlugin()
+        app.add_plugins(reloader)
+    try:
+        app.run()
+    finally:
+        if reloader is not None:
+            reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
+
+
+def _as_scene(scene: SceneSource) -> Scene:
+    """A Scene from a Scene, a setup function or a scene file's path (``App("a.scene.toml")``)."""
+    if isinstance(scene, str | os.PathLike):
+        from kge.scenefile.scene import SceneFile
+
+        return SceneFile(scene)
+    return as_scene(scene)
 
 
 @functools.cache

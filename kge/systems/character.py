@@ -183,6 +183,9 @@ class CharacterSystem(System):
     def _part_changed(self, entity: int, component: Any) -> None:
         if entity in self._entities or self.world.try_get(entity, CharacterBody) is not None:
             self._roster = None
+            made = self.auto.get(entity)
+            if made is not None and made[0] is component:  # the game gave it another
+                del self.auto[entity]
 
     def _characters(self) -> list[tuple[int, CharacterBody, Transform, Any, Any]]:
         roster = self._roster
