@@ -38,10 +38,11 @@ STATIC, KINEMATIC, DYNAMIC = 0, 1, 2
 _KIND = {BodyType.STATIC: STATIC, BodyType.KINEMATIC: KINEMATIC, BodyType.DYNAMIC: DYNAMIC}
 #: grid cell, metres: about a character's size
 CELL = 2.0
-#: components whose writes can change what characters meet (tracked for writes)
-_TRACKED = (Collider, OneWayPlatform, RigidBody, Transform)
+#: components whose writes can change what characters meet (tracked for writes; the
+#: Transforms of static colliders' owners too, bound while they own one)
+_TRACKED = (Collider, OneWayPlatform, RigidBody)
 #: components whose arrival or departure can
-_WATCHED = (*_TRACKED, CharacterBody)
+_WATCHED = (*_TRACKED, Transform, CharacterBody)
 
 
 @dataclass(slots=True)
@@ -188,6 +189,8 @@ class Obstacles:
         #: body entity -> collider entities it carries (``Collider.body`` or its own)
         self.carried: dict[int, set[int]] = {}
         self.dirty: set[int] = set()
+        #: owners of static pieces whose Transform writes are tracked
+        self._posed: set[int] = set()
         self.static = Pieces()
         self.moving = Pieces()
         self._static_stale = True
@@ -208,12 +211,19 @@ class Obstacles:
         self.dirty.add(entity)
         if isinstance(component, _TRACKED):
             unbind(component, self.dirty)
+        elif isinstance(component, Transform) and entity in self._posed:
+            unbind(component, self.dirty)
+            self._posed.discard(entity)
 
     def close(self) -> None:
         """Stop tracking the world's components (the plugin's world closed)."""
         for ctype in _TRACKED:
             for _e, (comp,) in self.world.query(ctype):
                 unbind(comp, self.dirty)
+        for e in self._posed:
+            t = self.world.try_get(e, Transform)
+            if t is not None:
+                unbind(t, self.dirty)
 
     def reskin(self, skin: float) -> None:
         """Use a new polygon skin (``PhysicsSettings.polygon_radius``) for every piece."""
@@ -242,16 +252,32 @@ class Obstacles:
     def _update(self, c: int) -> None:
         old = self.records.get(c)
         new = self._record(c)
-        if old == new:
+        if old != new:
+            if old is not None:
+                self.carried.get(old.owner, set()).discard(c)
+                self._stale(old.kind)
+                del self.records[c]
+            if new is not None:
+                self.carried.setdefault(new.owner, set()).add(c)
+                self.records[c] = new
+                self._stale(new.kind)
+        for rec in (old, new):
+            if rec is not None and rec.kind == STATIC:
+                self._watch_pose(rec.owner)
+
+    def _watch_pose(self, owner: int) -> None:
+        """Track writes of ``owner``'s Transform while it places static pieces (a moving
+        body's pose is read every step; everything else's is none of our business)."""
+        t = self.world.try_get(owner, Transform)
+        if t is None:
             return
-        if old is not None:
-            self.carried.get(old.owner, set()).discard(c)
-            self._stale(old.kind)
-            del self.records[c]
-        if new is not None:
-            self.carried.setdefault(new.owner, set()).add(c)
-            self.records[c] = new
-            self._stale(new.kind)
+        static = any(self.records[c].kind == STATIC for c in self.carried.get(owner, ()))
+        if static and owner not in self._posed:
+            bind(t, owner, self.dirty)
+            self._posed.add(owner)
+        elif not static and owner in self._posed:
+            unbind(t, self.dirty)
+            self._posed.discard(owner)
 
     def _stale(self, kind: int) -> None:
         if kind == STATIC:

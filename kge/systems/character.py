@@ -35,7 +35,7 @@ from kge.components.collider import Collider
 from kge.components.filter import Filter
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import LINEAR_SLOP, Box, Circle, Polygon
-from kge.components.tracked import bind
+from kge.components.tracked import NoMarks, bind
 from kge.components.transform import Transform
 from kge.errors import ValidationError, where
 from kge.physics.events import PhysicsEvents, SensorBegin, SensorEnd
@@ -111,9 +111,11 @@ class CharacterSystem(System):
 
     def attach(self, world: World) -> None:
         super().attach(world)
-        settings = world.try_resource(PhysicsSettings)
-        skin = PhysicsSettings().polygon_radius if settings is None else settings.polygon_radius
-        self.obstacles = Obstacles(world, skin)
+        #: what characters collide with; made at the first step that has a character, so a
+        #: world without any pays nothing for tracking its colliders
+        self._obstacles: Obstacles | None = None
+        #: bindings that only run the world's validators on RigidBody.type writes
+        self._marks = NoMarks()
         self.stepper = Stepper()
         #: characters whose collider the plugin added: (collider, the shape it was made for)
         self.auto: dict[int, tuple[Collider, CharacterShape]] = {}
@@ -167,7 +169,13 @@ class CharacterSystem(System):
             self.auto[entity] = (col, body.shape)
         rb = world.try_get(entity, RigidBody)
         if rb is not None:
-            bind(rb, entity, self.obstacles.dirty, world.validate)
+            bind(rb, entity, self._marks, world.validate)
+
+    @property
+    def obstacles(self) -> Obstacles:
+        if self._obstacles is None:
+            self._obstacles = Obstacles(self.world, self._skin())
+        return self._obstacles
 
     def _skin(self) -> float:
         settings = self.world.try_resource(PhysicsSettings)
@@ -213,7 +221,7 @@ class CharacterSystem(System):
 
     def _rigidbody_added(self, entity: int, rb: RigidBody) -> None:
         if self.world.try_get(entity, CharacterBody) is not None:
-            bind(rb, entity, self.obstacles.dirty, self.world.validate)
+            bind(rb, entity, self._marks, self.world.validate)
             self._roster = None
 
     # -- the step -------------------------------------------------------------------------------
@@ -319,7 +327,8 @@ class CharacterSystem(System):
             y[slots] = values[:, 1]
 
     def detach(self) -> None:
-        self.obstacles.close()
+        if self._obstacles is not None:
+            self._obstacles.close()
 
 
 def _write_changed(bodies: list[CharacterBody], name: str, values: np.ndarray,
@@ -349,13 +358,16 @@ class CharacterSensorSystem(System):
             return
         known = mover.stepper.state.sensors
         found = world.query(CharacterBody, Transform)
+        if not found and not known:
+            return
         found.sort(key=lambda item: item[0])
-        obstacles = mover.obstacles
-        obstacles.refresh()
         now: dict[int, set[tuple[int, int]]] = {}
         bodies_of: dict[tuple[int, int], int | None] = {}
-        if found and (obstacles.static.sensor.any() or obstacles.moving.sensor.any()):
-            now = self._overlaps(found, obstacles, physics, dt, bodies_of)
+        if found:
+            obstacles = mover.obstacles
+            obstacles.refresh()
+            if obstacles.static.sensor.any() or obstacles.moving.sensor.any():
+                now = self._overlaps(found, obstacles, physics, dt, bodies_of)
         begins: list[SensorBegin] = []
         ends: list[SensorEnd] = []
         for e in sorted(set(known) | set(now)):

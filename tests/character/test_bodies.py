@@ -182,3 +182,42 @@ def _run(steps: int) -> list[tuple[float, float]]:
 
 def test_the_same_inputs_give_the_same_poses_bit_for_bit() -> None:
     assert _run(240) == _run(240)
+
+
+def test_a_world_without_characters_tracks_nothing(app_of) -> None:
+    """The character system starts following colliders with the first character."""
+    from kge.systems.character import CharacterSystem
+
+    def scene(world):
+        ground(world)
+        world.spawn(Transform(0.0, 2.0), RigidBody(), Collider(Box(0.5, 0.5)))
+
+    app = app_of(scene)
+    app.step(10)
+    system = app.world.get_system(CharacterSystem)
+    assert system is not None and system._obstacles is None
+    binding = app.world.get(2, RigidBody)._binding
+    assert binding is not None and len(binding.sets) == 1  # physics' own, nothing more
+    app.world.spawn(Transform(3.0, 2.0), CharacterBody(Capsule(0.3, 0.9)))
+    app.step(60)
+    assert system._obstacles is not None
+    assert app.world.get(3, CharacterBody).on_floor
+
+
+def test_moving_a_static_wall_is_seen(app_of) -> None:
+    def scene(world):
+        ground(world)
+        world.spawn(Transform(3.0, 2.0), Collider(Box(0.5, 2.0)))
+        world.spawn(Transform(0.0, 1.0), CharacterBody(Capsule(0.3, 0.9)))
+
+    app = app_of(scene)
+    body, t = app.world.get(3, CharacterBody), app.world.get(3, Transform)
+    for _ in range(60):
+        body.velocity = (3.0, body.velocity[1])
+        app.step()
+    assert t.x == pytest.approx(2.5 - 0.3 - 0.015, abs=1e-3)
+    app.world.get(2, Transform).x = 6.0  # the wall teleported away
+    for _ in range(60):
+        body.velocity = (3.0, body.velocity[1])
+        app.step()
+    assert t.x == pytest.approx(5.5 - 0.3 - 0.015, abs=1e-3)
