@@ -1,15 +1,18 @@
 """``CharacterSystem``: moves every :class:`~kge.components.character.CharacterBody`.
 
-It runs in the fixed step after the behaviours' ``on_fixed_update`` (order 100, where
-a game sets ``velocity`` and ``jump``) and before physics (200): it moves each
+It runs in the fixed step's ``"characters"`` set (:data:`CHARACTERS`, which the plugin
+adds): after the behaviours' ``on_fixed_update`` (``SCRIPTS``, where a game sets
+``velocity`` and ``jump``) and ``PRE_PHYSICS`` (where tweens and game systems set the
+velocities of platforms and lifts), before the physics step (``PHYSICS``). It moves each
 character with collide-and-slide (:mod:`kge.character`), hands the move to the
 character's kinematic body as a velocity (``Physics.set_velocities``, one call for
 all), writes the contact flags back into the components and pushes the dynamic
 bodies it walked into. Physics then moves the kinematic bodies exactly there, so
 dynamic bodies, sensors, ray casts and drawing (interpolated) see the character as a
-body. ``CharacterSensorSystem`` (order 250, after physics, before events are
-delivered) reports the static and kinematic sensors characters enter and leave,
-which physics does not (Box2D's bodies of those kinds do not meet sensors).
+body. ``CharacterSensorSystem`` (``PHYSICS``, after the step, before events are
+delivered in ``PHYSICS_EVENTS``) reports the static and kinematic sensors characters
+enter and leave, which physics does not (Box2D's bodies of those kinds do not meet
+sensors).
 
 The plugin gives a new character what it lacks: a kinematic ``RigidBody`` and a
 ``Collider`` of its shape (a capsule's is a 14-sided polygon). It refuses a character
@@ -43,10 +46,13 @@ from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.physics.writeback import set_all, slot_setter
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
-from kge.systems.physics import PhysicsPlugin
-from kge.world import World
+from kge.schedule import Stage, System, SystemSet
+from kge.systems.physics import PhysicsPlugin, PhysicsSystem
+from kge.world import World, stored_resource
 
+#: the fixed step's set of the character system: after ``PRE_PHYSICS`` (where tweens and
+#: game systems set the velocities of platforms and lifts), before the physics step
+CHARACTERS = "characters"
 _DEFAULT_BITS = (Filter().category_bits, Filter().mask_bits, Filter().group_index)
 #: the read-back fields and their column in a step's result
 _WRITES = {
@@ -107,7 +113,7 @@ class CharacterSystem(System):
     """Moves the characters (fixed stage, between the behaviours and physics)."""
 
     stage = Stage.FIXED
-    order = 150
+    in_set = CHARACTERS
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -343,16 +349,17 @@ def _write_changed(bodies: list[CharacterBody], name: str, values: np.ndarray,
 
 class CharacterSensorSystem(System):
     """Reports the static and kinematic sensors characters enter and leave, as
-    ``SensorBegin`` / ``SensorEnd`` events in ``PhysicsEvents`` (delivered to
-    ``on_sensor_begin`` / ``on_sensor_end`` with the physics events of the step)."""
+    ``SensorBegin`` / ``SensorEnd`` events of the step (``world.events(SensorBegin)``,
+    ``on_sensor_begin`` / ``on_sensor_end``), delivered with the physics events."""
 
     stage = Stage.FIXED
-    order = 250
+    in_set = SystemSet.PHYSICS
+    after = (PhysicsSystem,)
 
     def process(self, dt: float) -> None:
         world = self.world
         mover = world.get_system(CharacterSystem)
-        events = world.try_resource(PhysicsEvents)
+        events = stored_resource(world, PhysicsEvents)
         physics = world.try_resource(Physics)
         if mover is None or events is None or physics is None:
             return
@@ -448,5 +455,8 @@ class CharacterPlugin(Plugin):
     requires = (PhysicsPlugin,)
 
     def build(self, world: World) -> None:
+        if CHARACTERS not in world.schedule.sets(Stage.FIXED):
+            world.schedule.add_set(CHARACTERS, Stage.FIXED, after=[SystemSet.PRE_PHYSICS],
+                                   before=[SystemSet.PHYSICS])
         world.add_system(CharacterSystem())
         world.add_system(CharacterSensorSystem())

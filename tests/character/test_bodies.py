@@ -16,9 +16,9 @@ from kge import (
     Circle,
     Collider,
     Physics,
-    PhysicsEvents,
     RigidBody,
     Script,
+    SensorBegin,
     Transform,
 )
 from tests.character.conftest import ground
@@ -122,7 +122,7 @@ def test_it_enters_and_leaves_sensors_once_each(app_of, kind) -> None:
     for _ in range(150):
         body.velocity = (3.0, body.velocity[1])
         app.step()
-        seen += [(e.collider_a, e.collider_b) for e in world.resource(PhysicsEvents).sensor_begin]
+        seen += [(e.collider_a, e.collider_b) for e in world.events(SensorBegin)]
     assert script.begins == [2, 3, 4] and script.ends == [2, 3, 4]
     assert seen == [(2, 5), (3, 5), (4, 5)]
 

@@ -160,3 +160,31 @@ def test_a_rising_one_way_lift_carries_it_up(app_of) -> None:
     app.step(120)
     assert body.on_floor and body.floor_collider == 2
     assert t.y - lift.y == pytest.approx(0.1 + 0.01 + 0.9 + SKIN, abs=1e-6)
+
+
+def test_a_tweened_platform_carries_it_in_step(app_of) -> None:
+    """A platform moved by a tween (its velocity set in the fixed step, before physics)
+    carries the character the same step: the character moves after the fixed tweens."""
+    from kge import AnimationPlugin, Tweens
+
+    def scene(world):
+        ground(world, y=-20.0)
+        world.spawn(Transform(0.0, 0.0), RigidBody(type=BodyType.KINEMATIC),
+                    Collider(Box(3.0, 0.2)))
+        world.spawn(Transform(0.5, 0.2 + 0.9 + SKIN), CharacterBody(Capsule(0.3, 0.9)))
+
+    app = app_of(scene)
+    app.add_plugins(AnimationPlugin())
+    world = app.world
+    body, t, p = world.get(3, CharacterBody), world.get(3, Transform), world.get(2, Transform)
+    app.step(10)
+    start = _in_frame(t, p)
+    world.resource(Tweens).to(2, Transform, "x", 4.0, 1.0, ease="sine_in_out")
+    rel = []
+    for _ in range(90):  # eased both ways: the platform's speed changes every step
+        app.step()
+        assert body.on_floor and body.floor_collider == 2
+        rel.append(_in_frame(t, p))
+    assert p.x == pytest.approx(4.0)
+    for x, y in rel:
+        assert x == pytest.approx(start[0], abs=1e-9) and y == pytest.approx(start[1], abs=1e-9)
