@@ -37,7 +37,17 @@ from typing import Any, ClassVar
 from kge.components.shapes import LINEAR_SLOP, Box, Circle
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import FAST, Vec2, boolean, finite, in_range, integer, non_negative, vec2
+from kge.validate import (
+    FAST,
+    Vec2,
+    at_most,
+    boolean,
+    finite,
+    in_range,
+    integer,
+    non_negative,
+    vec2,
+)
 
 #: Largest character shape accepted, metres (half extent): a character is a moving body,
 #: and Box2D tunes moving bodies for 0.1 to 10 m.
@@ -143,13 +153,6 @@ def _velocity(value: Any, owner: str, name: str) -> Vec2:
     return (x, y)
 
 
-def _speed(value: Any, owner: str, name: str) -> float:
-    v = non_negative(value, owner, name)
-    if v > MAX_SPEED:
-        raise ValidationError(f"{owner}.{name} must be <= {MAX_SPEED:g} m/s, got {v!r}")
-    return v
-
-
 def _up(value: Any, owner: str, name: str) -> Vec2:
     x, y = vec2(value, owner, name)
     n = math.hypot(x, y)
@@ -181,11 +184,10 @@ def _floor_angle(value: Any, owner: str, name: str) -> float:
 
 
 def _bounded(limit: float, unit: str) -> Check:
+    """A check of a value in [0, ``limit``] ``unit``."""
+
     def check(value: Any, owner: str, name: str) -> float:
-        v = non_negative(value, owner, name)
-        if v > limit:
-            raise ValidationError(f"{owner}.{name} must be <= {limit:g} {unit}, got {v!r}")
-        return v
+        return at_most(non_negative(value, owner, name), limit, owner, name, unit)
 
     return check
 
@@ -283,7 +285,7 @@ class CharacterBody(Tracked):
         "max_slides": _slides,
         "push_force": _non_negative_or_inf,
         "mass": _positive_or_inf,
-        "jump_speed": _speed,
+        "jump_speed": _bounded(MAX_SPEED, "m/s"),
         "jump": boolean,
         "jump_cut": lambda v, o, n: in_range(v, 0.0, 1.0, o, n),
         "coyote_time": _bounded(MAX_GRACE, "s"),

@@ -16,26 +16,11 @@ from kge import (
     Collider,
     OneWayPlatform,
     RigidBody,
-    Script,
     Transform,
 )
 from kge.character.contacts import SKIN
+from kge.testbed.samples.character import Shuttle
 from tests.character.conftest import gap_to, ground
-
-
-class Shuttle(Script):
-    """Back and forth: ``velocity`` for ``period`` seconds, then its opposite."""
-
-    def __init__(self, velocity: tuple[float, float], period: float) -> None:
-        self.velocity = velocity
-        self.period = period
-        self.t = 0.0
-
-    def on_fixed_update(self, dt: float) -> None:
-        forward = int(self.t / self.period) % 2 == 0
-        self.t += dt
-        vx, vy = self.velocity
-        self.get(RigidBody).velocity = (vx, vy) if forward else (-vx, -vy)
 
 
 def _in_frame(t: Transform, p: Transform) -> tuple[float, float]:

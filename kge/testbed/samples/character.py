@@ -61,7 +61,7 @@ class _Walker(Script):
         body.jump = self.every > 0.0 and (self.t % self.every) < 0.5
 
 
-class _Shuttle(Script):
+class Shuttle(Script):
     """Moves its kinematic body by ``velocity`` for ``period`` seconds, then back."""
 
     def __init__(self, velocity: tuple[float, float], period: float) -> None:
@@ -196,7 +196,7 @@ def moving_platforms(world: World) -> None:
     for x, y, velocity, period in ((-12.0, 2.0, (3.0, 0.0), 1.5), (-3.0, 1.0, (0.0, 2.0), 1.5),
                                    (5.0, 2.0, (1.5, 1.5), 1.5)):
         world.spawn(Transform(x, y), RigidBody(type=BodyType.KINEMATIC),
-                    Collider(Box(2.0, 0.2)), Behaviour(_Shuttle(velocity, period)),
+                    Collider(Box(2.0, 0.2)), Behaviour(Shuttle(velocity, period)),
                     Name("platform"))
         _character(world, x, y + 0.2 + 0.01 + 0.8 + 0.005, _Walker(0.0), "rider")
     world.spawn(Transform(14.0, 3.0), RigidBody(type=BodyType.KINEMATIC, angular_velocity=0.4),
