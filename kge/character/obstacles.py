@@ -41,8 +41,8 @@ CELL = 2.0
 #: components whose writes can change what characters meet (tracked for writes; the
 #: Transforms of static colliders' owners too, bound while they own one)
 _TRACKED = (Collider, OneWayPlatform, RigidBody)
-#: components whose arrival or departure can
-_WATCHED = (*_TRACKED, Transform, CharacterBody)
+#: components whose arrival or departure can change what characters meet
+WATCHED = (*_TRACKED, Transform, CharacterBody)
 
 
 @dataclass(slots=True)
@@ -195,19 +195,18 @@ class Obstacles:
         self.moving = Pieces()
         self._static_stale = True
         self._moving_stale = True
-        for ctype in _WATCHED:
-            world.on_add(ctype, self._added)
-            world.on_remove(ctype, self._removed)
-            for e, (comp,) in world.query(ctype):  # a plugin added to a populated world
-                self._added(e, comp)
+        for ctype in WATCHED:  # what the world holds already
+            for e, (comp,) in world.query(ctype):
+                self.added(e, comp)
 
-    # -- change tracking ----------------------------------------------------------------
-    def _added(self, entity: int, component: Any) -> None:
+    # -- change tracking (the owner calls these from its world's on_add / on_remove hooks
+    # -- of the WATCHED types) -------------------------------------------------------------
+    def added(self, entity: int, component: Any) -> None:
         self.dirty.add(entity)
         if isinstance(component, _TRACKED):
             bind(component, entity, self.dirty)
 
-    def _removed(self, entity: int, component: Any) -> None:
+    def removed(self, entity: int, component: Any) -> None:
         self.dirty.add(entity)
         if isinstance(component, _TRACKED):
             unbind(component, self.dirty)

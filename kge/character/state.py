@@ -9,7 +9,11 @@ and writes everyone's state with one gather and one scatter.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+
+from kge.snapshot import carry_running
 
 #: the columns and their starting values
 COLUMNS: dict[str, tuple[type, float]] = {
@@ -40,8 +44,16 @@ COLUMNS: dict[str, tuple[type, float]] = {
 }
 
 
+#: the columns snapshots carry (the others say what was last written into a component:
+#: a restored world's components are new objects, written afresh at their first step)
+CARRIED = ("on_floor", "air_time", "buffer", "jump_held", "rising", "jumped", "floor_body",
+           "floor_collider", "floor_vx", "floor_vy")
+
+
+@carry_running
 class CharacterState:
-    """Rows of state by character entity."""
+    """Rows of state by character entity (a resource of the world, so that snapshots
+    carry it: a restored character goes on mid-jump, on its platform, in its sensors)."""
 
     def __init__(self) -> None:
         self.slot: dict[int, int] = {}
@@ -95,3 +107,28 @@ class CharacterState:
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.cols[name]
+
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[int, tuple[dict[str, Any], list[int], list[tuple[int, int]]]]:
+        """Each character's timers, jump and floor, the one-way platforms it is passing
+        through and the sensors it is in."""
+        return {
+            e: ({name: self.cols[name][s].item() for name in CARRIED},
+                sorted(self.passing.get(e, ())), sorted(self.sensors.get(e, ())))
+            for e, s in sorted(self.slot.items())
+        }
+
+    def import_running(
+        self, carried: dict[int, tuple[dict[str, Any], list[int], list[tuple[int, int]]]]
+    ) -> None:
+        """Characters of a restored world go on from where they were (not as new ones)."""
+        for e, (values, passing, sensors) in sorted(carried.items()):
+            s = self.slot.get(e)
+            if s is None:
+                s = self.slot[e] = self._new()
+            for name in CARRIED:
+                self.cols[name][s] = values[name]
+            if passing:
+                self.passing[e] = set(passing)
+            if sensors:
+                self.sensors[e] = set(sensors)

@@ -31,7 +31,7 @@ from kge.character.bodies import Bodies
 from kge.character.contacts import collides
 from kge.character.grid import Grid
 from kge.character.narrowphase import signed_distance
-from kge.character.obstacles import CELL, DYNAMIC, Obstacles, Pieces
+from kge.character.obstacles import CELL, DYNAMIC, WATCHED, Obstacles, Pieces
 from kge.character.step import Stepper
 from kge.components.character import CharacterBody, CharacterShape
 from kge.components.collider import Collider
@@ -123,6 +123,7 @@ class CharacterSystem(System):
         #: bindings that only run the world's validators on RigidBody.type writes
         self._marks = NoMarks()
         self.stepper = Stepper()
+        world.insert_resource(self.stepper.state)  # (snapshots carry it)
         #: characters whose collider the plugin added: (collider, the shape it was made for)
         self.auto: dict[int, tuple[Collider, CharacterShape]] = {}
         #: the characters (entity, body, transform, rigid body, collider) by entity, made
@@ -132,8 +133,11 @@ class CharacterSystem(System):
         #: collision bits by Filter object (filters are frozen; assigning one replaces it)
         self._bits: dict[int, tuple[Any, tuple[int, int, int]]] = {}
         world.on_add(CharacterBody, self._character_added)
-        world.on_add(CharacterBody, lambda e, c: self._forget_roster())
+        world.on_add(CharacterBody, self._forget_roster)
         world.on_remove(CharacterBody, self._character_removed)
+        for ctype in WATCHED:  # (registered here, with the system, even before obstacles)
+            world.on_add(ctype, self._obstacle_added)
+            world.on_remove(ctype, self._obstacle_removed)
         world.on_add(RigidBody, self._rigidbody_added)
         for ctype in (RigidBody, Collider, Transform):
             world.on_add(ctype, self._part_changed)
@@ -187,8 +191,16 @@ class CharacterSystem(System):
         settings = self.world.try_resource(PhysicsSettings)
         return (settings or PhysicsSettings()).polygon_radius
 
-    def _forget_roster(self) -> None:
+    def _forget_roster(self, entity: int, body: CharacterBody) -> None:
         self._roster = None
+
+    def _obstacle_added(self, entity: int, component: Any) -> None:
+        if self._obstacles is not None:
+            self._obstacles.added(entity, component)
+
+    def _obstacle_removed(self, entity: int, component: Any) -> None:
+        if self._obstacles is not None:
+            self._obstacles.removed(entity, component)
 
     def _character_removed(self, entity: int, body: CharacterBody) -> None:
         self.auto.pop(entity, None)

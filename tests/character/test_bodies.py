@@ -4,6 +4,7 @@ each other, and determinism."""
 from __future__ import annotations
 
 import math
+import warnings
 
 import pytest
 
@@ -221,3 +222,54 @@ def test_moving_a_static_wall_is_seen(app_of) -> None:
         body.velocity = (3.0, body.velocity[1])
         app.step()
     assert t.x == pytest.approx(5.5 - 0.3 - 0.015, abs=1e-3)
+
+
+class _HoldJump(_Counter):
+    """Holds jump from step 10 to step ``release`` (a variable jump), runs right."""
+
+    def __init__(self, release: int) -> None:
+        super().__init__()
+        self.release = release
+        self.steps = 0
+
+    def on_fixed_update(self, dt: float) -> None:
+        body = self.get(CharacterBody)
+        self.steps += 1
+        body.jump = 10 <= self.steps < self.release
+        body.velocity = (2.0, body.velocity[1])
+
+
+def _jumper(world) -> None:
+    ground(world)
+    world.spawn(Transform(3.0, 3.0), Collider(Box(0.5, 3.0), sensor=True))
+    world.spawn(Transform(0.0, 1.0), CharacterBody(Capsule(0.3, 0.9), jump_speed=8.0),
+                Behaviour(_HoldJump(30)))
+
+
+def _restored_run(before: int, after: int) -> tuple[list[tuple[float, float]], list[int]]:
+    from kge import App
+    from tests.character.conftest import PLUGINS
+
+    app = App(_jumper, headless=True, plugins=[p() for p in PLUGINS])
+    poses = []
+    for k in range(before + after):
+        if k == before:
+            app.restore(app.world.snapshot())
+        with warnings.catch_warnings():  # (nothing of the old world is carried over)
+            warnings.simplefilter("error")
+            app.step()
+        t = app.world.get(3, Transform)
+        poses.append((t.x, t.y))
+    script = app.world.get(3, Behaviour).script
+    app.close()
+    return poses, script.begins
+
+
+@pytest.mark.parametrize("before", [20, 25, 90])
+def test_a_restored_world_goes_on_as_the_same_run(before) -> None:
+    """Snapshots carry the characters' jump and ground state and the sensors they are
+    in: restored mid-jump with the button held (20, 25: the release still cuts the
+    jump), or walking through a sensor (90: it is not entered again)."""
+    plain = _restored_run(200, 0)
+    assert _restored_run(before, 200 - before) == plain
+    assert plain[1] == [2]
