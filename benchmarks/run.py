@@ -367,6 +367,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
 
         out += ["", "Gymnasium LunarLander, env steps per second in one process (random "
                 "actions, episodes reset as they end):", "", rl_table(report["rl"], True)]
+    if report.get("characters"):
+        from benchmarks.character import markdown_lines as character_lines
+
+        out += character_lines(report["characters"])
     if report.get("costs"):
         from benchmarks.costs import markdown as costs_markdown
 
@@ -518,11 +522,22 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\n".join(rendering.lines(drawing)))
+    characters: dict[str, float] = {}
+    if not args.scene:  # character controllers beside the same bodies as dynamic bodies
+        from benchmarks import character
+
+        characters, why = character.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\ncharacters:", character.table(characters))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
     if drawing:
         goals += rendering.targets(drawing)
+    if characters:
+        goals += character.targets(characters)
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -547,6 +562,7 @@ def main(argv: list[str] | None = None) -> int:
         "game": game,
         "tilemap": tiles,
         "rendering": drawing,
+        "characters": characters,
         "targets": goals,
         "skipped": skipped,
     }

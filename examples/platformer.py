@@ -12,7 +12,8 @@ linear filtering: a dusk sky, hills repeated along the level (one sprite), the h
 and glowing coins. The camera's post stack blooms the coins; a second camera draws
 a minimap of the level in the corner.
 
-Keys: left/right (or A/D) run, space/up jumps. Run it:
+Keys: left/right (or A/D) run, space/up jumps (hold for higher), down drops through a
+plank. The player is a ``CharacterBody`` (docs/character.md). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 """
 
@@ -31,12 +32,10 @@ from kge import (
     Bloom,
     Box,
     Camera,
-    Collider,
+    CharacterBody,
     Input,
     Key,
     MapObject,
-    Physics,
-    RigidBody,
     Script,
     SensorBegin,
     Spawn,
@@ -64,25 +63,16 @@ class Score:
 
 
 class Player(Script):
-    """Runs with the arrows, jumps when something is under its feet."""
+    """Runs with the arrows; jumps while standing (higher the longer space is held);
+    down drops through the plank underfoot."""
 
     def on_fixed_update(self, dt: float) -> None:
         inp = self.world.resource(Input)
-        rb = self.get(RigidBody)
-        vx = RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D))
-        vy = rb.velocity[1]
-        if inp.any_held(Key.SPACE, Key.UP) and self.grounded() and vy <= 0.1:
-            vy = JUMP_SPEED
-        rb.velocity = (vx, vy)
-
-    def grounded(self) -> bool:
-        t = self.transform
-        physics = self.world.resource(Physics)
-        for dx in (-0.35, 0.0, 0.35):
-            hit = physics.raycast((t.x + dx, t.y - 0.45), (t.x + dx, t.y - 0.6))
-            if hit is not None:
-                return True
-        return False
+        body = self.get(CharacterBody)
+        body.velocity = (RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D)),
+                         body.velocity[1])
+        body.jump = inp.any_held(Key.SPACE, Key.UP)
+        body.drop_through = inp.any_held(Key.DOWN, Key.S)
 
 
 class Referee(Script):
@@ -124,8 +114,7 @@ HILLS = from_array(paint.hills(256, 96))
 
 def player_start(spawn: Spawn) -> list[Any]:
     return [
-        RigidBody(fixed_rotation=True),
-        Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
+        CharacterBody(Box(0.4, 0.45), jump_speed=JUMP_SPEED),
         Sprite(HERO, size=(1.0, 1.0), filter=TextureFilter.LINEAR, layer=2),
         Behaviour(Player()),
     ]

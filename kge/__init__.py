@@ -56,6 +56,7 @@ from kge.components.animation import Animator, Clip, FrameRef, Loop, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.blend import Blend
 from kge.components.camera import Camera
+from kge.components.character import Capsule, CharacterBody, CharacterMode  # docs/character.md
 from kge.components.debug import DebugDraw
 
 # particles and lights (issue 18): components here, plugins and the resource on first use
@@ -132,6 +133,7 @@ from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import SnapshotError
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
+from kge.systems.character import CharacterPlugin
 from kge.systems.physics import PhysicsPlugin
 from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
@@ -273,7 +275,11 @@ __all__ = [
     "BurstOnHit",
     "Camera",
     "CameraShake",
+    "Capsule",
     "Chain",
+    "CharacterBody",
+    "CharacterMode",
+    "CharacterPlugin",
     "Circle",
     "Clip",
     "Collider",

@@ -3,6 +3,7 @@
 =====================  =================================================================
 ``BehaviourPlugin``    Behaviour scripts: input hooks, fixed/update/late hooks, coroutines
 ``PhysicsPlugin``      Box2D-style physics on pymunk, contact events, joints, queries
+``CharacterPlugin``    characters that collide and slide (``CharacterBody``), in the fixed step
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
@@ -28,6 +29,7 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.animation import AnimationPlugin
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.character import CharacterPlugin
     from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
@@ -38,6 +40,7 @@ def default_plugins() -> list[Plugin]:
     return [
         BehaviourPlugin(),
         PhysicsPlugin(),
+        CharacterPlugin(),
         AudioPlugin(),
         RenderPlugin(),
         AnimationPlugin(),

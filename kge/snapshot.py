@@ -20,8 +20,9 @@ What is not saved, and why:
 What systems are running goes along: each system-owned resource registered with
 :func:`carry_running` exports its running state, keyed by entity ids, and the
 restored world's resource continues from it. So running tweens go on from where
-they were, live particles keep flying (and one-shot bursts do not fire again), and
-animators keep their clip time. Handles game code kept (a ``TweenHandle``) belong
+they were, live particles keep flying (and one-shot bursts do not fire again),
+animators keep their clip time, and characters go on mid-jump, in the sensors they
+were in. Handles game code kept (a ``TweenHandle``) belong
 to the old world: ask the restored world's resources for new ones.
 
 Behaviour scripts are saved when their classes are importable (module level),

@@ -166,6 +166,8 @@ class World:
         self._owners: dict[int, tuple[int, Any]] = {}
         self._defer_depth = 0
         self._lock_depth = 0
+        #: the components of the spawn being validated and applied (see ``spawning``)
+        self._spawning: tuple[Any, ...] = ()
         self._closed = False
         self._plugins: list[Plugin] = []
         self.schedule = Schedule(self)
@@ -251,21 +253,36 @@ class World:
         _check_groups("world.spawn()", types)
         for c in components:
             self._check_unowned(c, None, "spawn")
-        for c in components:
-            self._validate(None, c)
-        self._use()
-        entity: int = esper.create_entity()
-        for c in components:
-            self._owners[id(c)] = (entity, c)
-        if self._defer_depth:
-            pend = self._pending.setdefault(entity, {})
+        outer, self._spawning = self._spawning, components
+        try:
             for c in components:
-                pend[type(c)] = c
-                self._enqueue(entity, "add", c)
-        else:
+                self._validate(None, c)
+            self._use()
+            entity: int = esper.create_entity()
             for c in components:
-                self._apply_add(entity, c)
+                self._owners[id(c)] = (entity, c)
+            if self._defer_depth:
+                pend = self._pending.setdefault(entity, {})
+                for c in components:
+                    pend[type(c)] = c
+                    self._enqueue(entity, "add", c)
+            else:
+                for c in components:
+                    self._apply_add(entity, c)
+        finally:
+            self._spawning = outer
         return entity
+
+    @property
+    def spawning(self) -> tuple[Any, ...]:
+        """The components of the :meth:`spawn` in progress (empty outside one).
+
+        Validators run with ``entity=None`` inside ``spawn``, before the entity
+        exists; a rule about the entity's *other* components (a character
+        controller must not sit on a dynamic body) reads them here, and an
+        ``on_add`` hook run by the spawn sees which components are still to come.
+        """
+        return self._spawning
 
     def spawn_linked(
         self, count: int, build: Callable[[list[int]], Sequence[Sequence[Any]]]

@@ -283,6 +283,22 @@ class Physics:
         set_all(_SET_ANGULAR_VELOCITY, rbs, w)
         return True
 
+    def set_velocities(self, entities: Any, velocities: Any, angular: Any = None) -> None:
+        """Row k gives ``entities[k]`` the velocity ``velocities[k]`` (and, unless
+        ``angular`` is None, the spin ``angular[k]``): Box2D's ``SetLinearVelocity``
+        in bulk, for controllers that drive many kinematic or dynamic bodies every
+        step (:mod:`kge.physics.velocities`).
+
+        The same as writing each ``RigidBody.velocity``, capped at
+        ``settings.max_translation`` per step, waking sleepers, with one check of
+        every row before anything changes; static bodies are skipped.
+
+        >>> # physics.set_velocities([car, lift], [(4.0, 0.0), (0.0, 1.5)])
+        """
+        from kge.physics.velocities import set_velocities
+
+        set_velocities(self, entities, velocities, angular)
+
     def _records(self, entities: list[int], op: str) -> list[BodyRecord]:
         """:meth:`_record` of every entity (ints), with one sync for them all."""
         missing = self._world.first_missing(entities)

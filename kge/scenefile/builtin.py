@@ -12,6 +12,7 @@ from kge.components import drawables as draw
 from kge.components.animation import Animator, Clip, FrameRef, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
+from kge.components.character import Capsule, CharacterBody
 from kge.components.collider import Collider
 from kge.components.debug import DebugDraw
 from kge.components.filter import Filter
@@ -77,6 +78,7 @@ def register_builtin(reg: TypeRegistry) -> None:
     for cls in plain:
         reg.register(cls)
     reg.register(Collider, entity_fields=("body",))
+    reg.register(CharacterBody, entity_fields=("floor_collider", "wall_collider"))
     # joints: body references, and the world points a prefab placement moves
     for joint in (RevoluteJoint, WeldJoint, FrictionJoint):
         reg.register(joint, entity_fields=_BODIES, point_fields=("anchor",))
@@ -127,9 +129,9 @@ def register_builtin(reg: TypeRegistry) -> None:
     reg.register(Theme, kinds=(RESOURCE,))
     reg.register(Resolution, kinds=(RESOURCE,))
     # values nested in fields
-    values: tuple[type, ...] = (Box, Circle, Polygon, Edge, Chain, Filter, EmitPoint, EmitCircle,
-                                EmitBox, EmitLine, EmitCollider, Clip, Transition, Shader, Bloom,
-                                ColorGrade, Vignette, CRT)
+    values: tuple[type, ...] = (Box, Circle, Polygon, Edge, Chain, Capsule, Filter, EmitPoint,
+                                EmitCircle, EmitBox, EmitLine, EmitCollider, Clip, Transition,
+                                Shader, Bloom, ColorGrade, Vignette, CRT)
     for cls in values:
         reg.register(cls, kinds=(VALUE,))
     reg.register(FrameRef, kinds=(VALUE,), asset_fields=("image",))

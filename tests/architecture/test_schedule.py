@@ -23,7 +23,9 @@ DEFAULT_FRAME = {
     Stage.FIXED: [
         ("FixedBehaviours", "scripts"),
         ("FixedTweens", "pre_physics"),
+        ("CharacterSystem", "characters"),
         ("PhysicsSystem", "physics"),
+        ("CharacterSensorSystem", "physics"),
         ("PhysicsEventDelivery", "physics_events"),
         ("ParticleTriggers", "post_physics"),
     ],

@@ -20,7 +20,10 @@ from kge import (
     Button,
     Camera,
     CameraShake,
+    Capsule,
     Chain,
+    CharacterBody,
+    CharacterMode,
     Circle,
     Clip,
     Collider,
@@ -182,4 +185,6 @@ def everything(world: World, art: Path) -> None:
     world.spawn(Transform(9.0, 1.0), MapObject("m.tmx", "objects", 3, "door", "Door", "point",
                                                {"locked": True, "keys": 2}))
     world.spawn(TileCollider("ground", "outline", (0, 0, 4, 1)))
+    world.spawn(Transform(-6.0, 1.0), CharacterBody(Capsule(0.3, 0.8), jump_speed=6.5,
+                                                    step_height=0.2, mode=CharacterMode.TOP_DOWN))
     assert ground and math.isfinite(world.get(hull, Transform).x)

@@ -5,6 +5,7 @@ from kge.testbed.samples import (  # noqa: F401
     basics,
     bodies,
     box2d_api,
+    character,
     collision,
     collision_module,
     determinism,
