@@ -131,6 +131,31 @@ def point(value: Any, owner: str, field: str) -> Vec2:
     return (x, y)
 
 
+#: the largest drawn size (metres): the width of kge's world
+MAX_EXTENT = 2 * MAX_COORDINATE
+
+#: the largest anchor component (a fraction of the drawn size: 0.5 is the middle)
+MAX_ANCHOR = 1e3
+
+
+def extent(value: Any, owner: str, field: str) -> float:
+    """A drawn size in metres, in (0, :data:`MAX_EXTENT`] (float32 vertices stay finite)."""
+    v = positive(value, owner, field)
+    if v > MAX_EXTENT:
+        raise ValidationError(f"{_label(owner, field)} must be <= {MAX_EXTENT:g} m, got {v!r}")
+    return v
+
+
+def anchor(value: Any, owner: str, field: str) -> Vec2:
+    """An (x, y) anchor as fractions of a drawn size, each within +-:data:`MAX_ANCHOR`."""
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_ANCHOR or abs(y) > MAX_ANCHOR:
+        raise ValidationError(
+            f"{_label(owner, field)} must be fractions within +-{MAX_ANCHOR:g}, got {(x, y)!r}"
+        )
+    return (x, y)
+
+
 def frequency(value: Any, owner: str, field: str) -> float:
     """A spring frequency in [0, :data:`MAX_FREQUENCY`] Hz."""
     v = non_negative(value, owner, field)

@@ -38,7 +38,7 @@ from typing import Any, ClassVar
 from kge.components.color import RGB, byte, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.validate import Vec2, anchor, boolean, extent, integer, vec2
 
 Rect4 = tuple[int, int, int, int]
 
@@ -59,13 +59,10 @@ def _optional_size(value: Any, owner: str, field: str) -> Vec2 | None:
     if value is None:
         return None
     w, h = vec2(value, owner, field)
-    positive(w, owner, f"{field}[0]")
-    positive(h, owner, f"{field}[1]")
+    extent(w, owner, f"{field}[0]")
+    extent(h, owner, f"{field}[1]")
     return (w, h)
 
-
-def _anchor(value: Any, owner: str, field: str) -> Vec2:
-    return vec2(value, owner, field)
 
 
 def _region(value: Any, owner: str, field: str) -> int | Rect4 | None:
@@ -113,7 +110,7 @@ class Sprite(Tracked):
         "image": _image,
         "layer": _int,
         "order": _int,
-        "anchor": _anchor,
+        "anchor": anchor,
         "tint": rgb,
         "opacity": byte,
         "visible": boolean,

@@ -24,8 +24,8 @@ from typing import Any, ClassVar
 
 from kge.components.color import Color, rgba
 from kge.components.tracked import Check, Tracked
-from kge.errors import ComponentTypeError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.errors import ComponentTypeError, ValidationError
+from kge.validate import Vec2, anchor, boolean, integer, positive, vec2
 
 
 def _str(value: Any, owner: str, field: str) -> str:
@@ -44,18 +44,42 @@ def _int(value: Any, owner: str, field: str) -> int:
     return integer(value, owner, field)
 
 
+#: the largest font size, points: FreeType refuses glyphs much larger (a size of 1e6
+#: fails at the first draw with "invalid pixel size")
+MAX_FONT_SIZE = 1000.0
+#: how far (metres in the world, pixels on the screen) a text may sit from its origin
+MAX_OFFSET = 1e9
+
+
+def font_size(value: Any, owner: str, field: str) -> float:
+    """A font size in points, in (0, :data:`MAX_FONT_SIZE`]."""
+    v = positive(value, owner, field)
+    if v > MAX_FONT_SIZE:
+        raise ValidationError(
+            f"{owner}.{field} must be in (0, {MAX_FONT_SIZE:g}] points, got {v!r}"
+        )
+    return v
+
+
+def _offset(value: Any, owner: str, field: str) -> Vec2:
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_OFFSET or abs(y) > MAX_OFFSET:
+        raise ValidationError(f"{owner}.{field} must be within +-{MAX_OFFSET:g}, got {(x, y)!r}")
+    return (x, y)
+
+
 @dataclass(slots=True)
 class Text(Tracked):
     """A text label. See the module docstring for world vs screen space."""
 
     _checks: ClassVar[dict[str, Check]] = {
         "value": _str,
-        "size": positive,
+        "size": font_size,
         "color": rgba,
         "bold": boolean,
-        "anchor": vec2,
+        "anchor": anchor,
         "screen_space": boolean,
-        "offset": vec2,
+        "offset": _offset,
         "layer": _int,
         "order": _int,
         "visible": boolean,

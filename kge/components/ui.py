@@ -116,8 +116,8 @@ def _font_size(value: Any, owner: str, name: str) -> float | None:
     if value is None:
         return None
     v = finite(value, owner, name)
-    if v <= 0:
-        raise ValidationError(f"{owner}.{name} must be > 0, got {v}")
+    if not 0 < v <= 1000:  # FreeType refuses much larger glyphs at the first draw
+        raise ValidationError(f"{owner}.{name} must be in (0, 1000] points, got {v}")
     return v
 
 
@@ -205,6 +205,7 @@ class Label(Tracked):
 class UIImage(Tracked):
     """An image (asset name) stretched over the node, tinted by ``tint``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"image": image, "tint": rgba}
 
     image: Any  #: an asset name, a PixelImage or a pyglet image
@@ -219,6 +220,7 @@ class Panel(Tracked):
     edges and middle, so one small image makes a frame of any size.
     """
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {
         "color": _opt_color, "image": _opt_image, "border": non_negative, "radius": non_negative,
         "blocks": boolean,
@@ -235,6 +237,7 @@ class Panel(Tracked):
 class Button(Tracked):
     """A button with text and/or an image. Clicked: ``ButtonClicked`` and ``on_click``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"text": text, "image": _opt_image, "disabled": boolean}
 
     text: str = ""

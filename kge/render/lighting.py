@@ -222,7 +222,9 @@ def light_rows(
         rows[i, :, 0:2] = (x, y) + corners * r
         rows[i, :, 2:4] = (x, y)
         rows[i, :, 4:7] = (light.color[0] * k, light.color[1] * k, light.color[2] * k)
-        rows[i, :, 7:11] = (r, light.falloff, a + light.direction, light.cone / 2)
+        # below 2 pi before the float32 row: a finite angle of 1e300 would overflow it
+        facing = math.remainder(math.remainder(a, math.tau) + light.direction, math.tau)
+        rows[i, :, 7:11] = (r, light.falloff, facing, light.cone / 2)
         rows[i, :, 11] = light.softness
     return rows.reshape(-1, _LIGHT_FLOATS)
 

@@ -26,7 +26,7 @@ from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
 from kge.components.tracked import validate_writes
 from kge.components.transform import Transform
-from kge.errors import DisplayError, where
+from kge.errors import DisplayError, ValidationError, where
 from kge.host import Host
 from kge.input import Input
 from kge.keys import Key
@@ -210,6 +210,24 @@ class RenderPlugin(Plugin):
         world.add_system(DebugKeys())
         world.validator(Sprite, functools.partial(_check_sprite_image, world))
         validate_writes(world, Sprite)
+        world.validator(Camera, functools.partial(_check_camera_follow, world))
+        validate_writes(world, Camera)
+
+
+def _check_camera_follow(world: World, entity: int | None, cam: Camera) -> None:
+    """A camera following an entity that does not exist (or has no Transform) is refused
+    at the call, not left watching nothing."""
+    target = cam.follow
+    if target is None:
+        return
+    if not world.exists(target):
+        raise ValidationError(
+            f"{where(entity, 'Camera', 'follow')}: entity {target} does not exist"
+        )
+    if world.try_get(target, Transform) is None:
+        raise ValidationError(
+            f"{where(entity, 'Camera', 'follow')}: entity {target} has no Transform to follow"
+        )
 
 
 def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:

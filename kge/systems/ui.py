@@ -21,6 +21,7 @@ from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.schedule import Stage, System
 from kge.systems.behaviour import BehaviourRunner
+from kge.systems.ui_images import check_ui_images
 from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
 from kge.ui.interact import UIState, handle_input
 from kge.ui.theme import DEFAULT_THEME, Theme
@@ -87,6 +88,7 @@ class UIPlugin(Plugin):
         if world.try_resource(Theme) is None:
             world.insert_resource(DEFAULT_THEME)
         world.validator(UINode, _check_parent(world))
+        check_ui_images(world)
         world.add_system(UIInput())
 
         def draw(frame: Frame) -> None:
