@@ -87,6 +87,39 @@ def size(value: Any, owner: str, name: str) -> Size:
     return v
 
 
+#: the largest UI distance, pixels (offsets, padding, spacing): layout boxes stay finite
+MAX_PIXELS = 1e7
+#: the largest magnitude of a slider's or bar's min, max and value: max - min stays finite
+MAX_RANGE = 1e300
+
+
+def pixels(value: Any, owner: str, name: str) -> float:
+    """A UI distance in pixels, within +-:data:`MAX_PIXELS`."""
+    v = finite(value, owner, name)
+    if abs(v) > MAX_PIXELS:
+        raise ValidationError(f"{owner}.{name} must be within +-{MAX_PIXELS:g} pixels, got {v!r}")
+    return v
+
+
+def _gap(value: Any, owner: str, name: str) -> float:
+    v = pixels(value, owner, name)
+    if v < 0:
+        raise ValidationError(f"{owner}.{name} must be >= 0, got {v!r}")
+    return v
+
+
+def _offset(value: Any, owner: str, name: str) -> tuple[float, float]:
+    x, y = vec2(value, owner, name)
+    return (pixels(x, owner, f"{name}[0]"), pixels(y, owner, f"{name}[1]"))
+
+
+def _ranged(value: Any, owner: str, name: str) -> float:
+    v = finite(value, owner, name)
+    if abs(v) > MAX_RANGE:
+        raise ValidationError(f"{owner}.{name} must be within +-{MAX_RANGE:g}, got {v!r}")
+    return v
+
+
 def anchor(value: Any, owner: str, name: str) -> str:
     if value not in ANCHORS:
         raise ValidationError(f"{owner}.{name} must be one of {', '.join(ANCHORS)}, got {value!r}")
@@ -151,15 +184,18 @@ def _strings(value: Any, owner: str, name: str) -> list[str]:
 class UINode(Tracked):
     """Where a UI element goes and how big it is (see the module docstring)."""
 
+    #: the parent must be another live UI node, not a descendant (checked by the UI plugin)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"parent"})
+
     _checks: ClassVar[dict[str, Check]] = {
         "parent": parent,
         "anchor": anchor,
-        "offset": vec2,
+        "offset": _offset,
         "width": size,
         "height": size,
         "layout": _choice(LAYOUTS),
-        "padding": non_negative,
-        "spacing": non_negative,
+        "padding": _gap,
+        "spacing": _gap,
         "align": _choice(ALIGNS),
         "justify": _choice(("start", "center", "end")),
         "columns": _columns,
@@ -279,7 +315,8 @@ class Slider(Tracked):
     continuous. Dragging, arrow keys and the d-pad change it."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "min": finite, "max": finite, "value": finite, "step": non_negative, "disabled": boolean,
+        "min": _ranged, "max": _ranged, "value": _ranged, "step": non_negative,
+        "disabled": boolean,
     }  # fmt: skip
 
     min: float = 0.0
@@ -301,7 +338,7 @@ class ProgressBar(Tracked):
     """A bar filled to ``value / max`` (health bars, loading). ``color`` None: theme accent."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "value": finite, "max": finite, "color": _opt_color, "min": finite,
+        "value": _ranged, "max": _ranged, "color": _opt_color, "min": _ranged,
     }  # fmt: skip
 
     value: float = 0.0
@@ -363,6 +400,20 @@ class TextInput(Tracked):
                     f"{self._owner()}.text has {len(value)} characters, "
                     f"more than max_length {limit}"
                 )
+        elif name == "max_length" and hasattr(self, "caret"):  # a write after __init__
+            value = integer(value, self._owner(), name)
+            if value < max(0, len(self.text)):
+                raise ValidationError(
+                    f"{self._owner()}.max_length must be >= 0 and hold the text's "
+                    f"{len(self.text)} characters, got {value}"
+                )
+        elif name in ("caret", "anchor") and hasattr(self, "caret"):
+            value = integer(value, self._owner(), name)
+            if not -1 <= value <= len(self.text):
+                raise ValidationError(
+                    f"{self._owner()}.{name} must be a character index 0..{len(self.text)} "
+                    f"(or -1), got {value}"
+                )
         Tracked.__setattr__(self, name, value)
         if name == "text" and hasattr(self, "caret"):
             Tracked.__setattr__(self, "caret", min(max(self.caret, 0), len(value)))
@@ -390,10 +441,19 @@ class Dropdown(Tracked):
     disabled: bool = False
 
     def __post_init__(self) -> None:
-        if self.options and not 0 <= self.selected < len(self.options):
+        self._check_selected(self.selected, self.options)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name == "selected" and hasattr(self, "selected"):
+            value = integer(value, self._owner(), name)
+            self._check_selected(value, self.options)
+        Tracked.__setattr__(self, name, value)
+
+    def _check_selected(self, selected: int, options: list[str]) -> None:
+        if options and not 0 <= selected < len(options):
             raise ValidationError(
-                f"{self._owner()}.selected {self.selected} is not an index of its "
-                f"{len(self.options)} options"
+                f"{self._owner()}.selected {selected} is not an index of its "
+                f"{len(options)} options"
             )
 
     @property

@@ -440,3 +440,4 @@ class AnimationPlugin(Plugin):
         passes_for(world).add(_AtlasPass(world, anims), phase="before", name="animation")
         world.validator(Animator, functools.partial(check_frames, world))
         validate_writes(world, Animator)
+        validate_writes(world, CameraShake)  # a bad write names its entity

@@ -22,6 +22,7 @@ from typing import Any
 
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+from kge.components.drawables import DRAWABLE_TYPES
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
 from kge.components.text import Text
@@ -215,6 +216,8 @@ class RenderPlugin(Plugin):
         validate_writes(world, Text)
         world.validator(Camera, functools.partial(_check_camera_follow, world))
         validate_writes(world, Camera)
+        for drawn in DRAWABLE_TYPES:  # a bad write names its entity
+            validate_writes(world, drawn)
 
 
 def _check_camera_follow(world: World, entity: int | None, cam: Camera) -> None:
