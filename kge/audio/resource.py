@@ -90,7 +90,7 @@ class Audio:
             source = None if self.mixer.backend() is None else assets_for(self.world).sound(ref)
             return source, ref.name, ref
         store = assets_for(self.world)
-        found = store.resolve(ref, owner=owner)  # raises, naming every place searched
+        found = store.checked_sound(ref, owner=owner)  # raises, naming every place searched
         name = os.fspath(ref)
         if self.mixer.backend() is None:
             return None, name, found.where

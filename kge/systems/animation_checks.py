@@ -3,13 +3,13 @@
 Without this, a clip naming a missing image, a sheet grid too fine for its image or
 a region outside it was found by the renderer at the first frame drawn (or never,
 headless). Here each frame's image is looked up in the world's asset store, its
-size read from the file's header (Pillow reads a few bytes, nothing is decoded),
-and the frame's rectangle computed from it, so the error comes from the call that
-made the animator, naming the entity, the clip and the frame.
+header checked and its size read (:meth:`kge.assets.Assets.checked_image`: nothing
+is decoded), and the frame's rectangle computed from it, so the error comes from the
+call that made the animator, naming the entity, the clip and the frame.
 
-Sizes are cached per world by the asset's location and good frames of image files
-are remembered, so a thousand animators sharing one sheet read its header once and
-cost a set lookup per frame afterwards.
+The store caches each file's size and good frames of image files are remembered, so a
+thousand animators sharing one sheet read its header once and cost a set lookup per
+frame afterwards.
 """
 
 from __future__ import annotations
@@ -27,34 +27,20 @@ MAX_FRAME_PIXELS = 2048
 
 
 class FrameSizes:
-    """Image sizes by asset location (a world resource, filled as animators arrive)."""
+    """Frames already found good (a world resource, filled as animators arrive)."""
 
     def __init__(self) -> None:
-        self.sizes: dict[str, tuple[int, int]] = {}
         #: frames of image files already found good (their number is bounded by the
         #: files and their grids; frames of images made in code are not kept)
         self.good: set[FrameRef] = set()
 
 
-def _image_size(world: World, sizes: FrameSizes, image: Any, owner: str) -> tuple[int, int] | None:
+def _image_size(world: World, image: Any, owner: str) -> tuple[int, int] | None:
     if hasattr(image, "width") and hasattr(image, "height"):  # an image made in code
         return int(image.width), int(image.height)
     if not isinstance(image, (str, os.PathLike)):
         return None
-    found = assets_for(world).resolve(image, owner=owner)
-    size = sizes.sizes.get(found.where)
-    if size is None:
-        from PIL import Image, UnidentifiedImageError
-
-        try:
-            with found.resource.open("rb") as f, Image.open(f) as img:
-                size = (int(img.width), int(img.height))
-        except (OSError, UnidentifiedImageError, ValueError) as exc:
-            raise ValidationError(
-                f"{owner}: {found.where} is not a readable image ({exc})"
-            ) from None
-        sizes.sizes[found.where] = size
-    return size
+    return assets_for(world).checked_image(image, owner=owner)  # header read once per file
 
 
 def check_frames(world: World, entity: int | None, anim: Animator) -> None:
@@ -67,7 +53,7 @@ def check_frames(world: World, entity: int | None, anim: Animator) -> None:
                 continue
             seen.add(ref)
             owner = f"{where(entity, 'Animator', 'clips')}[{name!r}].frames[{i}]"
-            size = _image_size(world, sizes, ref.image, owner)
+            size = _image_size(world, ref.image, owner)
             if size is None or ref.gif_frame is not None:
                 continue
             try:

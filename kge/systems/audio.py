@@ -140,7 +140,7 @@ class AudioSystem(System):
         if isinstance(comp.sound, SoundData):
             return
         owner = where(entity, type(comp).__name__, "sound")
-        assets_for(self.world).resolve(comp.sound, owner=owner)
+        assets_for(self.world).checked_sound(comp.sound, owner=owner)
 
     def _added(self, entity: int, src: AudioSource) -> None:
         bind(src, entity, self._dirty)

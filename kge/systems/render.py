@@ -237,16 +237,18 @@ def _check_camera_follow(world: World, entity: int | None, cam: Camera) -> None:
 
 
 def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:
-    """A sprite whose image file is missing is refused at spawn, not at the first frame.
+    """A sprite whose image file is missing or cannot load (truncated, 0 x 0, too large)
+    is refused at spawn, not at the first frame.
 
-    Only the file is looked up (the asset store's search, listing every place tried);
-    decoding waits for the first draw, so a headless App never loads an image.
+    The file is looked up (the asset store's search, listing every place tried) and its
+    header checked once per file (:mod:`kge.assets.headers`); decoding waits for the
+    first draw, so a headless App never decodes an image.
     """
     image = sprite.image
     if isinstance(image, (str, os.PathLike)):
         from kge.assets.store import assets_for
 
-        assets_for(world).resolve(image, owner=where(entity, "Sprite", "image"))
+        assets_for(world).checked_image(image, owner=where(entity, "Sprite", "image"))
 
 
 def _check_text(world: World, entity: int | None, text: Text) -> None:

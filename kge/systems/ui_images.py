@@ -2,8 +2,9 @@
 
 A Button's icon, a UIImage or a Panel's nine-patch naming a file that is not there
 was found by the UI drawer at the first frame (``AssetNotFoundError`` from a draw,
-or nothing at all headless). As for sprites, only the file is looked up here (the
-asset store's search, listing every place tried); decoding waits for the first draw.
+or nothing at all headless). As for sprites, the file is looked up here (the asset
+store's search, listing every place tried) and its header checked once per file;
+decoding waits for the first draw.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ def _check_image(world: World, field: str, entity: int | None, component: Any) -
     image = getattr(component, field)
     if isinstance(image, (str, os.PathLike)):
         owner = where(entity, type(component).__name__, field)
-        assets_for(world).resolve(image, owner=owner)
+        assets_for(world).checked_image(image, owner=owner)
 
 
 def check_ui_images(world: World) -> None:

@@ -24,8 +24,10 @@ from __future__ import annotations
 import math
 import re
 import shutil
+import struct
 import sys
 import tempfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -33,7 +35,7 @@ from typing import Any
 import numpy as np
 
 import kge
-from kge.assets import AssetNotFoundError, Assets
+from kge.assets import AssetDecodeError, AssetNotFoundError, Assets
 from kge.errors import ComponentTypeError, ValidationError
 
 from .doctable import DOCS, Section
@@ -453,9 +455,60 @@ SCENES = [
          r"Gamepad\.rumble\.weak"),
 ]
 
+#: hostile media files in the game's asset folder (see :func:`_assets_dir`)
+BAD_IMAGES = {
+    "truncated.png": r"not a readable image \(OSError: Truncated File Read\)",
+    "empty.png": r"an empty file \(0 bytes\)",
+    "zero-size.png": "not an image",
+    "huge.png": "an image larger than kge.assets.headers allows",
+    "wide.png": r"an image of 20000 x 1 pixels is larger",
+    "not-an-image.png": "not an image",
+}
+BAD_WAVS = {
+    "truncated.wav": "a WAV whose format chunk is cut short",
+    "empty.wav": r"not a WAV file \(no RIFF/WAVE header\)",
+    "bits7.wav": "a WAV of 7-bit samples",
+    "claims-4gib.wav": "a WAV claiming 4,294,967,280 bytes of samples",
+    "no-data.wav": "a WAV with no data chunk",
+    "rate-0.wav": "a WAV at 0 Hz",
+}
+D = AssetDecodeError
+MEDIA = [
+    *(Case("media", f"sprite of {name}", f"world.spawn(Transform(), Sprite({name!r}))", D,
+           rf"Sprite\.image: asset '{name}' .* could not be loaded: {why}")
+      for name, why in BAD_IMAGES.items()),
+    *(Case("media", f"live sprite image write of {name}",
+           f"world.get(hero, Sprite).image = {name!r}", D,
+           rf"entity 1, Sprite\.image: asset '{name}' .* {why}")
+      for name, why in list(BAD_IMAGES.items())[:3]),
+    *(Case("media", f"button icon {name}", f"world.spawn(UINode(), Button('x', image={name!r}))",
+           D, rf"Button\.image: asset '{name}' .* {why}")
+      for name, why in list(BAD_IMAGES.items())[:3]),
+    Case("media", "UIImage of a truncated PNG", "world.spawn(UINode(), UIImage('truncated.png'))",
+         D, r"UIImage\.image: asset 'truncated\.png'"),
+    Case("media", "panel of a 0 x 0 PNG", "world.get(root, Panel).image = 'zero-size.png'", D,
+         r"entity 7, Panel\.image: asset 'zero-size\.png'"),
+    Case("media", "animator frames of a truncated sheet",
+         "world.spawn(Transform(), Animator({'r': Clip.grid('truncated.png', (2, 1))}))", D,
+         r"Animator\.clips\['r'\]\.frames\[0\]: asset 'truncated\.png'"),
+    *(Case("media", f"sound source of {name}", f"world.spawn(Transform(), AudioSource({name!r}))",
+           D, rf"AudioSource\.sound: asset '{name}' .* could not be loaded: {why}")
+      for name, why in BAD_WAVS.items()),
+    *(Case("media", f"play {name}", f"audio.play({name!r})", D,
+           rf"audio\.play: asset '{name}' .* {why}")
+      for name, why in BAD_WAVS.items()),
+    Case("media", "music of a 7-bit WAV", "audio.play_music('bits7.wav')", D,
+         r"asset 'bits7\.wav' .* a WAV of 7-bit samples"),
+    Case("media", "impact sound of a WAV claiming 4 GiB",
+         "world.add(plain, ImpactSound('claims-4gib.wav'))", D,
+         r"entity 12, ImpactSound\.sound: asset 'claims-4gib\.wav'"),
+    Case("media", "empty SoundData", "SoundData(b'', 8000)", V,
+         r"SoundData\.samples is empty"),
+]
+
 CASES: list[Case] = [
     *SPRITE, *CLIPS, *SHAKE, *CAMERA, *TEXT, *DRAWN, *LIGHTS, *PARTICLES, *TWEENS, *UI,
-    *AUDIO, *SCENES,
+    *AUDIO, *SCENES, *MEDIA,
 ]
 
 
@@ -475,8 +528,35 @@ def _assets_dir() -> Path:
     pixels[..., 0] = np.arange(64, dtype=np.uint8)[None, :] * 4
     pixels[..., 3] = 255
     write_png(pixels, root / "sheet.png")
-    (root / "beep.wav").write_bytes(tone(440, 0.05, rate=8000).to_wav())
+    wav = tone(440, 0.05, rate=8000).to_wav()
+    (root / "beep.wav").write_bytes(wav)
+    _hostile_media(root, (root / "sheet.png").read_bytes(), wav)
     return root
+
+
+def _png(width: int, height: int) -> bytes:
+    """A PNG of just its header (IHDR, IEND) claiming ``width`` x ``height``."""
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(
+            ">I", zlib.crc32(kind + data))
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IEND", b"")
+
+
+def _hostile_media(root: Path, png: bytes, wav: bytes) -> None:
+    """The files of :data:`BAD_IMAGES` and :data:`BAD_WAVS`."""
+    files = {
+        "truncated.png": png[: len(png) // 2], "empty.png": b"", "zero-size.png": _png(0, 0),
+        "huge.png": _png(100_000, 100_000), "wide.png": _png(20_000, 1),
+        "not-an-image.png": b"#!/bin/sh\necho hi\n",
+        "truncated.wav": wav[:30], "empty.wav": b"",
+        "bits7.wav": wav[:34] + struct.pack("<H", 7) + wav[36:],
+        "claims-4gib.wav": wav[:40] + struct.pack("<I", 0xFFFFFFF0) + wav[44:],
+        "no-data.wav": wav[:36], "rate-0.wav": wav[:24] + struct.pack("<I", 0) + wav[28:],
+    }  # fmt: skip
+    for name, data in files.items():
+        (root / name).write_bytes(data)
 
 
 def build_game() -> Game:
@@ -539,7 +619,7 @@ def build_game() -> Game:
         kge=kge, math=math, nan=math.nan, inf=math.inf, world=world, app=app,
         tweens=world.resource(kge.Tweens), audio=world.resource(kge.Audio),
         clip=Clip.grid("sheet.png", (4, 2), fps=10), level=level, root_dir=root_dir,
-        AudioSource=AudioSource, Input=kge.Input,
+        AudioSource=AudioSource, Input=kge.Input, SoundData=kge.SoundData,
     )
     return Game(app, ns, root_dir)
 
