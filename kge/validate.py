@@ -99,15 +99,21 @@ def positive(value: Any, owner: str, field: str) -> float:
     return v
 
 
-def at_most(value: float, limit: float, owner: str, field: str, unit: str) -> float:
+def at_most(value: float, limit: float, owner: str, field: str, unit: str = "") -> float:
     """``value`` (already checked finite) if it is no larger than ``limit``.
 
     Used for quantities whose products overflow float64 far beyond any game's
     range (mass times size squared): refusing them at the call beats NaN poses
     several steps later.
+
+    >>> at_most(9.0, 8.0, "Sound", "pitch", "Hz")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Sound.pitch must be <= 8 Hz, got 9.0
     """
     if value > limit:
-        raise ValidationError(f"{_label(owner, field)} must be <= {limit:g} {unit}, got {value!r}")
+        units = f" {unit}" if unit else ""
+        raise ValidationError(f"{_label(owner, field)} must be <= {limit:g}{units}, got {value!r}")
     return value
 
 
@@ -151,12 +157,31 @@ MAX_EXTENT = 2 * MAX_COORDINATE
 MAX_ANCHOR = 1e3
 
 
+def within(value: Any, limit: float, owner: str, field: str, unit: str = "") -> float:
+    """A finite number within +-``limit``.
+
+    >>> within(-3.0, 1e7, "UINode", "padding", " pixels")
+    -3.0
+    """
+    v = finite(value, owner, field)
+    if abs(v) > limit:
+        raise ValidationError(
+            f"{_label(owner, field)} must be within +-{limit:g}{unit}, got {v!r}"
+        )
+    return v
+
+
+def entity_id(value: Any, owner: str, field: str) -> int:
+    """An entity id (an int >= 0); whether it exists is the world's check."""
+    n = integer(value, owner, field)
+    if n < 0:
+        raise ValidationError(f"{_label(owner, field)} must be an entity id (>= 0), got {n}")
+    return n
+
+
 def extent(value: Any, owner: str, field: str) -> float:
     """A drawn size in metres, in (0, :data:`MAX_EXTENT`] (float32 vertices stay finite)."""
-    v = positive(value, owner, field)
-    if v > MAX_EXTENT:
-        raise ValidationError(f"{_label(owner, field)} must be <= {MAX_EXTENT:g} m, got {v!r}")
-    return v
+    return at_most(positive(value, owner, field), MAX_EXTENT, owner, field, "m")
 
 
 def anchor(value: Any, owner: str, field: str) -> Vec2:

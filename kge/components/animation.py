@@ -49,7 +49,7 @@ from typing import Any, ClassVar
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import boolean, finite, integer, positive
+from kge.validate import at_most, boolean, finite, integer, positive
 
 
 class Loop(StrEnum):
@@ -97,10 +97,7 @@ def _frame_seconds(value: Any, owner: str, field: str) -> float:
 
 
 def _clip_speed(value: Any, owner: str, field: str) -> float:
-    v = positive(value, owner, field)
-    if v > MAX_SPEED:
-        raise ValidationError(f"{owner}.{field} must be <= {MAX_SPEED:g}, got {v!r}")
-    return v
+    return at_most(positive(value, owner, field), MAX_SPEED, owner, field)
 
 
 @dataclass(slots=True, frozen=True)
@@ -425,9 +422,7 @@ def _speed(value: Any, owner: str, field: str) -> float:
     v = finite(value, owner, field)
     if v < 0:
         raise ValidationError(f"{owner}.{field} must be >= 0, got {v!r}")
-    if v > MAX_SPEED:
-        raise ValidationError(f"{owner}.{field} must be <= {MAX_SPEED:g}, got {v!r}")
-    return v
+    return at_most(v, MAX_SPEED, owner, field)
 
 
 def _params(value: Any, owner: str, field: str) -> dict[str, Any]:

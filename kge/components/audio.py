@@ -33,7 +33,7 @@ from kge.components.tracked import Check, Tracked
 from kge.deprecation import renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.sound import SoundData, SoundRef
-from kge.validate import boolean, in_range, non_negative, positive
+from kge.validate import at_most, boolean, in_range, non_negative, positive
 
 
 def sound_ref(value: Any, owner: str, field: str) -> SoundRef:
@@ -72,10 +72,7 @@ def pitch(value: Any, owner: str, field: str) -> float:
 
 def fade_seconds(value: Any, owner: str, field: str) -> float:
     """A fade's length in [0, :data:`MAX_FADE`] seconds."""
-    v = non_negative(value, owner, field)
-    if v > MAX_FADE:
-        raise ValidationError(f"{owner}.{field} must be <= {MAX_FADE:g} s, got {v!r}")
-    return v
+    return at_most(non_negative(value, owner, field), MAX_FADE, owner, field, "s")
 
 
 def _distance(value: Any, owner: str, field: str) -> float:

@@ -39,7 +39,7 @@ from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, finite, non_negative, positive, vec2
+from kge.validate import Vec2, at_most, entity_id, finite, non_negative, positive, vec2
 
 MIN_ZOOM = 0.1
 MAX_ZOOM = 10.0
@@ -64,9 +64,7 @@ def _entity(value: Any, owner: str, field: str) -> int | None:
         return None
     if isinstance(value, bool) or not isinstance(value, int):
         raise ComponentTypeError(f"{owner}.{field} must be an entity id or None, got {value!r}")
-    if value < 0:
-        raise ValidationError(f"{owner}.{field} must be an entity id (>= 0), got {value}")
-    return value
+    return entity_id(value, owner, field)
 
 
 def _view(value: float, owner: str, field: str) -> float:
@@ -90,10 +88,7 @@ def _ppm(value: Any, owner: str, field: str) -> float:
 
 
 def _seconds(value: Any, owner: str, field: str) -> float:
-    v = non_negative(value, owner, field)
-    if v > MAX_SECONDS:
-        raise ValidationError(f"{owner}.{field} must be <= {MAX_SECONDS:g} s, got {v!r}")
-    return v
+    return at_most(non_negative(value, owner, field), MAX_SECONDS, owner, field, "s")
 
 
 def _dead_zone(value: Any, owner: str, field: str) -> Vec2:

@@ -57,6 +57,7 @@ from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import (
     Vec2,
     boolean,
+    entity_id,
     finite,
     in_range,
     integer,
@@ -320,13 +321,6 @@ def _seed(value: Any, owner: str, field: str) -> int | None:
     return n
 
 
-def _entity(value: Any, owner: str, field: str) -> int:
-    n = integer(value, owner, field)
-    if n < 0:
-        raise ValidationError(f"{owner}.{field} must be an entity id (>= 0), got {n}")
-    return n
-
-
 def _spread(value: Any, owner: str, field: str) -> float:
     return in_range(value, 0.0, TAU, owner, field)
 
@@ -456,7 +450,7 @@ class ParticleBurst:
     direction: float | None = None
 
     def __post_init__(self) -> None:
-        _entity(self.emitter, "ParticleBurst", "emitter")
+        entity_id(self.emitter, "ParticleBurst", "emitter")
         _count(self.count, "ParticleBurst", "count")
         if self.position is not None:
             object.__setattr__(self, "position", point(self.position, "ParticleBurst", "position"))
@@ -481,7 +475,7 @@ class BurstOnHit(Tracked):
     _world_fields: ClassVar[frozenset[str]] = frozenset({"emitter"})
 
     _checks: ClassVar[dict[str, Check]] = {
-        "emitter": _entity,
+        "emitter": entity_id,
         "count": _count,
         "contacts": boolean,
         "hit_threshold": non_negative,

@@ -25,7 +25,7 @@ from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
 from kge.errors import ValidationError
-from kge.validate import Vec2, finite, integer, non_negative, positive, vec2
+from kge.validate import Vec2, at_most, finite, integer, non_negative, positive, vec2
 
 
 def _trauma(value: Any, owner: str, field: str) -> float:
@@ -46,10 +46,7 @@ def _offset(value: Any, owner: str, field: str) -> Vec2:
 
 
 def _frequency(value: Any, owner: str, field: str) -> float:
-    v = positive(value, owner, field)
-    if v > MAX_FREQUENCY:
-        raise ValidationError(f"{owner}.{field} must be <= {MAX_FREQUENCY:g} Hz, got {v!r}")
-    return v
+    return at_most(positive(value, owner, field), MAX_FREQUENCY, owner, field, "Hz")
 
 
 def _seed(value: Any, owner: str, field: str) -> int:

@@ -33,7 +33,7 @@ from typing import Any, ClassVar
 from kge.components.color import Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import boolean, finite, integer, non_negative, vec2
+from kge.validate import boolean, finite, integer, non_negative, vec2, within
 
 Size = float | str
 
@@ -95,10 +95,7 @@ MAX_RANGE = 1e300
 
 def pixels(value: Any, owner: str, name: str) -> float:
     """A UI distance in pixels, within +-:data:`MAX_PIXELS`."""
-    v = finite(value, owner, name)
-    if abs(v) > MAX_PIXELS:
-        raise ValidationError(f"{owner}.{name} must be within +-{MAX_PIXELS:g} pixels, got {v!r}")
-    return v
+    return within(value, MAX_PIXELS, owner, name, " pixels")
 
 
 def _gap(value: Any, owner: str, name: str) -> float:
@@ -114,10 +111,7 @@ def _offset(value: Any, owner: str, name: str) -> tuple[float, float]:
 
 
 def _ranged(value: Any, owner: str, name: str) -> float:
-    v = finite(value, owner, name)
-    if abs(v) > MAX_RANGE:
-        raise ValidationError(f"{owner}.{name} must be within +-{MAX_RANGE:g}, got {v!r}")
-    return v
+    return within(value, MAX_RANGE, owner, name)
 
 
 def anchor(value: Any, owner: str, name: str) -> str:

@@ -29,7 +29,7 @@ from kge.particles.grid import StaticGrid
 from kge.particles.pool import ParticlePool
 from kge.particles.shapes import sample_shape
 from kge.snapshot import carry_running
-from kge.validate import positive
+from kge.validate import at_most, positive
 
 Pose = tuple[float, float, float]
 #: prewarm is simulated in steps of this many seconds
@@ -275,9 +275,7 @@ class Particles:
 
     @cell.setter
     def cell(self, value: float) -> None:
-        v = positive(value, "Particles", "cell")
-        if v > LIMIT:
-            raise ValidationError(f"Particles.cell must be <= {LIMIT:g} m, got {v!r}")
+        v = at_most(positive(value, "Particles", "cell"), LIMIT, "Particles", "cell", "m")
         if v != self._cell:
             self._cell = v
             self.grid_dirty = True

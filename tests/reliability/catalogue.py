@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 import re
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -37,7 +36,7 @@ from kge.errors import (
 )
 from kge.snapshot import SnapshotError
 
-from .doctable import DOCS, Section
+from .doctable import DOCS, Section, cell, main
 from .harness import PhysicsWorld
 
 DOC = DOCS / "reliability.md"
@@ -472,10 +471,6 @@ def run_case(case: Case) -> BaseException:
         pw.close()
 
 
-def _cell(text: str) -> str:
-    return text.replace("|", r"\|").replace("\n", " ")
-
-
 def render_table() -> str:
     """The markdown table of every case, with the message each one gets now."""
     lines = [
@@ -487,7 +482,7 @@ def render_table() -> str:
         msg = str(err).splitlines()[0]
         call = case.call if not case.setup else f"{case.setup}; {case.call}"
         lines.append(
-            f"| {i} | {case.name} | `{_cell(call)}` | `{type(err).__name__}` | {_cell(msg)} |"
+            f"| {i} | {case.name} | `{cell(call)}` | `{type(err).__name__}` | {cell(msg)} |"
         )
     return "\n".join(lines) + "\n"
 
@@ -496,12 +491,5 @@ def doc_section() -> str:
     return SECTION.read()
 
 
-def write_doc() -> None:
-    SECTION.write(render_table())
-
-
 if __name__ == "__main__":
-    if "--write" in sys.argv:
-        write_doc()
-    else:
-        sys.stdout.write(render_table())
+    main(SECTION, render_table)

@@ -8,6 +8,8 @@ and the cases drift apart.
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -37,3 +39,16 @@ class Section:
         text = self.doc.read_text()
         start, stop = text.index(self.begin) + len(self.begin), text.index(self.end)
         self.doc.write_text(text[:start] + "\n" + body + text[stop:])
+
+
+def cell(text: str) -> str:
+    """``text`` made safe for one markdown table cell."""
+    return text.replace("|", r"\|").replace("\n", " ")
+
+
+def main(section: Section, render: Callable[[], str]) -> None:
+    """A catalogue run as a script: print its table, or with ``--write`` put it in the page."""
+    if "--write" in sys.argv:
+        section.write(render())
+    else:
+        sys.stdout.write(render())

@@ -25,7 +25,6 @@ import math
 import re
 import shutil
 import struct
-import sys
 import tempfile
 import zlib
 from dataclasses import dataclass
@@ -38,7 +37,7 @@ import kge
 from kge.assets import AssetDecodeError, AssetNotFoundError, Assets
 from kge.errors import ComponentTypeError, ValidationError
 
-from .doctable import DOCS, Section
+from .doctable import DOCS, Section, cell, main
 from .harness import state_dump
 
 SECTION = Section.named(DOCS / "reliability.md", "game-catalogue",
@@ -668,10 +667,6 @@ def run_case(case: Case) -> BaseException:
         shutil.rmtree(game.root, ignore_errors=True)
 
 
-def _cell(text: str) -> str:
-    return text.replace("|", r"\|").replace("\n", " ")
-
-
 def render_table() -> str:
     """The markdown table of every case, with the message each one gets now."""
     lines = ["| # | area | case | call | error | message |", "|---|---|---|---|---|---|"]
@@ -679,8 +674,8 @@ def render_table() -> str:
         err = run_case(case)
         msg = re.sub(r"\S*kge-game-catalogue-[^/\s]*", "<assets>", str(err).splitlines()[0])
         lines.append(
-            f"| {i} | {case.area} | {_cell(case.name)} | `{_cell(case.call)}` | "
-            f"`{type(err).__name__}` | {_cell(msg)} |"
+            f"| {i} | {case.area} | {cell(case.name)} | `{cell(case.call)}` | "
+            f"`{type(err).__name__}` | {cell(msg)} |"
         )
     return "\n".join(lines) + "\n"
 
@@ -689,12 +684,5 @@ def doc_section() -> str:
     return SECTION.read()
 
 
-def write_doc() -> None:
-    SECTION.write(render_table())
-
-
 if __name__ == "__main__":
-    if "--write" in sys.argv:
-        write_doc()
-    else:
-        sys.stdout.write(render_table())
+    main(SECTION, render_table)
