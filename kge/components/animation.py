@@ -396,6 +396,16 @@ class Transition:
     dst: str
     when: str | None = None
 
+    def __post_init__(self) -> None:
+        for name in ("src", "dst"):
+            value = getattr(self, name)
+            if not isinstance(value, str) or not value:
+                raise ComponentTypeError(f"Transition.{name} must be a clip name, got {value!r}")
+        if self.when is not None and not isinstance(self.when, str):
+            raise ComponentTypeError(
+                f"Transition.when must be a parameter name or None, got {self.when!r}"
+            )
+
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
     if not isinstance(value, Mapping) or not value:
