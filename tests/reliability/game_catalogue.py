@@ -397,6 +397,10 @@ UI = [*_fields("ui", "world.get(volume, Slider)", [
     Case("ui", "Button with a missing icon", "world.spawn(UINode(), Button('x', image='no.png'))",
          AssetNotFoundError, r"Button\.image"),
     Case("ui", "slider over 1e308 either side", f"Slider(-{BIG}, {BIG})", V, r"Slider"),
+    Case("ui", "theme padding of 1e308", f"Theme(padding={BIG})", V,
+         r"Theme\.padding must be <= 1e\+07 pixels"),
+    Case("ui", "theme font of a million points", "Theme(font_size=1e6)", V,
+         r"Theme\.font_size must be <= 1000 points"),
     Case("ui", "UI node under a missing parent", "world.spawn(UINode(parent=999))", V,
          r"UINode\.parent"),
 ]
