@@ -304,6 +304,11 @@ class InputMap:
         """Replace every binding with ``data``; on any error the map is left unchanged."""
         if not isinstance(data, dict):
             raise ValidationError(f"InputMap data must be a dict, got {type(data).__name__}")
+        unknown = sorted(map(str, set(data) - {"actions", "axes", "vectors"}))
+        if unknown:
+            raise ValidationError(
+                f"InputMap data has unknown keys {unknown} (it takes actions, axes, vectors)"
+            )
         fresh = InputMap(self.input)
         try:
             for action, bs in dict(data.get("actions", {})).items():
@@ -330,11 +335,13 @@ class InputMap:
             json.dump(self.to_data(), f, indent=2)
 
     def load(self, path: str | os.PathLike[str]) -> None:
-        with open(path, encoding="utf-8") as f:
-            try:
+        try:
+            with open(path, encoding="utf-8") as f:
                 data = json.load(f)
-            except json.JSONDecodeError as exc:
-                raise ValidationError(f"{os.fspath(path)}: not JSON ({exc})") from exc
+        except json.JSONDecodeError as exc:
+            raise ValidationError(f"{os.fspath(path)}: not JSON ({exc})") from exc
+        except (OSError, UnicodeDecodeError) as exc:
+            raise ValidationError(f"{os.fspath(path)}: cannot read the bindings ({exc})") from exc
         self.load_data(data)
 
 

@@ -42,13 +42,13 @@ from typing import TYPE_CHECKING, Any
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera, camera_at
 from kge.components.resolution import canvas_size
-from kge.errors import SceneStackError, ValidationError, WorldLockedError
+from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
 from kge.plugin import Plugin, PluginError, PluginLike, resolve
 from kge.plugins import default_plugins
-from kge.scene import Scene, SceneLike, Time, as_scene
+from kge.scene import Scene, SceneLike, Time, as_scene, check_setup_args
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
 from kge.transitions import ActiveTransition, Transition
@@ -217,8 +217,9 @@ class App(Host):
         ``run_below=True``. Popping returns to it with its state intact.
         """
         target = _as_scene(scene)
+        check_setup_args(target, kwargs)
         if run_below and not overlay:
-            raise ValueError("push_scene(run_below=True) needs overlay=True")
+            raise ValidationError("push_scene(run_below=True) needs overlay=True")
         keeps_running = run_below if overlay else None
         self._schedule(+1, lambda: self._push(target, kwargs, overlay=keeps_running))
 
@@ -249,8 +250,11 @@ class App(Host):
         scene pushed over it meanwhile (a pause menu opened during the fade).
         """
         target = _as_scene(scene)
+        check_setup_args(target, kwargs)
         if transition is not None and not isinstance(transition, Transition):
-            raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
+            raise ComponentTypeError(
+                f"replace_scene: transition must be a Transition (Fade(0.4)...), got {transition!r}"
+            )
         grows = 0 if self._depth_when_queued() else 1
         if transition is None:
             self._schedule(grows, lambda: self._replace(target, kwargs, None))

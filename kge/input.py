@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
 from kge.keys import Mouse
-from kge.validate import finite, integer, vec2
+from kge.validate import finite, in_range, integer, non_negative, vec2
 
 Vec2 = tuple[float, float]
 
@@ -211,11 +211,9 @@ class Gamepad:
 
     def rumble(self, weak: float = 1.0, strong: float = 1.0, duration: float = 0.3) -> None:
         """Vibrate (where the pad and pyglet's driver can): motor strengths 0..1, seconds."""
-        for name, v in (("weak", weak), ("strong", strong)):
-            if not 0.0 <= v <= 1.0:
-                raise ValidationError(f"Gamepad.rumble: {name} must be in [0, 1], got {v!r}")
-        if not duration >= 0.0:
-            raise ValidationError(f"Gamepad.rumble: duration must be >= 0, got {duration!r}")
+        weak = in_range(weak, 0.0, 1.0, "Gamepad.rumble", "weak")
+        strong = in_range(strong, 0.0, 1.0, "Gamepad.rumble", "strong")
+        duration = non_negative(duration, "Gamepad.rumble", "duration")
         self.last_rumble = (float(weak), float(strong), float(duration))
         if self.rumble_fn is not None and self.connected:
             self.rumble_fn(float(weak), float(strong), float(duration))

@@ -34,7 +34,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.errors import ValidationError
+from kge.errors import ComponentTypeError, ValidationError
 
 _DIRECTIONS = ("left", "right", "up", "down")
 
@@ -55,8 +55,12 @@ class Transition:
             raise ValidationError(
                 f"{type(self).__name__}.duration must be a positive number of seconds, got {d!r}"
             )
+        if not isinstance(self.color, (tuple, list)):
+            raise ComponentTypeError(
+                f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"
+            )
         if len(self.color) != 3 or not all(
-            isinstance(c, int) and 0 <= c <= 255 for c in self.color
+            isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in self.color
         ):
             raise ValidationError(
                 f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"

@@ -612,7 +612,8 @@ class World:
         ``entity`` is None inside ``spawn`` (the id is not allocated yet). A check
         raises to refuse the component; nothing has been changed at that point,
         which is how "bad input leaves the world unchanged" is kept for rules
-        that need the world (a joint naming a missing body, say).
+        that need the world (a joint naming a missing body, say). Validators of an
+        event type run at :meth:`emit` (with ``entity`` None).
         """
         self._validators[component_type].append(check)
 
@@ -655,7 +656,15 @@ class World:
 
     # -- events ------------------------------------------------------------------------
     def emit(self, event: Any) -> None:
-        """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`)."""
+        """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`).
+
+        Validators registered for the event's type (:meth:`validator`) run first, so
+        an event naming something that does not exist is refused here, at the call.
+        """
+        checks = self._validators.get(type(event))
+        if checks:
+            for check in checks:
+                check(None, event)
         self.eventlog.emit(event)
 
     @overload

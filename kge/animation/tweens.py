@@ -84,6 +84,15 @@ def _field_ok(cls: type, name: str) -> bool:
     return isinstance(prop, property) and prop.fset is not None
 
 
+#: the largest magnitude of a tween's start, current and target values: the eased
+#: value ``start + (end - start) * eased`` then stays finite for every easing (Penner's
+#: curves overshoot to at most -0.5..1.5), so no tween can write an overflow
+MAX_VALUE = 1e300
+#: the most tween channels one start may make (a TweenSequence's repeats are unrolled into
+#: channels, so ``TweenSequence(..., repeat=10**9)`` would allocate until memory runs out)
+MAX_CHANNELS = 100_000
+
+
 def _as_vector(value: Any, label: str, what: str) -> tuple[list[float], bool]:
     """``value`` as up to 4 numbers, and whether they are all integers."""
     items = list(value) if isinstance(value, (tuple, list)) else [value]
@@ -96,12 +105,40 @@ def _as_vector(value: Any, label: str, what: str) -> tuple[list[float], bool]:
                 f"{label}: {what} {value!r} is not numeric (a tween animates numbers, "
                 "vectors and colours)"
             )
-        f = float(v)
+        try:
+            f = float(v)
+        except OverflowError:  # an int beyond float64
+            f = math.inf
         if not math.isfinite(f):
             raise ValidationError(f"{label}: {what} must be finite, got {value!r}")
+        if abs(f) > MAX_VALUE:
+            raise ValidationError(
+                f"{label}: {what} must be within +-{MAX_VALUE:g}, got {value!r}"
+            )
         out.append(f)
     ints = all(isinstance(v, (int, np.integer)) for v in items)
     return out, ints
+
+
+def _check_ends(obj: Any, field: str, entity: int | None, label: str, vector: bool,
+                ints: bool, to: list[float], start: list[float] | None) -> None:
+    """Run the field's own check on the target (and start) value, so a tween that would
+    end outside the field's range (an opacity of 300, a zoom of 0) is refused here, at
+    the start, instead of failing at a later frame."""
+    check = getattr(type(obj), "_checks", {}).get(field)
+    if check is None:
+        return
+    for what, nums in (("target value", to), ("start value", start)):
+        if nums is None:
+            continue
+        vals = [round(v) for v in nums] if ints else nums
+        value = tuple(vals) if vector else vals[0]
+        try:
+            check(value, where(entity, type(obj).__name__), field)
+        except ValidationError as err:
+            raise ValidationError(
+                f"{label}: the {what} is out of the field's range: {err}"
+            ) from None
 
 
 @dataclasses.dataclass(slots=True)
@@ -110,6 +147,24 @@ class _Plan:
 
     spec: Tween
     offset: float
+
+
+def channels(spec: Any) -> int:
+    """How many channels ``spec`` makes once flattened (its Sequences' repeats unrolled).
+
+    >>> from kge.components.transform import Transform
+    >>> step = Tween(Transform, "x", 1.0, 0.1)
+    >>> channels(TweenSequence(step, Parallel(step, step), repeat=2))
+    9
+    """
+    if isinstance(spec, Tween):
+        return 1
+    if isinstance(spec, Parallel):
+        return sum(channels(s) for s in spec.steps)
+    if isinstance(spec, TweenSequence):
+        reps = 1 if spec.repeat < 0 else spec.repeat + 1
+        return reps * sum(channels(s) for s in spec.steps)
+    return 0
 
 
 def _flatten(spec: Any, offset: float, out: list[_Plan], top: bool) -> float:
@@ -241,6 +296,12 @@ class TweenTable:
         Everything is checked before anything is added: a bad target, field or
         value raises and leaves the table as it was.
         """
+        n = channels(spec)
+        if n > MAX_CHANNELS:
+            raise ValidationError(
+                f"{spec!r:.80} makes {n:,} tween channels once its repeats are unrolled, "
+                f"more than {MAX_CHANNELS:,}: repeat the Tweens inside it instead"
+            )
         plans: list[_Plan] = []
         top_total = _flatten(spec, 0.0, plans, True)
         forever_seq = isinstance(spec, TweenSequence) and spec.repeat < 0
@@ -335,8 +396,9 @@ class TweenTable:
             start, _ = _as_vector(spec.start, label, "start value")
             if len(start) != len(now):
                 raise ValidationError(f"{label}: start value {spec.start!r} has the wrong size")
-        kind, axis = (1 if ints else 0), -1
         vector = isinstance(getattr(obj, spec.field), (tuple, list))
+        _check_ends(obj, spec.field, entity, label, vector, ints, to, start)
+        kind, axis = (1 if ints else 0), -1
         if vector:
             kind += 4
         rb = None
@@ -418,7 +480,9 @@ class TweenTable:
             dur = take(self.duration)
             cyc = take(self.cycles)
             prev = take(self.prev_u)
-            due = (u >= 0) & ((prev < dur * cyc) | (u < prev))
+            with np.errstate(over="ignore"):  # 1e308 s x repeats: inf, "never ends"
+                end = dur * cyc
+            due = (u >= 0) & ((prev < end) | (u < prev))
             if whole:
                 self.prev_u = u
             else:
@@ -451,7 +515,9 @@ class TweenTable:
                 obj, field, width, _, _, _ = self.targets[i]
                 value = getattr(obj, field)
                 vec = list(value) if isinstance(value, (tuple, list)) else [value]
-                self.v_start[i, :width] = vec
+                # a field holding more than MAX_VALUE now (it was written since the start)
+                # starts from MAX_VALUE: the eased values must stay finite
+                self.v_start[i, :width] = np.clip(vec, -MAX_VALUE, MAX_VALUE)
                 self.captured[i] = True
             self._apply(rows[fresh], u[fresh], dur[fresh], cyc[fresh], dt)
         else:
@@ -460,6 +526,11 @@ class TweenTable:
     def _progress(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray
                   ) -> np.ndarray:
         """Eased progress of each row at local time ``u`` (repeats and yoyo folded in)."""
+        with np.errstate(over="ignore", invalid="ignore"):  # durations of 1e-300 s
+            return self._eased(rows, u, dur, cyc)
+
+    def _eased(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray
+               ) -> np.ndarray:
         k = np.floor(u / dur)
         over = k > cyc - 1
         if over.any():

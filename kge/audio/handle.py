@@ -22,7 +22,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from kge.audio.spatial import pan_to_position
-from kge.validate import in_range, non_negative, positive
+from kge.components.audio import fade_seconds
+from kge.components.audio import pitch as check_pitch
+from kge.validate import boolean, in_range
 
 if TYPE_CHECKING:
     from kge.audio.mixer import Mixer
@@ -68,8 +70,8 @@ class SoundHandle:
         self.duration = duration  #: seconds; None for streams of unknown length
         self.bus = bus
         self._volume = in_range(volume, 0.0, 1.0, _OWNER, "volume")
-        self._pitch = positive(pitch, _OWNER, "pitch")
-        self._loop = bool(loop)
+        self._pitch = check_pitch(pitch, _OWNER, "pitch")
+        self._loop = boolean(loop, _OWNER, "loop")
         self._gain = 1.0
         self._pan = 0.0
         self._paused = False
@@ -159,7 +161,7 @@ class SoundHandle:
 
     @pitch.setter
     def pitch(self, value: float) -> None:
-        self._pitch = positive(value, _OWNER, "pitch")
+        self._pitch = check_pitch(value, _OWNER, "pitch")
         if self._player is not None:
             self._player.pitch = self._pitch
 
@@ -169,7 +171,7 @@ class SoundHandle:
 
     @loop.setter
     def loop(self, value: bool) -> None:
-        self._loop = bool(value)
+        self._loop = boolean(value, _OWNER, "loop")
         if self._player is not None:
             self._player.loop = self._loop
 
@@ -209,7 +211,8 @@ class SoundHandle:
         Fades advance with the frame time the audio system is given. Returns self.
         """
         target = in_range(to, 0.0, 1.0, _OWNER, "fade.to")
-        secs = non_negative(seconds, _OWNER, "fade.seconds")
+        secs = fade_seconds(seconds, _OWNER, "fade.seconds")
+        stop = boolean(stop, _OWNER, "fade.stop")
         if secs == 0.0:
             self.volume = target
             if stop:

@@ -29,11 +29,12 @@ from kge.assets.store import assets_for
 from kge.audio.handle import SoundHandle
 from kge.audio.mixer import Mixer
 from kge.audio.spatial import pan_and_gain
-from kge.components.audio import AudioListener, AudioSource, sound_ref
+from kge.components.audio import AudioListener, AudioSource, fade_seconds, sound_ref
+from kge.components.audio import pitch as check_pitch
 from kge.components.transform import Transform
-from kge.errors import where
+from kge.errors import ValidationError, where
 from kge.sound import SoundData, SoundRef
-from kge.validate import in_range, positive, vec2
+from kge.validate import boolean, in_range, point, positive
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -89,7 +90,7 @@ class Audio:
             source = None if self.mixer.backend() is None else assets_for(self.world).sound(ref)
             return source, ref.name, ref
         store = assets_for(self.world)
-        found = store.resolve(ref, owner=owner)  # raises, naming every place searched
+        found = store.checked_sound(ref, owner=owner)  # raises, naming every place searched
         name = os.fspath(ref)
         if self.mixer.backend() is None:
             return None, name, found.where
@@ -116,11 +117,19 @@ class Audio:
         """
         owner = "audio.play"
         in_range(volume, 0.0, 1.0, owner, "volume")
-        positive(pitch, owner, "pitch")
+        check_pitch(pitch, owner, "pitch")
+        boolean(loop, owner, "loop")
+        boolean(streaming, owner, "streaming")
         pan, gain = 0.0, 1.0
         if position is not None:
-            pos = vec2(position, owner, "position")
-            pan, gain = self.spatial(pos, min_distance, max_distance)
+            pos = point(position, owner, "position")
+            lo = positive(min_distance, owner, "min_distance")
+            hi = positive(max_distance, owner, "max_distance")
+            if lo >= hi:
+                raise ValidationError(
+                    f"{owner}.max_distance ({hi}) must be greater than min_distance ({lo})"
+                )
+            pan, gain = self.spatial(pos, lo, hi)
         source, name, _ = self._load(sound, streaming, owner)
         handle = self.mixer.start(
             source, name=name, volume=volume, pitch=pitch, loop=loop, pan=pan, gain=gain
@@ -145,6 +154,9 @@ class Audio:
         """
         owner = "audio.play_music"
         in_range(volume, 0.0, 1.0, owner, "volume")
+        boolean(loop, owner, "loop")
+        boolean(streaming, owner, "streaming")
+        fade = fade_seconds(fade, owner, "fade")
         ref = sound_ref(sound, owner, "sound")
         if isinstance(ref, SoundData):
             key: Hashable = ref
@@ -159,7 +171,7 @@ class Audio:
         return self.mixer.play_music(key, load, name=name, volume=volume, loop=loop, fade=fade)
 
     def stop_music(self, fade: float = 0.0) -> None:
-        self.mixer.stop_music(fade)
+        self.mixer.stop_music(fade_seconds(fade, "audio.stop_music", "fade"))
 
     @property
     def music(self) -> SoundHandle | None:

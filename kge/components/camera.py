@@ -62,10 +62,27 @@ from kge.components.material import Material
 from kge.components.post import PostEffect
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, finite, integer, non_negative, positive, vec2
+from kge.validate import (
+    Vec2,
+    at_most,
+    boolean,
+    entity_id,
+    finite,
+    integer,
+    non_negative,
+    positive,
+    vec2,
+)
 
 MIN_ZOOM = 0.1
 MAX_ZOOM = 10.0
+#: how far from the origin a camera may look, metres: a hundred times kge's world bound
+#: (room for a shake or a look-ahead past it), far inside float32 screen maths
+MAX_VIEW = 1e9
+#: the range of ``pixels_per_meter``
+MIN_PPM, MAX_PPM = 1e-3, 1e6
+#: the longest ``look_ahead`` and ``smoothing``, seconds
+MAX_SECONDS = 1e6
 
 Bounds = tuple[float, float, float, float]
 Viewport = tuple[float, float, float, float]
@@ -84,14 +101,38 @@ def _entity(value: Any, owner: str, field: str) -> int | None:
         return None
     if isinstance(value, bool) or not isinstance(value, int):
         raise ComponentTypeError(f"{owner}.{field} must be an entity id or None, got {value!r}")
+    return entity_id(value, owner, field)
+
+
+def _view(value: float, owner: str, field: str) -> float:
+    if not -MAX_VIEW <= value <= MAX_VIEW:
+        raise ValidationError(
+            f"{owner}.{field} must lie within {MAX_VIEW:g} m of the origin, got {value!r}"
+        )
     return value
+
+
+def _center(value: Any, owner: str, field: str) -> Vec2:
+    x, y = vec2(value, owner, field)
+    return (_view(x, owner, f"{field}[0]"), _view(y, owner, f"{field}[1]"))
+
+
+def _ppm(value: Any, owner: str, field: str) -> float:
+    v = positive(value, owner, field)
+    if not MIN_PPM <= v <= MAX_PPM:
+        raise ValidationError(f"{owner}.{field} must be in [{MIN_PPM:g}, {MAX_PPM:g}], got {v!r}")
+    return v
+
+
+def _seconds(value: Any, owner: str, field: str) -> float:
+    return at_most(non_negative(value, owner, field), MAX_SECONDS, owner, field, "s")
 
 
 def _dead_zone(value: Any, owner: str, field: str) -> Vec2:
     w, h = vec2(value, owner, field)
     non_negative(w, owner, f"{field}[0]")
     non_negative(h, owner, f"{field}[1]")
-    return (w, h)
+    return (_view(w, owner, f"{field}[0]"), _view(h, owner, f"{field}[1]"))
 
 
 def _bounds(value: Any, owner: str, field: str) -> Bounds | None:
@@ -99,7 +140,10 @@ def _bounds(value: Any, owner: str, field: str) -> Bounds | None:
         return None
     if not isinstance(value, (tuple, list)) or len(value) != 4:
         raise ComponentTypeError(f"{owner}.{field} must be (min_x, min_y, max_x, max_y)")
-    x0, y0, x1, y1 = (finite(v, owner, f"{field}[{i}]") for i, v in enumerate(value))
+    x0, y0, x1, y1 = (
+        _view(finite(v, owner, f"{field}[{i}]"), owner, f"{field}[{i}]")
+        for i, v in enumerate(value)
+    )
     if x1 <= x0 or y1 <= y0:
         raise ValidationError(f"{owner}.{field} must have min < max, got {value!r}")
     return (x0, y0, x1, y1)
@@ -173,15 +217,18 @@ def _int(value: Any, owner: str, field: str) -> int:
 class Camera(Tracked):
     """View of the world: centre (m), scale (px/m) and zoom. See the module docstring."""
 
+    #: the followed entity must exist and have a Transform (checked by the render plugin)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"follow"})
+
     _checks: ClassVar[dict[str, Check]] = {
-        "center": vec2,
-        "pixels_per_meter": positive,
+        "center": _center,
+        "pixels_per_meter": _ppm,
         "zoom": _zoom,
         "follow": _entity,
-        "smoothing": non_negative,
+        "smoothing": _seconds,
         "bounds": _bounds,
         "dead_zone": _dead_zone,
-        "look_ahead": non_negative,
+        "look_ahead": _seconds,
         "rotation": finite,
         "viewport": _viewport,
         "layers": _layers,
@@ -313,7 +360,10 @@ class Camera(Tracked):
         >>> cam.track((3.0, 0.0), dt=0.1); cam.center
         (1.0, 0.0)
         """
-        aim = (target[0] + velocity[0] * self.look_ahead, target[1] + velocity[1] * self.look_ahead)
+        aim = (
+            clamp_view(target[0] + velocity[0] * self.look_ahead),
+            clamp_view(target[1] + velocity[1] * self.look_ahead),
+        )  # a body's velocity is only bounded by float64: the aim stays in view range
         hw, hh = self.dead_zone[0] / 2, self.dead_zone[1] / 2
         if hw > 0 or hh > 0:
             cx0, cy0 = self.center
@@ -349,6 +399,11 @@ def camera_at(world: Any, point: Vec2, canvas: tuple[float, float]) -> Camera | 
     there; else the active camera."""
     under = [c for _, c in cameras(world) if c.contains(point, canvas)]
     return under[-1] if under else active_camera(world)
+
+
+def clamp_view(value: float) -> float:
+    """``value`` (finite or infinite, not NaN) within +-:data:`MAX_VIEW`."""
+    return min(max(value, -MAX_VIEW), MAX_VIEW)
 
 
 def active_camera(world: Any) -> Camera | None:

@@ -47,7 +47,7 @@ from typing import Any, ClassVar
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ValidationError
-from kge.validate import Vec2, boolean, finite, in_range, integer, non_negative, vec2
+from kge.validate import Vec2, boolean, finite, in_range, integer, non_negative, point
 
 TAU = 2.0 * math.pi
 #: the brightest a light may be (intensity multiplies its colour)
@@ -126,7 +126,7 @@ class Light(Tracked):
         "softness": _unit,
         "shadows": boolean,
         "shadow_softness": _softness_size,
-        "offset": vec2,
+        "offset": point,
         "enabled": boolean,
         "shadow_color": rgb,
         "texture": _cookie,

@@ -59,10 +59,12 @@ from kge.validate import (
     Vec2,
     boolean,
     choice,
+    entity_id,
     finite,
     in_range,
     integer,
     non_negative,
+    point,
     positive,
     vec2,
 )
@@ -112,7 +114,7 @@ class EmitCircle:
     edge: bool = False
 
     def __post_init__(self) -> None:
-        positive(self.radius, "EmitCircle", "radius")
+        _extent(self.radius, "EmitCircle", "radius")
         boolean(self.edge, "EmitCircle", "edge")
 
 
@@ -124,8 +126,8 @@ class EmitBox:
     height: float
 
     def __post_init__(self) -> None:
-        positive(self.width, "EmitBox", "width")
-        positive(self.height, "EmitBox", "height")
+        _extent(self.width, "EmitBox", "width")
+        _extent(self.height, "EmitBox", "height")
 
 
 @dataclass(slots=True, frozen=True)
@@ -136,8 +138,8 @@ class EmitLine:
     end: Vec2
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "start", vec2(self.start, "EmitLine", "start"))
-        object.__setattr__(self, "end", vec2(self.end, "EmitLine", "end"))
+        object.__setattr__(self, "start", _vector(self.start, "EmitLine", "start"))
+        object.__setattr__(self, "end", _vector(self.end, "EmitLine", "end"))
 
 
 @dataclass(slots=True, frozen=True)
@@ -164,6 +166,11 @@ def _limited(v: float, owner: str, field: str) -> float:
     if abs(v) > LIMIT:
         raise ValidationError(f"{owner}.{field} must be within +-{LIMIT:g}, got {v!r}")
     return v
+
+
+def _extent(value: Any, owner: str, field: str) -> float:
+    """A size of an emission shape: metres in (0, LIMIT]."""
+    return _limited(positive(value, owner, field), owner, field)
 
 
 def _range(value: Any, owner: str, field: str) -> Vec2:
@@ -429,9 +436,10 @@ class ParticleBurst:
     direction: float | None = None
 
     def __post_init__(self) -> None:
+        entity_id(self.emitter, "ParticleBurst", "emitter")
         _count(self.count, "ParticleBurst", "count")
         if self.position is not None:
-            object.__setattr__(self, "position", vec2(self.position, "ParticleBurst", "position"))
+            object.__setattr__(self, "position", point(self.position, "ParticleBurst", "position"))
         if self.direction is not None:
             object.__setattr__(
                 self, "direction", finite(self.direction, "ParticleBurst", "direction")
@@ -449,8 +457,11 @@ class BurstOnHit(Tracked):
     approach speed) or faster burst (``min_speed`` before kge 2.0.0a2).
     """
 
+    #: the emitter must exist and hold a ParticleEmitter (checked by the particles plugin)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"emitter"})
+
     _checks: ClassVar[dict[str, Check]] = {
-        "emitter": _seed,
+        "emitter": entity_id,
         "count": _count,
         "contacts": boolean,
         "hit_threshold": non_negative,

@@ -53,7 +53,7 @@ from kge.components.blend import Blend
 from kge.components.color import RGB, byte, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, choice, integer, positive, vec2
+from kge.validate import Vec2, anchor, boolean, choice, extent, integer, vec2
 
 Rect4 = tuple[int, int, int, int]
 #: how a drawable's colour combines with what is under it
@@ -108,13 +108,10 @@ def _optional_size(value: Any, owner: str, field: str) -> Vec2 | None:
     if value is None:
         return None
     w, h = vec2(value, owner, field)
-    positive(w, owner, f"{field}[0]")
-    positive(h, owner, f"{field}[1]")
+    extent(w, owner, f"{field}[0]")
+    extent(h, owner, f"{field}[1]")
     return (w, h)
 
-
-def _anchor(value: Any, owner: str, field: str) -> Vec2:
-    return vec2(value, owner, field)
 
 
 def _region(value: Any, owner: str, field: str) -> int | Rect4 | None:
@@ -162,7 +159,7 @@ class Sprite(Tracked):
         "image": _image,
         "layer": _int,
         "order": _int,
-        "anchor": _anchor,
+        "anchor": anchor,
         "tint": rgb,
         "opacity": byte,
         "visible": boolean,

@@ -48,7 +48,7 @@ from typing import Any, ClassVar
 from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, choice, finite, integer, vec2
+from kge.validate import Vec2, anchor, boolean, choice, finite, integer, vec2
 
 #: the largest font size, points (FreeType fails on a glyph millions of pixels tall)
 MAX_FONT_SIZE = 1000.0
@@ -184,6 +184,17 @@ def _int(value: Any, owner: str, field: str) -> int:
     return integer(value, owner, field)
 
 
+#: how far (metres in the world, pixels on the screen) a text may sit from its origin
+MAX_OFFSET = 1e9
+
+
+def _offset(value: Any, owner: str, field: str) -> Vec2:
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_OFFSET or abs(y) > MAX_OFFSET:
+        raise ValidationError(f"{owner}.{field} must be within +-{MAX_OFFSET:g}, got {(x, y)!r}")
+    return (x, y)
+
+
 def _opacity(value: Any, owner: str, field: str) -> int:
     v = integer(value, owner, field)
     if not 0 <= v <= 255:
@@ -292,9 +303,9 @@ class Text(Tracked):
         **STYLE_CHECKS,
         "text": _str,
         "bold": boolean,
-        "anchor": vec2,
+        "anchor": anchor,
         "screen_space": boolean,
-        "offset": vec2,
+        "offset": _offset,
         "layer": _int,
         "order": _int,
         "visible": boolean,

@@ -307,7 +307,9 @@ def light_rows(lights: list[tuple[Light, tuple[float, float, float]]]) -> np.nda
         rows[i, :, 2:4] = (x, y)
         rows[i, :, 4:7] = tuple(c * k for c in light.color)
         rows[i, :, 7:10] = tuple(c * k for c in light.shadow_color)
-        rows[i, :, 10:14] = (r, light.falloff, a + light.direction, light.cone / 2)
+        # below 2 pi before the float32 row: a finite angle of 1e300 would overflow it
+        facing = math.remainder(math.remainder(a, math.tau) + light.direction, math.tau)
+        rows[i, :, 10:14] = (r, light.falloff, facing, light.cone / 2)
         rows[i, :, 14:17] = (light.softness, light.height, 0.0)
     return rows.reshape(-1, _LIGHT_FLOATS)
 

@@ -15,6 +15,7 @@ from typing import Any
 from kge.components.collider import Collider
 from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
 from kge.components.rigidbody import RigidBody
+from kge.components.tracked import validate_writes
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
@@ -34,6 +35,8 @@ class LightingPlugin(Plugin):
     """
 
     def build(self, world: World) -> None:
+        validate_writes(world, Light)  # a bad write names its entity
+        validate_writes(world, ShadowCaster)
         occluders = world.try_resource(Occluders) or world.insert_resource(Occluders())
 
         def changed(entity: int, comp: Any) -> None:

@@ -19,6 +19,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from typing import Any
@@ -232,6 +233,25 @@ class ParticleTriggers(System):
             particles.burst(trig.emitter, trig.count, point, direction)
 
 
+def _emitter_of(world: World, entity: int | None, owner: str, emitter: int) -> None:
+    """Refuse a reference to an entity that is not a live emitter."""
+    if not world.exists(emitter):
+        raise ValidationError(f"{where(entity, owner, 'emitter')}: entity {emitter} does not exist")
+    if world.try_get(emitter, ParticleEmitter) is None:
+        raise ValidationError(
+            f"{where(entity, owner, 'emitter')}: entity {emitter} has no ParticleEmitter"
+        )
+
+
+def _check_burst_on_hit(world: World, entity: int | None, trig: BurstOnHit) -> None:
+    _emitter_of(world, entity, "BurstOnHit", trig.emitter)
+
+
+def _check_burst_event(world: World, entity: int | None, event: ParticleBurst) -> None:
+    """``world.emit(ParticleBurst(...))`` naming no emitter is refused at the emit."""
+    _emitter_of(world, entity, "ParticleBurst", event.emitter)
+
+
 class ParticlesPlugin(Plugin):
     """Particles: the ``Particles`` resource, the systems, validation and the draw pass."""
 
@@ -251,6 +271,9 @@ class ParticlesPlugin(Plugin):
 
         world.validator(ParticleEmitter, check)
         validate_writes(world, ParticleEmitter)
+        world.validator(BurstOnHit, functools.partial(_check_burst_on_hit, world))
+        validate_writes(world, BurstOnHit)
+        world.validator(ParticleBurst, functools.partial(_check_burst_event, world))
         drawer: dict[str, Any] = {}
 
         def draw(frame: Any) -> None:
