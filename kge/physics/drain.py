@@ -33,8 +33,8 @@ from __future__ import annotations
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
+from kge.physics.cp import body_handle, constraint_handle, lib
 from kge.physics.joint_api import in_space
 
 _get_max_force = lib.cpConstraintGetMaxForce
@@ -78,7 +78,7 @@ class Drain:
         # a sleeping joint is not stepped: it waits, as its bodies' warm start does
         for c in [c for c in self.waiting if in_space(space, c) and not _asleep(c)]:
             del self.waiting[c]
-            cc = c._constraint
+            cc = constraint_handle(c)
             saved.append((cc, _get_max_force(cc)))
             _set_max_force(cc, 0.0)
         return saved
@@ -91,4 +91,4 @@ class Drain:
 
 
 def _asleep(c: pymunk.Constraint) -> bool:
-    return bool(_sleeping(c.a._body) or _sleeping(c.b._body))
+    return bool(_sleeping(body_handle(c.a)) or _sleeping(body_handle(c.b)))

@@ -26,10 +26,11 @@ import itertools
 from typing import TYPE_CHECKING, Any
 
 import pymunk
-from pymunk._chipmunk import lib as _lib
 
 from kge.components.tracked import Tracked, bind, unbind
 from kge.physics import joint_api
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _lib
 from kge.physics.drain import Drain
 from kge.physics.events import JointBroken, JointDestroyed
 
@@ -415,7 +416,7 @@ class JointBridge:
             rec = bodies.get(e)
             if rec is None:
                 continue
-            cb = rec.body._body
+            cb = body_handle(rec.body)
             if _lib.cpBodyGetType(cb) == _DYNAMIC:
                 if not _lib.cpBodyIsSleeping(cb):
                     return False

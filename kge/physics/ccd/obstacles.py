@@ -14,10 +14,18 @@ from typing import Any
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.gcpause import without_gc
 from kge.physics.ccd.sorted_boxes import SortedBoxes
+from kge.physics.cp import (
+    body_handle,
+    body_shapes,
+    lib,
+    shape_body,
+    shape_handle,
+    shape_hashid,
+    shape_space,
+)
 
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
@@ -25,8 +33,8 @@ _KINEMATIC = pymunk.Body.KINEMATIC
 
 def _pose(body: pymunk.Body) -> tuple[float, float, float]:
     """(x, y, angle) through Chipmunk's getters (no Vec2d)."""
-    p = lib.cpBodyGetPosition(body._body)
-    return (p.x, p.y, lib.cpBodyGetAngle(body._body))
+    p = lib.cpBodyGetPosition(body_handle(body))
+    return (p.x, p.y, lib.cpBodyGetAngle(body_handle(body)))
 
 
 
@@ -217,14 +225,14 @@ class Obstacles:
         """Index the shapes added since the last scan (see the class docstring)."""
         shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
         n = len(shapes)
-        if n == self._count and (n == 0 or next(reversed(shapes))._hashid == self._newest):
+        if n == self._count and (n == 0 or shape_hashid(next(reversed(shapes))) == self._newest):
             return
         added = 0
         newest = self._newest
         seen = []
         row_of, read, hashid = self.row_of, self._read_rows, lib.cpShapeGetHashID
         for shape in reversed(shapes):
-            h = hashid(shape._shape)  # what shape._hashid reads, without the property
+            h = hashid(shape_handle(shape))  # what shape_hashid reads, without a Python call
             if h <= self._newest:
                 break
             added += 1
@@ -256,7 +264,7 @@ class Obstacles:
             if body.body_type == _DYNAMIC:
                 return  # the common case (a dynamic body tracked): nothing of it is indexed
             newest = self._newest
-            if all(s._hashid > newest for s in body._shapes):
+            if all(shape_hashid(s) > newest for s in body_shapes(body)):
                 return  # a new body: the next scan indexes its shapes (they are the newest)
         elif self._same_kind(body, rows[0]):
             self._reread(body, key)
@@ -265,7 +273,7 @@ class Obstacles:
         # static body whose chain is re-laid every episode carries all its old segments
         # (each would be looked at, then skipped, as in _classify_many)
         space = self.space
-        own = [s for s in body._shapes if s._space() is space]
+        own = [s for s in body_shapes(body) if shape_space(s) is space]
         self._classify_many(own)
         shapes, kept = self.shapes, set(own)
         gone = [shapes[row] for row in self._owner_rows.get(body.id, ())]
@@ -290,9 +298,9 @@ class Obstacles:
             shape = shapes[row]
             if shape is None or row in fresh:
                 continue  # just read by the scan
-            if shape._space() is not space:
+            if shape_space(shape) is not space:
                 gone.append(shape)  # removed from the space: what _classify_many drops
-            elif shape._body() is body:
+            elif shape_body(shape) is body:
                 stay.append(shape)
             else:
                 moved.append(shape)
@@ -348,7 +356,7 @@ class Obstacles:
         fresh_moving: list[bool] = []
         gone: list[pymunk.Shape] = []  # rows to drop
         for shape in shapes:
-            body = shape._body()
+            body = shape_body(shape)
             if body is None:
                 kind, key = _DYNAMIC, 0
             else:
@@ -358,11 +366,11 @@ class Obstacles:
                     owners[known[1]] = body
                 kind, key = known
             row = row_of.get(shape)
-            if body is None or kind == _DYNAMIC or shape._space() is not space:
+            if body is None or kind == _DYNAMIC or shape_space(shape) is not space:
                 if row is not None:
                     gone.append(shape)
                 continue
-            bb = get_bb(shape._shape)  # what shape.bb reads, without building a BB
+            bb = get_bb(shape_handle(shape))  # what shape.bb reads, without building a BB
             if row is None:
                 fresh.append(shape)
                 fresh_key.append(key)

@@ -30,8 +30,9 @@ from typing import Any
 import numpy as np
 import pymunk
 import pymunk.batch as pb
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
+
+from kge.physics.cp.capi import ffi as _ffi
+from kge.physics.cp.capi import raw_lib as _lib
 
 _ITERATOR = _ffi.addressof(_lib, "pmSpaceBodyGetIteratorFuncBatched")
 _FLOAT = _ffi.sizeof("cpFloat")

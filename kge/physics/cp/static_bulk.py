@@ -29,9 +29,9 @@ from typing import Any
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import ffi, lib
 from pymunk._util import _dead_ref
 
+from kge.physics.cp.capi import ffi, lib
 from kge.physics.tiny import TINY, flush
 
 #: up to this many vertices a chain's tiny coordinates are looked for without numpy
