@@ -189,7 +189,7 @@ class ContactFirst:
         if not seeds:
             return False
         if len(seeds) > FEW:
-            # many pushed bodies (a batch of landers' engines): only those with a contact
+            # many pushed bodies (a batch of thrusters): only those with a contact
             # need their contact list walked; one bulk read tells which may have one
             touching = set(self._arbiters.read(space).tolist())
             seeds = [b for b in seeds if b.id in touching]

@@ -4,8 +4,8 @@ pymunk warm-starts every constraint with the impulse it accumulated in the
 last step, applied along the Jacobian of this one. Sometimes that impulse is
 wrong: a position pass has just moved the joint's bodies a long way (see
 ``JOLT`` in :mod:`kge.physics.joints.base`), or the game teleported them
-(``Physics.reset_joints``: a ragdoll back at a checkpoint, an RL env's lander
-back at the top). Two joints that disagree about a body's place (two hinges to
+(``Physics.reset_joints``: a ragdoll back at a checkpoint, a vehicle back
+at its start). Two joints that disagree about a body's place (two hinges to
 the ground at anchors that cannot both hold) fed each other that way: their equal
 and opposite impulses grew about 3x per step, from 0.01 to 10^17 N·s in 30 steps,
 until they no longer cancelled and threw the body 10^11 m. Box2D's position solver

@@ -1,7 +1,7 @@
 """Many linear impulses in one call: ``Physics.apply_linear_impulses``.
 
-A controller that pushes many bodies every step (the engines of 64 Gymnasium
-landers sharing one world) paid ``apply_linear_impulse``'s per-call checks and
+A controller that pushes many bodies every step (the thrusters of 64
+vehicles sharing one world) paid ``apply_linear_impulse``'s per-call checks and
 lookups once per body. Here the rows are checked together with numpy (shape,
 finiteness), each entity is looked up once, and the new velocities are computed
 for every row before any body changes, so a bad row leaves the world as it was.

@@ -180,7 +180,7 @@ class Physics:
     ) -> None:
         """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre).
 
-        Called every step by controllers (Gymnasium's LunarLander fires its engines
+        Called every step by controllers (an RL environment fires its thrusters
         this way), so it looks the body up once and reads it with Chipmunk's getters.
         """
         owner = where(entity, "Physics.apply_linear_impulse")
@@ -388,7 +388,7 @@ class Physics:
 
         A solver warm-starts every joint with the impulse it applied in the last
         step (Box2D and pymunk alike), and teleporting the bodies keeps it: a
-        ragdoll put back at a checkpoint, or an RL env's lander put back at the top,
+        ragdoll put back at a checkpoint, or a vehicle put back at its start,
         would begin with the push its legs last gave while standing. After this
         call the joints carry nothing over (for one substep they apply no impulse
         while pymunk's accumulator drains, then solve from zero). Joints not yet
@@ -434,7 +434,7 @@ class Physics:
         fresh, safe to keep. For dynamic and kinematic bodies; others raise, naming
         the entity.
 
-        >>> # states, awake = physics.states(landers); x, vy = states[:, 0], states[:, 4]
+        >>> # states, awake = physics.states(vehicles); x, vy = states[:, 0], states[:, 4]
         """
         ents = np.asarray(entities)
         if ents.ndim != 1 or (len(ents) and ents.dtype.kind not in "iu"):

@@ -625,7 +625,7 @@ class Simulation:
                 raw_set(rb, "angular_velocity", 0.0)
             vx, vy, w = flush(vx), flush(vy), flush(w)
             # Chipmunk's setters directly: pymunk's properties go through a
-            # __setattr__ of its own (a re-laid scene writes three bodies' velocities)
+            # __setattr__ of its own (a reset writes several bodies' velocities)
             cp = body_handle(body)
             v = _cp.cpBodyGetVelocity(cp)
             pushed = False
@@ -983,7 +983,7 @@ class Simulation:
         after-step read, their position pass's moves patched in), instead of a new one.
 
         Its fixed cost is a few dozen numpy calls, which is what a small world (a
-        Gymnasium lander) pays per step, so the common cases take the short way:
+        few bodies) pays per step, so the common cases take the short way:
         the exact speed cap only after a cheap bound says a body may be over it,
         and when every tracked body moved (an awake world) no mask and no gather.
         """
@@ -1009,7 +1009,7 @@ class Simulation:
             state[slots] = rows
         changed = rows_differ(rows, old)
         targets = self._targets
-        if poses.full and changed.all():  # everything moved (rain, a lander): no gathers
+        if poses.full and changed.all():  # everything moved (rain, a small world): no gathers
             write_poses(targets, None, rows)
             self._write_velocities(None, rows, old)
             if poses.asleep.any():

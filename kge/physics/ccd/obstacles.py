@@ -105,10 +105,10 @@ class Obstacles:
       ``reindex`` that lags a move by one step is still seen;
     * **type changes**: :meth:`reclassify`, called by ``track``/``untrack``
       (the physics system calls one of them after every type change, and after
-      a collider of the body is replaced: a re-laid chain). A body still of the
+      a collider of the body is replaced: a new chain). A body still of the
       kind its rows were indexed as costs a scan and its own rows, never a walk
-      of ``body.shapes`` (pymunk keeps removed shapes there: a moon re-laid
-      every episode carries every chain it ever had).
+      of ``body.shapes`` (pymunk keeps removed shapes there: terrain rebuilt
+      on every reset carries every chain it ever had).
 
     Queries: :meth:`nearby` finds the rows around many squares at once and
     returns them as :class:`Nearby`, which answers later questions about
@@ -270,7 +270,7 @@ class Obstacles:
             self._reread(body, key)
             return
         # only the shapes in the space: pymunk keeps a removed shape on its body, so a
-        # static body whose chain is re-laid every episode carries all its old segments
+        # static body whose chain is rebuilt on every reset carries all its old segments
         # (each would be looked at, then skipped, as in _classify_many)
         space = self.space
         own = [s for s in body_shapes(body) if shape_space(s) is space]
@@ -285,9 +285,9 @@ class Obstacles:
         return kind != _DYNAMIC and bool(self.kinematic[row]) == (kind == _KINEMATIC)
 
     def _reread(self, body: pymunk.Body, key: int) -> None:
-        """:meth:`reclassify` of an indexed body whose kind did not change (a re-laid
+        """:meth:`reclassify` of an indexed body whose kind did not change (a replaced
         chain): what the full pass does, without walking every shape pymunk keeps on
-        the body (it keeps removed ones: a moon re-laid every episode carries all its
+        the body (it keeps removed ones: terrain rebuilt on every reset carries all its
         old chains). Its shapes in the space either have rows or joined the space
         since the last scan (a shape gets a new hashid whenever it is added), so a
         scan and its own rows cover them all."""
@@ -391,7 +391,7 @@ class Obstacles:
             self.any_kinematic |= any(moving)
             self._read_rows.update(rows)
         if gone:
-            # after the new rows: an owner whose shapes were all replaced (a re-laid
+            # after the new rows: an owner whose shapes were all replaced (a replaced
             # chain) never runs out of rows, so the owner table is not rebuilt
             self._drop_many(gone)
 
@@ -455,7 +455,7 @@ class Obstacles:
 
     def _drop_many(self, shapes: list[pymunk.Shape]) -> None:
         """:meth:`_drop` of each shape, with one numpy write and one pass per owner (a
-        re-laid chain's old segments)."""
+        replaced chain's old segments)."""
         row_of, table = self.row_of, self.shapes
         rows = []
         for shape in shapes:

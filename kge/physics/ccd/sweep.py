@@ -397,7 +397,7 @@ class JointFree:
     nothing, and a body joined to nothing cannot be joined to ``body``: pymunk
     records every constraint on both of its bodies (``body_constraints``), so
     ``other in joint_free`` answers False from ``other``'s own record without
-    walking ``body``'s constraints (about 9 µs for a lander leg) or any cffi call.
+    walking ``body``'s constraints (about 9 µs for a jointed leg) or any cffi call.
 
     >>> a, b, c = pymunk.Body(1, 1), pymunk.Body(1, 1), pymunk.Body(1, 1)
     >>> pivot = pymunk.PivotJoint(a, b, (0, 0)); pivot.collide_bodies = False

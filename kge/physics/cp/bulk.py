@@ -2,8 +2,8 @@
 
 ``pymunk.batch.get_space_bodies`` copies chosen fields of every body into a
 buffer in C, which is what makes sync-out, the speed caps and continuous
-collision cheap for thousands of bodies. For a handful of bodies (a Gymnasium
-lander, a unit test) its fixed cost is what remains: each call allocates the
+collision cheap for thousands of bodies. For a handful of bodies (a small
+world, a unit test) its fixed cost is what remains: each call allocates the
 ``pmBatchedData`` struct, looks up the iterator's address, and the caller wraps
 the result in two ``ffi.buffer`` and two ``np.frombuffer`` objects. A step reads
 the space up to ``substeps + 2`` times, so that setup was a third of a small

@@ -24,8 +24,8 @@ the same work over all of them at once:
   after the whole pass, so it matches the final poses exactly.
 
 Hinges with a motor or a limit join the batch when pymunk solves those in its
-iterations (``PhysicsSettings.iterated_hinges``, the Box2D-style setting kge.gym's
-LunarLander uses: its 128 legs at N = 64 took a fifth of an env step on the
+iterations (``PhysicsSettings.iterated_hinges``, the Box2D-style setting; 128
+motorised, limited legs in one world took a fifth of a step on the
 per-joint path). Their position pass is the per-joint one's: within each colour,
 the limits first (Box2D's angular projection back to within b2_angularSlop, at
 most 8° per step), then the points; gaps under ``ITERATED_PIVOT_TOLERANCE`` are

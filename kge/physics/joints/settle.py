@@ -4,7 +4,7 @@ Box2D ends every step with up to ``positionIterations`` passes in which each
 contact pushes its bodies apart (``b2ContactSolver::SolvePositionConstraints``)
 and each joint pulls its bodies together, stopping early once every contact
 overlaps by less than 3 x b2_linearSlop and every joint is within its slops. The
-two take turns, so a joint built with its anchors apart (Gymnasium's walker has
+two take turns, so a joint built with its anchors apart (a walker built with
 its legs 0.5 m from their hips) closes by folding the legs against the ground,
 not by pushing them into it: the contacts hold while the joints pull.
 
