@@ -358,6 +358,27 @@ def test_arbiter_functions_match_public() -> None:
     assert body.velocity.y < 0.0  # the contact was dropped: the ball falls through
 
 
+def test_each_arbiter_matches_public() -> None:
+    space = pymunk.Space()
+    space.gravity = (0.0, -10.0)
+    space.add(pymunk.Segment(space.static_body, (-5, 0), (5, 0), 0.0))
+    body = pymunk.Body(1.0, 1.0)
+    body.position = (0.0, 0.45)
+    space.add(body, pymunk.Circle(body, 0.5))
+    space.step(1 / 60)
+    ours: list[Any] = []
+
+    @ffi.callback("void(cpBody *, cpArbiter *, void *)")
+    def collect(_body: Any, arb: Any, _data: Any) -> None:
+        ours.append(lib.cpArbiterGetFriction(arb))
+
+    lib.cpBodyEachArbiter(body_handle(body), collect, ffi.NULL)
+    theirs: list[float] = []
+    body.each_arbiter(lambda arb: theirs.append(arb.friction))
+    assert len(ours) == 1
+    assert ours == theirs
+
+
 def test_arbiter_bodies_reader_matches_pymunk_batch() -> None:
     space = pymunk.Space()
     space.gravity = (0.0, -10.0)

@@ -55,6 +55,10 @@ FUNCTIONS: dict[str, tuple[str, str]] = {
         "void(*)(struct cpArbiter *, unsigned char)",
         "Arbiter.process_collision =",
     ),
+    "cpBodyEachArbiter": (
+        "void(*)(struct cpBody *, void(*)(struct cpBody *, struct cpArbiter *, void *), void *)",
+        "Body.each_arbiter",
+    ),
     "cpBodyGetAngle": ("double(*)(struct cpBody *)", "Body.angle"),
     "cpBodyGetAngularVelocity": ("double(*)(struct cpBody *)", "Body.angular_velocity"),
     "cpBodyGetCenterOfGravity": ("struct cpVect(*)(struct cpBody *)", "Body.center_of_gravity"),
