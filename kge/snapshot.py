@@ -46,11 +46,9 @@ Transform(x=1.0, y=2.0, angle=0.0)
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import hashlib
 import hmac
-import itertools
 import os
 import pickle
 from collections.abc import Sequence
@@ -59,6 +57,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 import esper
 
 from kge.errors import KgeError
+from kge.esper_door import entity_table, next_entity_id, set_next_entity_id
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -149,8 +148,7 @@ def _running(world: World) -> list[tuple[type, Any]]:
 
 def _next_id(world: World) -> int:
     world._use()
-    counter = esper._entity_count
-    return int(next(copy.copy(counter)))
+    return next_entity_id()
 
 
 def snapshot(world: World) -> bytes:
@@ -244,7 +242,7 @@ def _validate(world: World, entities: Any, next_id: Any) -> None:
             seen[id(comp)] = entity
             _recheck(comp, f"snapshot entity {entity}, {type(comp).__name__}")
     world._use()
-    table = esper._entities
+    table = entity_table()
     for entity in entities:
         table[entity] = {}
         world._pending[entity] = {type(c): c for c in entities[entity]}
@@ -295,13 +293,13 @@ def restore_state(
     for resource in resources:
         world.insert_resource(resource)
     world._use()
-    table = esper._entities
+    table = entity_table()
     for entity in sorted(entities):
         table[entity] = {}
         for component in entities[entity]:
             world._apply_add(entity, component)
     world._use()
-    esper._entity_count = itertools.count(start=next_id)
+    set_next_entity_id(next_id)
     esper.clear_cache()
     return world
 

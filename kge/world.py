@@ -33,7 +33,6 @@ False
 
 from __future__ import annotations
 
-import copy
 import itertools
 import weakref
 from collections import defaultdict
@@ -52,6 +51,7 @@ from kge.errors import (
     ValidationError,
     WorldLockedError,
 )
+from kge.esper_door import entity_table, next_entity_id, set_next_entity_id
 from kge.events import EventLog
 from kge.plugin import Plugin, PluginLike, resolve
 from kge.schedule import Anchor, Schedule, System, SystemSet
@@ -181,8 +181,7 @@ class World:
     def _db(self) -> dict[int, dict[type, Any]]:
         """esper's entity table for this world (entity -> {type: component})."""
         self._use()
-        db: dict[int, dict[type, Any]] = esper._entities
-        return db
+        return entity_table()
 
     # -- modes -------------------------------------------------------------------
     @contextmanager
@@ -303,7 +302,7 @@ class World:
         self._guard("spawn")
         count = int(count)
         self._use()
-        start = int(next(copy.copy(esper._entity_count)))
+        start = next_entity_id()
         ids = list(range(start, start + count))
         rows = [tuple(row) for row in build(ids)]
         if len(rows) != count:
@@ -342,7 +341,7 @@ class World:
                 if not self._defer_depth:
                     self._pending.pop(entity, None)
         self._use()
-        esper._entity_count = itertools.count(start=start + count)  # hooks may spawn
+        set_next_entity_id(start + count)  # hooks may spawn
         if self._defer_depth:
             # queued like spawn's: get() sees them through _pending until the flush
             for entity, row in zip(ids, rows, strict=True):

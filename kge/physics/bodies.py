@@ -44,10 +44,11 @@ from collections.abc import Callable
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
 
 from kge.components.rigidbody import BodyType, RigidBody
+from kge.physics.cp import arbiter_handle, body_handle, constraint_handle, space_handle
+from kge.physics.cp import ffi as _ffi
+from kge.physics.cp import lib as _lib
 from kge.physics.mass import ZERO, MassData
 from kge.physics.tiny import flush
 
@@ -113,7 +114,7 @@ def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
         body = pymunk.Body(1.0, math.inf)
     else:
         body = pymunk.Body(body_type=PYMUNK_TYPE[kind])
-    cp = body._body
+    cp = body_handle(body)
     _lib.cpBodySetPosition(cp, (flush(x), flush(y)))
     _lib.cpBodySetAngle(cp, flush(angle))
     vars(body).update(
@@ -139,22 +140,22 @@ def set_body_type(body: pymunk.Body, body_type: int) -> None:
     """
     space = body.space
     if space is None:
-        _lib.cpBodySetType(body._body, body_type)
+        _lib.cpBodySetType(body_handle(body), body_type)
         return
     shapes = take_out(space, body)
-    _lib.cpBodySetType(body._body, body_type)
+    _lib.cpBodySetType(body_handle(body), body_type)
     space.add(body, *shapes)
 
 
 def _constraint_in(space: pymunk.Space, c: pymunk.Constraint) -> bool:
     """Is ``c`` in ``space`` (O(1); ``space.constraints`` builds a list)?"""
-    return bool(_lib.cpConstraintGetSpace(c._constraint) == space._space)
+    return bool(_lib.cpConstraintGetSpace(constraint_handle(c)) == space_handle(space))
 
 
 def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
     """Non-static bodies touching ``body`` (its arbiters) or jointed to it in ``space``."""
     found: dict[pymunk.Body, None] = {}
-    cp = body._body
+    cp = body_handle(body)
     a_p, b_p = _ffi.new("cpBody *[1]"), _ffi.new("cpBody *[1]")
     get_bodies, get_type = _lib.cpArbiterGetBodies, _lib.cpBodyGetType
     get_data, from_handle = _lib.cpBodyGetUserData, _ffi.from_handle
@@ -162,7 +163,7 @@ def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
     def visit(arb: pymunk.Arbiter) -> None:
         # what arb.bodies gives, through Chipmunk's getters (pymunk's goes through both
         # shapes and their weak body references): the body's user data is its handle
-        get_bodies(arb._arbiter, a_p, b_p)
+        get_bodies(arbiter_handle(arb), a_p, b_p)
         a = a_p[0]
         other = b_p[0] if a == cp else a
         if get_type(other) != STATIC:
@@ -374,7 +375,7 @@ def set_mass(body: pymunk.Body, md: MassData) -> None:
     position and its next step redraws the origin around it, so a body spawned at
     rest with an off-centre shape jumped by its centre's offset on its first step.
     """
-    cp = body._body
+    cp = body_handle(body)
     cog = _lib.cpBodyGetCenterOfGravity(cp)
     if (
         _lib.cpBodyGetMass(cp) == md.mass

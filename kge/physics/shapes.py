@@ -29,8 +29,8 @@ import pymunk
 
 from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon, Shape
+from kge.physics.cp.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
-from kge.physics.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.tiny import flush_point, flush_points
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
@@ -131,7 +131,7 @@ def rebuild_in_place(
     would build for ``collider`` now, keeping the Python objects.
 
     Chipmunk's fields are initialised as for a new segment
-    (:func:`~kge.physics.static_bulk.reinit_segments`) and the kge_* attributes
+    (:func:`~kge.physics.cp.static_bulk.reinit_segments`) and the kge_* attributes
     written again, so nothing of the old geometry or material survives.
     """
     geom = collider.shape
