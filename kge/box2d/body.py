@@ -18,6 +18,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
+from kge.box2d.errors import b2AssertException
 from kge.box2d.fixture import b2Fixture, b2FixtureDef, set_keywords
 from kge.box2d.massdata import b2MassData
 from kge.box2d.shapes import b2ChainShape, b2CircleShape, b2EdgeShape, b2LoopShape, b2PolygonShape
@@ -40,11 +41,62 @@ _FROM_KGE = {v: k for k, v in _TO_KGE.items()}
 def body_type(value: Any) -> BodyType:
     if isinstance(value, BodyType):
         return value
-    if isinstance(value, bool) or value not in _TO_KGE:
-        raise ComponentTypeError(
+    if isinstance(value, bool) or not isinstance(value, int) or value not in _TO_KGE:
+        raise b2AssertException(
             f"b2Body.type must be b2_staticBody, b2_kinematicBody or b2_dynamicBody, got {value!r}"
         )
     return _TO_KGE[value]
+
+
+class PositionView(b2Vec2):
+    """``body.position``: a b2Vec2 whose ``x`` and ``y`` are the body's, now (pybox2d's
+    position aliases the body's transform). Arithmetic gives plain vectors."""
+
+    __slots__ = ("_body",)
+
+    def __init__(self, body: b2Body) -> None:
+        self._body = body
+
+    @property
+    def x(self) -> float:
+        return self._body._tf.x
+
+    @x.setter
+    def x(self, value: float) -> None:
+        self._body.position = (value, self._body._tf.y)
+
+    @property
+    def y(self) -> float:
+        return self._body._tf.y
+
+    @y.setter
+    def y(self, value: float) -> None:
+        self._body.position = (self._body._tf.x, value)
+
+
+class VelocityView(b2Vec2):
+    """``body.linearVelocity``: a b2Vec2 whose ``x`` and ``y`` are the body's velocity, now."""
+
+    __slots__ = ("_body",)
+
+    def __init__(self, body: b2Body) -> None:
+        self._body = body
+
+    @property
+    def x(self) -> float:
+        return float(self._body._rb.velocity[0])
+
+    @x.setter
+    def x(self, value: float) -> None:
+        self._body.linearVelocity = (value, self._body._rb.velocity[1])
+
+    @property
+    def y(self) -> float:
+        return float(self._body._rb.velocity[1])
+
+    @y.setter
+    def y(self, value: float) -> None:
+        self._body.linearVelocity = (self._body._rb.velocity[0], value)
 
 
 class b2BodyDef:
@@ -150,8 +202,10 @@ class b2Body:
     # -- pose ---------------------------------------------------------------------------------
     @property
     def position(self) -> b2Vec2:
-        tf = self._tf
-        return b2Vec2(tf.x, tf.y)
+        """The origin's world position: a vector that stays this body's (pybox2d's alias):
+        it reads the current position after later steps, and writing ``x`` or ``y``
+        through it moves the body. ``.copy()`` gives a snapshot."""
+        return PositionView(self)
 
     @position.setter
     def position(self, value: Any) -> None:
@@ -193,8 +247,8 @@ class b2Body:
     # -- velocity and flags -----------------------------------------------------------------------
     @property
     def linearVelocity(self) -> b2Vec2:
-        vx, vy = self._rb.velocity
-        return b2Vec2(vx, vy)
+        """The centre of mass's velocity (m/s), a live vector like :attr:`position`."""
+        return VelocityView(self)
 
     @linearVelocity.setter
     def linearVelocity(self, value: Any) -> None:
@@ -358,8 +412,8 @@ class b2Body:
     # -- fixtures -------------------------------------------------------------------------------
     @property
     def fixtures(self) -> list[b2Fixture]:
-        """Newest first, as Box2D's fixture list."""
-        return self._fixtures[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._fixtures)
 
     def CreateFixture(self, defn: b2FixtureDef | None = None, **kwargs: Any) -> b2Fixture:
         if defn is None:
@@ -412,8 +466,8 @@ class b2Body:
     # -- joints and contacts --------------------------------------------------------------------
     @property
     def joints(self) -> list[b2JointEdge]:
-        return [b2JointEdge(j, j.bodyB if j.bodyA is self else j.bodyA)
-                for j in self._joints[::-1]]
+        """Oldest first, as pybox2d's list."""
+        return [b2JointEdge(j, j.bodyB if j.bodyA is self else j.bodyA) for j in self._joints]
 
     @property
     def contacts(self) -> list[b2ContactEdge]:

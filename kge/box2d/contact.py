@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from kge import collision
+from kge.box2d.constants import b2_maxManifoldPoints
 from kge.box2d.vec import b2Vec2
 
 if TYPE_CHECKING:
@@ -55,14 +56,24 @@ class b2Manifold:
     def pointCount(self) -> int:
         return len(self.points)
 
+    @property
+    def type_(self) -> int:
+        """pybox2d's name for ``type``."""
+        return self.type
+
 
 class b2WorldManifold:
-    """World normal (from A to B), world points and separations."""
+    """World normal (from A to B), world points and separations.
 
-    def __init__(self, normal: b2Vec2, points: list[b2Vec2], separations: list[float]) -> None:
+    ``points`` always has ``b2_maxManifoldPoints`` (2) entries, as pybox2d's: the
+    manifold's ``pointCount`` first, then ``(0, 0)``; so do ``separations``.
+    """
+
+    def __init__(self, normal: b2Vec2, points: list[Vec2], separations: list[float]) -> None:
         self.normal = normal
-        self.points = points
-        self.separations = separations
+        pad = b2_maxManifoldPoints - len(points)
+        self.points: tuple[Vec2, ...] = (*((x, y) for x, y in points), *[(0.0, 0.0)] * pad)
+        self.separations = [*separations, *[0.0] * pad]
 
 
 class b2ContactImpulse:
@@ -144,10 +155,9 @@ class b2Contact:
     def worldManifold(self) -> b2WorldManifold:
         m = self._collide()
         if m is not None:
-            return b2WorldManifold(b2Vec2(*m.normal), [b2Vec2(*p) for p in m.points],
-                                   list(m.separations))
+            return b2WorldManifold(b2Vec2(*m.normal), list(m.points), list(m.separations))
         n = self._normal
-        return b2WorldManifold(b2Vec2(*n), [b2Vec2(*p) for p in self._points],
+        return b2WorldManifold(b2Vec2(*n), list(self._points),
                                [self._separation] * len(self._points))
 
     @property

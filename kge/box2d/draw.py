@@ -15,9 +15,10 @@ superset kge does not keep).
 
 from __future__ import annotations
 
+import builtins
 import itertools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from kge.box2d.constants import b2_aabbExtension, b2_kinematicBody, b2_staticBody
@@ -32,20 +33,124 @@ if TYPE_CHECKING:
     from kge.box2d.world import b2World
 
 class b2Color:
-    """An RGB colour with components in 0..1 (``bytes`` gives 0..255)."""
+    """An RGB colour with components in 0..1 (``bytes`` gives 0..255), with pybox2d's
+    element-wise arithmetic (``+``, ``-`` with colours or triples; ``*``, ``/`` by numbers).
 
-    def __init__(self, r: float = 0.0, g: float = 0.0, b: float = 0.0) -> None:
-        self.r, self.g, self.b = float(r), float(g), float(b)
+    >>> c = b2Color(0.2, 0.4, 0.6)
+    >>> c + (1, 1, 1), c * 2, b2Color(1, 0.5, 0).bytes
+    (b2Color(1.2,1.4,1.6), b2Color(0.4,0.8,1.2), [255, 127, 0])
+    """
+
+    __slots__ = ("b", "g", "r")
+
+    def __init__(self, *args: Any) -> None:
+        if not args:
+            r = g = b = 0.0
+        elif len(args) in (1, 3):  # a colour or any triple; or r, g, b
+            r, g, b = _rgb(args[0] if len(args) == 1 else args)
+        else:
+            raise ComponentTypeError(
+                f"b2Color takes no arguments, a colour or r, g, b; got {args!r}")
+        self.r, self.g, self.b = r, g, b
+
+    def Set(self, r: float, g: float, b: float) -> None:
+        self.r, self.g, self.b = b2Color(r, g, b)
 
     @property
-    def bytes(self) -> tuple[int, int, int]:
-        return (int(self.r * 255), int(self.g * 255), int(self.b * 255))
+    def bytes(self) -> builtins.list[int]:
+        """The components scaled to 0..255 (truncated, as pybox2d's)."""
+        return [int(self.r * 255), int(self.g * 255), int(self.b * 255)]
 
-    def __iter__(self) -> Any:
+    @bytes.setter
+    def bytes(self, value: Any) -> None:
+        r, g, b = _rgb(value)
+        self.r, self.g, self.b = r / 255.0, g / 255.0, b / 255.0
+
+    @property
+    def list(self) -> builtins.list[float]:
+        return [self.r, self.g, self.b]
+
+    @list.setter
+    def list(self, value: Any) -> None:
+        self.r, self.g, self.b = b2Color(*_rgb(value))
+
+    def copy(self) -> b2Color:
+        return b2Color(self.r, self.g, self.b)
+
+    def __len__(self) -> int:
+        return 3
+
+    def __iter__(self) -> Iterator[float]:
         return iter((self.r, self.g, self.b))
+
+    def __getitem__(self, i: int) -> float:
+        return (self.r, self.g, self.b)[i]
+
+    def __setitem__(self, i: int, value: float) -> None:
+        setattr(self, ("r", "g", "b")[i], finite(value, "b2Color", "component"))
+
+    def __eq__(self, other: object) -> bool:
+        seq: Any = other
+        try:
+            r, g, b = seq
+        except (TypeError, ValueError):
+            return NotImplemented
+        return bool(self.r == r and self.g == g and self.b == b)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, like pybox2d's
+
+    def __add__(self, other: Any) -> b2Color:
+        r, g, b = _rgb(other)
+        return b2Color(self.r + r, self.g + g, self.b + b)
+
+    __radd__ = __add__
+
+    def __sub__(self, other: Any) -> b2Color:
+        r, g, b = _rgb(other)
+        return b2Color(self.r - r, self.g - g, self.b - b)
+
+    def __rsub__(self, other: Any) -> b2Color:
+        r, g, b = _rgb(other)
+        return b2Color(r - self.r, g - self.g, b - self.b)
+
+    def __mul__(self, k: float) -> b2Color:
+        k = finite(k, "b2Color", "factor")
+        return b2Color(self.r * k, self.g * k, self.b * k)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k: float) -> b2Color:
+        return self * (1.0 / finite(k, "b2Color", "divisor"))
+
+    def __iadd__(self, other: Any) -> b2Color:
+        self.r, self.g, self.b = self + other
+        return self
+
+    def __isub__(self, other: Any) -> b2Color:
+        self.r, self.g, self.b = self - other
+        return self
+
+    def __imul__(self, k: float) -> b2Color:
+        self.r, self.g, self.b = self * k
+        return self
+
+    def __itruediv__(self, k: float) -> b2Color:
+        self.r, self.g, self.b = self / k
+        return self
 
     def __repr__(self) -> str:
         return f"b2Color({self.r:g},{self.g:g},{self.b:g})"
+
+
+def _rgb(value: Any) -> tuple[float, float, float]:
+    """Three finite numbers from a colour or a triple (else a kge error)."""
+    if isinstance(value, b2Color):
+        return value.r, value.g, value.b
+    try:
+        r, g, b = value
+    except (TypeError, ValueError):
+        raise ComponentTypeError(f"a b2Color needs three components, got {value!r}") from None
+    return (finite(r, "b2Color", "r"), finite(g, "b2Color", "g"), finite(b, "b2Color", "b"))
 
 
 #: Box2D's debug colours (b2World::DrawDebugData)
@@ -172,7 +277,7 @@ def draw_debug_data(world: b2World, renderer: b2Draw) -> None:
         (lambda p: b2Vec2(*renderer.to_screen(p)))  # type: ignore[attr-defined]
         if convert else (lambda p: b2Vec2(p)))
     scale = renderer.zoom if convert else 1.0  # type: ignore[attr-defined]
-    bodies = world.bodies
+    bodies = world.bodies[::-1]  # Box2D's own list order (newest first), as pybox2d draws
     renderer.StartDraw()
     _draw(world, renderer, flags, bodies, pt, scale)
     renderer.EndDraw()
@@ -184,10 +289,10 @@ def _draw(world: b2World, renderer: b2Draw, flags: int, bodies: list[b2Body],
         for body in bodies:
             color = _body_color(body)
             xf = body.transform
-            for fixture in body.fixtures:
+            for fixture in body.fixtures[::-1]:
                 _draw_shape(renderer, fixture.shape, xf, color, pt, scale)
     if flags & b2Draw.e_jointBit:
-        for joint in world.joints:
+        for joint in world.joints[::-1]:
             a, b = joint.bodyA, joint.bodyB
             x1, x2 = pt(a.position), pt(b.position)
             p1, p2 = pt(joint.anchorA), pt(joint.anchorB)
@@ -203,7 +308,7 @@ def _draw(world: b2World, renderer: b2Draw, flags: int, bodies: list[b2Body],
         for body in bodies:
             if not body.active:
                 continue
-            for fixture in body.fixtures:
+            for fixture in body.fixtures[::-1]:
                 for child in range(fixture.shape.childCount):
                     box = fixture.GetAABB(child)
                     lo, hi, m = box.lowerBound, box.upperBound, b2_aabbExtension

@@ -42,6 +42,7 @@ from kge.box2d.callbacks import (
 )
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
 from kge.box2d.contact import b2Contact, impulse_of
+from kge.box2d.errors import KeywordError, LockedError, MissingError
 from kge.box2d.fixture import b2Fixture, b2FixtureDef
 from kge.box2d.joints import JOINT_CLASSES, b2GearJoint, b2GearJointDef, b2Joint, b2JointDef
 from kge.box2d.joints import b2DistanceJointDef as _Distance
@@ -56,7 +57,7 @@ from kge.box2d.joints import b2WeldJointDef as _Weld
 from kge.box2d.joints import b2WheelJointDef as _Wheel
 from kge.box2d.transform import b2AABB
 from kge.box2d.vec import as_xy, b2Vec2
-from kge.errors import ComponentTypeError, ValidationError, WorldLockedError
+from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.contacts import PostSolve, PreSolve
 from kge.physics.events import PhysicsEvents
 from kge.physics.resource import Physics
@@ -123,7 +124,7 @@ class b2World:
         self.renderer: Any = None
         for name, value in kwargs.items():
             if not hasattr(type(self), name) and name not in self.__dict__:
-                raise ComponentTypeError(f"b2World has no property {name!r}")
+                raise KeywordError(f"b2World has no property {name!r}")
             setattr(self, name, value)
 
     # -- world settings --------------------------------------------------------------------
@@ -156,7 +157,7 @@ class b2World:
 
     def _unlocked(self, op: str) -> None:
         if self._locked:
-            raise WorldLockedError(
+            raise LockedError(
                 f"{op}: the world is locked (called from inside Step or a callback)")
 
     # -- listeners -----------------------------------------------------------------------------
@@ -205,8 +206,8 @@ class b2World:
     # -- bodies --------------------------------------------------------------------------------
     @property
     def bodies(self) -> list[b2Body]:
-        """Newest first, as Box2D's body list."""
-        return list(self._bodies.values())[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._bodies.values())
 
     @property
     def bodyCount(self) -> int:
@@ -279,7 +280,7 @@ class b2World:
         if self._hooks:
             col.contact_hooks = True
         entity = self._kworld.spawn(col)
-        fixture = b2Fixture(body, entity, col, shape, defn.userData)
+        fixture = b2Fixture(body, entity, col, shape, defn.userData, defn.density)
         self._fixtures[entity] = fixture
         body._fixtures.append(fixture)
         return fixture
@@ -304,19 +305,25 @@ class b2World:
     # -- joints --------------------------------------------------------------------------------
     @property
     def joints(self) -> list[b2Joint]:
-        return list(self._joints.values())[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._joints.values())
 
     @property
     def jointCount(self) -> int:
         return len(self._joints)
 
     def CreateJoint(self, defn: b2JointDef | None = None, **kwargs: Any) -> b2Joint:
+        """A joint from a definition, or from keywords with ``type=`` naming the joint
+        (its class or its definition's class), as pybox2d accepts."""
         self._unlocked("CreateJoint")
         if defn is None:
             kind = kwargs.pop("type", None)
-            if not (isinstance(kind, type) and issubclass(kind, b2JointDef)):
-                raise ComponentTypeError(
-                    "CreateJoint needs a joint definition (or type=<def class>)")
+            if isinstance(kind, type) and issubclass(kind, b2Joint):
+                kind = kind.DEF
+            if not (isinstance(kind, type) and kind in JOINT_CLASSES):
+                raise MissingError(
+                    "CreateJoint needs a joint definition, or type=<joint or definition class> "
+                    f"and keywords; got type={kind!r}")
             defn = kind(**kwargs)
         elif kwargs:
             raise ComponentTypeError("CreateJoint takes a definition or keywords, not both")
@@ -343,6 +350,10 @@ class b2World:
         return joint
 
     def _create(self, cls: type[b2JointDef], kwargs: dict[str, Any]) -> b2Joint:
+        kind = kwargs.pop("type", cls.TYPE)
+        if kind not in (cls.TYPE, cls, JOINT_CLASSES[cls]):
+            raise ComponentTypeError(
+                f"Create{cls.__name__[2:-3]}: type={kind!r} names another joint")
         return self.CreateJoint(cls(**kwargs))
 
     def CreateRevoluteJoint(self, **kw: Any) -> b2Joint:
