@@ -8,6 +8,7 @@ import sys
 from typing import Any
 
 from kge.box2d.body import b2Body, b2BodyDef, b2ContactEdge, b2JointEdge
+from kge.box2d.broadphase import b2BroadPhase, b2ContactManager
 from kge.box2d.callbacks import (
     b2ContactFilter,
     b2ContactListener,

@@ -14,11 +14,12 @@ pybox2d's pointer comparisons do, and programs may store attributes on it.
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import TYPE_CHECKING, Any
 
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
-from kge.box2d.errors import b2AssertException
+from kge.box2d.errors import MissingError, b2AssertException
 from kge.box2d.fixture import b2Fixture, b2FixtureDef, set_keywords
 from kge.box2d.massdata import b2MassData
 from kge.box2d.shapes import b2ChainShape, b2CircleShape, b2EdgeShape, b2LoopShape, b2PolygonShape
@@ -48,14 +49,48 @@ def body_type(value: Any) -> BodyType:
     return _TO_KGE[value]
 
 
-class PositionView(b2Vec2):
-    """``body.position``: a b2Vec2 whose ``x`` and ``y`` are the body's, now (pybox2d's
-    position aliases the body's transform). Arithmetic gives plain vectors."""
+class _View(b2Vec2):
+    """A b2Vec2 that stands for one of a body's vectors; in-place arithmetic writes the
+    result back once (``body.linearVelocity *= 0.99`` is one velocity write)."""
 
     __slots__ = ("_body",)
 
     def __init__(self, body: b2Body) -> None:
         self._body = body
+
+    def _put(self, value: tuple[float, float]) -> None:
+        raise NotImplementedError
+
+    def __iadd__(self, other: Any) -> b2Vec2:
+        ox, oy = other
+        self._put((self.x + ox, self.y + oy))
+        return self
+
+    def __isub__(self, other: Any) -> b2Vec2:
+        ox, oy = other
+        self._put((self.x - ox, self.y - oy))
+        return self
+
+    def __imul__(self, k: float) -> b2Vec2:
+        self._put((self.x * k, self.y * k))
+        return self
+
+    def __itruediv__(self, k: float) -> b2Vec2:
+        self._put((self.x / k, self.y / k))
+        return self
+
+    def Set(self, x: float, y: float) -> None:
+        self._put((x, y))
+
+
+class PositionView(_View):
+    """``body.position``: a b2Vec2 whose ``x`` and ``y`` are the body's, now (pybox2d's
+    position aliases the body's transform). Arithmetic gives plain vectors."""
+
+    __slots__ = ()
+
+    def _put(self, value: tuple[float, float]) -> None:
+        self._body.position = value
 
     @property
     def x(self) -> float:
@@ -74,13 +109,13 @@ class PositionView(b2Vec2):
         self._body.position = (self._body._tf.x, value)
 
 
-class VelocityView(b2Vec2):
+class VelocityView(_View):
     """``body.linearVelocity``: a b2Vec2 whose ``x`` and ``y`` are the body's velocity, now."""
 
-    __slots__ = ("_body",)
+    __slots__ = ()
 
-    def __init__(self, body: b2Body) -> None:
-        self._body = body
+    def _put(self, value: tuple[float, float]) -> None:
+        self._body.linearVelocity = value
 
     @property
     def x(self) -> float:
@@ -441,13 +476,24 @@ class b2Body:
         return self._shaped(b2EdgeShape(), kwargs, ("vertices",))
 
     def CreateChainFixture(self, **kwargs: Any) -> b2Fixture:
-        return self._shaped(b2ChainShape(), kwargs, ("vertices",))
+        """A chain fixture: ``vertices=`` closes it into a loop, ``vertices_chain=`` leaves
+        it open (pybox2d's rules)."""
+        return self._shaped(b2ChainShape(), kwargs,
+                            ("vertices", "vertices_chain", "vertices_loop"))
 
     def CreateLoopFixture(self, **kwargs: Any) -> b2Fixture:
-        return self._shaped(b2LoopShape(), kwargs, ("vertices",))
+        return self._shaped(b2LoopShape(), kwargs, ("vertices", "vertices_loop"))
 
-    def CreateEdgeChain(self, edge_list: Any) -> b2Fixture:
-        return self.CreateFixture(b2FixtureDef(shape=b2ChainShape(vertices=edge_list)))
+    def CreateEdgeChain(self, edge_list: Any) -> None:
+        """One separate edge fixture per pair of consecutive points, as pybox2d makes them
+        (not a chain: the edges do not know their neighbours); returns None, as pybox2d."""
+        if isinstance(edge_list, (str, bytes)) or not hasattr(edge_list, "__len__"):
+            raise MissingError(f"CreateEdgeChain needs a list of points, got {edge_list!r}")
+        if len(edge_list) < 2:
+            raise ValidationError(f"CreateEdgeChain: edge list length >= 2, got {len(edge_list)}")
+        pts = [as_xy(p, "CreateEdgeChain", f"edge_list[{i}]") for i, p in enumerate(edge_list)]
+        for a, b in itertools.pairwise(pts):
+            self.CreateFixture(b2FixtureDef(shape=b2EdgeShape(vertices=[a, b])))
 
     def CreateFixturesFromShapes(self, shapes: Any = None, shapeFixture: Any = None) -> None:
         template = shapeFixture if shapeFixture is not None else b2FixtureDef()

@@ -388,50 +388,51 @@ class b2EdgeShape(b2Shape):
 
 
 class b2ChainShape(b2Shape):
-    """A chain of edges through ``vertices`` (open); :class:`b2LoopShape` closes it."""
+    """Connected edges through the points given, as pybox2d 2.3.10 builds them:
+    ``vertices=`` and ``vertices_loop=`` make a closed loop (its ``vertices`` read
+    back with the first point repeated at the end, as Box2D stores a loop), and
+    ``vertices_chain=`` an open chain. Either way the edges join smoothly (each one
+    knows its neighbours: Box2D's ghost vertices).
 
-    loop = False
+    >>> b2ChainShape(vertices=[(0, 0), (1, 0), (1, 1)]).childCount
+    3
+    >>> b2ChainShape(vertices_chain=[(0, 0), (1, 0), (1, 1)]).childCount
+    2
+    """
 
     def __init__(self, vertices: Any = None, vertices_chain: Any = None,
                  vertices_loop: Any = None, **kw: Any) -> None:
         self.radius = b2_polygonRadius
+        self.loop = True
         self._vertices: list[Vec2] = []
-        if vertices_loop is not None:
-            self.loop = True
-            vertices = vertices_loop
-        if vertices_chain is not None:
-            vertices = vertices_chain
         if vertices is not None:
             self.vertices = vertices
+        if vertices_loop is not None:
+            self.vertices_loop = vertices_loop
+        if vertices_chain is not None:
+            self.vertices_chain = vertices_chain
         _set_extra(self, kw)
 
-    @property
-    def vertices(self) -> list[Vec2]:
-        return list(self._vertices)
-
-    @vertices.setter
-    def vertices(self, value: Any) -> None:
+    def _set(self, value: Any, loop: bool) -> None:
         pts = _points(value, type(self).__name__)
-        need = 3 if self.loop else 2
+        need = 3 if loop else 2
         if len(pts) < need:  # pybox2d: a ValueError for a chain, Box2D's assertion for a loop
-            error = b2AssertException if self.loop else ValidationError
+            error = b2AssertException if loop else ValidationError
             raise error(
                 f"{type(self).__name__}.vertices needs at least {need} points, got {len(pts)}"
             )
         old = dict(self.__dict__)
-        self._vertices = pts
+        self._vertices, self.loop = pts, loop
         self._commit(old)
 
-    vertices_chain = vertices
-
     @property
-    def vertexCount(self) -> int:
-        return len(self._vertices)
+    def vertices(self) -> list[Vec2]:
+        """The points; a loop's first point comes again at the end (Box2D's storage)."""
+        return self._vertices + (self._vertices[:1] if self.loop else [])
 
-    @property
-    def childCount(self) -> int:
-        n = len(self._vertices)
-        return n if self.loop else n - 1
+    @vertices.setter
+    def vertices(self, value: Any) -> None:
+        self._set(value, True)
 
     @property
     def vertices_loop(self) -> list[Vec2]:
@@ -439,8 +440,24 @@ class b2ChainShape(b2Shape):
 
     @vertices_loop.setter
     def vertices_loop(self, value: Any) -> None:
-        self.loop = True
-        self.vertices = value
+        self._set(value, True)
+
+    @property
+    def vertices_chain(self) -> list[Vec2]:
+        return self.vertices
+
+    @vertices_chain.setter
+    def vertices_chain(self, value: Any) -> None:
+        self._set(value, False)
+
+    @property
+    def vertexCount(self) -> int:
+        return len(self.vertices)
+
+    @property
+    def childCount(self) -> int:
+        n = len(self._vertices)
+        return n if self.loop else n - 1
 
     @property
     def edges(self) -> list[b2EdgeShape]:
@@ -467,9 +484,7 @@ class b2ChainShape(b2Shape):
 
 
 class b2LoopShape(b2ChainShape):
-    """A closed chain (pybox2d's loop shape)."""
-
-    loop = True
+    """pybox2d's loop shape: a :class:`b2ChainShape` (``vertices=`` makes a loop)."""
 
 
 def _pose(xf: Any) -> tuple[float, float, float]:
@@ -496,7 +511,8 @@ def from_kge(shape: Shape) -> b2Shape:
     if isinstance(shape, Edge):
         return b2EdgeShape(vertices=[shape.v1, shape.v2])
     if isinstance(shape, Chain):
-        return (b2LoopShape if shape.loop else b2ChainShape)(vertices=list(shape.vertices))
+        key = "vertices_loop" if shape.loop else "vertices_chain"
+        return b2ChainShape(**{key: list(shape.vertices)})
     if isinstance(shape, Polygon):
         return b2PolygonShape(vertices=list(shape.vertices))
     return b2PolygonShape(vertices=list(shape.vertices()))  # Box

@@ -63,8 +63,7 @@ class b2Vec2:
         return 2
 
     def __iter__(self) -> Iterator[float]:
-        yield self.x
-        yield self.y
+        return iter((self.x, self.y))
 
     def __getitem__(self, i: int) -> float:
         if i == 0 or i == -2:
@@ -251,9 +250,7 @@ class b2Vec3:
         return 3
 
     def __iter__(self) -> Iterator[float]:
-        yield self.x
-        yield self.y
-        yield self.z
+        return iter((self.x, self.y, self.z))
 
     def __getitem__(self, i: int) -> float:
         return (self.x, self.y, self.z)[i]

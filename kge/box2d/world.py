@@ -29,9 +29,11 @@ of them: creating or destroying anything raises
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Callable
 from typing import Any
 
 from kge.box2d.body import b2Body, b2BodyDef
+from kge.box2d.broadphase import b2ContactManager
 from kge.box2d.callbacks import (
     b2ContactFilter,
     b2ContactListener,
@@ -113,7 +115,8 @@ class b2World:
         #: contacts a pre-solve saw before their begin was delivered (same object later)
         self._pending: dict[Pair, b2Contact] = {}
         self._locked = False
-        self._hooks = False  # pre/post-solve hooks installed
+        self._hooks = False  # colliders hooked for pre/post-solve
+        self._hooked: set[str] = set()  # which of PreSolve, PostSolve kge calls back
         self._contactListener: b2ContactListener | None = None
         self._contactFilter: b2ContactFilter | None = None
         self.destructionListener: b2DestructionListener | None = None
@@ -122,6 +125,9 @@ class b2World:
         self.continuousPhysics = True
         self.subStepping = False
         self.renderer: Any = None
+        self._steps = 0  # Steps taken (the broad phase view updates once per step)
+        self._fixture_changes = 0  # fixtures created or destroyed so far
+        self._contact_manager: b2ContactManager | None = None
         for name, value in kwargs.items():
             if not hasattr(type(self), name) and name not in self.__dict__:
                 raise KeywordError(f"b2World has no property {name!r}")
@@ -171,15 +177,27 @@ class b2World:
             raise ComponentTypeError(
                 f"b2World.contactListener must be a b2ContactListener or None, got {listener!r}")
         self._contactListener = listener
-        want = listener is not None and (
-            overrides(listener, b2ContactListener, "PreSolve")
-            or overrides(listener, b2ContactListener, "PostSolve"))
-        if want and not self._hooks:
-            self._hooks = True
-            self._physics.on_pre_solve(self._pre_solve)
-            self._physics.on_post_solve(self._post_solve)
+        self._sync_hooks(listener)
+
+    def _sync_hooks(self, listener: b2ContactListener | None) -> None:
+        """Hook kge's per-contact pre/post-solve for what ``listener`` overrides, and only
+        that: a Python call per contact per step is what costs most (PreSolve and PostSolve
+        separately; colliders are hooked while either is)."""
+        wanted = {name for name in ("PreSolve", "PostSolve")
+                  if listener is not None and overrides(listener, b2ContactListener, name)}
+        hooks: dict[str, tuple[Callable[[Any], None], Callable[[Any], Any]]] = {
+            "PreSolve": (self._pre_solve, self._physics.on_pre_solve),
+            "PostSolve": (self._post_solve, self._physics.on_post_solve)}
+        for name, (fn, register) in hooks.items():
+            if name in wanted and name not in self._hooked:
+                register(fn)
+            elif name not in wanted and name in self._hooked:
+                self._physics.remove_hook(fn)
+        self._hooked = wanted
+        if bool(wanted) != self._hooks:
+            self._hooks = bool(wanted)
             for f in self._fixtures.values():
-                f._col.contact_hooks = True
+                f._col.contact_hooks = self._hooks
 
     @property
     def contactFilter(self) -> b2ContactFilter | None:
@@ -283,6 +301,7 @@ class b2World:
         fixture = b2Fixture(body, entity, col, shape, defn.userData, defn.density)
         self._fixtures[entity] = fixture
         body._fixtures.append(fixture)
+        self._fixture_changes += 1
         return fixture
 
     def _destroy_fixture(self, fixture: b2Fixture) -> None:
@@ -297,6 +316,7 @@ class b2World:
                 if listener is not None:
                     self._call(listener.EndContact, contact)
         fixture._destroyed = True
+        self._fixture_changes += 1
         fixture.body._fixtures.remove(fixture)
         del self._fixtures[fixture.entity]
         self._kworld.despawn(fixture.entity)
@@ -453,6 +473,7 @@ class b2World:
             self._system.process(dt)
         finally:
             self._locked = False
+            self._steps += 1
         self._deliver()
 
     def _deliver(self) -> None:
@@ -522,9 +543,7 @@ class b2World:
             return
         contact._set_geometry(pre.normal, pre.points, pre.separation)
         contact.enabled = True
-        old = contact._last_manifold
-        contact._last_manifold = contact.manifold
-        listener.PreSolve(contact, old)
+        listener.PreSolve(contact, contact._remember_manifold())
         pre.enabled = bool(contact.enabled)
         pre.tangent_speed = float(contact.tangentSpeed)
         if contact._friction is not None:
@@ -583,6 +602,29 @@ class b2World:
             return True if f is None else bool(callback.ReportFixture(f))
 
         self._physics.query_aabb(aabb.lowerBound.tuple, aabb.upperBound.tuple, report)
+
+    # -- broad phase -----------------------------------------------------------------------------
+    @property
+    def contactManager(self) -> b2ContactManager:
+        """The broad phase and contacts as pybox2d shows them (see kge.box2d.broadphase)."""
+        if self._contact_manager is None:
+            self._contact_manager = b2ContactManager(self)
+        return self._contact_manager
+
+    def GetTreeHeight(self) -> int:
+        return self.contactManager.broadPhase.treeHeight
+
+    def GetTreeBalance(self) -> int:
+        return self.contactManager.broadPhase.treeBalance
+
+    def GetTreeQuality(self) -> float:
+        return self.contactManager.broadPhase.treeQuality
+
+    def GetAllowSleeping(self) -> bool:
+        return self.allowSleeping
+
+    def SetAllowSleeping(self, flag: bool) -> None:
+        self.allowSleeping = flag
 
     # -- misc ----------------------------------------------------------------------------------
     def DrawDebugData(self) -> None:

@@ -10,6 +10,7 @@ import pytest
 
 import kge.box2d as b2
 from kge.box2d.errors import KeywordError
+from kge.components.shapes import Edge
 from kge.errors import KgeError, ValidationError, WorldLockedError
 
 
@@ -32,7 +33,7 @@ def test_position_and_velocity_are_live_vectors_of_the_body() -> None:
     assert body.position.x == 3.0
     vel.x = 2.0
     assert body.linearVelocity.x == 2.0
-    assert type(pos + (1, 0)) is b2.b2Vec2  # arithmetic gives plain vectors
+    assert type(pos + b2.b2Vec2(1, 0)) is b2.b2Vec2  # arithmetic gives plain vectors
     body.position += (1, 0)
     assert body.position.x == 4.0
 
@@ -146,6 +147,7 @@ def test_edge_shapes_take_ghost_vertices() -> None:
     assert edge.vertices == [(0.0, 0.0), (1.0, 0.0)] and edge.vertexCount == 3
     assert not edge.hasVertex0 and edge.hasVertex3 and edge.vertex3 == (2, 1)
     shape = edge.to_kge()
+    assert isinstance(shape, Edge)
     assert shape.vertex0 is None and shape.vertex3 == (2.0, 1.0)
     edge = b2.b2EdgeShape(vertices=[(-1, 0), (0, 0), (1, 0)])
     assert edge.hasVertex0 and not edge.hasVertex3

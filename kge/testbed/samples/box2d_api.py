@@ -35,12 +35,19 @@ class Program(Script):
 
     def on_start(self) -> None:
         self.b2world.renderer = KgeDraw(self.world, thickness=self.thickness)
-        self.b2world.DrawDebugData()
+        self.draw()
 
     def on_fixed_update(self, dt: float) -> None:
         self.b2world.Step(dt, self.velocity, self.position)
         self.steps += 1
+        self.draw()
+
+    def draw(self) -> None:
+        """One frame of debug drawing, framed by StartDraw/EndDraw as pybox2d's testbed does."""
+        renderer = self.b2world.renderer
+        renderer.StartDraw()
         self.b2world.DrawDebugData()
+        renderer.EndDraw()
 
 
 def _program(world: World, build: Callable[[], b2.b2World], **kw: Any) -> None:
