@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 from kge.box2d.testbed.keys import key_code
 
 if TYPE_CHECKING:
-    from kge.box2d.testbed.framework import Backend
+    from kge.box2d.testbed.framework import Backend, Framework
 
 #: frames a headless run steps when none are asked for (10 s at 60 Hz)
 HEADLESS_FRAMES = 600
@@ -53,6 +53,16 @@ def parse_presses(text: str) -> list[Press]:
         press.code  # noqa: B018 - an unknown key name fails here, not mid-run
         out.append(press)
     return out
+
+
+def press_scripted(test: Framework, presses: list[Press], frame: int) -> None:
+    """Before ``frame``: release the presses that end there, then press those that start."""
+    for press in presses:
+        if press.ups_at(frame):
+            test.KeyUp(press.code)
+    for press in presses:
+        if press.downs_at(frame):
+            test.KeyDown(press.code)
 
 
 def default_backend() -> Backend:

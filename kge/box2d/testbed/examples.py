@@ -107,7 +107,7 @@ def _framework(engine: str) -> ModuleType:
 
 
 @contextlib.contextmanager
-def bound(engine: str = "kge", folder: Path | None = None) -> Iterator[ModuleType]:
+def bound(engine: str = "kge", folder: Path | None = None) -> Iterator[Any]:
     """``sys.modules`` arranged for running examples on ``engine`` (see the module notes);
     yields the framework module they will import."""
     if engine not in ENGINES:

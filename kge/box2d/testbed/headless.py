@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from time import perf_counter
 from typing import TYPE_CHECKING, Any
 
-from kge.box2d.testbed.backends import Press
+from kge.box2d.testbed.backends import Press, press_scripted
 
 if TYPE_CHECKING:
     from kge.box2d.testbed.framework import Framework
@@ -72,12 +72,7 @@ class HeadlessBackend:
         self.test = test
         started = perf_counter()
         for frame in range(self.frames):
-            for press in self.presses:
-                if press.ups_at(frame):
-                    test.KeyUp(press.code)
-            for press in self.presses:
-                if press.downs_at(frame):
-                    test.KeyDown(press.code)
+            press_scripted(test, self.presses, frame)
             test.Frame()
             self.frames_run = frame + 1
             elapsed = perf_counter() - started

@@ -7,7 +7,8 @@ a world measured in pixels (a camera of 1 px per unit), so the test's own view
 (``viewCenter``, ``viewZoom``, z / x, the arrow keys) is what moves the picture.
 Text from ``Print`` and ``DrawStringAt`` becomes screen-space ``Text``.
 
-Events: keys go to the framework (its own keys, then the test's ``Keyboard`` /
+Events: scripted presses (``presses``) are handed to the framework at their frame, as
+headless; real keys go to the framework (its own keys, then the test's ``Keyboard`` /
 ``KeyboardUp``; Esc closes), the left button picks a body with a mouse joint
 (with shift: aims a bomb, launched on release), the right button drags the
 view, the wheel zooms. With ``headless=True`` the same App renders off screen
@@ -21,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 from kge.app import App
 from kge.box2d.draw import b2Color
-from kge.box2d.testbed.backends import Press
+from kge.box2d.testbed.backends import Press, press_scripted
 from kge.box2d.testbed.keys import FROM_KGE
 from kge.box2d.view import KgeDraw
 from kge.components import Behaviour, Script
@@ -34,7 +35,6 @@ from kge.world import World
 if TYPE_CHECKING:
     from kge.box2d.testbed.framework import Framework
 
-TO_KGE = {code: key for key, code in FROM_KGE.items()}
 #: text size (px) and the line colour when a test gives none
 TEXT_SIZE = 11.0
 
@@ -103,13 +103,7 @@ class TestDriver(Script):
         return self.world.resource(App)
 
     def on_fixed_update(self, dt: float) -> None:
-        keys = self.app.input
-        for press in self.presses:
-            code = TO_KGE.get(press.code)
-            if code is not None and press.ups_at(self.frame):
-                keys.release(code)
-            if code is not None and press.downs_at(self.frame):
-                keys.press(code)
+        press_scripted(self.test, self.presses, self.frame)
         self.test.Frame()
         self.frame += 1
 
