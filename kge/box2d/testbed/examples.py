@@ -150,3 +150,4 @@ def run(name: str, backend: Any, engine: str = "kge", argv: list[str] | None = N
         finally:
             sys.argv = old_argv
             vars(framework)["backend"] = None
+            settings.reset()  # what the run changed does not leak into the next

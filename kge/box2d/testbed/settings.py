@@ -6,6 +6,7 @@ object is shared by the framework and the running example; :func:`reset` puts
 the defaults back before a run. :func:`parse` reads pybox2d's command-line
 options (``--hz 30``, ``--no-drawStats``, ``--drawAABBs``...) into it.
 
+>>> reset()
 >>> fwSettings.hz, fwSettings.velocityIterations, fwSettings.positionIterations
 (60.0, 8, 3)
 >>> parse(["--hz", "30", "--drawAABBs", "--no-drawStats", "car"])
