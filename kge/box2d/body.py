@@ -372,6 +372,20 @@ class b2Body:
 
     def ResetMassData(self) -> None:
         self._rb.mass = None
+        self._mass_changed()
+
+    def _mass_changed(self) -> None:
+        """The fixtures (so the centre of mass) changed: as Box2D's ResetMassData, the
+        centre's velocity becomes that of its new point, ``v += w x (c_new - c_old)``
+        (kge's physics did that to its body already; the component catches up now, so
+        ``linearVelocity`` reads it before the next step, as in pybox2d)."""
+        rb = self._rb
+        if rb.type is not BodyType.DYNAMIC or not rb.angular_velocity or self._world._locked:
+            return
+        center = self.worldCenter
+        live = self._world._physics.velocity_at_point(self._entity, (center.x, center.y))
+        if live != tuple(rb.velocity):
+            rb.velocity = live
 
     @property
     def localCenter(self) -> b2Vec2:

@@ -302,6 +302,7 @@ class b2World:
         self._fixtures[entity] = fixture
         body._fixtures.append(fixture)
         self._fixture_changes += 1
+        body._mass_changed()
         return fixture
 
     def _destroy_fixture(self, fixture: b2Fixture) -> None:
@@ -321,6 +322,8 @@ class b2World:
         del self._fixtures[fixture.entity]
         self._kworld.despawn(fixture.entity)
         self._kworld.flush()
+        if not fixture.body._destroyed:
+            fixture.body._mass_changed()
 
     # -- joints --------------------------------------------------------------------------------
     @property

@@ -183,3 +183,18 @@ def test_vec3_and_matrices_as_box2d() -> None:
     c = b2.b2Color(0.2, 0.4, 0.6)
     c *= 2
     assert c == pytest.approx((0.4, 0.8, 1.2)) and b2.b2Color(1, 0.5, 0).bytes == [255, 127, 0]
+
+
+def test_destroying_a_fixture_moves_the_centre_s_velocity_as_reset_mass_data() -> None:
+    """Box2D's ResetMassData keeps every point's velocity: the centre's becomes that of
+    its new place, v += w x dc (pybox2d 2.3.10: (0.531754, 3.9645) here), at once."""
+    world = b2.b2World(gravity=(0, 0))
+    halves = (b2.b2PolygonShape(box=(0.5, 0.5, (-0.5, 0), 0)),
+              b2.b2PolygonShape(box=(0.5, 0.5, (0.5, 0), 0)))
+    body = world.CreateDynamicBody(shapes=halves, shapeFixture=b2.b2FixtureDef(density=1))
+    body.angularVelocity = -8.0
+    world.Step(1 / 60, 8, 3)
+    body.DestroyFixture(body.fixtures[1])
+    assert tuple(body.linearVelocity) == pytest.approx((0.531754, 3.9645), abs=1e-4)
+    body.CreatePolygonFixture(box=(0.5, 0.5, (0.5, 0), 0), density=1)
+    assert tuple(body.linearVelocity) == pytest.approx((0.0, 0.0), abs=1e-9)
