@@ -1,5 +1,5 @@
 """Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
-command), ``kge testbed``, ``kge bench``.
+command), ``kge testbed``, ``kge bench``, ``kge export`` (a standalone build).
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -68,11 +68,18 @@ def _new(args: list[str]) -> int:
     return new_main(args)
 
 
+def _export(args: list[str]) -> int:
+    from kge.export.cli import main as export_main
+
+    return export_main(args)
+
+
 COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
     "new": (_new, "create a small game project with a test: kge new NAME"),
     "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
     "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
+    "export": (_export, "a standalone build of a game project: kge export [PROJECT]"),
 }
 
 
