@@ -508,7 +508,7 @@ class b2Joint:
         return float(self._comp.reaction_torque)
 
     def ShiftOrigin(self, newOrigin: Any) -> None:
-        """Nothing to do: kge joints keep no world-space state (world.ShiftOrigin moves bodies)."""
+        """Nothing to do: kge joints keep no world-space state to shift."""
 
     def Dump(self) -> None:
         print(repr(self))

@@ -95,10 +95,10 @@ def _take_box2d() -> dict[str, ModuleType]:
 def _framework(engine: str) -> ModuleType:
     """kge's framework module bound to the ``Box2D`` now in ``sys.modules`` (one per engine)."""
     if engine not in _FRAMEWORKS:
-        from kge.box2d.testbed import framework
-
+        # a private copy per engine, from the file (importing kge.box2d.testbed.framework
+        # would bind that module to whichever Box2D happens to be installed now)
         spec = importlib.util.spec_from_file_location(
-            f"kge.box2d.testbed._framework_{engine}", framework.__file__)
+            f"kge.box2d.testbed._framework_{engine}", Path(__file__).with_name("framework.py"))
         assert spec is not None and spec.loader is not None
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
