@@ -198,3 +198,29 @@ def test_destroying_a_fixture_moves_the_centre_s_velocity_as_reset_mass_data() -
     assert tuple(body.linearVelocity) == pytest.approx((0.531754, 3.9645), abs=1e-4)
     body.CreatePolygonFixture(box=(0.5, 0.5, (0.5, 0), 0), density=1)
     assert tuple(body.linearVelocity) == pytest.approx((0.0, 0.0), abs=1e-9)
+
+
+def test_install_sets_a_real_pybox2d_aside_and_uninstall_brings_it_back() -> None:
+    import sys
+    from types import ModuleType
+
+    import kge.box2d
+
+    saved = {k: sys.modules.get(k) for k in ("Box2D", "Box2D.b2", "Box2D.Box2D")}
+    real = ModuleType("Box2D")  # stands for pybox2d, imported before kge.box2d.install()
+    sys.modules["Box2D"] = real
+    try:
+        kge.box2d.install()
+        import Box2D
+
+        assert Box2D is kge.box2d
+        kge.box2d.uninstall()
+        import Box2D as again
+
+        assert again is real
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                sys.modules.pop(k, None)
+            else:
+                sys.modules[k] = v
