@@ -19,9 +19,9 @@ from typing import Any
 import pytest
 
 from kge.box2d.testbed import examples
-from kge.box2d.testbed.backends import Press
 from kge.box2d.testbed.headless import HeadlessBackend
 from kge.box2d.testbed.keys import key_code
+from kge.box2d.testbed.presses import Press
 
 NAMES = examples.names()
 

@@ -14,8 +14,8 @@ import pytest
 
 from kge.box2d.testbed import examples, settings
 from kge.box2d.testbed.__main__ import main
-from kge.box2d.testbed.backends import Press, parse_presses
 from kge.box2d.testbed.headless import HeadlessBackend
+from kge.box2d.testbed.presses import Press, parse_presses
 
 
 def _run(build: Any, frames: int, presses: list[Press] | None = None,

@@ -15,7 +15,8 @@ import sys
 from typing import Any
 
 from kge.box2d.testbed import examples, settings
-from kge.box2d.testbed.backends import HEADLESS_FRAMES, parse_presses
+from kge.box2d.testbed.backends import HEADLESS_FRAMES
+from kge.box2d.testbed.presses import parse_presses
 
 
 def parser() -> argparse.ArgumentParser:

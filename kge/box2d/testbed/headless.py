@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from time import perf_counter
 from typing import TYPE_CHECKING, Any
 
-from kge.box2d.testbed.backends import Press, press_scripted
+from kge.box2d.testbed.presses import Press, press_scripted
 
 if TYPE_CHECKING:
     from kge.box2d.testbed.framework import Framework

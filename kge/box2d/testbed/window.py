@@ -22,8 +22,8 @@ from typing import TYPE_CHECKING, Any
 
 from kge.app import App
 from kge.box2d.draw import b2Color
-from kge.box2d.testbed.backends import Press, press_scripted
 from kge.box2d.testbed.keys import FROM_KGE
+from kge.box2d.testbed.presses import Press, press_scripted
 from kge.box2d.view import KgeDraw
 from kge.components import Behaviour, Script
 from kge.components.camera import Camera
