@@ -55,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
     backend = make_backend(args, presses)
     try:
         examples.run(args.name, backend, args.engine, apply=args)
-    except FileNotFoundError as e:
+    except (FileNotFoundError, ModuleNotFoundError) as e:  # no such example; no pybox2d
         print(e, file=sys.stderr)
         return 2
     report(args.name, backend)

@@ -1,0 +1,99 @@
+"""pybox2d's testbed examples on pybox2d and on kge.box2d, in one run.
+
+Every example of the installed pybox2d wheel runs headless through
+``kge.box2d.testbed`` (the same framework stand-in for both engines) for
+``frames`` frames, pressing each key its source handles (held 20 frames, one
+every 40 frames from frame 60) and then space. A row gives, per engine, whether
+it ran to the end and its seconds; then the frame rate ratio. Then the two
+examples whose outcome the side-by-side tests compare: where the one-sided
+platform's character is after 3 s, and where the breakable body's pieces rest.
+
+``python -m benchmarks.box2d_examples [FRAMES]`` prints the markdown kept in
+``benchmarks/results/box2d_examples.md``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import re
+import sys
+import time
+from typing import Any
+
+from kge.box2d.testbed import examples
+from kge.box2d.testbed.headless import HeadlessBackend
+from kge.box2d.testbed.keys import key_code
+from kge.box2d.testbed.presses import Press
+
+
+def presses(name: str) -> list[Press]:
+    """Each key the example's source names (``Keys.K_*``), then space."""
+    text = examples.find(name).read_text()
+    keys = []
+    for key in sorted(set(re.findall(r"Keys\.K_(\w+)", text))):
+        with contextlib.suppress(KeyError):
+            key_code(key)
+            keys.append(key)
+    return [Press(60 + 40 * i, key, hold=20) for i, key in enumerate([*keys, "SPACE"])]
+
+
+def run(name: str, engine: str, frames: int, backend: Any = None) -> tuple[Any, float, str]:
+    """(backend, seconds, error or "") of one example on one engine."""
+    backend = backend or HeadlessBackend(frames, presses(name))
+    started = time.perf_counter()
+    try:
+        with contextlib.redirect_stdout(io.StringIO()):
+            examples.run(name, backend, engine)
+    except Exception as e:  # reported in the table
+        return backend, time.perf_counter() - started, f"{type(e).__name__}: {e}"
+    return backend, time.perf_counter() - started, ""
+
+
+class _Traced(HeadlessBackend):
+    def run(self, test: Any) -> None:
+        self.test = test
+        for _ in range(self.frames):
+            test.Frame()
+            self.frames_run += 1
+
+
+def outcomes() -> list[str]:
+    """The one-sided platform's character height and the breakable pieces' rest."""
+    rows = []
+    for engine in examples.ENGINES:
+        backend, _, error = run("one_sided_platform", engine, 180, _Traced(180))
+        body = backend.test.character.body
+        rows.append(f"| one-sided platform, character y at 3 s | {engine} | "
+                    f"{body.position.y:.3f} m{' ' + error if error else ''} |")
+    for engine in examples.ENGINES:
+        backend, _, error = run("breakable", engine, 240, _Traced(240))
+        pieces = sorted((b.position.x, b.position.y) for b in backend.test.world.bodies
+                        if b.type == 2)
+        where = ", ".join(f"({x:.2f}, {y:.2f})" for x, y in pieces)
+        rows.append(f"| breakable, pieces at 4 s | {engine} | {where} |")
+    return rows
+
+
+def table(frames: int = 600) -> str:
+    lines = [f"pybox2d's testbed examples, {frames} frames each, headless, keys pressed:", "",
+             "| example | pybox2d | kge.box2d | kge / pybox2d frame rate |", "|---|---|---|---|"]
+    done = dict.fromkeys(examples.ENGINES, 0)
+    for name in examples.names():
+        cells, seconds = [], {}
+        for engine in examples.ENGINES:
+            backend, spent, error = run(name, engine, frames)
+            ran = not error and backend.frames_run == frames
+            done[engine] += ran
+            seconds[engine] = spent
+            cells.append(f"ran, {spent:.1f} s" if ran else f"stopped: {error}")
+        ratio = seconds["pybox2d"] / seconds["kge"] if seconds["kge"] > 0 else 0.0
+        lines.append(f"| {name} | {cells[0]} | {cells[1]} | {ratio:.2f}x |")
+    lines += ["", f"ran to the end: pybox2d {done['pybox2d']}, kge.box2d {done['kge']} "
+              f"of {len(examples.names())}", "",
+              "| outcome | engine | value |", "|---|---|---|", *outcomes()]
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(table(int(sys.argv[1]) if sys.argv[1:] else 600))
