@@ -11,6 +11,7 @@ from typing import Any
 
 import pytest
 
+import kge.box2d as b2
 from kge.box2d.testbed import examples
 from kge.box2d.testbed.headless import HeadlessBackend
 
@@ -64,10 +65,24 @@ def test_breakable_body_splits_on_impact_and_its_pieces_stop_where_pybox2d_s_do(
         assert abs(kx - rx) < 0.4 and abs(ky - ry) < 0.05
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "needs kge's physics (branch physics-contact): a 50 m/s circle stops 4.5 cm inside the "
-    "platform and a resting one sinks, so the example's PreSolve check (bottom above the "
-    "top - 3 linear slops) turns the contact off and the character falls through"))
+def _fast_impacts_stop_at_the_surface() -> bool:
+    """Does kge's physics stop a 50 m/s circle at a box's surface, as Box2D does? (Not
+    yet: it goes 17 cm in before it is pushed out; being fixed in kge's physics.)"""
+    world = b2.b2World(gravity=(0, -10))
+    world.CreateStaticBody(position=(0, -1), shapes=b2.b2PolygonShape(box=(5, 1)))
+    ball = world.CreateDynamicBody(position=(0, 2), linearVelocity=(0, -50))
+    ball.CreateCircleFixture(radius=0.5, density=1)
+    lowest = 1.0
+    for _ in range(30):
+        world.Step(1 / 60, 8, 3)
+        lowest = min(lowest, ball.position.y - 0.5)
+    return lowest > -2.0 * b2.b2_polygonRadius
+
+
+@pytest.mark.xfail(not _fast_impacts_stop_at_the_surface(), strict=True, reason=(
+    "kge's physics stops a 50 m/s circle inside the platform, so the example's PreSolve "
+    "check (bottom above the top - 3 linear slops) turns the contact off and the "
+    "character falls through"))
 def test_one_sided_platform_holds_the_character_as_pybox2d_does() -> None:
     runs = _both("one_sided_platform", 180,
                  lambda t: (t.character.body.position.y, t.character.body.awake))
