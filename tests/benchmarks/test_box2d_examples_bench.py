@@ -24,3 +24,11 @@ def test_an_example_runs_on_both_engines() -> None:
         backend, seconds, error = box2d_examples.run("breakable", engine, 110)
         assert error == "" and backend.frames_run == 110 and seconds > 0
         assert backend.test.broke  # b at frame 60
+
+
+def test_the_sleep_cell_counts_awake_bodies_and_the_frame_all_slept() -> None:
+    # the breakable body lands at frame 166, breaks, and its two pieces rest by frame 300
+    assert box2d_examples.sleep_cell("breakable", "kge", 100) == "1 of 1 awake"  # falling
+    cell = box2d_examples.sleep_cell("breakable", "pybox2d", 330)
+    assert cell.startswith("0 of 2 awake, all asleep from frame ")
+    assert 250 < int(cell.rsplit(" ", 1)[1]) < 330

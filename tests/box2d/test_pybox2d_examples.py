@@ -13,27 +13,19 @@ from __future__ import annotations
 import contextlib
 import io
 import math
-import re
 from typing import Any
 
 import pytest
 
 from kge.box2d.testbed import examples
 from kge.box2d.testbed.headless import HeadlessBackend
-from kge.box2d.testbed.keys import key_code
 from kge.box2d.testbed.presses import Press
 
 NAMES = examples.names()
 
 
 def _keys(name: str) -> list[str]:
-    text = examples.find(name).read_text()
-    found = []
-    for key in sorted(set(re.findall(r"Keys\.K_(\w+)", text))):
-        with contextlib.suppress(KeyError):
-            key_code(key)
-            found.append(key)
-    return [*found, "SPACE"]
+    return [*examples.keys_handled(name), "SPACE"]
 
 
 def run(name: str, presses: list[Press], frames: int, engine: str = "kge") -> Any:

@@ -1,6 +1,7 @@
-"""pybox2d's one-sided platform and breakable body examples, run unmodified on pybox2d and
-on kge.box2d in the same test (the same framework stand-in, the same frames), must end
-the same way."""
+"""pybox2d programs run unmodified on pybox2d and on kge.box2d in the same test must end the
+same way: the one-sided platform and breakable body examples (the same framework
+stand-in, the same frames), which examples' bodies fall asleep and when, and where a
+50 m/s impact stops."""
 
 from __future__ import annotations
 
@@ -65,6 +66,25 @@ def test_breakable_body_splits_on_impact_and_its_pieces_stop_where_pybox2d_s_do(
         assert abs(kx - rx) < 0.4 and abs(ky - ry) < 0.05
 
 
+def _drop(box2d: Any, bullet: bool, onto_dynamic: bool) -> float:
+    """The deepest a circle (r = 0.5) thrown down at 50 m/s gets into the top of a box
+    (negative: inside it) in 30 steps: a static box, or a dynamic box lying on the ground."""
+    world = box2d.b2World(gravity=(0, -10))
+    if onto_dynamic:
+        world.CreateStaticBody(position=(0, -3), shapes=box2d.b2PolygonShape(box=(50, 1)))
+        box = world.CreateDynamicBody(position=(0, -1))
+        box.CreatePolygonFixture(box=(5, 1), density=1)
+    else:
+        box = world.CreateStaticBody(position=(0, -1), shapes=box2d.b2PolygonShape(box=(5, 1)))
+    ball = world.CreateDynamicBody(position=(0, 2), linearVelocity=(0, -50), bullet=bullet)
+    ball.CreateCircleFixture(radius=0.5, density=1)
+    lowest = 9.0
+    for _ in range(30):
+        world.Step(1 / 60, 8, 3)
+        lowest = min(lowest, ball.position.y - 0.5 - (box.position.y + 1))
+    return lowest
+
+
 def _fast_impacts_stop_at_the_surface() -> bool:
     """Does kge's physics stop a 50 m/s circle at a box's surface, as Box2D does? (Not
     yet: it goes 17 cm in before it is pushed out; being fixed in kge's physics.)"""
@@ -79,6 +99,29 @@ def _fast_impacts_stop_at_the_surface() -> bool:
     return lowest > -2.0 * b2.b2_polygonRadius
 
 
+_SURFACE_XFAIL = pytest.mark.xfail(
+    not _fast_impacts_stop_at_the_surface(), strict=True,
+    reason="kge's physics stops a 50 m/s circle 17 cm inside a static box (time of impact "
+           "against static bodies and for bullets is being added to kge's physics)")
+
+
+@pytest.mark.parametrize(("onto_dynamic", "bullet"), [
+    pytest.param(False, False, marks=_SURFACE_XFAIL, id="static-box"),
+    pytest.param(False, True, marks=_SURFACE_XFAIL, id="static-box-bullet"),
+    pytest.param(True, True, marks=_SURFACE_XFAIL, id="dynamic-box-bullet"),
+    pytest.param(True, False, id="dynamic-box"),
+])
+def test_a_50_m_s_impact_stops_where_pybox2d_s_does(onto_dynamic: bool, bullet: bool) -> None:
+    """Box2D's time of impact stops a body at a static one's surface, and a bullet at a
+    dynamic one's too; a plain body hitting a dynamic one goes in and is pushed out."""
+    ref = _drop(examples.pybox2d_module(), bullet, onto_dynamic)
+    got = _drop(b2, bullet, onto_dynamic)
+    slop = b2.b2_linearSlop
+    # pybox2d: +4.4 mm (above), +4.6 mm (bullet on the dynamic box), -189 mm (plain on it)
+    assert (got > -slop) == (ref > -slop), (got, ref)
+    assert got == pytest.approx(ref, abs=0.02)
+
+
 @pytest.mark.xfail(not _fast_impacts_stop_at_the_surface(), strict=True, reason=(
     "kge's physics stops a 50 m/s circle inside the platform, so the example's PreSolve "
     "check (bottom above the top - 3 linear slops) turns the contact off and the "
@@ -91,3 +134,59 @@ def test_one_sided_platform_holds_the_character_as_pybox2d_does() -> None:
     for (ky, _), (ry, _) in zip(runs["kge"].trace, ref, strict=True):
         assert ky == pytest.approx(ry, abs=0.02)
     assert not runs["kge"].trace[-1][1]
+
+
+def _jointed_islands_sleep() -> bool:
+    """Does kge's physics put a prismatic-jointed body at rest to sleep, as Box2D does?
+    (Not yet: every joint write restarts Chipmunk's sleep clock; being fixed in kge's
+    physics.)"""
+    world = b2.b2World(gravity=(0, -10))
+    ground = world.CreateStaticBody(shapes=b2.b2EdgeShape(vertices=[(-5, 0), (5, 0)]))
+    body = world.CreateDynamicBody(position=(0, 0.5))
+    body.CreatePolygonFixture(box=(0.5, 0.5), density=1)
+    world.CreatePrismaticJoint(bodyA=ground, bodyB=body, anchor=(0, 0.5), axis=(1, 0))
+    for _ in range(90):
+        world.Step(1 / 60, 8, 3)
+    return not body.awake
+
+
+_JOINT_SLEEP_XFAIL = pytest.mark.xfail(
+    not _jointed_islands_sleep(), strict=True,
+    reason="kge's physics keeps bodies held by prismatic, distance, pulley, weld or wheel "
+           "joints awake (being fixed in kge's physics)")
+
+
+def _awake(test: Any) -> int:
+    return sum(1 for body in test.world.bodies if body.type == 2 and body.awake)
+
+
+def _asleep_from(trace: list[int]) -> int:
+    """The first frame from which no dynamic body was awake (len(trace) if none)."""
+    return max((i for i, n in enumerate(trace) if n), default=-1) + 1
+
+
+@pytest.mark.parametrize(("name", "frames"), [
+    ("box_cutter", 330),  # pybox2d: all asleep from frame 279
+    ("breakable", 330),  # 291
+    ("confined", 90),  # 29
+    pytest.param("body_types", 120, marks=_JOINT_SLEEP_XFAIL),  # 64: a prismatic joint
+    pytest.param("pulley", 330, marks=_JOINT_SLEEP_XFAIL),  # 238
+    pytest.param("apply_force", 90, marks=pytest.mark.xfail(strict=True, reason=(
+        "a damped body never sleeps on kge: Chipmunk's velocity setters, which kge's "
+        "damping uses each substep, restart the body's sleep clock"))),  # 29
+    pytest.param("collision_filtering", 180, marks=pytest.mark.xfail(strict=True, reason=(
+        "the box held on the ground by a prismatic joint creeps at 2 cm/s on kge"))),  # 103
+    pytest.param("top_down_car", 660, marks=pytest.mark.xfail(strict=True, reason=(
+        "an impulse every step (the tyres' friction) restarts Chipmunk's sleep clock; "
+        "Box2D's only wakes a sleeping body"))),  # 599
+])
+def test_the_example_falls_asleep_as_on_pybox2d(name: str, frames: int) -> None:
+    """Left alone (no key pressed), every dynamic body of the example falls asleep on
+    both engines, at about the same frame (Box2D: the island's bodies at rest 0.5 s)."""
+    runs = _both(name, frames, _awake)
+    ref, got = runs["pybox2d"].trace, runs["kge"].trace
+    assert ref[-1] == 0 and _asleep_from(ref) < frames  # the example's own outcome
+    assert got[-1] == 0, f"{got[-1]} bodies awake at frame {frames}"
+    # kge's bodies come to rest along other paths (its integrator and solver are
+    # pymunk's): pybox2d's pulley sleeps from frame 238, kge.box2d's from 262
+    assert abs(_asleep_from(got) - _asleep_from(ref)) <= max(30, _asleep_from(ref) // 4)

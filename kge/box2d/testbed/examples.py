@@ -27,6 +27,7 @@ from typing import Any
 
 import kge.box2d
 from kge.box2d.testbed import settings
+from kge.box2d.testbed.keys import key_code
 from kge.box2d.wheel import pybox2d_dir
 
 ENGINES = ("kge", "pybox2d")
@@ -71,6 +72,16 @@ def find(name: str, folder: Path | None = None) -> Path:
     return path
 
 
+def keys_handled(name: str) -> list[str]:
+    """The keys example ``name``'s source handles (``Keys.K_*`` that exist), sorted."""
+    found = []
+    for key in sorted(set(re.findall(r"Keys\.K_(\w+)", find(name).read_text()))):
+        with contextlib.suppress(KeyError):
+            key_code(key)
+            found.append(key)
+    return found
+
+
 def _pybox2d_modules() -> dict[str, ModuleType]:
     """The real pybox2d's modules, imported once (kge.box2d set aside meanwhile)."""
     if not _PYBOX2D:
@@ -84,6 +95,12 @@ def _pybox2d_modules() -> dict[str, ModuleType]:
             _take_box2d()
             sys.modules.update(saved)
     return _PYBOX2D
+
+
+def pybox2d_module() -> ModuleType:
+    """The real pybox2d's ``Box2D`` module, to compare with kge.box2d in one process (it is
+    imported once and kept out of ``sys.modules``: ``import Box2D`` is not changed)."""
+    return _pybox2d_modules()["Box2D"]
 
 
 def _take_box2d() -> dict[str, ModuleType]:
