@@ -169,6 +169,8 @@ def _asleep_from(trace: list[int]) -> int:
     ("box_cutter", 330),  # pybox2d: all asleep from frame 279
     ("breakable", 330),  # 291
     ("confined", 90),  # 29
+    ("edge_test", 90),  # never: its box may not sleep (allowSleep=False)
+    ("character_collision", 90),  # never: the same for its four characters
     pytest.param("body_types", 120, marks=_JOINT_SLEEP_XFAIL),  # 64: a prismatic joint
     pytest.param("pulley", 330, marks=_JOINT_SLEEP_XFAIL),  # 238
     pytest.param("apply_force", 90, marks=pytest.mark.xfail(strict=True, reason=(
@@ -181,12 +183,15 @@ def _asleep_from(trace: list[int]) -> int:
         "Box2D's only wakes a sleeping body"))),  # 599
 ])
 def test_the_example_falls_asleep_as_on_pybox2d(name: str, frames: int) -> None:
-    """Left alone (no key pressed), every dynamic body of the example falls asleep on
-    both engines, at about the same frame (Box2D: the island's bodies at rest 0.5 s)."""
+    """Left alone (no key pressed), the example's dynamic bodies fall asleep on both
+    engines at about the same frame (Box2D: the island's bodies at rest 0.5 s), or stay
+    awake on both."""
     runs = _both(name, frames, _awake)
     ref, got = runs["pybox2d"].trace, runs["kge"].trace
-    assert ref[-1] == 0 and _asleep_from(ref) < frames  # the example's own outcome
-    assert got[-1] == 0, f"{got[-1]} bodies awake at frame {frames}"
+    assert got[-1] == ref[-1], f"{got[-1]} bodies awake at frame {frames}, pybox2d {ref[-1]}"
+    if ref[-1]:
+        assert min(got) == min(ref)  # (the bodies that may not sleep never did)
+        return
     # kge's bodies come to rest along other paths (its integrator and solver are
     # pymunk's): pybox2d's pulley sleeps from frame 238, kge.box2d's from 262
     assert abs(_asleep_from(got) - _asleep_from(ref)) <= max(30, _asleep_from(ref) // 4)
