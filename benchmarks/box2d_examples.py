@@ -78,6 +78,8 @@ def sleep_cell(name: str, engine: str, frames: int) -> str:
     if error:
         return f"stopped: {error}"
     dynamic = sum(1 for b in backend.test.world.bodies if b.type == 2)
+    if not dynamic:
+        return "no dynamic body"
     last = max((i for i, n in enumerate(backend.awake) if n), default=-1)
     since = f", all asleep from frame {last + 1}" if last + 1 < frames else ""
     return f"{backend.awake[-1]} of {dynamic} awake{since}"

@@ -173,9 +173,7 @@ def _asleep_from(trace: list[int]) -> int:
     ("character_collision", 90),  # never: the same for its four characters
     pytest.param("body_types", 120, marks=_JOINT_SLEEP_XFAIL),  # 64: a prismatic joint
     pytest.param("pulley", 330, marks=_JOINT_SLEEP_XFAIL),  # 238
-    pytest.param("apply_force", 90, marks=pytest.mark.xfail(strict=True, reason=(
-        "a damped body never sleeps on kge: Chipmunk's velocity setters, which kge's "
-        "damping uses each substep, restart the body's sleep clock"))),  # 29
+    ("apply_force", 90),  # 29: its ship is damped
     pytest.param("collision_filtering", 180, marks=pytest.mark.xfail(strict=True, reason=(
         "the box held on the ground by a prismatic joint creeps at 2 cm/s on kge"))),  # 103
     pytest.param("top_down_car", 660, marks=pytest.mark.xfail(strict=True, reason=(

@@ -25,6 +25,26 @@ def test_free_body_sleeps_after_half_a_second(zero_g: Sim) -> None:
     assert step is not None and abs(step - 30) <= 5
 
 
+@pytest.mark.parametrize(("linear", "angular"), [(0.5, 0.0), (0.0, 2.0), (0.5, 2.0)])
+def test_a_damped_body_sleeps_after_half_a_second(zero_g: Sim, linear: float, angular: float) -> None:
+    """Damping used to restart the body's sleep clock every substep (pybox2d's
+    apply_force example: its damped ship never slept)."""
+    e = zero_g.dynamic(Box(0.5, 0.5), body=RigidBody(linear_damping=linear, angular_damping=angular))
+    step = _asleep_step(zero_g, e)
+    assert step is not None and abs(step - 30) <= 5
+
+
+def test_a_damped_body_slows_down_then_sleeps(sim: Sim) -> None:
+    sim.ground()
+    e = sim.dynamic(Box(0.5, 0.5), 0.0, 0.515,
+                    body=RigidBody(velocity=(2.0, 0.0), linear_damping=2.0), friction=0.0)
+    sim.step(60)
+    assert 0.5 < sim.t(e).x < 1.0 and sim.rb(e).awake  # damped: 1 m undamped by now
+    step = _asleep_step(sim, e, 400)
+    assert step is not None
+    assert sim.t(e).x < 1.05  # Box2D's 2 m/s under c = 2 coasts 1 m in all
+
+
 def test_slow_drifter_sleeps_and_freezes(zero_g: Sim) -> None:
     slow = zero_g.dynamic(Box(0.5, 0.5), body=RigidBody(velocity=(0.009, 0.0)))
     fast = zero_g.dynamic(Box(0.5, 0.5), 5.0, body=RigidBody(velocity=(0.011, 0.0)))
