@@ -85,30 +85,10 @@ def _drop(box2d: Any, bullet: bool, onto_dynamic: bool) -> float:
     return lowest
 
 
-def _fast_impacts_stop_at_the_surface() -> bool:
-    """Does kge's physics stop a 50 m/s circle at a box's surface, as Box2D does? (Not
-    yet: it goes 17 cm in before it is pushed out; being fixed in kge's physics.)"""
-    world = b2.b2World(gravity=(0, -10))
-    world.CreateStaticBody(position=(0, -1), shapes=b2.b2PolygonShape(box=(5, 1)))
-    ball = world.CreateDynamicBody(position=(0, 2), linearVelocity=(0, -50))
-    ball.CreateCircleFixture(radius=0.5, density=1)
-    lowest = 1.0
-    for _ in range(30):
-        world.Step(1 / 60, 8, 3)
-        lowest = min(lowest, ball.position.y - 0.5)
-    return lowest > -2.0 * b2.b2_polygonRadius
-
-
-_SURFACE_XFAIL = pytest.mark.xfail(
-    not _fast_impacts_stop_at_the_surface(), strict=True,
-    reason="kge's physics stops a 50 m/s circle 17 cm inside a static box (time of impact "
-           "against static bodies and for bullets is being added to kge's physics)")
-
-
 @pytest.mark.parametrize(("onto_dynamic", "bullet"), [
-    pytest.param(False, False, marks=_SURFACE_XFAIL, id="static-box"),
-    pytest.param(False, True, marks=_SURFACE_XFAIL, id="static-box-bullet"),
-    pytest.param(True, True, marks=_SURFACE_XFAIL, id="dynamic-box-bullet"),
+    pytest.param(False, False, id="static-box"),
+    pytest.param(False, True, id="static-box-bullet"),
+    pytest.param(True, True, id="dynamic-box-bullet"),
     pytest.param(True, False, id="dynamic-box"),
 ])
 def test_a_50_m_s_impact_stops_where_pybox2d_s_does(onto_dynamic: bool, bullet: bool) -> None:
@@ -122,10 +102,6 @@ def test_a_50_m_s_impact_stops_where_pybox2d_s_does(onto_dynamic: bool, bullet: 
     assert got == pytest.approx(ref, abs=0.02)
 
 
-@pytest.mark.xfail(not _fast_impacts_stop_at_the_surface(), strict=True, reason=(
-    "kge's physics stops a 50 m/s circle inside the platform, so the example's PreSolve "
-    "check (bottom above the top - 3 linear slops) turns the contact off and the "
-    "character falls through"))
 def test_one_sided_platform_holds_the_character_as_pybox2d_does() -> None:
     runs = _both("one_sided_platform", 180,
                  lambda t: (t.character.body.position.y, t.character.body.awake))
@@ -134,26 +110,6 @@ def test_one_sided_platform_holds_the_character_as_pybox2d_does() -> None:
     for (ky, _), (ry, _) in zip(runs["kge"].trace, ref, strict=True):
         assert ky == pytest.approx(ry, abs=0.02)
     assert not runs["kge"].trace[-1][1]
-
-
-def _jointed_islands_sleep() -> bool:
-    """Does kge's physics put a prismatic-jointed body at rest to sleep, as Box2D does?
-    (Not yet: every joint write restarts Chipmunk's sleep clock; being fixed in kge's
-    physics.)"""
-    world = b2.b2World(gravity=(0, -10))
-    ground = world.CreateStaticBody(shapes=b2.b2EdgeShape(vertices=[(-5, 0), (5, 0)]))
-    body = world.CreateDynamicBody(position=(0, 0.5))
-    body.CreatePolygonFixture(box=(0.5, 0.5), density=1)
-    world.CreatePrismaticJoint(bodyA=ground, bodyB=body, anchor=(0, 0.5), axis=(1, 0))
-    for _ in range(90):
-        world.Step(1 / 60, 8, 3)
-    return not body.awake
-
-
-_JOINT_SLEEP_XFAIL = pytest.mark.xfail(
-    not _jointed_islands_sleep(), strict=True,
-    reason="kge's physics keeps bodies held by prismatic, distance, pulley, weld or wheel "
-           "joints awake (being fixed in kge's physics)")
 
 
 def _awake(test: Any) -> int:
@@ -171,8 +127,8 @@ def _asleep_from(trace: list[int]) -> int:
     ("confined", 90),  # 29
     ("edge_test", 90),  # never: its box may not sleep (allowSleep=False)
     ("character_collision", 90),  # never: the same for its four characters
-    pytest.param("body_types", 120, marks=_JOINT_SLEEP_XFAIL),  # 64: a prismatic joint
-    pytest.param("pulley", 330, marks=_JOINT_SLEEP_XFAIL),  # 238
+    ("body_types", 120),  # 64: a prismatic joint
+    ("pulley", 330),  # 238
     ("apply_force", 90),  # 29: its ship is damped
     pytest.param("collision_filtering", 180, marks=pytest.mark.xfail(strict=True, reason=(
         "the box held on the ground by a prismatic joint creeps at 2 cm/s on kge"))),  # 103
