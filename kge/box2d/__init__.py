@@ -53,6 +53,29 @@ def install() -> None:
     sys.modules["Box2D.b2"] = short
 
 
+def real_pybox2d() -> dict[str, ModuleType]:
+    """The real pybox2d's ``Box2D`` modules when it is imported (in ``sys.modules``, or set
+    aside by :func:`install`), else ``{}``."""
+    top = sys.modules.get("Box2D")
+    if isinstance(top, ModuleType) and not top.__name__.startswith("kge.box2d"):
+        return {k: m for k, m in sys.modules.items()
+                if (k == "Box2D" or k.startswith("Box2D.")) and not k.startswith("Box2D.examples")}
+    return dict(_replaced) if "Box2D" in _replaced else {}
+
+
+def keep_real_pybox2d(modules: dict[str, ModuleType]) -> None:
+    """Leave the real pybox2d's ``modules`` where a later ``import Box2D`` finds them: in
+    ``sys.modules`` when nothing is there, else set aside for :func:`uninstall`. pybox2d
+    cannot be imported twice in a process (its SWIG types keep the first import's
+    classes: a body of one copy refuses the other's ``b2FixtureDef``)."""
+    if "Box2D" not in sys.modules:
+        sys.modules.update(modules)
+    else:
+        for name in _NAMES:
+            if name in modules:
+                _replaced.setdefault(name, modules[name])
+
+
 def uninstall() -> None:
     """Undo :func:`install` (modules imported since keep what they imported): ``Box2D``
     is again what it was before (the real pybox2d if it was imported, else nothing)."""

@@ -85,6 +85,10 @@ def keys_handled(name: str) -> list[str]:
 def _pybox2d_modules() -> dict[str, ModuleType]:
     """The real pybox2d's modules, imported once (kge.box2d set aside meanwhile)."""
     if not _PYBOX2D:
+        known = kge.box2d.real_pybox2d()  # pybox2d cannot be imported twice: reuse it
+        if known:
+            _PYBOX2D.update(known)
+            return _PYBOX2D
         saved = _take_box2d()
         try:
             if importlib.util.find_spec("Box2D") is None:
@@ -94,6 +98,7 @@ def _pybox2d_modules() -> dict[str, ModuleType]:
         finally:
             _take_box2d()
             sys.modules.update(saved)
+        kge.box2d.keep_real_pybox2d(_PYBOX2D)
     return _PYBOX2D
 
 
@@ -129,12 +134,13 @@ def bound(engine: str = "kge", folder: Path | None = None) -> Iterator[Any]:
     yields the framework module they will import."""
     if engine not in ENGINES:
         raise ValueError(f"engine must be one of {ENGINES}, got {engine!r}")
+    real = _pybox2d_modules() if engine == "pybox2d" else {}  # (before Box2D is taken)
     saved = _take_box2d()
     try:
         if engine == "kge":
             kge.box2d.install()
         else:
-            sys.modules.update(_pybox2d_modules())
+            sys.modules.update(real)
         framework = _framework(engine)
         package = ModuleType("Box2D.examples")
         package.__path__ = [str(folder or examples_dir() or ".")]
@@ -147,6 +153,8 @@ def bound(engine: str = "kge", folder: Path | None = None) -> Iterator[Any]:
     finally:
         _take_box2d()
         sys.modules.update(saved)
+        if _PYBOX2D:
+            kge.box2d.keep_real_pybox2d(_PYBOX2D)
 
 
 def run(name: str, backend: Any, engine: str = "kge", argv: list[str] | None = None,
