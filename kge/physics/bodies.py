@@ -9,7 +9,9 @@ Box2D rules implemented here, each kept off the hot path when unused:
 
 * gravity scale and damping (``v *= max(0, 1 - c*dt)`` per fixed step) live in a
   ``velocity_func`` installed only on bodies that need it, guarded so that it
-  never touches a kinematic body;
+  never touches a kinematic body; it damps through Chipmunk's own damping
+  argument, not its velocity setters (each of which restarts the body's sleep
+  clock: damped bodies never slept);
 * every pymunk call that can abort the process is wrapped: :func:`sleep_island` checks
   that sleeping is enabled, the body is dynamic and in the space (it is never
   called inside a step, because sync-in runs between steps).
@@ -219,11 +221,29 @@ def scaled_gravity(gx: float, gy: float, scale: float) -> tuple[float, float]:
 
 
 def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float) -> None:
-    """velocity_func with gravity scale and Box2D damping (factors precomputed per substep)."""
+    """velocity_func with gravity scale and Box2D damping (factors precomputed per substep).
+
+    Box2D: ``v' = lin * (v + dt * (g + f/m))`` and ``w' = ang * (w + dt * t/I)``.
+    Chipmunk's integrator gives ``v' = d * v + dt * (g' + f/m)`` and ``w' = d * w +
+    dt * t/I`` for a damping ``d`` and gravity ``g'`` of our choosing: with ``d =
+    ang`` and ``g'`` taking up the rest of the linear result, both are Box2D's
+    when no torque acts, without a velocity setter (each one restarts the body's
+    sleep clock, so damped bodies never slept). With a torque (whose setter woke
+    the body anyway) the result is damped after the integration.
+    """
     if body.body_type != DYNAMIC:
         return
     scale, lin, ang = body.kge_dynamics
-    pymunk.Body.update_velocity(body, scaled_gravity(gravity.x, gravity.y, scale), 1.0, dt)
+    gx, gy = scaled_gravity(gravity.x, gravity.y, scale)
+    if body.torque == 0.0:
+        v, f, inv_mass = body.velocity, body.force, 1.0 / body.mass
+        g = (
+            (lin - ang) * v.x / dt + lin * gx + (lin - 1.0) * f.x * inv_mass,
+            (lin - ang) * v.y / dt + lin * gy + (lin - 1.0) * f.y * inv_mass,
+        )
+        pymunk.Body.update_velocity(body, g, ang, dt)
+        return
+    pymunk.Body.update_velocity(body, (gx, gy), 1.0, dt)
     if lin != 1.0:
         body.velocity = body.velocity * lin
     if ang != 1.0:

@@ -72,6 +72,8 @@ def build_shapes(
         shape = pymunk.Poly(body, flush_points(geom.vertices), radius=skin)
     else:
         shape = pymunk.Segment(body, flush_point(geom.v1), flush_point(geom.v2), skin)
+        if geom.vertex0 is not None or geom.vertex3 is not None:
+            shape.set_neighbors(*edge_neighbors(geom))
     # what apply_material does, minus the writes a fresh shape does not need
     # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
     vars(shape).update(attrs)
@@ -82,6 +84,14 @@ def build_shapes(
     if collider.sensor:
         shape.sensor = True
     return [shape]
+
+
+def edge_neighbors(edge: Edge) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Chipmunk's neighbours of a lone edge: its ghost vertices, or its own ends
+    where it has none (which Chipmunk reads as "no neighbour", as for a chain's ends)."""
+    prev = edge.vertex0 if edge.vertex0 is not None else edge.v1
+    nxt = edge.vertex3 if edge.vertex3 is not None else edge.v2
+    return flush_point(prev), flush_point(nxt)
 
 
 def _attrs(collider: Collider, collider_entity: int, body_entity: int | None) -> dict[str, object]:
@@ -140,7 +150,8 @@ def rebuild_in_place(
     if isinstance(geom, Chain):
         ends = chain_ends(geom.vertices, geom.loop)
     elif isinstance(geom, Edge):
-        ends = ([flush_point(geom.v1)], [flush_point(geom.v2)])
+        prev, nxt = edge_neighbors(geom)
+        ends = ([flush_point(geom.v1)], [flush_point(geom.v2)], [prev], [nxt])
     else:
         raise TypeError(f"rebuild_in_place: {type(geom).__name__} is not made of segments")
     segments = cast(list[pymunk.Segment], shapes)

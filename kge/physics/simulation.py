@@ -365,7 +365,10 @@ class Simulation:
             self._rebuild_poses()
         for e in sorted(self.no_sleep):
             rec = self.bodies.get(e)
-            if rec is not None and rec.body.is_sleeping:
+            if rec is not None and rec.in_space:
+                # Box2D's allowSleep=False: the body's time at rest stays 0, so neither it
+                # nor its island sleeps; Chipmunk's clock restarts with each activation
+                # (waking it only once it slept let it doze off every 0.5 s)
                 rec.body.activate()
 
     @without_gc  # a tile map's 100,000s of new static shapes (see kge.gcpause)
