@@ -17,10 +17,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from pymunk._chipmunk import lib
 
 from kge.components.rigidbody import RigidBody
 from kge.errors import ValidationError
+from kge.physics.cp import body_handle, lib
 from kge.physics.tiny import TINY
 from kge.physics.writeback import set_all, slot_setter
 
@@ -106,7 +106,7 @@ def set_velocities(physics: Physics, entities: Any, velocities: Any, angular: An
     # every body moves and is in the space (the usual case): the pose table has its
     # RigidBody and whether it sleeps, so nothing is looked up body by body
     slots = np.array(found, dtype=np.intp)
-    cbs = [r.body._body for r in recs]
+    cbs = [body_handle(r.body) for r in recs]
     pairs = list(zip(v[:, 0].tolist(), v[:, 1].tolist(), strict=True))
     sleepers = np.flatnonzero(table.asleep[slots] & table.dynamic[slots]).tolist()
     set_all(_set_velocity, cbs, pairs)  # (Chipmunk's setter wakes a sleeping body)
@@ -144,7 +144,7 @@ def _one_by_one(physics: Physics, ents: list[int], recs: list[Any], v: np.ndarra
     sim = physics._sim
     table = sim.poses
     for k, (e, rec) in enumerate(zip(ents, recs, strict=True)):
-        cb = rec.body._body
+        cb = body_handle(rec.body)
         if _get_type(cb) == _STATIC:
             continue
         pair = (float(v[k, 0]), float(v[k, 1]))

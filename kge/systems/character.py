@@ -129,7 +129,7 @@ class CharacterSystem(System):
         #: the characters (entity, body, transform, rigid body, collider) by entity, made
         #: again when one of those components comes or goes on a character (hooks below)
         self._roster: list[tuple[int, CharacterBody, Transform, Any, Any]] | None = None
-        self._entities: set[int] = set()
+        self._members: set[int] = set()
         #: collision bits by Filter object (filters are frozen; assigning one replaces it)
         self._bits: dict[int, tuple[Any, tuple[int, int, int]]] = {}
         world.on_add(CharacterBody, self._character_added)
@@ -207,7 +207,7 @@ class CharacterSystem(System):
         self._roster = None
 
     def _part_changed(self, entity: int, component: Any) -> None:
-        if entity in self._entities or self.world.try_get(entity, CharacterBody) is not None:
+        if entity in self._members or self.world.try_get(entity, CharacterBody) is not None:
             self._roster = None
             made = self.auto.get(entity)
             if made is not None and made[0] is component:  # the game gave it another
@@ -223,7 +223,7 @@ class CharacterSystem(System):
                 key=lambda row: row[0],
             )
             self._roster = roster
-            self._entities = {row[0] for row in roster}
+            self._members = {row[0] for row in roster}
         return roster
 
     def _bits_of(self, col: Collider | None) -> tuple[int, int, int]:

@@ -30,6 +30,7 @@ from pymunk._chipmunk import lib as _raw
 #: name -> (C signature under pymunk 7.3, the public pymunk API it stands for)
 FUNCTIONS: dict[str, tuple[str, str]] = {
     "CP_BODY_TYPE_DYNAMIC": ("0", "pymunk.Body.DYNAMIC"),
+    "CP_BODY_TYPE_STATIC": ("2", "pymunk.Body.STATIC"),
     "cpArbiterGetBodies": (
         "void(*)(struct cpArbiter *, struct cpBody * *, struct cpBody * *)",
         "Arbiter.bodies",
