@@ -338,6 +338,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.particles_lights import game_lines
 
         out += game_lines(report["game"])
+    if report.get("features"):
+        from benchmarks.features import feature_lines
+
+        out += feature_lines(report["features"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -484,6 +488,15 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
+    features: dict[str, Any] = {}
+    if not args.no_game and not args.scene:  # per-frame costs of game-layer features
+        from benchmarks.features import feature_lines, run_features
+
+        features, why = run_features(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        print("\n".join(feature_lines(features)))
     tiles: dict[str, float] = {}
     if not args.scene:
         from benchmarks import tilemap
@@ -496,6 +509,13 @@ def main(argv: list[str] | None = None) -> int:
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
+    if features:
+        from benchmarks.features import feature_targets
+
+        for what, value, goal, unit in feature_targets(features):
+            met = None if value is None else value <= goal
+            goals.append({"target": what, "value": value, "goal": goal, "at_most": True,
+                          "unit": unit, "met": met})
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -518,6 +538,7 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "features": features,
         "targets": goals,
         "skipped": skipped,
     }

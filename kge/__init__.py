@@ -133,6 +133,7 @@ from kge.systems.physics import PhysicsPlugin
 from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
+from kge.timings import SystemTimings
 from kge.world import World
 
 # isort: split
@@ -434,3 +435,18 @@ __all__ += [
     "Wipe",
     "focus",
 ]
+
+# -- debug tools (docs/debug.md): gizmos, console, live inspector, system timings --
+if TYPE_CHECKING:
+    from kge.debug import Console, ConsoleError, DebugPlugin, Gizmos, Inspector
+
+_LAZY.update(
+    {
+        "Console": "kge.debug",
+        "ConsoleError": "kge.debug",
+        "DebugPlugin": "kge.debug",
+        "Gizmos": "kge.debug",
+        "Inspector": "kge.debug",
+    }
+)
+__all__ += ["Console", "ConsoleError", "DebugPlugin", "Gizmos", "Inspector", "SystemTimings"]

@@ -551,6 +551,7 @@ class App(Host):
         schedule.run(Stage.UPDATE, game_dt)
         schedule.run(Stage.LATE, game_dt)
         log.end_frame()
+        schedule.end_frame()
 
     def _run_scene_ops(self) -> None:
         """Make the queued scene changes in order; one asked for while another is being

@@ -246,6 +246,7 @@ class Input:
     _pads: _Edges = field(default_factory=_Edges)  # codes: (pad index, button)
     _fixed: bool = False
     _muted: bool = False
+    _captured: bool = False
     modifiers: int = 0
     mouse_screen: Vec2 = (0.0, 0.0)
     mouse_world: Vec2 = (0.0, 0.0)
@@ -257,7 +258,7 @@ class Input:
 
     # -- keys --------------------------------------------------------------------------
     def held(self, key: int) -> bool:
-        return key in self._keys.down_now(self._muted)
+        return key in self._keys.down_now(self._off)
 
     def pressed(self, key: int) -> bool:
         return key in self._keys.edges(self._view)[0]
@@ -266,7 +267,7 @@ class Input:
         return key in self._keys.edges(self._view)[1]
 
     def any_held(self, *keys: int) -> bool:
-        held = self._keys.down_now(self._muted)
+        held = self._keys.down_now(self._off)
         return any(k in held for k in keys)
 
     def any_pressed(self, *keys: int) -> bool:
@@ -283,7 +284,7 @@ class Input:
 
     # -- mouse -------------------------------------------------------------------------
     def mouse_held(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons.down_now(self._muted)
+        return button in self._buttons.down_now(self._off)
 
     def mouse_pressed(self, button: int = Mouse.LEFT) -> bool:
         return button in self._buttons.edges(self._view)[0]
@@ -294,7 +295,7 @@ class Input:
     # -- gamepads ----------------------------------------------------------------------
     def pad_held(self, button: str, pad: int | None = None) -> bool:
         """Is ``button`` down on gamepad ``pad`` (any pad when None)?"""
-        return self._pad_in(self._pads.down_now(self._muted), button, pad)
+        return self._pad_in(self._pads.down_now(self._off), button, pad)
 
     def pad_pressed(self, button: str, pad: int | None = None) -> bool:
         return self._pad_in(self._pads.edges(self._view)[0], button, pad)
@@ -305,7 +306,7 @@ class Input:
     def pad_axis_value(self, axis: str, pad: int | None = None) -> float:
         """The raw value of ``axis`` on ``pad`` (any pad: the one pushed furthest)."""
         _check_axis(axis)
-        if self._muted:
+        if self._off:
             return 0.0
         if pad is not None:
             gp = self.gamepads.get(pad)
@@ -475,7 +476,29 @@ class Input:
     @property
     def _view(self) -> bool | None:
         """Which edges queries see: fixed step (True), frame (False), none (muted)."""
-        return None if self._muted else self._fixed
+        return None if self._off else self._fixed
+
+    @property
+    def _off(self) -> bool:
+        return self._muted or self._captured
+
+    @property
+    def captured(self) -> bool:
+        """True when :meth:`capture` hid the input from the game for this frame."""
+        return self._captured
+
+    def capture(self) -> None:
+        """Hide every key, button and axis from the game until this frame ends (the
+        in-game console, a modal debug view): queries answer "nothing", edges included.
+
+        >>> from kge.keys import Key
+        >>> inp = Input(); inp.press(Key.A); inp.capture()
+        >>> inp.held(Key.A), inp.pressed(Key.A)
+        (False, False)
+        >>> inp.end_frame(); inp.held(Key.A)
+        True
+        """
+        self._captured = True
 
     @contextmanager
     def muted(self, on: bool = True) -> Iterator[None]:
@@ -502,6 +525,7 @@ class Input:
     def end_frame(self) -> None:
         """Forget this frame's edges, events, text and scroll (the App calls it)."""
         self._fixed = False
+        self._captured = False
         for edges in (self._keys, self._buttons, self._pads):
             edges.end_frame()
         self.scroll = (0.0, 0.0)
@@ -513,6 +537,7 @@ class Input:
         for edges in (self._keys, self._buttons, self._pads):
             edges.reset()
         self._fixed = False
+        self._captured = False
         self.scroll = (0.0, 0.0)
         self.text = ""
         self.events.clear()

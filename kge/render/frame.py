@@ -175,7 +175,9 @@ class WorldView:
             self.debug.meshes.poser.write(poses)
         shown = settings is not None and settings.stats
         self.stats.update(
-            shown, viewport[1], self.stat_values() if shown else {}, throttle=not self.app.headless
+            shown, viewport[1], self.stat_values() if shown else {}, throttle=not self.app.headless,
+            lines=self.timing_lines() if shown and settings is not None and settings.timings
+            else None,
         )
         passes = self.world.try_resource(RenderPasses)
         if passes is None:
@@ -208,6 +210,17 @@ class WorldView:
         values["contacts"] = len(self._touching)
         values["sprites"] = f"{len(self.sprites) - self.culled}/{len(self.sprites)}"
         return values
+
+    def timing_lines(self, top: int = 10) -> list[str]:
+        """The slowest systems of the world, one line each (the stats overlay's table)."""
+        timings = self.world.schedule.timings
+        if timings is None:
+            return ["system timings are off (F4)"]
+        rows = timings.rows(top)
+        lines = [f"{'systems':<6} {f'{timings.frame_ms():.2f} ms/frame':<24} "
+                 f"{'avg ms':>8} {'peak ms':>8}"]  # fmt: skip
+        lines += [f"{r.stage:<6} {r.name:<24.24} {r.average:8.3f} {r.peak:8.3f}" for r in rows]
+        return lines
 
     # -- fixed-step hooks ----------------------------------------------------------------------
     def after_step(self, seconds: float) -> None:

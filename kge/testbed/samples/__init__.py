@@ -7,6 +7,7 @@ from kge.testbed.samples import (  # noqa: F401
     box2d_api,
     collision,
     collision_module,
+    debug_tools,
     determinism,
     joints,
     large,
