@@ -28,6 +28,7 @@ from kge.particles.curves import color_table, life_index, size_table
 from kge.particles.grid import StaticGrid
 from kge.particles.pool import ParticlePool
 from kge.particles.shapes import sample_shape
+from kge.snapshot import carry_running
 
 Pose = tuple[float, float, float]
 #: prewarm is simulated in steps of this many seconds
@@ -221,6 +222,7 @@ class EmitterState:
             self.elapsed += PREWARM_STEP
 
 
+@carry_running
 class Particles:
     """The particle system's resource: every emitter's state, and the code API.
 
@@ -241,6 +243,17 @@ class Particles:
         self.grid_dirty = True
         #: grid cell size (metres) for particle collisions
         self.cell = 0.1
+
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[int, EmitterState]:
+        """Every emitter's state (particles, emission bookkeeping, random generator)."""
+        return dict(self.states)
+
+    def import_running(self, states: dict[int, EmitterState]) -> None:
+        """Continue the emitters of a restored world from their snapshotted states."""
+        for entity, st in states.items():
+            if self.world.exists(entity) and self.world.has(entity, ParticleEmitter):
+                self.states[entity] = st
 
     def state(self, entity: int) -> EmitterState:
         em = self._emitter(entity, "state")

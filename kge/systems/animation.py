@@ -37,6 +37,7 @@ from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.scene import Time
 from kge.schedule import Stage, System, SystemSet
+from kge.snapshot import carry_running
 from kge.systems.behaviour import BehaviourRunner
 from kge.world import World, deprecate_resource, stored_resource
 
@@ -47,6 +48,7 @@ deprecate_resource(
 )
 
 
+@carry_running
 class Animations:
     """Every Animator of a world as numpy rows (a resource): what the systems and the
     renderer share, and what game code can ask (``frame(entity)``, ``clip(entity)``)."""
@@ -55,6 +57,8 @@ class Animations:
         self.world = world
         self.state = ClipState(ClipTable())
         self._compacted_at = self._table_at = -1
+        #: entity -> (clip, time, finished, fresh) from a snapshot, applied at the next sync
+        self._carried: dict[int, tuple[str, float, bool, bool]] = {}
         self.dirty: set[int] = set()
         self._new: list[int] = []
         self._serials: dict[int, int] = {}
@@ -122,10 +126,40 @@ class Animations:
             for entity in sorted(self.dirty):
                 self._sync_one(entity)
             self.dirty.clear()
+        if self._carried:
+            self._continue_carried()
         if self.state.version != self._compacted_at or self.table.version != self._table_at:
             self.state.compact()  # rows or clips came or went: drop clips nobody plays
             self.table.ensure()
             self._compacted_at, self._table_at = self.state.version, self.table.version
+
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[int, tuple[str, float, bool, bool]]:
+        """Each animator's clip and where it is in it."""
+        self.sync()
+        state, out = self.state, {}
+        for entity, row in state.rows.items():
+            anim = self.world.try_get(entity, Animator)
+            if anim is not None:
+                out[entity] = (str(anim.current), float(state.time[row]),
+                               bool(state.finished[row]), bool(state.fresh[row]))  # fmt: skip
+        return out
+
+    def import_running(self, carried: dict[int, tuple[str, float, bool, bool]]) -> None:
+        """Animators of a restored world go on from where they were (at the next sync)."""
+        self._carried = dict(carried)
+
+    def _continue_carried(self) -> None:
+        state = self.state
+        for entity, (clip, time, finished, fresh) in sorted(self._carried.items()):
+            row = state.rows.get(entity)
+            anim = self.world.try_get(entity, Animator)
+            if row is None or anim is None or str(anim.current) != clip:
+                continue  # gone, or playing another clip since: it starts afresh
+            state.seek(row, time)
+            state.finished[row] = finished
+            state.fresh[row] = fresh
+        self._carried.clear()
 
     def _sync_one(self, entity: int) -> None:
         anim = self.world.try_get(entity, Animator)
