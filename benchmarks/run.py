@@ -512,10 +512,10 @@ def main(argv: list[str] | None = None) -> int:
     if features:
         from benchmarks.features import feature_targets
 
-        for what, value, goal, unit in feature_targets(features):
-            met = None if value is None else value <= goal
-            goals.append({"target": what, "value": value, "goal": goal, "at_most": True,
-                          "unit": unit, "met": met})
+        for f_name, f_value, f_goal, f_unit in feature_targets(features):
+            goals.append({"target": f_name, "value": f_value, "goal": f_goal, "at_most": True,
+                          "unit": f_unit,
+                          "met": None if f_value is None else f_value <= f_goal})  # fmt: skip
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)

@@ -138,6 +138,7 @@ from kge.world import World
 
 # isort: split
 # -- UI, scenes and input actions (docs/ui-scenes-input.md) --
+from kge.action_clock import ActionPressed, ActionReleased
 from kge.actions import InputMap, UnknownActionError
 from kge.components.ui import (
     Button,
@@ -406,6 +407,8 @@ __all__ = [
 
 # UI, scenes and input actions (docs/ui-scenes-input.md)
 __all__ += [
+    "ActionPressed",
+    "ActionReleased",
     "Button",
     "ButtonClicked",
     "Crossfade",

@@ -346,6 +346,7 @@ class App(Host):
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
+        self.actions.clock.reset()
         try:
             scene.setup(world, **kwargs)
             world.flush()
@@ -402,6 +403,7 @@ class App(Host):
             raise SceneStackError("pop_scene() would leave the App with no scene")
         self._close_top()
         self.input.reset()
+        self.actions.clock.reset()
         scene, world = self._stack[-1]
         scene.on_resume(world)
 
@@ -485,7 +487,7 @@ class App(Host):
         if count < 0:
             raise ValidationError(f"App.step.n must be >= 0, got {count}")
         for _ in range(count):
-            self._frame(steps=1, game_dt=self.fixed_dt)
+            self._frame(steps=1, game_dt=self.fixed_dt, real_dt=self.fixed_dt)
             self._advance_transition(self.fixed_dt)
 
     def advance(self, frame_dt: float) -> int:
@@ -498,8 +500,9 @@ class App(Host):
         game_dt = self.timestep.frame_time(frame_dt)
         if self.paused and steps:
             game_dt = self.fixed_dt * steps  # a single step also advances update time
-        self._frame(steps, game_dt)
-        self._advance_transition(min(max(frame_dt, 0.0), self.timestep.max_frame_dt))
+        real_dt = min(max(frame_dt, 0.0), self.timestep.max_frame_dt)
+        self._frame(steps, game_dt, real_dt)
+        self._advance_transition(real_dt)
         return steps
 
     def _not_reentrant(self, op: str) -> None:
@@ -511,12 +514,13 @@ class App(Host):
                 "callback): schedule the work for the next frame instead"
             )
 
-    def _frame(self, steps: int, game_dt: float) -> None:
+    def _frame(self, steps: int, game_dt: float, real_dt: float) -> None:
         if not self._stack:
             raise RuntimeError("the App has no scene to run")
         self._in_frame = True
         try:
             self.input.refresh_world_position()
+            self.actions.update(real_dt)  # holds, taps, buffers, combos: real time
             top, *below = self._running_worlds()
             self._run_world(top, steps, game_dt, with_input=True)
             for world in below:
@@ -533,7 +537,8 @@ class App(Host):
         time = world.resource(Time)
         inp, schedule, log = self.input, world.schedule, world.eventlog
         log.begin_frame()
-        if with_input:  # input hooks and the UI
+        if with_input:  # action events and hooks, input hooks and the UI
+            self.actions.clock.deliver(world.emit)
             schedule.run(Stage.INPUT, game_dt)
         for _ in range(steps):
             if self._scene_ops:

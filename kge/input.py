@@ -46,13 +46,17 @@ from kge.validate import finite, integer, vec2
 
 Vec2 = tuple[float, float]
 
-#: gamepad buttons, with pyglet's (SDL's) names
+#: gamepad buttons, with pyglet's (SDL's) names; the triggers are buttons too, down
+#: past :data:`TRIGGER_DOWN` and up again under :data:`TRIGGER_UP` (no chatter)
 PAD_BUTTONS: frozenset[str] = frozenset(
     (
         "a", "b", "x", "y", "back", "start", "guide", "leftshoulder", "rightshoulder",
         "leftstick", "rightstick", "dpleft", "dpright", "dpup", "dpdown",
+        "lefttrigger", "righttrigger",
     )
 )  # fmt: skip
+TRIGGER_DOWN = 0.5
+TRIGGER_UP = 0.4
 #: gamepad axes: sticks in [-1, 1] (y up), triggers in [0, 1]
 PAD_AXES: frozenset[str] = frozenset(
     ("leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger")
@@ -367,6 +371,12 @@ class Input:
         if not lo <= v <= 1.0:  # NaN fails too
             raise ValidationError(f"gamepad {index} axis {axis!r}: {value!r} not in [{lo}, 1]")
         pad.axes[_check_axis(axis)] = v
+        if axis.endswith("trigger"):  # the trigger as a button
+            held = (index, axis) in self._pads.held
+            if not held and v >= TRIGGER_DOWN:
+                self.pad_press(index, axis)
+            elif held and v < TRIGGER_UP:
+                self.pad_release(index, axis)
 
     # -- feeding (window events or tests) ----------------------------------------------
     def press(self, key: int, modifiers: int = 0) -> None:

@@ -18,8 +18,6 @@ def _host(world: Any) -> Any:
 
     host = world.try_resource(Host) if world is not None else None
     if host is None:
-
-
         raise ConsoleError("this command needs an App (the world runs on its own)")
     return host
 
@@ -33,8 +31,6 @@ def inspector_of(world: World) -> Inspector:
 
 
 def _entity(text: str) -> int:
-
-
     try:
         return int(text)
     except ValueError:
@@ -50,8 +46,6 @@ def _split_path(path: str) -> tuple[int, str, str] | None:
 
 
 def _resolve_variable(console: Console, world: Any, name: str) -> tuple[Any, str]:
-
-
     var = console.get_variable(name)
     if var is None:
         known = ", ".join(console.variables) or "none"
@@ -79,7 +73,6 @@ def _show(value: Any) -> str:
 
 
 def _parse_like(current: Any, text: str, what: str) -> Any:
-
     from kge.editor.fields import FieldKind
 
     widget, choices = _plain_kind(what, current)
