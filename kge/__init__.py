@@ -76,7 +76,7 @@ from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
-from kge.components.tween import Delay, Parallel, Tween, TweenSequence
+from kge.components.tween import Call, Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
@@ -259,6 +259,7 @@ __all__ = [
     "BodyType",
     "Box",
     "BurstOnHit",
+    "Call",
     "Camera",
     "CameraShake",
     "Chain",
