@@ -43,6 +43,7 @@ class SoundHandle:
         "_paused",
         "_pitch",
         "_player",
+        "_rate",
         "_stopped",
         "_volume",
         "bus",
@@ -69,6 +70,7 @@ class SoundHandle:
         self.bus = bus
         self._volume = in_range(volume, 0.0, 1.0, _OWNER, "volume")
         self._pitch = positive(pitch, _OWNER, "pitch")
+        self._rate = 1.0  # the game's time scale, for sounds that follow it
         self._loop = bool(loop)
         self._gain = 1.0
         self._pan = 0.0
@@ -161,7 +163,21 @@ class SoundHandle:
     def pitch(self, value: float) -> None:
         self._pitch = positive(value, _OWNER, "pitch")
         if self._player is not None:
-            self._player.pitch = self._pitch
+            self._player.pitch = self.rate
+
+    @property
+    def rate(self) -> float:
+        """What the player is told: ``pitch`` times the game's time scale when the sound
+        follows game time (``Audio.follow_game_time``), else ``pitch``."""
+        return self._pitch * self._rate
+
+    def set_time_scale(self, scale: float) -> None:
+        """Play at ``scale`` times its pitch (the audio system's, for game-time sounds)."""
+        scale = max(float(scale), 1e-3)  # a player cannot run at 0: the pause stops it
+        if scale != self._rate:
+            self._rate = scale
+            if self._player is not None:
+                self._player.pitch = self.rate
 
     @property
     def loop(self) -> bool:

@@ -19,7 +19,6 @@ over everything); both import pyglet only when a frame is drawn.
 
 from __future__ import annotations
 
-import weakref
 from typing import Any
 
 from kge.components.debug import DebugDraw
@@ -39,7 +38,9 @@ from kge.systems.animation import AnimationFrameStart, ShakeRestore
 from kge.systems.render import DebugKeys, RenderStepClock
 from kge.world import World
 
-_consoles: weakref.WeakKeyDictionary[Any, Console] = weakref.WeakKeyDictionary()
+#: the attribute of the App (Host) that holds its console: an attribute, not a table
+#: keyed by the App, so an App that is dropped is collected with its console
+_CONSOLE_ATTR = "_kge_console"
 
 #: keys the open console handles itself (everything else it swallows)
 _EDIT_KEYS = (Key.ENTER, Key.NUM_ENTER, Key.BACKSPACE, Key.TAB, Key.UP, Key.DOWN, Key.ESCAPE)
@@ -51,11 +52,11 @@ def console_for(world: World) -> Console:
     if found is not None:
         return found
     host = world.try_resource(Host)
-    console = _consoles.get(host) if host is not None else None
+    console = getattr(host, _CONSOLE_ATTR, None) if host is not None else None
     if console is None:
         console = Console()
         if host is not None:
-            _consoles[host] = console
+            setattr(host, _CONSOLE_ATTR, console)
             console.variable("time_scale", host, "time_scale", help="game time per real second")
             console.variable("paused", host, "paused", help="the game is paused")
         console.variable("gravity", PhysicsSettings, "gravity", help="m/s^2, this scene's")

@@ -1,0 +1,80 @@
+"""Random pitch and volume per play, voice limits, and sounds that follow game time
+(pause and time scale), checked on the players the silent driver keeps."""
+
+from __future__ import annotations
+
+import pytest
+
+from kge.assets import Assets
+from kge.audio import Audio
+from tests.audio.conftest import make_app, with_store
+
+
+def test_each_play_varies_its_pitch_and_volume_within_the_range(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    audio.rng.seed(7)
+    hs = [audio.play("beep.wav", pitch=2.0, volume=0.5, pitch_variation=0.1,
+                     volume_variation=0.2) for _ in range(20)]  # fmt: skip
+    pitches = [h.player.pitch for h in hs]
+    volumes = [h.volume for h in hs]
+    assert all(1.8 <= p <= 2.2 for p in pitches) and len(set(pitches)) == 20
+    assert all(0.4 <= v <= 0.5 for v in volumes) and len(set(volumes)) == 20
+    audio.rng.seed(7)
+    again = audio.play("beep.wav", pitch=2.0, volume=0.5, pitch_variation=0.1,
+                       volume_variation=0.2)  # fmt: skip
+    assert again.player.pitch == pitches[0]  # seeded: the same numbers
+    plain = audio.play("beep.wav", pitch=2.0)
+    assert plain.player.pitch == 2.0
+    with pytest.raises(ValueError, match="pitch_variation"):
+        audio.play("beep.wav", pitch_variation=1.5)
+    with pytest.raises(ValueError, match="volume_variation"):
+        audio.play("beep.wav", volume_variation=-0.1)
+
+
+def test_max_voices_stops_the_oldest(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    first = [audio.play("beep.wav", loop=True, max_voices=3) for _ in range(3)]
+    other = audio.play("blip.wav", loop=True)
+    fourth = audio.play("beep.wav", loop=True, max_voices=3)
+    assert first[0].finished and not first[1].finished and not first[2].finished
+    assert fourth.playing and other.playing  # another sound is not counted
+    live = [h for h in audio.mixer.handles if h.name == fourth.name]
+    assert len(live) == 3
+    audio.play("beep.wav", loop=True, max_voices=1)
+    assert len([h for h in audio.mixer.handles if h.name == fourth.name]) == 1
+    with pytest.raises(ValueError, match="max_voices"):
+        audio.play("beep.wav", max_voices=0)
+
+
+def test_game_time_sounds_pause_with_the_game_and_follow_its_time_scale(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    audio.follow_game_time = True
+    h = audio.play("beep.wav", loop=True, pitch=1.5)
+    paused_by_me = audio.play("blip.wav", loop=True)
+    paused_by_me.pause()
+    app.time_scale = 0.5
+    app.advance(1 / 60)
+    assert h.player.pitch == pytest.approx(0.75) and h.pitch == 1.5
+    app.paused = True
+    app.advance(1 / 60)
+    assert h.paused and not h.player.playing
+    app.paused = False
+    app.advance(1 / 60)
+    assert h.playing and h.player.playing
+    assert paused_by_me.paused  # the game's pause never resumes what you paused
+    app.time_scale = 1.0
+    app.advance(1 / 60)
+    assert h.player.pitch == pytest.approx(1.5)
+
+
+def test_sounds_ignore_game_time_unless_asked(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    h = audio.play("beep.wav", loop=True)
+    app.time_scale = 0.5
+    app.paused = True
+    app.advance(1 / 60)
+    assert h.playing and h.player.pitch == 1.0  # menus and UI sounds play on
