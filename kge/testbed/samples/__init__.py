@@ -17,5 +17,6 @@ from kge.testbed.samples import (  # noqa: F401
     queries,
     stacking,
     tilemaps,
+    tween_control,
     ui,
 )
