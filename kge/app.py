@@ -123,6 +123,7 @@ class App(Host):
         self._applying = False
         self._closing = False
         self._leaving = 0  #: scenes a replace being made will close once its setup ends
+        self._swap_grows = 0  #: how the pending transition's change grows the stack
         self._in_frame = False
         self._running = False
         self.frame_count = 0
@@ -201,22 +202,35 @@ class App(Host):
         return [w for _, w in self._stack]
 
     def push_scene(
-        self, scene: SceneSource, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+        self,
+        scene: SceneSource,
+        *,
+        overlay: bool = False,
+        run_below: bool = False,
+        transition: Transition | None = None,
+        **kwargs: Any,
     ) -> None:
         """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
 
         ``overlay=True`` draws it over the scene below (a see-through pause menu);
         the scene below stays frozen, or keeps running (without input) when
         ``run_below=True``. Popping returns to it with its state intact.
+        ``transition`` plays over the push as it does for :meth:`replace_scene`
+        (the scene is pushed when the transition is due: a menu that fades in).
         """
         target = _as_scene(scene)
         if run_below and not overlay:
             raise ValueError("push_scene(run_below=True) needs overlay=True")
+        _check_transition(transition)
         keeps_running = run_below if overlay else None
-        self._schedule(+1, lambda: self._push(target, kwargs, overlay=keeps_running))
+        push = lambda: self._push(target, kwargs, overlay=keeps_running)  # noqa: E731
+        if transition is None:
+            self._schedule(+1, push)
+        else:
+            self._schedule(+1, self._transition_to(push, transition, +1))
 
-    def pop_scene(self) -> None:
-        """Close the top scene and resume the one below.
+    def pop_scene(self, *, transition: Transition | None = None) -> None:
+        """Close the top scene and resume the one below (behind ``transition`` if given).
 
         Refused with :class:`~kge.errors.SceneStackError` when it would pop the App's
         last scene (counting the changes already queued): change scene with
@@ -227,7 +241,23 @@ class App(Host):
                 "pop_scene() would leave the App with no scene: use replace_scene() to "
                 "change scene, or app.quit() to stop"
             )
-        self._schedule(-1, self._pop)
+        _check_transition(transition)
+        if transition is None:
+            self._schedule(-1, self._pop)
+        else:
+            self._schedule(-1, self._transition_to(self._pop, transition, -1))
+
+    def _transition_to(self, change: Callable[[], None], transition: Transition, grows: int
+                       ) -> Callable[[], None]:
+        """An op that starts ``transition``, which makes ``change`` (a push or a pop:
+        the stack ``grows`` by one or shrinks) when it is due."""
+
+        def begin() -> None:
+            self._swap = change
+            self._swap_grows = grows  # a pop is counted by _depth_when_queued until made
+            self.transition = ActiveTransition(transition)  # the newest one wins
+
+        return begin
 
     def replace_scene(
         self, scene: SceneSource, *, transition: Transition | None = None, **kwargs: Any
@@ -242,8 +272,7 @@ class App(Host):
         scene pushed over it meanwhile (a pause menu opened during the fade).
         """
         target = _as_scene(scene)
-        if transition is not None and not isinstance(transition, Transition):
-            raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
+        _check_transition(transition)
         grows = 0 if self._depth_when_queued() else 1
         if transition is None:
             self._schedule(grows, lambda: self._replace(target, kwargs, None))
@@ -252,6 +281,7 @@ class App(Host):
         def begin() -> None:  # in order with the changes queued before it
             leaving = self._stack[-1][1] if self._stack else None
             self._swap = lambda: self._replace(target, kwargs, leaving)
+            self._swap_grows = 0
             self.transition = ActiveTransition(transition)  # the newest one wins
 
         self._schedule(0, begin)
@@ -259,7 +289,9 @@ class App(Host):
     def _depth_when_queued(self) -> int:
         """How many scenes the stack will hold once the queued changes are made."""
         queued = sum(grows for grows, _ in self._scene_ops)
-        return len(self._stack) - self._leaving + queued
+        # a pending pop counts now; a pending push only once made (nothing pops it before)
+        pending = min(self._swap_grows, 0) if self._swap is not None else 0
+        return len(self._stack) - self._leaving + queued + pending
 
     def _advance_transition(self, real_dt: float) -> None:
         """Play the running transition: change the scene when due, end it when done."""
@@ -270,8 +302,8 @@ class App(Host):
         swap = self._swap
         if active.swap_due and swap is not None:
             active.swapped = True
-            self._swap = None
-            self._schedule(0, swap)
+            self._swap, grows, self._swap_grows = None, self._swap_grows, 0
+            self._schedule(grows, swap)
         if active.done:
             self.transition = None
 
@@ -670,6 +702,11 @@ def run(
         if reloader is not None:
             reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
+
+
+def _check_transition(transition: object) -> None:
+    if transition is not None and not isinstance(transition, Transition):
+        raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
 
 
 def _as_scene(scene: SceneSource) -> Scene:
