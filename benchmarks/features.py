@@ -5,6 +5,8 @@
   overhead is reported per timed system run (µs), and as a share of the frame.
 * ``gizmos``: recording N debug lines in a frame (``Gizmos.line``, µs per line; and
   one bulk ``Gizmos.lines`` call), and the frame's draw with them (headless EGL).
+* ``particle_forces``: one step of N particles, plain (gravity and drag) and with
+  the forces about the origin (radial, tangential, orbit), side by side.
 
 Other sections (sub-emitters, trails, audio effects) join this module as they land.
 Timings are medians of interleaved repetitions, reported, never asserted. Run
@@ -132,6 +134,31 @@ def measure_gizmos(n: int = 1000, repeats: int = 15) -> Row:
     }
 
 
+def measure_particle_forces(n: int = 20000, repeats: int = 15) -> Row:
+    """ms per step of ``n`` particles, plain and with radial, tangential and orbit."""
+    from kge.particles.pool import ParticlePool
+
+    rng = np.random.default_rng(2)
+
+    def pool() -> ParticlePool:
+        p = ParticlePool(max_particles=n)
+        p.add(rng.uniform(-5, 5, (n, 2)), rng.uniform(-1, 1, (n, 2)), np.full(n, 1e9),
+              np.zeros(n), np.zeros(n))  # fmt: skip
+        return p
+
+    plain_pool, around_pool = pool(), pool()
+    around = (0.0, 0.0, -2.0, 3.0, 1.0)
+    plain, with_ = [], []
+    for _ in range(repeats):  # interleaved
+        plain.append(_median_ms(lambda: plain_pool.step(1 / 60, (0.0, -9.8), 0.5), 1))
+        with_.append(_median_ms(lambda: around_pool.step(1 / 60, (0.0, -9.8), 0.5, None, None,
+                                                         around), 1))  # fmt: skip
+    p, w = statistics.median(plain), statistics.median(with_)
+    return {"particles": float(n), "plain_ms": p, "forces_ms": w,
+            "ratio": w / p if p > 0 else 0.0,
+            "extra_us_per_1000": max(w - p, 0.0) * 1e3 / (n / 1000)}  # fmt: skip
+
+
 def _finish() -> None:
     from pyglet import gl
 
@@ -145,6 +172,8 @@ def run_features(quick: bool, progress: Any) -> tuple[dict[str, Row], str | None
     try:
         progress("system timings overhead")
         out["timings"] = measure_timings(frames=5 if quick else 20, repeats=repeats)
+        progress("particle forces")
+        out["particle_forces"] = measure_particle_forces(5000 if quick else 20000, repeats)
         progress("gizmos")
         out["gizmos"] = measure_gizmos(200 if quick else 1000, repeats)
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
@@ -167,6 +196,17 @@ def feature_lines(features: dict[str, Row]) -> list[str]:
             f"| {t['off_ms']:.3f} | {t['on_ms']:.3f} | {t['overhead_us_per_system']:.2f} µs "
             f"| {100 * t['overhead_share']:.0f} % |",
         ]
+    f = features.get("particle_forces")
+    if f:
+        out += [
+            "",
+            f"Particle forces about the origin, {f['particles']:,.0f} particles, one step:",
+            "",
+            "| gravity and drag | plus radial, tangential, orbit | ratio | extra per 1,000 |",
+            "|---:|---:|---:|---:|",
+            f"| {f['plain_ms']:.3f} ms | {f['forces_ms']:.3f} ms | {f['ratio']:.2f} "
+            f"| {f['extra_us_per_1000']:.1f} µs |",
+        ]
     g = features.get("gizmos")
     if g:
         out += [
@@ -185,10 +225,13 @@ def feature_targets(features: dict[str, Row]) -> list[tuple[str, float | None, f
     """(target, measured, goal, unit) rows, all "at most"."""
     t = features.get("timings", {})
     g = features.get("gizmos", {})
+    f = features.get("particle_forces", {})
     return [
         ("per-system timer overhead per timed system run", t.get("overhead_us_per_system"),
          2.0, "µs"),
         ("recording a gizmo line", g.get("record_us_per_line"), 5.0, "µs"),
+        ("particle forces about the origin, extra per 1,000 particles",
+         f.get("extra_us_per_1000"), 30.0, "µs"),
     ]  # fmt: skip
 
 

@@ -177,7 +177,7 @@ class EmitterState:
                 self.pending.append(Burst(em.burst))
         self.was_emitting = em.emitting
         prev = self.prev if self.prev is not None else pose
-        self._move(em, dt, grid)
+        self._move(em, dt, grid, pose)
         on = self.continuous(em)
         if on and dt > 0:
             moved = math.hypot(pose[0] - prev[0], pose[1] - prev[1])
@@ -198,10 +198,21 @@ class EmitterState:
             em.one_shot and not self.continuous(em) and not self.pending and self.pool.count == 0
         )
 
-    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None) -> None:
+    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None,
+              pose: Pose | None = None) -> None:
         use_grid = grid if em.collide != "none" and em.space == "world" else None
         bounce = em.bounciness if em.collide == "bounce" else None
-        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce)
+        around = None
+        if em.radial_acceleration or em.tangential_acceleration or em.orbit:
+            ox, oy = em.offset
+            if em.space == "local" or pose is None:
+                cx, cy = ox, oy
+            else:  # the emitter's origin in the world: the entity plus its turned offset
+                x, y, a = pose
+                c, s = math.cos(a), math.sin(a)
+                cx, cy = x + c * ox - s * oy, y + s * ox + c * oy
+            around = (cx, cy, em.radial_acceleration, em.tangential_acceleration, em.orbit)
+        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce, around)
 
     def _prewarm(
         self,
@@ -213,7 +224,7 @@ class EmitterState:
     ) -> None:
         steps = math.ceil(em.prewarm / PREWARM_STEP)
         for _ in range(steps):
-            self._move(em, PREWARM_STEP, grid)
+            self._move(em, PREWARM_STEP, grid, pose)
             if self.continuous(em):
                 self.carry += em.rate * PREWARM_STEP
                 n = int(self.carry)

@@ -3,7 +3,13 @@
 from __future__ import annotations
 
 from benchmarks import run
-from benchmarks.features import feature_lines, feature_targets, measure_gizmos, measure_timings
+from benchmarks.features import (
+    feature_lines,
+    feature_targets,
+    measure_gizmos,
+    measure_particle_forces,
+    measure_timings,
+)
 
 
 def test_the_timings_row_measures_both_modes() -> None:
@@ -15,6 +21,13 @@ def test_the_timings_row_measures_both_modes() -> None:
 def test_the_gizmo_row_records_and_draws() -> None:
     r = measure_gizmos(50, repeats=2)
     assert r["lines"] == 50 and r["record_us_per_line"] > 0 and r["bulk_ms"] > 0
+
+
+def test_the_particle_forces_row_runs_both_kinds_of_step() -> None:
+    r = measure_particle_forces(500, repeats=2)
+    assert r["particles"] == 500 and r["plain_ms"] > 0 and r["forces_ms"] > 0 and r["ratio"] > 0
+    text = "\n".join(feature_lines({"particle_forces": r}))
+    assert "Particle forces about the origin, 500 particles" in text
 
 
 def test_the_section_reaches_the_report_and_its_targets() -> None:
