@@ -41,7 +41,7 @@ from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
-from kge.errors import SceneStackError, ValidationError, WorldLockedError
+from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
@@ -124,6 +124,7 @@ class App(Host):
         self._closing = False
         self._leaving = 0  #: scenes a replace being made will close once its setup ends
         self._swap_grows = 0  #: how the pending transition's change grows the stack
+        self._autoloads: dict[type, Any] = {}  #: resources every scene world shares
         self._in_frame = False
         self._running = False
         self.frame_count = 0
@@ -439,8 +440,37 @@ class App(Host):
         scene, world = self._stack[-1]
         scene.on_resume(world)
 
+    # -- autoloads ------------------------------------------------------------------------
+    def autoload(self, resource: Any, *, as_type: type | None = None) -> Any:
+        """Share ``resource`` with every scene, now and later: the same object is the
+        resource of each scene world, so what it holds (a score, settings, a save slot,
+        an inventory) survives scene changes (Godot's autoloads). One of a type
+        replaces the last. Returns ``resource``.
+        """
+        key = as_type or type(resource)
+        if isinstance(resource, type):
+            raise ComponentTypeError(
+                f"App.autoload: expected an instance, got the class {resource.__name__} "
+                f"(write app.autoload({resource.__name__}(...)))"
+            )
+        if issubclass(key, _APP_OWNED) or isinstance(resource, (World, *_APP_OWNED)):
+            raise ValidationError(
+                f"App.autoload: {key.__name__} is the App's own; every scene has it already"
+            )
+        for world in self.worlds:  # checked (as_type) before anything is stored
+            world.insert_resource(resource, as_type=as_type)
+        self._autoloads[key] = resource
+        return resource
+
+    @property
+    def autoloads(self) -> dict[type, Any]:
+        """The shared resources, by type (a copy)."""
+        return dict(self._autoloads)
+
     def _make_world(self, scene: Scene) -> World:
         world = World(name=scene.name or type(scene).__name__)
+        for key, resource in self._autoloads.items():  # before plugins and setup see it
+            world.insert_resource(resource, as_type=key)
         world.insert_resource(self.input)
         world.insert_resource(self.actions)
         world.insert_resource(Time(self.fixed_dt))
@@ -479,6 +509,8 @@ class App(Host):
         def op() -> None:
             scene, old = self._stack.pop()
             carry_over(old, world)
+            for key, resource in self._autoloads.items():  # shared, never restored
+                world.insert_resource(resource, as_type=key)
             old.close()
             self._stack.append((scene, world))
 
@@ -702,6 +734,10 @@ def run(
         if reloader is not None:
             reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
+
+
+#: resources the App puts in every world itself (autoloading one is a mistake)
+_APP_OWNED: tuple[type, ...] = (Input, InputMap, Time, Host)
 
 
 def _check_transition(transition: object) -> None:
