@@ -22,6 +22,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from kge.audio.spatial import pan_to_position
+from kge.errors import ValidationError
 from kge.validate import in_range, non_negative, positive
 
 if TYPE_CHECKING:
@@ -142,6 +143,20 @@ class SoundHandle:
             self._paused = False
             if self._player is not None:
                 self._player.play()
+
+    def seek(self, seconds: float) -> None:
+        """Jump to ``seconds`` from the start (a checkpoint's music, a scrubbed cutscene).
+
+        Refused past the end of a sound of known length, and for a negative or
+        non-finite time; a finished sound does nothing.
+        """
+        t = non_negative(seconds, _OWNER, "seek")
+        if self.duration is not None and t > self.duration:
+            raise ValidationError(
+                f"{_OWNER}.seek: {t:g} s is past the end of {self.name!r} ({self.duration:g} s)"
+            )
+        if self._player is not None and not self.finished:
+            self._player.seek(t)
 
     @property
     def volume(self) -> float:

@@ -78,3 +78,19 @@ def test_sounds_ignore_game_time_unless_asked(store: Assets) -> None:
     app.paused = True
     app.advance(1 / 60)
     assert h.playing and h.player.pitch == 1.0  # menus and UI sounds play on
+
+
+def test_seek_moves_the_player_and_refuses_times_past_the_end(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    h = audio.play("beep.wav", loop=True)
+    h.seek(0.2)
+    assert h.player.time == pytest.approx(0.2, abs=1e-3)
+    h.seek(0.0)
+    assert h.player.time == pytest.approx(0.0, abs=1e-3)
+    with pytest.raises(ValueError, match="past the end"):
+        h.seek(5.0)
+    with pytest.raises(ValueError, match="seek"):
+        h.seek(float("nan"))
+    h.stop()
+    h.seek(0.1)  # finished: nothing to move
