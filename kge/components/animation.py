@@ -45,6 +45,8 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any, ClassVar
 
+from kge.components.conditions import met as condition_met
+from kge.components.conditions import parse as parse_condition
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
@@ -295,12 +297,25 @@ class Clip:
 
 @dataclass(slots=True, frozen=True)
 class Transition:
-    """Switch from clip ``src`` to ``dst`` when the animator's parameter ``when`` is truthy,
-    or, with ``when=None``, when ``src`` finishes (``src="*"``: from any clip)."""
+    """Switch from clip ``src`` to ``dst`` while ``when`` holds, or, with ``when=None``,
+    when ``src`` finishes (``src="*"``: from any clip).
+
+    ``when`` is a parameter name (truthy), ``"not name"``, a comparison
+    (``"speed > 0.1"``, ``"state == jump"``) or clauses joined by ``and``; see
+    :mod:`kge.components.conditions`. It is checked when the Transition is made.
+    """
 
     src: str
     dst: str
     when: str | None = None
+
+    def __post_init__(self) -> None:
+        if self.when is not None:
+            parse_condition(self.when)
+
+    def holds(self, params: Mapping[str, Any]) -> bool:
+        """Does ``when`` hold for these parameters? (False for an end transition.)"""
+        return self.when is not None and condition_met(self.when, params)
 
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
@@ -427,5 +442,5 @@ class Animator(Tracked):
         self.play(str(self.current))
 
     def set(self, param: str, value: Any) -> None:
-        """Set a transition parameter (``Transition(..., when=param)`` fires while truthy)."""
+        """Set a transition parameter (read by the transitions' ``when`` conditions)."""
         self.params[param] = value
