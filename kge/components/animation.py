@@ -340,10 +340,8 @@ def _has(obj: object, name: str) -> bool:
 
 
 def _speed(value: Any, owner: str, field: str) -> float:
-    v = finite(value, owner, field)
-    if v < 0:
-        raise ValidationError(f"{owner}.{field} must be >= 0, got {v!r}")
-    return v
+    """Any finite speed: negative plays the clips backwards."""
+    return finite(value, owner, field)
 
 
 @dataclass(slots=True)
@@ -353,7 +351,9 @@ class Animator(Tracked):
     ``play(name)`` starts a clip from its first frame (``restart=False`` keeps a
     clip that is already playing); ``queue(name)`` plays one after the current
     finishes; ``pause()`` / ``resume()`` freeze time; ``stop()`` shows frame 0 and
-    stops. ``speed`` multiplies every clip's own speed. ``set(param, value)``
+    stops. ``speed`` multiplies every clip's own speed; a negative speed plays
+    backwards (a clip started then begins at its end; frame events fire as the
+    playhead crosses their frame going back; a ``once`` clip ends at its start). ``set(param, value)``
     feeds the transition table.
     """
 
