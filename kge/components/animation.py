@@ -353,8 +353,8 @@ class Animator(Tracked):
     finishes; ``pause()`` / ``resume()`` freeze time; ``stop()`` shows frame 0 and
     stops. ``speed`` multiplies every clip's own speed; a negative speed plays
     backwards (a clip started then begins at its end; frame events fire as the
-    playhead crosses their frame going back; a ``once`` clip ends at its start). ``set(param, value)``
-    feeds the transition table.
+    playhead crosses their frame going back; a ``once`` clip ends at its start).
+    ``set(param, value)`` feeds the transition table.
     """
 
     _checks: ClassVar[dict[str, Check]] = {
