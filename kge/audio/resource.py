@@ -87,6 +87,20 @@ class Audio:
     def sfx_volume(self, value: float) -> None:
         self.mixer.set_bus_volume("sfx", value)
 
+    def add_bus(self, name: str, volume: float = 1.0) -> None:
+        """A bus of your own, App-wide ("voices", "ui", "ambience"): ``play(...,
+        bus=name)`` routes a sound through it; its volume times the master volume."""
+        self.mixer.add_bus(name, volume)
+
+    def set_bus_volume(self, bus: str, value: float) -> None:
+        """Set any bus's volume in [0, 1] (``sfx``, ``music`` or one of yours)."""
+        self.mixer.check_bus(bus, "audio.set_bus_volume")
+        self.mixer.set_bus_volume(bus, value)
+
+    def bus_volume(self, bus: str) -> float:
+        """A bus's own volume (without the master volume)."""
+        return self.mixer.get_bus_volume(self.mixer.check_bus(bus, "audio.bus_volume"))
+
     # -- loading ----------------------------------------------------------------------
     def _load(self, sound: SoundRef, streaming: bool, owner: str) -> tuple[Any, str, Hashable]:
         """(pyglet source or None when mute, display name, identity key)."""
@@ -116,6 +130,7 @@ class Audio:
         pitch_variation: float = 0.0,
         volume_variation: float = 0.0,
         max_voices: int | None = None,
+        bus: str = "sfx",
     ) -> SoundHandle:
         """Play ``sound`` (asset name, path or SoundData) in this scene; return its handle.
 
@@ -127,11 +142,12 @@ class Audio:
         ``volume_variation=0.2`` at 80-100 % of ``volume`` (footsteps and hits that do
         not sound like a machine gun; the numbers come from :attr:`rng`).
         ``max_voices=3``: at most three of this sound play at once in the scene; a
-        fourth stops the oldest.
+        fourth stops the oldest. ``bus`` routes it through a bus (:meth:`add_bus`).
         """
         owner = "audio.play"
         in_range(volume, 0.0, 1.0, owner, "volume")
         positive(pitch, owner, "pitch")
+        self.mixer.check_bus(bus, owner)
         pv = in_range(pitch_variation, 0.0, 0.99, owner, "pitch_variation")
         vv = in_range(volume_variation, 0.0, 1.0, owner, "volume_variation")
         if max_voices is not None and (
@@ -153,7 +169,8 @@ class Audio:
             for old in same[: max(len(same) - max_voices + 1, 0)]:
                 old.stop()  # the oldest voices make room
         handle = self.mixer.start(
-            source, name=name, volume=volume, pitch=pitch, loop=loop, pan=pan, gain=gain
+            source, name=name, volume=volume, pitch=pitch, loop=loop, pan=pan, gain=gain,
+            bus=bus,
         )
         self._handles.append(handle)
         return handle

@@ -94,3 +94,25 @@ def test_seek_moves_the_player_and_refuses_times_past_the_end(store: Assets) -> 
         h.seek(float("nan"))
     h.stop()
     h.seek(0.1)  # finished: nothing to move
+
+
+def test_a_bus_of_your_own_scales_its_sounds(store: Assets) -> None:
+    app = make_app(with_store(store))
+    audio = app.world.resource(Audio)
+    audio.add_bus("voices", volume=0.5)
+    line = audio.play("beep.wav", loop=True, volume=0.8, bus="voices")
+    shot = audio.play("blip.wav", loop=True, volume=0.8)
+    assert line.player.volume == pytest.approx(0.4) and shot.player.volume == pytest.approx(0.8)
+    audio.set_bus_volume("voices", 0.25)
+    audio.master_volume = 0.5
+    assert line.player.volume == pytest.approx(0.8 * 0.25 * 0.5)
+    assert shot.player.volume == pytest.approx(0.4)  # sfx bus untouched
+    assert audio.bus_volume("voices") == 0.25
+    with pytest.raises(ValueError, match="unknown audio bus 'voice'"):
+        audio.play("beep.wav", bus="voice")
+    with pytest.raises(ValueError, match="already"):
+        audio.add_bus("voices")
+    with pytest.raises(ValueError, match="one word"):
+        audio.add_bus("two words")
+    with pytest.raises(ValueError, match="unknown audio bus"):
+        audio.set_bus_volume("nope", 0.5)
