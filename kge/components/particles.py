@@ -488,3 +488,23 @@ class BurstOnHit(Tracked):
     count: int = 12
     contacts: bool = False
     hit_threshold: float = 0.0
+
+
+@dataclass(slots=True)
+class ParticleAttractor(Tracked):
+    """On an entity with a Transform: pulls the particles of every world-space emitter
+    within ``radius`` metres towards it (``strength`` m/s^2 at its centre, falling
+    linearly to 0 at ``radius``; a negative strength pushes them away). Emitters in
+    local space are not affected.
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "strength": _limited_float,
+        "radius": positive,
+        "enabled": boolean,
+    }
+
+    strength: float = 10.0
+    radius: float = 5.0
+    enabled: bool = True
+

@@ -162,8 +162,10 @@ class EmitterState:
         velocity: tuple[float, float],
         collider: Any = None,
         grid: StaticGrid | None = None,
+        attractors: list[tuple[float, float, float, float]] | None = None,
     ) -> None:
-        """One frame of game time: move the live particles, then emit the new ones."""
+        """One frame of game time: move the live particles, then emit the new ones
+        (``attractors``: (x, y, strength, radius) pulling world-space particles)."""
         self.refresh_style(em)
         if not self.started:
             self.started = True
@@ -177,7 +179,7 @@ class EmitterState:
                 self.pending.append(Burst(em.burst))
         self.was_emitting = em.emitting
         prev = self.prev if self.prev is not None else pose
-        self._move(em, dt, grid, pose)
+        self._move(em, dt, grid, pose, attractors if em.space == "world" else None)
         on = self.continuous(em)
         if on and dt > 0:
             moved = math.hypot(pose[0] - prev[0], pose[1] - prev[1])
@@ -199,7 +201,8 @@ class EmitterState:
         )
 
     def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None,
-              pose: Pose | None = None) -> None:
+              pose: Pose | None = None,
+              attractors: list[tuple[float, float, float, float]] | None = None) -> None:
         use_grid = grid if em.collide != "none" and em.space == "world" else None
         bounce = em.bounciness if em.collide == "bounce" else None
         around = None
@@ -212,7 +215,7 @@ class EmitterState:
                 c, s = math.cos(a), math.sin(a)
                 cx, cy = x + c * ox - s * oy, y + s * ox + c * oy
             around = (cx, cy, em.radial_acceleration, em.tangential_acceleration, em.orbit)
-        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce, around)
+        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce, around, attractors)
 
     def _prewarm(
         self,

@@ -133,12 +133,14 @@ class ParticlePool:
         grid: StaticGrid | None = None,
         bounce: float | None = None,
         around: tuple[float, float, float, float, float] | None = None,
+        attractors: list[tuple[float, float, float, float]] | None = None,
     ) -> None:
         """Advance every live particle ``dt`` seconds, then drop the dead.
 
         ``around`` = (cx, cy, radial, tangential, orbit): accelerations away from and
         counter-clockwise round the point (cx, cy) (m/s^2), and an orbit (rad/s) that
-        turns the positions round it.
+        turns the positions round it. ``attractors``: (x, y, strength, radius) each,
+        pulling particles within radius (strength at the centre, linear to 0).
 
         ``grid`` collides particles with static geometry: ``bounce=None`` kills
         those that enter a solid cell, a number reflects them with that
@@ -158,6 +160,8 @@ class ParticlePool:
             d[3] += F(ay * dt)
         if around is not None:
             self._around(d, dt, *around)
+        for ax_, ay_, strength, radius in attractors or ():
+            self._attract(d, dt, ax_, ay_, strength, radius)
         if drag > 0.0:
             d[2:4] *= F(math.exp(-drag * dt))
         if grid is not None:
@@ -193,6 +197,20 @@ class ParticlePool:
         ux, uy = rx * inv, ry * inv  # unit vectors times dt
         d[2] += F(radial) * ux - F(tangential) * uy
         d[3] += F(radial) * uy + F(tangential) * ux
+
+    @staticmethod
+    def _attract(d: np.ndarray, dt: float, x: float, y: float, strength: float,
+                 radius: float) -> None:
+        """Pull towards (x, y): strength x (1 - distance / radius) inside the radius."""
+        dx, dy = F(x) - d[0], F(y) - d[1]
+        dist = np.hypot(dx, dy)
+        near = (dist < radius) & (dist > 0)
+        if not near.any():
+            return
+        k = np.where(near, F(strength * dt) * (1 - dist / F(radius)), 0)
+        k = np.divide(k, dist, out=np.zeros_like(k), where=near)
+        d[2] += k * dx
+        d[3] += k * dy
 
     @staticmethod
     def _orbit(d: np.ndarray, dt: float, cx: float, cy: float, orbit: float) -> None:
