@@ -30,7 +30,7 @@ the world (one vertex list of lines per frame, see :mod:`kge.render.gizmos`).
 >>> g.line((0, 0), (float("nan"), 0))
 Traceback (most recent call last):
 ...
-kge.errors.ValidationError: Gizmos.line: end must be finite numbers, got (0, nan)
+kge.errors.ValidationError: Gizmos.line: end must be finite numbers, got (nan, 0)
 """
 
 from __future__ import annotations

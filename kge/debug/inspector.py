@@ -16,7 +16,7 @@ entity, component and field named, and the world is left as it was. The overlay
 [(1, 'crate')]
 >>> [(r.component, r.field, r.text) for r in ins.rows(e) if r.component == "Transform"]
 [('Transform', 'x', '1'), ('Transform', 'y', '2'), ('Transform', 'angle', '0')]
->>> ins.set(e, "Transform", "angle", "90"); round(w.get(e, Transform).angle, 4)
+>>> _ = ins.set(e, "Transform", "angle", "90"); round(w.get(e, Transform).angle, 4)
 1.5708
 >>> ins.set(e, "Transform", "x", "fast")
 Traceback (most recent call last):

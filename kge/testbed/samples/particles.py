@@ -177,7 +177,7 @@ def _ten_thousand_inside_the_box(app) -> None:  # type: ignore[no-untyped-def]
 
 @sample("Particles", "Vortex And Orbit", help="Left: sparks born on a ring are pulled in and "
         "swirled (radial and tangential acceleration). Right: a ring of resting particles "
-        "orbits its centre at half a turn a second.")
+        "orbits its centre at half a turn a second.", camera=(0.0, 2.0, 1.0))
 def vortex_and_orbit(world: World) -> None:
     world.spawn(Transform(-4.0, 2.0), Name("vortex"), ParticleEmitter(
         rate=200.0, speed=(0.2, 0.5), spread=2 * math.pi, lifetime=(1.5, 2.0),
