@@ -9,6 +9,7 @@ from kge.testbed.samples import (  # noqa: F401
     collision_module,
     debug_tools,
     determinism,
+    games,
     joints,
     large,
     lights,
