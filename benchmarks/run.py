@@ -349,6 +349,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.rendering import lines as rendering_lines
 
         out += rendering_lines(report["rendering"])
+    if report.get("features"):
+        from benchmarks.features import feature_lines
+
+        out += feature_lines(report["features"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -504,6 +508,15 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
+    features: dict[str, Any] = {}
+    if not args.no_game and not args.scene:  # per-frame costs of game-layer features
+        from benchmarks.features import feature_lines, run_features
+
+        features, why = run_features(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        print("\n".join(feature_lines(features)))
     tiles: dict[str, float] = {}
     if not args.scene:
         from benchmarks import tilemap
@@ -538,6 +551,13 @@ def main(argv: list[str] | None = None) -> int:
         goals += rendering.targets(drawing)
     if characters:
         goals += character.targets(characters)
+    if features:
+        from benchmarks.features import feature_targets
+
+        for f_name, f_value, f_goal, f_unit in feature_targets(features):
+            goals.append({"target": f_name, "value": f_value, "goal": f_goal, "at_most": True,
+                          "unit": f_unit,
+                          "met": None if f_value is None else f_value <= f_goal})  # fmt: skip
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -563,6 +583,7 @@ def main(argv: list[str] | None = None) -> int:
         "tilemap": tiles,
         "rendering": drawing,
         "characters": characters,
+        "features": features,
         "targets": goals,
         "skipped": skipped,
     }

@@ -16,6 +16,8 @@ from kge.animation import (
     AnimationEvent,
     AnimationEvents,
     AnimationFinished,
+    CubicBezier,
+    EaseCurve,
     TweenFinished,
     TweenHandle,
     Tweens,
@@ -69,6 +71,7 @@ from kge.components.particles import (
     EmitCollider,
     EmitLine,
     EmitPoint,
+    ParticleAttractor,
     ParticleBurst,
     ParticleCollision,
     ParticleEmitter,
@@ -80,7 +83,7 @@ from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite, TextureFilter, TextureWrap
 from kge.components.text import Text, TextAlign, TextOverflow, TextStyle, VerticalAlign
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
-from kge.components.tween import Delay, Parallel, Tween, TweenSequence
+from kge.components.tween import Call, Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
@@ -138,10 +141,12 @@ from kge.systems.physics import PhysicsPlugin
 from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
+from kge.timings import SystemTimings
 from kge.world import World
 
 # isort: split
 # -- UI, scenes and input actions (docs/ui-scenes-input.md) --
+from kge.action_clock import ActionPressed, ActionReleased
 from kge.actions import InputMap, UnknownActionError
 from kge.components.ui import (
     Button,
@@ -273,6 +278,7 @@ __all__ = [
     "BodyType",
     "Box",
     "BurstOnHit",
+    "Call",
     "Camera",
     "CameraShake",
     "Capsule",
@@ -288,12 +294,14 @@ __all__ = [
     "ContactBegin",
     "ContactEnd",
     "Coroutine",
+    "CubicBezier",
     "DebugDraw",
     "DecoderMissingError",
     "Delay",
     "DirectionalLight",
     "DisplayError",
     "DistanceJoint",
+    "EaseCurve",
     "Edge",
     "EmitBox",
     "EmitCircle",
@@ -338,6 +346,7 @@ __all__ = [
     "Name",
     "OneWayPlatform",
     "Parallel",
+    "ParticleAttractor",
     "ParticleBurst",
     "ParticleCollision",
     "ParticleEmitter",
@@ -441,6 +450,8 @@ __all__ = [
 
 # UI, scenes and input actions (docs/ui-scenes-input.md)
 __all__ += [
+    "ActionPressed",
+    "ActionReleased",
     "Button",
     "ButtonClicked",
     "Crossfade",
@@ -470,3 +481,18 @@ __all__ += [
     "Wipe",
     "focus",
 ]
+
+# -- debug tools (docs/debug.md): gizmos, console, live inspector, system timings --
+if TYPE_CHECKING:
+    from kge.debug import Console, ConsoleError, DebugPlugin, Gizmos, Inspector
+
+_LAZY.update(
+    {
+        "Console": "kge.debug",
+        "ConsoleError": "kge.debug",
+        "DebugPlugin": "kge.debug",
+        "Gizmos": "kge.debug",
+        "Inspector": "kge.debug",
+    }
+)
+__all__ += ["Console", "ConsoleError", "DebugPlugin", "Gizmos", "Inspector", "SystemTimings"]

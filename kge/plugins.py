@@ -11,6 +11,7 @@
 ``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
 ``TilemapPlugin``      Tiled maps loaded with ``kge.load_map`` are drawn (chunked, culled)
+``DebugPlugin``        gizmos, the in-game console, the live inspector, system timings
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -26,6 +27,7 @@ from kge.plugin import Plugin
 
 def default_plugins() -> list[Plugin]:
     """A fresh instance of every default plugin, in build order."""
+    from kge.debug.plugin import DebugPlugin
     from kge.systems.animation import AnimationPlugin
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
@@ -48,4 +50,5 @@ def default_plugins() -> list[Plugin]:
         LightingPlugin(),
         UIPlugin(),
         TilemapPlugin(),
+        DebugPlugin(),
     ]

@@ -24,7 +24,8 @@ from typing import TYPE_CHECKING, Any
 from kge.audio.spatial import pan_to_position
 from kge.components.audio import fade_seconds
 from kge.components.audio import pitch as check_pitch
-from kge.validate import boolean, in_range
+from kge.errors import ValidationError
+from kge.validate import boolean, in_range, non_negative
 
 if TYPE_CHECKING:
     from kge.audio.mixer import Mixer
@@ -45,6 +46,7 @@ class SoundHandle:
         "_paused",
         "_pitch",
         "_player",
+        "_rate",
         "_stopped",
         "_volume",
         "bus",
@@ -71,6 +73,7 @@ class SoundHandle:
         self.bus = bus
         self._volume = in_range(volume, 0.0, 1.0, _OWNER, "volume")
         self._pitch = check_pitch(pitch, _OWNER, "pitch")
+        self._rate = 1.0  # the game's time scale, for sounds that follow it
         self._loop = boolean(loop, _OWNER, "loop")
         self._gain = 1.0
         self._pan = 0.0
@@ -143,6 +146,20 @@ class SoundHandle:
             if self._player is not None:
                 self._player.play()
 
+    def seek(self, seconds: float) -> None:
+        """Jump to ``seconds`` from the start (a checkpoint's music, a scrubbed cutscene).
+
+        Refused past the end of a sound of known length, and for a negative or
+        non-finite time; a finished sound does nothing.
+        """
+        t = non_negative(seconds, _OWNER, "seek")
+        if self.duration is not None and t > self.duration:
+            raise ValidationError(
+                f"{_OWNER}.seek: {t:g} s is past the end of {self.name!r} ({self.duration:g} s)"
+            )
+        if self._player is not None and not self.finished:
+            self._player.seek(t)
+
     @property
     def volume(self) -> float:
         """The sound's own volume in [0, 1] (before attenuation and master volume)."""
@@ -163,7 +180,21 @@ class SoundHandle:
     def pitch(self, value: float) -> None:
         self._pitch = check_pitch(value, _OWNER, "pitch")
         if self._player is not None:
-            self._player.pitch = self._pitch
+            self._player.pitch = self.rate
+
+    @property
+    def rate(self) -> float:
+        """What the player is told: ``pitch`` times the game's time scale when the sound
+        follows game time (``Audio.follow_game_time``), else ``pitch``."""
+        return self._pitch * self._rate
+
+    def set_time_scale(self, scale: float) -> None:
+        """Play at ``scale`` times its pitch (the audio system's, for game-time sounds)."""
+        scale = max(float(scale), 1e-3)  # a player cannot run at 0: the pause stops it
+        if scale != self._rate:
+            self._rate = scale
+            if self._player is not None:
+                self._player.pitch = self.rate
 
     @property
     def loop(self) -> bool:

@@ -46,6 +46,8 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any, ClassVar
 
+from kge.components.conditions import met as condition_met
+from kge.components.conditions import parse as parse_condition
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
@@ -389,8 +391,13 @@ class Clip:
 
 @dataclass(slots=True, frozen=True)
 class Transition:
-    """Switch from clip ``src`` to ``dst`` when the animator's parameter ``when`` is truthy,
-    or, with ``when=None``, when ``src`` finishes (``src="*"``: from any clip)."""
+    """Switch from clip ``src`` to ``dst`` while ``when`` holds, or, with ``when=None``,
+    when ``src`` finishes (``src="*"``: from any clip).
+
+    ``when`` is a parameter name (truthy), ``"not name"``, a comparison
+    (``"speed > 0.1"``, ``"state == jump"``) or clauses joined by ``and``; see
+    :mod:`kge.components.conditions`. It is checked when the Transition is made.
+    """
 
     src: str
     dst: str
@@ -401,10 +408,16 @@ class Transition:
             value = getattr(self, name)
             if not isinstance(value, str) or not value:
                 raise ComponentTypeError(f"Transition.{name} must be a clip name, got {value!r}")
-        if self.when is not None and not isinstance(self.when, str):
-            raise ComponentTypeError(
-                f"Transition.when must be a parameter name or None, got {self.when!r}"
-            )
+        if self.when is not None:
+            if not isinstance(self.when, str):
+                raise ComponentTypeError(
+                    f"Transition.when must be a condition (text) or None, got {self.when!r}"
+                )
+            parse_condition(self.when)
+
+    def holds(self, params: Mapping[str, Any]) -> bool:
+        """Does ``when`` hold for these parameters? (False for an end transition.)"""
+        return self.when is not None and condition_met(self.when, params)
 
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
@@ -429,10 +442,10 @@ def _has(obj: object, name: str) -> bool:
 
 
 def _speed(value: Any, owner: str, field: str) -> float:
+    """Any finite speed up to MAX_SPEED either way: negative plays the clips backwards."""
     v = finite(value, owner, field)
-    if v < 0:
-        raise ValidationError(f"{owner}.{field} must be >= 0, got {v!r}")
-    return at_most(v, MAX_SPEED, owner, field)
+    at_most(abs(v), MAX_SPEED, owner, field)
+    return v
 
 
 def _params(value: Any, owner: str, field: str) -> dict[str, Any]:
@@ -452,8 +465,10 @@ class Animator(Tracked):
     ``play(name)`` starts a clip from its first frame (``restart=False`` keeps a
     clip that is already playing); ``queue(name)`` plays one after the current
     finishes; ``pause()`` / ``resume()`` freeze time; ``stop()`` shows frame 0 and
-    stops. ``speed`` multiplies every clip's own speed. ``set(param, value)``
-    feeds the transition table.
+    stops. ``speed`` multiplies every clip's own speed; a negative speed plays
+    backwards (a clip started then begins at its end; frame events fire as the
+    playhead crosses their frame going back; a ``once`` clip ends at its start).
+    ``set(param, value)`` feeds the transition table.
     """
 
     #: new clips are checked against their images by the animation plugin
@@ -568,5 +583,5 @@ class Animator(Tracked):
         self.play(str(self.current))
 
     def set(self, param: str, value: Any) -> None:
-        """Set a transition parameter (``Transition(..., when=param)`` fires while truthy)."""
+        """Set a transition parameter (read by the transitions' ``when`` conditions)."""
         self.params[param] = value

@@ -16,7 +16,11 @@ move them, in metres, seconds and radians:
 * **how they move**: ``lifetime`` and ``speed`` ranges, ``direction`` (rad, in the
   entity frame) with a ``spread`` cone (full angle, 0..2pi), ``inherit_velocity``
   (share of the body's velocity), ``acceleration`` (gravity, m/s^2), linear
-  ``drag`` (1/s), ``spin`` range (rad/s), and ``collide`` with static colliders
+  ``drag`` (1/s), ``spin`` range (rad/s); around the emitter's origin (the entity
+  plus ``offset``): ``radial_acceleration`` (m/s^2, + outward: a burst that slows,
+  - inward: a vortex), ``tangential_acceleration`` (m/s^2, + counter-clockwise: a
+  swirl) and ``orbit`` (rad/s, carries particles round it); and ``collide`` with
+  static colliders
   (:class:`ParticleCollision`: ``NONE``, ``BOUNCE`` with ``bounciness``, or ``DIE``).
 * **how they look**: ``size`` (metres), ``color`` (RGB 0-255) and ``opacity``
   (0-255, as ``Sprite.opacity``) over life, each a single value or a sequence of
@@ -328,6 +332,10 @@ def _vector(value: Any, owner: str, field: str) -> Vec2:
     return (_limited(x, owner, f"{field}[0]"), _limited(y, owner, f"{field}[1]"))
 
 
+def _limited_float(value: Any, owner: str, field: str) -> float:
+    return _limited(finite(value, owner, field), owner, field)
+
+
 def _drag(value: Any, owner: str, field: str) -> float:
     return _limited(non_negative(value, owner, field), owner, field)
 
@@ -371,6 +379,9 @@ class ParticleEmitter(Tracked):
         "inherit_velocity": _inherit,
         "acceleration": _vector,
         "drag": _drag,
+        "radial_acceleration": _limited_float,
+        "tangential_acceleration": _limited_float,
+        "orbit": _limited_float,
         "spin": _range,
         "size": _sizes,
         "color": _colors,
@@ -419,6 +430,9 @@ class ParticleEmitter(Tracked):
     layer: int = 0
     order: int = 0
     visible: bool = True
+    radial_acceleration: float = 0.0  #: m/s^2 away from the origin (< 0: towards it)
+    tangential_acceleration: float = 0.0  #: m/s^2 counter-clockwise round the origin
+    orbit: float = 0.0  #: rad/s: particles are carried round the origin
 
 
 @dataclass(slots=True, frozen=True)
@@ -471,3 +485,23 @@ class BurstOnHit(Tracked):
     count: int = 12
     contacts: bool = False
     hit_threshold: float = 0.0
+
+
+@dataclass(slots=True)
+class ParticleAttractor(Tracked):
+    """On an entity with a Transform: pulls the particles of every world-space emitter
+    within ``radius`` metres towards it (``strength`` m/s^2 at its centre, falling
+    linearly to 0 at ``radius``; a negative strength pushes them away). Emitters in
+    local space are not affected.
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "strength": _limited_float,
+        "radius": positive,
+        "enabled": boolean,
+    }
+
+    strength: float = 10.0
+    radius: float = 5.0
+    enabled: bool = True
+

@@ -186,8 +186,10 @@ class EmitterState:
         velocity: tuple[float, float],
         collider: Any = None,
         grid: StaticGrid | None = None,
+        attractors: list[tuple[float, float, float, float]] | None = None,
     ) -> None:
-        """One frame of game time: move the live particles, then emit the new ones."""
+        """One frame of game time: move the live particles, then emit the new ones
+        (``attractors``: (x, y, strength, radius) pulling world-space particles)."""
         self.refresh_style(em)
         if not self.started:
             self.started = True
@@ -201,7 +203,7 @@ class EmitterState:
                 self.pending.append(Burst(em.burst))
         self.was_emitting = em.emitting
         prev = self.prev if self.prev is not None else pose
-        self._move(em, dt, grid)
+        self._move(em, dt, grid, pose, attractors if em.space == "world" else None)
         on = self.continuous(em)
         if on and dt > 0:
             moved = math.hypot(pose[0] - prev[0], pose[1] - prev[1])
@@ -222,10 +224,22 @@ class EmitterState:
             em.one_shot and not self.continuous(em) and not self.pending and self.pool.count == 0
         )
 
-    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None) -> None:
+    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None,
+              pose: Pose | None = None,
+              attractors: list[tuple[float, float, float, float]] | None = None) -> None:
         use_grid = grid if em.collide != "none" and em.space == "world" else None
         bounce = em.bounciness if em.collide == "bounce" else None
-        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce)
+        around = None
+        if em.radial_acceleration or em.tangential_acceleration or em.orbit:
+            ox, oy = em.offset
+            if em.space == "local" or pose is None:
+                cx, cy = ox, oy
+            else:  # the emitter's origin in the world: the entity plus its turned offset
+                x, y, a = pose
+                c, s = math.cos(a), math.sin(a)
+                cx, cy = x + c * ox - s * oy, y + s * ox + c * oy
+            around = (cx, cy, em.radial_acceleration, em.tangential_acceleration, em.orbit)
+        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce, around, attractors)
 
     def _prewarm(
         self,
@@ -237,7 +251,7 @@ class EmitterState:
     ) -> None:
         steps = math.ceil(em.prewarm / PREWARM_STEP)
         for _ in range(steps):
-            self._move(em, PREWARM_STEP, grid)
+            self._move(em, PREWARM_STEP, grid, pose)
             if self.continuous(em):
                 self.carry += em.rate * PREWARM_STEP
                 n = int(self.carry)

@@ -221,6 +221,8 @@ class WorldView:
         self.stats.update(
             shown, canvas.size[1], self.stat_values() if shown else {},
             throttle=not self.app.headless,
+            lines=self.timing_lines() if shown and settings is not None and settings.timings
+            else None,
         )  # fmt: skip
         FrameUniforms.time = self._game_time()
         passes = self.world.try_resource(RenderPasses)
@@ -323,6 +325,17 @@ class WorldView:
         if lighting is not None and lighting.enabled and self.timer.frame_ms > 0.0:
             values["lights"] = light_note(self.timer.ms("lighting"), self.timer.frame_ms)
         return values
+
+    def timing_lines(self, top: int = 10) -> list[str]:
+        """The slowest systems of the world, one line each (the stats overlay's table)."""
+        timings = self.world.schedule.timings
+        if timings is None:
+            return ["system timings are off (F4)"]
+        rows = timings.rows(top)
+        lines = [f"{'systems':<6} {f'{timings.frame_ms():.2f} ms/frame':<24} "
+                 f"{'avg ms':>8} {'peak ms':>8}"]  # fmt: skip
+        lines += [f"{r.stage:<6} {r.name:<24.24} {r.average:8.3f} {r.peak:8.3f}" for r in rows]
+        return lines
 
     # -- fixed-step hooks ----------------------------------------------------------------------
     def after_step(self, seconds: float) -> None:

@@ -39,6 +39,7 @@ from kge.components.particles import (
     EmitCollider,
     EmitLine,
     EmitPoint,
+    ParticleAttractor,
     ParticleEmitter,
 )
 from kge.components.platform import OneWayPlatform
@@ -111,6 +112,7 @@ def register_builtin(reg: TypeRegistry) -> None:
     reg.register(Lighting, kinds=(RESOURCE,))
     reg.register(ParticleEmitter, asset_fields=("texture",))
     reg.register(BurstOnHit, entity_fields=("emitter",))
+    reg.register(ParticleAttractor)
     # UI
     reg.register(UINode, entity_fields=("parent",))
     reg.register(UIImage, asset_fields=("image",))

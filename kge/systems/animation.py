@@ -191,7 +191,7 @@ class Animations:
                     tr.when is not None
                     and tr.src in ("*", anim.current)
                     and anim.current != tr.dst
-                    and anim.params.get(tr.when)
+                    and tr.holds(anim.params)
                 ):
                     anim.play(tr.dst)
                     self._sync_one(entity)

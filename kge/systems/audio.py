@@ -191,6 +191,11 @@ class AudioSystem(System):
         if self._impacts:
             self._play_impacts()
         self.audio.update_positions()
+        if self.audio.follow_game_time:
+            host = self.world.try_resource(Host)
+            if host is not None:
+                self.audio.follow_game(bool(getattr(host, "paused", False)),
+                                       float(getattr(host, "time_scale", 1.0)))  # fmt: skip
         self.mixer.update(dt)
         self.audio.reap()
 

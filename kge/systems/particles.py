@@ -28,7 +28,13 @@ import numpy as np
 
 from kge.assets import assets_for
 from kge.components.collider import Collider
-from kge.components.particles import BurstOnHit, EmitCollider, ParticleBurst, ParticleEmitter
+from kge.components.particles import (
+    BurstOnHit,
+    EmitCollider,
+    ParticleAttractor,
+    ParticleBurst,
+    ParticleEmitter,
+)
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
 from kge.components.tracked import validate_writes
@@ -178,6 +184,8 @@ class ParticleSystem(System):
         grid = None
         if any(em.collide != "none" for _, (em, _t) in emitters):
             grid = self._grid()
+        attractors = [(at.x, at.y, a.strength, a.radius)
+                      for _, (a, at) in world.query(ParticleAttractor, Transform) if a.enabled]
         finished = []
         for e, (em, t) in emitters:
             st = particles.state(e)
@@ -187,7 +195,7 @@ class ParticleSystem(System):
             if isinstance(em.shape, EmitCollider):
                 col = world.try_get(e, Collider)
                 collider = col.shape if col is not None else None
-            st.advance(em, dt, (t.x, t.y, t.angle), velocity, collider, grid)
+            st.advance(em, dt, (t.x, t.y, t.angle), velocity, collider, grid, attractors)
             if st.finished:
                 finished.append(e)
         for e in finished:

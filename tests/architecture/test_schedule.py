@@ -16,11 +16,14 @@ from kge.schedule_cli import frame_table, main
 DEFAULT_FRAME = {
     Stage.INPUT: [
         ("AnimationFrameStart", "first"),
+        ("GizmoFrameStart", "first"),
+        ("DebugInput", "debug"),
         ("DebugKeys", "debug"),
         ("UIInput", "ui"),
         ("InputBehaviours", "scripts"),
     ],
     Stage.FIXED: [
+        ("GizmoStepStart", "first"),
         ("FixedBehaviours", "scripts"),
         ("FixedTweens", "pre_physics"),
         ("CharacterSystem", "characters"),
@@ -31,6 +34,7 @@ DEFAULT_FRAME = {
     ],
     Stage.UPDATE: [
         ("ShakeRestore", "first"),
+        ("GizmoUpdateStart", "first"),
         ("UpdateBehaviours", "scripts"),
         ("AnimationSystem", "animation"),
         ("TileAnimationSystem", "animation"),
@@ -268,7 +272,7 @@ def test_render_passes_run_in_named_order_with_no_tie() -> None:
     passes = app.world.resource(RenderPasses)
     assert passes.names("before") == ["animation", "tilemap", "particles"]
     assert passes.names("view") == ["lighting"]  # once per camera
-    assert passes.names("after") == ["ui"]
+    assert passes.names("after") == ["gizmos", "ui", "debug_overlay"]
     assert passes.ties() == []
     log: list[str] = []
     passes.add(lambda frame: log.append("fog"), phase="view", name="fog", before=["lighting"])

@@ -61,6 +61,7 @@ def test_default_app_has_the_default_plugins_in_order() -> None:
     assert names == [
         "BehaviourPlugin", "PhysicsPlugin", "CharacterPlugin", "AudioPlugin", "RenderPlugin",
         "AnimationPlugin", "ParticlesPlugin", "LightingPlugin", "UIPlugin", "TilemapPlugin",
+        "DebugPlugin",
     ]
     assert [p.name for p in app.world.plugins] == names
     assert [type(p).__name__ for p in kge.default_plugins()] == names

@@ -46,6 +46,7 @@ from kge import (
     Name,
     OneWayPlatform,
     Panel,
+    ParticleAttractor,
     ParticleEmitter,
     PhysicsSettings,
     Polygon,
@@ -174,6 +175,7 @@ def everything(world: World, art: Path) -> None:
         rate=20.0, shape=EmitBox(1.0, 0.5), lifetime=(0.5, 1.0), color=((255, 0, 0), (0, 0, 255)),
         seed=7, texture=str(art / "art" / "ship.png")))
     world.spawn(Transform(7.5, 1.0), BurstOnHit(emitter, count=5))
+    world.spawn(Transform(8.0, 2.0), ParticleAttractor(strength=-4.0, radius=2.5))
     panel = world.spawn(UINode(anchor="top_left", width=200.0, height="auto", layout="column"),
                         Panel(color=(20, 20, 20, 200)))
     for widget in (Label("Score", size=18.0), Button("Go", image=str(art / "art" / "ship.png")),

@@ -8,6 +8,7 @@ from kge.testbed.samples import (  # noqa: F401
     character,
     collision,
     collision_module,
+    debug_tools,
     determinism,
     games,
     joints,
@@ -19,5 +20,6 @@ from kge.testbed.samples import (  # noqa: F401
     rendering,
     stacking,
     tilemaps,
+    tween_control,
     ui,
 )
