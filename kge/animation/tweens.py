@@ -471,7 +471,11 @@ class TweenTable:
         if spec.relative and start is not None:
             to = [s + d for s, d in zip(start, to, strict=True)]
         vector = isinstance(getattr(obj, spec.field), (tuple, list))
-        _check_ends(obj, spec.field, entity, label, vector, ints, to, start)
+        # a relative move without a start goes by ``to`` from where the field is
+        end = to
+        if spec.relative and start is None:
+            end = [n + d for n, d in zip(now, to, strict=True)]
+        _check_ends(obj, spec.field, entity, label, vector, ints, end, start)
         kind, axis = (1 if ints else 0), -1
         if vector:
             kind += 4
