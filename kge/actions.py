@@ -469,10 +469,11 @@ class InputMap:
         """Replace every binding with ``data``; on any error the map is left unchanged."""
         if not isinstance(data, dict):
             raise ValidationError(f"InputMap data must be a dict, got {type(data).__name__}")
-        unknown = sorted(map(str, set(data) - {"actions", "axes", "vectors"}))
+        unknown = sorted(map(str, set(data) - {"actions", "axes", "vectors", "combos"}))
         if unknown:
             raise ValidationError(
-                f"InputMap data has unknown keys {unknown} (it takes actions, axes, vectors)"
+                f"InputMap data has unknown keys {unknown} (it takes actions, axes, vectors, "
+                "combos)"
             )
         fresh = InputMap(self.input)
         try:

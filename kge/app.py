@@ -230,7 +230,7 @@ class App(Host):
         check_setup_args(target, kwargs)
         if run_below and not overlay:
             raise ValidationError("push_scene(run_below=True) needs overlay=True")
-        _check_transition(transition)
+        _check_transition(transition, "push_scene")
         keeps_running = run_below if overlay else None
         push = lambda: self._push(target, kwargs, overlay=keeps_running)  # noqa: E731
         if transition is None:
@@ -250,7 +250,7 @@ class App(Host):
                 "pop_scene() would leave the App with no scene: use replace_scene() to "
                 "change scene, or app.quit() to stop"
             )
-        _check_transition(transition)
+        _check_transition(transition, "pop_scene")
         if transition is None:
             self._schedule(-1, self._pop)
         else:
@@ -282,7 +282,7 @@ class App(Host):
         """
         target = _as_scene(scene)
         check_setup_args(target, kwargs)
-        _check_transition(transition)
+        _check_transition(transition, "replace_scene")
         grows = 0 if self._depth_when_queued() else 1
         if transition is None:
             self._schedule(grows, lambda: self._replace(target, kwargs, None))
@@ -749,9 +749,11 @@ def run(
 _APP_OWNED: tuple[type, ...] = (Input, InputMap, Time, Host)
 
 
-def _check_transition(transition: object) -> None:
+def _check_transition(transition: object, where: str) -> None:
     if transition is not None and not isinstance(transition, Transition):
-        raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
+        raise ComponentTypeError(
+            f"{where}: transition must be a Transition (Fade(0.4)...), got {transition!r}"
+        )
 
 
 def _as_scene(scene: SceneSource) -> Scene:

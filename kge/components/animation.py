@@ -411,7 +411,8 @@ class Transition:
         if self.when is not None:
             if not isinstance(self.when, str):
                 raise ComponentTypeError(
-                    f"Transition.when must be a condition (text) or None, got {self.when!r}"
+                    f"Transition.when must be a parameter name or None (or a condition such as "
+                    f"'speed > 0.1'), got {self.when!r}"
                 )
             parse_condition(self.when)
 
