@@ -55,15 +55,15 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
     from kge.host import Host
     from kge.render.setup import renderer_for
     from kge.render.ui import drawer_for
+    from kge.ui.current import current_layout
     from kge.ui.interact import UIState, handle_input
     from kge.ui.layout import compute_layout
-    from kge.ui.theme import DEFAULT_THEME
 
     app = _app(n)
     world = app.world
     state = world.resource(UIState)
     boxes = list(state.layout.boxes.values())
-    assert drawer_for(world).items, "the drawer holds the widgets' pyglet objects"
+    assert drawer_for(world).owned, "the drawer holds the widgets' pyglet objects"
     window = renderer_for(world.resource(Host)).window  # type: ignore[union-attr]
     k = 0
 
@@ -74,7 +74,8 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
         nonlocal k
         k += 1
         app.input.move_mouse(*boxes[k % len(boxes)].center)
-        handle_input(world, app.input, app.size, state, DEFAULT_THEME)
+        current_layout(world, app.size)
+        handle_input(world, app.input, state, 1 / 60)
         app.input.end_frame()
 
     def draw() -> None:

@@ -86,6 +86,12 @@ HOOKS: dict[str, tuple[int, str]] = {
     "on_click": (1, "on_click(event)"),
     "on_value_changed": (1, "on_value_changed(event)"),
     "on_text_submitted": (1, "on_text_submitted(event)"),
+    "on_item_activated": (1, "on_item_activated(event)"),
+    "on_item_toggled": (1, "on_item_toggled(event)"),
+    "on_dialog_closed": (1, "on_dialog_closed(event)"),
+    "on_drag_started": (1, "on_drag_started(event)"),
+    "on_drop": (1, "on_drop(event)"),
+    "on_drag_cancelled": (1, "on_drag_cancelled(event)"),
 }
 
 _hook_cache: dict[type, tuple[str, ...]] = {}
