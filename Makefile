@@ -5,16 +5,16 @@
 PY := .venv/bin/python
 
 demo:
-	@tools/bootstrap.sh
+	@tools/bootstrap.sh demo
 	$(PY) -m kge demo
 
 test:
-	@tools/bootstrap.sh
+	@tools/bootstrap.sh test
 	@$(MAKE) --no-print-directory check
 	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m pytest
 
 bench:
-	@tools/bootstrap.sh
+	@tools/bootstrap.sh test
 	@$(PY) -c "import Box2D" 2>/dev/null || $(PY) -m pip install -q -e ".[bench]" || \
 	  echo "make bench: could not install pybox2d (box2d 2.3.10); its column is skipped"
 	@# Arcade 3 pins pymunk 6.9 (kge needs 7.3): its animation row runs in a venv of its own
@@ -24,7 +24,7 @@ bench:
 	PYGLET_HEADLESS=1 PYGLET_AUDIO=silent $(PY) -m kge bench --breakdown $(BENCH_ARGS)
 
 lint:
-	@tools/bootstrap.sh
+	@tools/bootstrap.sh test
 	@$(MAKE) --no-print-directory check
 
 # The static gates `make test` runs before the suite: ruff, mypy, the import floors.

@@ -1,5 +1,5 @@
 """Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
-command), ``kge testbed``, ``kge bench``.
+command), ``kge testbed``, ``kge bench``, ``kge export`` (a standalone build).
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -15,8 +15,23 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 
+DEMO_HELP = """usage: kge demo [testbed options]
+
+The demo: with a display, the testbed window (every sample, by category); without
+one, a headless showcase that runs every sample for a few simulated seconds, prints a
+line per sample and writes a contact sheet (out/testbed-contact-sheet.png).
+
+Any other option is the testbed's (see `kge testbed --help`), e.g.
+  kge demo --sample pyramid       open (or run headless) one sample
+  kge demo --showcase --seconds 1 the headless showcase, one second per sample
+"""
+
+
 def _demo(args: list[str]) -> int:
     """The main job a user runs: the testbed (a window, or the headless showcase)."""
+    if args[:1] in (["-h"], ["--help"]):
+        print(DEMO_HELP, end="")
+        return 0
     try:
         from kge.testbed.cli import main as testbed_main
     except ImportError:  # a trimmed install without the testbed: the hello-world example
@@ -53,21 +68,54 @@ def _new(args: list[str]) -> int:
     return new_main(args)
 
 
+def _export(args: list[str]) -> int:
+    from kge.export.cli import main as export_main
+
+    return export_main(args)
+
+
 COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
     "new": (_new, "create a small game project with a test: kge new NAME"),
     "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
     "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
+    "export": (_export, "a standalone build of a game project: kge export [PROJECT]"),
 }
+
+
+def version() -> str:
+    """kge's version, as installed (or as the source checkout declares it)."""
+    from importlib.metadata import PackageNotFoundError
+    from importlib.metadata import version as installed
+
+    try:
+        return installed("kge")
+    except PackageNotFoundError:  # run from a source tree that was never installed
+        import tomllib
+
+        with open(ROOT / "pyproject.toml", "rb") as f:
+            return str(tomllib.load(f)["project"]["version"])
+
+
+def usage() -> str:
+    names = ",".join(COMMANDS)
+    lines = [f"usage: kge [--version] {{{names}}} [options]", ""]
+    lines += [f"  {name:<8} {text}" for name, (_, text) in COMMANDS.items()]
+    lines += ["", "Each command has its own help: kge COMMAND --help"]
+    return "\n".join(lines)
 
 
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] in (["--version"], ["-V"]):
+        print(f"kge {version()}")
+        return 0
     if not args or args[0] not in COMMANDS:
-        print("usage: kge {new,demo,testbed,bench} [options]\n")
-        for name, (_, text) in COMMANDS.items():
-            print(f"  {name:<8} {text}")
-        return 0 if args[:1] in ([], ["-h"], ["--help"]) else 2
+        known = args[:1] in ([], ["-h"], ["--help"])
+        if not known:
+            print(f"kge: unknown command {args[0]!r}\n", file=sys.stderr)
+        print(usage(), file=sys.stdout if known else sys.stderr)
+        return 0 if known else 2
     func, _ = COMMANDS[args[0]]
     return func(args[1:])
 

@@ -1,10 +1,12 @@
 """Frame a sample: fit the camera to what the sample built, beside the testbed's text.
 
-Each sample gets its own camera: after its setup, the world AABB of its colliders is
-fitted into the part of the window the sample list and the help text leave free.
-Static colliders much larger than the rest (a 200 m floor) are left out of the fit,
-so the view shows the action rather than the whole ground. A sample with no collider
-(sprites, shape drawables: the animation samples) is fitted to those instead.
+Each sample gets its own camera: the world AABB of what it built is fitted into the
+part of the window the sample list and the help text leave free. The view follows the
+action: when a sample has moving bodies, static geometry counts only where it lies
+near them (the floor and the lower walls of a 40 m box holding a pile, not the empty
+top of the box), and static colliders much larger than the rest (a 200 m floor) are
+left out. A sample with no collider (sprites, shape drawables: the animation samples)
+is fitted to those instead.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import numpy as np
 from kge.components.camera import Camera
 from kge.components.collider import Collider
 from kge.components.drawables import DRAWABLE_TYPES
-from kge.components.rigidbody import RigidBody
+from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Circle
 from kge.components.sprite import Sprite
 from kge.components.transform import Transform
@@ -49,22 +51,46 @@ def collider_bounds(world: World, entity: int, col: Collider) -> Rect | None:
 
 
 def scene_bounds(world: World) -> Rect | None:
-    """The AABB of everything but huge static colliders (of everything, if that is all)."""
-    kept: list[Rect] = []
+    """The AABB of what moves and the static geometry near it (see the module docstring)."""
+    moving: list[Rect] = []
+    still: list[Rect] = []
     huge: list[Rect] = []
     for entity, (col,) in world.query(Collider):
         r = collider_bounds(world, entity, col)
         if r is None:
             continue
         body = col.body if col.body is not None else entity
-        static = world.try_get(body, RigidBody) is None
-        big = r[2] - r[0] > HUGE or r[3] - r[1] > HUGE
-        (huge if static and big else kept).append(r)
-    rects = kept or huge or _drawn_bounds(world)
-    if not rects:
-        return None
+        rb = world.try_get(body, RigidBody)
+        if rb is not None and rb.type is not BodyType.STATIC:
+            moving.append(r)
+        elif r[2] - r[0] > HUGE or r[3] - r[1] > HUGE:
+            huge.append(r)
+        else:
+            still.append(r)
+    if moving:
+        near = _grow(_union(moving), 0.25, 2.0)
+        clipped = [c for c in (_clip(r, near) for r in still + huge) if c is not None]
+        return _union(moving + clipped)
+    rects = still or huge or _drawn_bounds(world)
+    return _union(rects) if rects else None
+
+
+def _union(rects: list[Rect]) -> Rect:
     a = np.array(rects)
     return (float(a[:, 0].min()), float(a[:, 1].min()), float(a[:, 2].max()), float(a[:, 3].max()))
+
+
+def _grow(r: Rect, fraction: float, least: float) -> Rect:
+    """``r`` grown on every side by ``fraction`` of its size, and at least ``least``."""
+    dx = max((r[2] - r[0]) * fraction, least)
+    dy = max((r[3] - r[1]) * fraction, least)
+    return (r[0] - dx, r[1] - dy, r[2] + dx, r[3] + dy)
+
+
+def _clip(r: Rect, to: Rect) -> Rect | None:
+    """The part of ``r`` inside ``to``, or None when they do not overlap."""
+    out = (max(r[0], to[0]), max(r[1], to[1]), min(r[2], to[2]), min(r[3], to[3]))
+    return out if out[0] <= out[2] and out[1] <= out[3] else None
 
 
 def _drawn_bounds(world: World) -> list[Rect]:
@@ -105,9 +131,9 @@ def fit_camera(bounds: Rect, size: tuple[int, int], free: Rect, margin: float = 
     bcx, bcy = (bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2
     cx = bcx - (fcx - size[0] / 2) / scale
     cy = bcy - (fcy - size[1] / 2) / scale
-    cam = Camera(center=(cx, cy))
-    cam.zoom = scale / cam.pixels_per_meter
-    return cam
+    # the scale goes into pixels_per_meter: zoom is clamped to [0.1, 10], too narrow
+    # for an 80 m box in a 400-pixel tile
+    return Camera(center=(cx, cy), pixels_per_meter=scale)
 
 
 #: the window width the explicit ``camera=`` zooms of samples were chosen for

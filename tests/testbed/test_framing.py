@@ -81,3 +81,34 @@ def test_f1_from_a_real_window_toggles_debug_drawing_once() -> None:
     finally:
         disconnect(window)
         app.close()
+
+
+@pytest.mark.parametrize("slug", ["box-pile", "rain", "hello-world", "pyramid"])
+def test_the_contact_sheet_shows_every_moving_body_large(slug: str) -> None:
+    """The showcase frames a sample after it ran: its bodies, not the empty top of its box."""
+    from kge import Collider, RigidBody
+    from kge.components.rigidbody import BodyType
+    from kge.testbed.cli import make_app
+    from kge.testbed.framing import collider_bounds
+    from kge.testbed.showcase import frame_sample
+
+    size = (640, 400)
+    sample = get_sample(slug)
+    app = make_app(sample, size)
+    app.step(120)
+    frame_sample(app, sample, label=False)
+    cam = app.world.resource(Camera)
+    corners = []
+    for e, (col, rb) in app.world.query(Collider, RigidBody):
+        if rb.type is BodyType.DYNAMIC:
+            box = collider_bounds(app.world, e, col)
+            assert box is not None
+            for corner in ((box[0], box[1]), (box[2], box[3])):
+                sx, sy = cam.world_to_screen(corner, size)
+                assert -1 <= sx <= size[0] + 1 and -1 <= sy <= size[1] - 24 + 1, (slug, e)
+                corners.append((sx, sy))
+    assert corners
+    xs, ys = [c[0] for c in corners], [c[1] for c in corners]
+    # the bodies fill a fair part of the tile (the empty top of a 40 x 80 m box does not)
+    assert max(xs) - min(xs) > 0.25 * size[0] or max(ys) - min(ys) > 0.25 * (size[1] - 24)
+    app.close()
