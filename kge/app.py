@@ -36,7 +36,7 @@ import sys
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from kge.actions import InputMap
+from kge.actions import Bindings, InputMap
 from kge.components.camera import Camera, active_camera
 from kge.errors import SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
@@ -62,7 +62,9 @@ class App(Host):
 
     ``plugins`` chooses the subsystems every scene world gets (default:
     :func:`kge.default_plugins`, everything); ``App(scene, plugins=[PhysicsPlugin()])``
-    is a physics-only App that never imports rendering or audio.
+    is a physics-only App that never imports rendering or audio. ``bindings`` declares
+    the game's input actions (:meth:`kge.InputMap.declare`: a dict, a JSON file or a
+    function), ready before the first scene is set up.
     """
 
     def __init__(
@@ -78,6 +80,7 @@ class App(Host):
         time_scale: float = 1.0,
         background: tuple[int, int, int] = (24, 26, 33),
         plugins: Iterable[PluginLike] | None = None,
+        bindings: Bindings | None = None,
         **scene_kwargs: Any,
     ) -> None:
         self.headless = (not has_display()) if headless is None else bool(headless)
@@ -99,6 +102,8 @@ class App(Host):
         self.input = Input()
         self.input.screen_to_world = self.screen_to_world
         self.actions = InputMap(self.input)  #: named actions, shared by every scene
+        if bindings is not None:  # the game's controls, before any scene is set up
+            self.actions.declare(bindings)
         self.frontend: Frontend | None = None
         self.extra_systems: list[SystemFactory] = []
         self._stack: list[tuple[Scene, World]] = []
@@ -114,6 +119,7 @@ class App(Host):
         self._closing = False
         self._leaving = 0  #: scenes a replace being made will close once its setup ends
         self._in_frame = False
+        self._ending_frame = False  #: the scene changes asked for during a frame are running
         self._running = False
         self.frame_count = 0
         self.add_plugins(*(default_plugins() if plugins is None else plugins))
@@ -242,7 +248,8 @@ class App(Host):
         def begin() -> None:  # in order with the changes queued before it
             leaving = self._stack[-1][1] if self._stack else None
             self._swap = lambda: self._replace(target, kwargs, leaving)
-            self.transition = ActiveTransition(transition)  # the newest one wins
+            # the newest one wins; asked for during a frame, its time starts with the next
+            self.transition = ActiveTransition(transition, fresh=self._ending_frame)
 
         self._schedule(0, begin)
 
@@ -256,14 +263,24 @@ class App(Host):
         active = self.transition
         if active is None:
             return
+        if active.fresh:  # begun as the frame that asked for it ended
+            active.fresh = False
+            return
         active.advance(real_dt)
         swap = self._swap
         if active.swap_due and swap is not None:
+            if active.transition.needs_picture and active.picture is None:
+                active.picture = self._capture()  # the old scene as it looks now
             active.swapped = True
             self._swap = None
             self._schedule(0, swap)
         if active.done:
             self.transition = None
+
+    def _capture(self) -> Any:
+        """A picture of what the window shows now (None before anything was drawn)."""
+        capture = getattr(self.frontend, "capture", None)
+        return capture(self) if capture is not None else None
 
     def visible_worlds(self) -> list[World]:
         """The worlds drawn this frame, bottom first: the top one and the scenes below
@@ -475,7 +492,11 @@ class App(Host):
             self._in_frame = False
             self.input.end_frame()
             self.frame_count += 1
-        self._run_scene_ops()
+        self._ending_frame = True
+        try:
+            self._run_scene_ops()
+        finally:
+            self._ending_frame = False
 
     def _run_world(self, world: World, steps: int, game_dt: float, with_input: bool) -> None:
         time = world.resource(Time)
@@ -578,7 +599,12 @@ class App(Host):
 def run(
     scene: SceneLike, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
 ) -> App:
-    """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
+    """One-line entry point: ``kge.run(my_scene, title="Pong")``.
+
+    Every other keyword goes to :class:`App` (``bindings={"jump": ["key:SPACE",
+    "pad:a"]}``, ``fixed_dt=...``) or, when App has no such parameter, to the scene's
+    setup.
+    """
     app = App(scene, title=title, size=size, **kwargs)
     app.run()
     return app
