@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.components.color import Color, rgba
+from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.components.ui_checks import (
     choice,
@@ -252,7 +252,7 @@ class ColorPicker(Tracked):
         "color": rgba, "alpha": boolean, "disabled": boolean,
     }  # fmt: skip
 
-    color: Color = (255, 0, 0, 255)
+    color: RGBA = (255, 0, 0, 255)
     alpha: bool = True
     disabled: bool = False
 

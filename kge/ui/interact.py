@@ -159,7 +159,7 @@ class Frame:
             self._tooltip_at(p)
             if drag.moved(self, p):
                 return
-            if st.grab:
+            if "bar" in st.grab or "pan" in st.grab:
                 scrolling.grab_move(self, p)
             elif st.pressed is not None:
                 controls.drag(self, st.pressed, self.widget(st.pressed), p)
@@ -168,8 +168,8 @@ class Frame:
             hit = lay.hit(p, lambda e: True)
             if self.modal is not None or lay.hit(p, self.blocking) is not None:
                 self.took = True
-            if hit is not None and self.reachable(hit):
-                scrolling.wheel(self, hit, ev.scroll, bool(ev.modifiers & Mod.SHIFT))
+            scrolling.wheel(self, hit if hit is not None and self.reachable(hit) else None,
+                            ev.scroll, bool(ev.modifiers & Mod.SHIFT))  # fmt: skip
             return
         if ev.button != Mouse.LEFT:
             if self.modal is not None or lay.hit(p, self.blocking) is not None:
@@ -215,10 +215,10 @@ class Frame:
             self.took = True
             st.pressed = None
             return
-        if st.grab:
-            st.grab.clear()
-            self.took = True
         if st.pressed is None:
+            if st.grab:  # a scrollbar or a pan let go
+                st.grab.clear()
+                self.took = True
             return
         self.took = True
         pressed, st.pressed = st.pressed, None

@@ -350,7 +350,9 @@ class _Solver:
         sy = min(max(sv.scroll[1], 0.0), max_y)
         if (sx, sy) != sv.scroll:  # past the end: clamped (documented), not marked changed
             object.__setattr__(sv, "scroll", (sx, sy))
-        self.out.scroll[e] = ScrollArea(view, content_w, content_h, max_x, max_y, bar_y, bar_x)
+        shown = sv.scrollbar  # (without bars, bar_x / bar_y took no room: bar is 0)
+        self.out.scroll[e] = ScrollArea(view, content_w, content_h, max_x, max_y,
+                                        bar_y and shown, bar_x and shown)  # fmt: skip
         content = Box(view.x - sx, view.top + sy - content_h, content_w, content_h)
         return self._arrange(n, kids, content, view.intersect(clip))
 

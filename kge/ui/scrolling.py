@@ -147,8 +147,9 @@ def grab_move(f: Frame, p: tuple[float, float]) -> None:
             sv.scroll = (x, y)
 
 
-def wheel(f: Frame, hit: int, scroll: tuple[float, float], shift: bool) -> None:
-    """The wheel over ``hit``: the innermost thing that can scroll takes it."""
+def wheel(f: Frame, hit: int | None, scroll: tuple[float, float], shift: bool) -> None:
+    """The wheel over ``hit``: an open dropdown's list under the pointer, else the
+    innermost thing that can scroll takes it."""
     dx, dy = scroll
     if shift and dx == 0:
         dx, dy = -dy, 0.0

@@ -13,6 +13,7 @@ until its text is typed.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 from kge.components.ui import SpinBox, TextArea, TextInput
@@ -94,6 +95,8 @@ def typed(f: Frame, text: str) -> None:
     s = editing.clean(text, multiline, w.tab_size if isinstance(w, TextArea) else 4)
     if isinstance(w, SpinBox):
         s = "".join(ch for ch in s if ch in "0123456789.-+eE")
+    if not s:
+        return  # nothing left to type (control characters, letters in a number)
     new, caret = editing.insert(b.text, b.caret, b.anchor, s, _limit(b))
     _set(f, e, b, new, caret)
     _follow(f, e, w, b)
@@ -318,7 +321,7 @@ def set_spin(f: Frame, e: int, w: SpinBox, value: float) -> None:
     if w.rounded:
         value = float(round(value))
     elif w.step:
-        value = round(value / w.step) * w.step
+        value = math.floor(value / w.step + 0.5) * w.step  # to the nearest step, halves up
         value = round(value, 10)
     value = min(max(value, w.min), w.max)
     if value != w.value:
