@@ -69,15 +69,17 @@ class UIInput(System):
         made = handle_input(world, inp, state, dt)
         events.items.extend(made)
         runner = world.try_resource(BehaviourRunner)
-        if runner is None:
-            return
         for ev in made:
             hook = HOOKS.get(type(ev))
-            if hook is None:
+            if hook is None or runner is None:
                 continue
             entity = getattr(ev, hook[1])
             if entity is not None and world.exists(entity):
                 runner.call_one(entity, hook[0], ev)
+        for e in state.doomed:
+            if world.exists(e):
+                world.despawn(e)
+        state.doomed.clear()
 
 
 def _check_node(world: World) -> Any:

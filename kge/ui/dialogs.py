@@ -37,10 +37,8 @@ def close_dialog(f: Frame, dialog: int, result: int, text: str) -> None:
         f.focus(None)
     if d.keep:
         f.world.get(dialog, UINode).visible = False
-    else:
-        f.world.despawn(dialog)
-        for e in f.layout.subtree(dialog)[1:]:
-            f.world.despawn(e)
+    else:  # despawned once its on_dialog_closed hook has run (kge.systems.ui)
+        f.state.doomed.extend(f.layout.subtree(dialog))
 
 
 def message_box(world: World, text: str, buttons: Sequence[str] = ("OK",), *, title: str = "",

@@ -34,7 +34,7 @@ from kge.ui.events import FocusChanged, ValueChanged
 from kge.ui.focus import nearest, scroll_into_view, step, tab_order, top_modal
 from kge.ui.layout import Layout
 from kge.ui.sizing import Sizer
-from kge.ui.state import UIState
+from kge.ui.state import Tip, UIState
 from kge.ui.style import Look
 from kge.world import World
 
@@ -122,7 +122,9 @@ class Frame:
         self.events.append(FocusChanged(e, old))
         if e is not None:
             scroll_into_view(self.world, self.layout, e)
-            st.tip = type(st.tip)(e, st.time)  # a tooltip for the focus, after its delay
+            if st.tip.shown:
+                st.touch(st.tip.entity)
+            st.tip = Tip()  # the new focus's tooltip, if it has one, after its delay
 
     def move_focus(self, delta: int) -> None:
         target = step(self.order(), self.state.focused, delta)
@@ -233,7 +235,7 @@ class Frame:
         if over != st.tip.entity or (st.tip.shown and over is None):
             if st.tip.shown:
                 st.touch(st.tip.entity)
-            st.tip = type(st.tip)(over, st.time, False, p)
+            st.tip = Tip(over, st.time, False, p)
         elif not st.tip.shown:
             st.tip.at = p
 
@@ -346,16 +348,18 @@ def handle_input(world: World, inp: Input, state: UIState, dt: float = 0.0) -> l
 def _tooltip_timer(f: Frame) -> None:
     st = f.state
     tip = st.tip
+    focused = st.focused
+    if (tip.entity is None and focused is not None and focused in f.layout.boxes
+            and f.world.try_get(focused, Tooltip) is not None):  # fmt: skip
+        b = f.layout.boxes[focused]  # nothing under the pointer asks: the focus's tooltip
+        tip = st.tip = Tip(focused, st.time, False, (b.center[0], b.y))
     if tip.entity is None or tip.shown:
         return
     t = f.world.try_get(tip.entity, Tooltip)
     if t is None or tip.entity not in f.layout.boxes:
-        st.tip = type(tip)()
+        st.tip = Tip()
         return
-    if st.time - tip.since >= t.delay:
+    if st.time - tip.since >= t.delay - 1e-9:  # (sums of frame times are not exact)
         tip.shown = True
-        if tip.entity == st.focused and tip.at == (0.0, 0.0):
-            b = f.layout.boxes[tip.entity]
-            tip.at = (b.center[0], b.y)
         st.touch(tip.entity)
 

@@ -89,6 +89,8 @@ class UIState:
     #: pointer-grab state while pressed: the widget part being dragged and where it began
     grab: dict[str, Any] = field(default_factory=dict)
     caches: dict[tuple[Any, ...], Any] = field(default_factory=dict)
+    #: nodes to despawn once this frame's UI hooks ran (closed dialogs)
+    doomed: list[int] = field(default_factory=list)
 
     @property
     def clipboard(self) -> str:
