@@ -19,6 +19,7 @@ kge.errors.ValidationError: TreeView.items: the parents of item 1 form a cycle (
 from __future__ import annotations
 
 from collections.abc import Hashable
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
@@ -261,7 +262,7 @@ class TreeView(Widget):
     _lists: ClassVar[tuple[str, ...]] = ("items",)
 
     items: list[TreeItem] = field(default_factory=list)
-    expanded: frozenset[Any] = frozenset()
+    expanded: AbstractSet[Any] = frozenset()  #: held as a frozenset (any set is taken)
     selected: int | str | None = None
     scroll: float = 0.0
     row_height: float | None = None

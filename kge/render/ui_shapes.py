@@ -159,8 +159,9 @@ class ShapeStore:
         """A rounded box; ``border`` pixels of ``edge`` colour inside its outline.
         ``corners`` (bottom-left, bottom-right, top-right, top-left) make a gradient."""
         r = max(min(radius, w / 2, h / 2), 0.0)
-        m = 1.0
-        pos = (x - m, y - m, x + w + m, y - m, x + w + m, y + h + m, x - m, y + h + m)
+        # the quad is the box itself: pixels outside it are never touched (edges that
+        # fall between pixels stay crisp; the corners' curves are smoothed inside)
+        pos = (x, y, x + w, y, x + w, y + h, x, y + h)
         shape = (x + w / 2, y + h / 2, w / 2, h / 2) * 4
         cols = tuple(c for corner in (corners or (color,) * 4) for c in corner)
         self._put(key, group, (pos, cols, shape, (r, border, 0.0, 0.0) * 4, edge * 4))
@@ -169,7 +170,7 @@ class ShapeStore:
                thickness: float, color: Color) -> None:  # fmt: skip
         """A line from ``a`` to ``b`` with round caps, ``thickness`` pixels wide."""
         r = thickness / 2
-        m = r + 1.0
+        m = r
         x0, x1 = min(a[0], b[0]) - m, max(a[0], b[0]) + m
         y0, y1 = min(a[1], b[1]) - m, max(a[1], b[1]) + m
         pos = (x0, y0, x1, y0, x1, y1, x0, y1)
