@@ -242,7 +242,10 @@ class UIDrawer:
         if not isinstance(state.measure, PygletMeasure):
             state.measure = PygletMeasure()
         self.measure = state.measure
-        lay = current_layout(world, frame.viewport, self._to_screen(frame))
+        # laid out for the App's window size, as the input handling sees it (a headless App
+        # resized after its first frame draws into its first buffer: the UI is cut, not moved)
+        size = host.size if host is not None else frame.viewport
+        lay = current_layout(world, size, self._to_screen(frame))
         self.layout, self.sizer = lay, lay.sizer
         todo = set(state.redraw)
         state.redraw.clear()

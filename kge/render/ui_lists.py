@@ -118,12 +118,14 @@ def _list(d: UIDrawer, c: Canvas, w: ScrollList, lk: Look) -> None:
     pad = lk.padding
     th = _theme(d)
     scroll = w.scroll
-    for slot, i in enumerate(geo.visible_rows(view, len(w.items), row_h, scroll)):
+    # parts are keyed by row, not by place: scrolling moves the labels in view and makes
+    # only the rows scrolled in (a label re-laid for new text costs more than a move)
+    for i in geo.visible_rows(view, len(w.items), row_h, scroll):
         row = geo.row_box(view, i, row_h, scroll)
         if i == w.selected:
-            c.rect(("sel", slot), row, th.selection, 3, own=True)
+            c.rect("sel", row, th.selection, 3, own=True)
         text = Box(row.x + pad, row.y, max(row.w - 2 * pad, 0.0), row.h)
-        c.line_of_text(("row", slot), w.items[i], text, lk.font, lk.text, "left", own=True)
+        c.line_of_text(("row", i), w.items[i], text, lk.font, lk.text, "left", own=True)
 
 
 def _tree(d: UIDrawer, c: Canvas, w: TreeView, lk: Look) -> None:
@@ -131,11 +133,12 @@ def _tree(d: UIDrawer, c: Canvas, w: TreeView, lk: Look) -> None:
     view, row_h = _rows_area(d, c, w, lk, len(rows))
     th = _theme(d)
     indent = row_h * 0.8
-    for slot, i in enumerate(geo.visible_rows(view, len(rows), row_h, w.scroll)):
+    for i in geo.visible_rows(view, len(rows), row_h, w.scroll):
+        slot = i  # keyed by row: scrolling moves the parts in view (see _list)
         item, depth, kids = rows[i]
         row = geo.row_box(view, i, row_h, w.scroll)
         if item.id == w.selected:
-            c.rect(("sel", slot), row, th.selection, 3, own=True)
+            c.rect("sel", row, th.selection, 3, own=True)
         x = row.x + depth * indent
         if kids:
             way = "down" if item.id in w.expanded else "right"
@@ -285,7 +288,8 @@ def _text_area(d: UIDrawer, c: Canvas, w: TextArea, lk: Look) -> None:
     if not w.text and w.placeholder:
         c.label(("line", 0), visible(w.placeholder), av.view.x, av.view.top - asc, font,
                 th.text_muted, 4, own=True)  # fmt: skip
-    for slot, i in enumerate(range(first, min(first + count, len(av.lines)))):
+    for i in range(first, min(first + count, len(av.lines))):
+        slot = i  # keyed by line: scrolling moves the labels in view
         a, z = av.lines[i]
         top = av.line_top(i, scroll)
         if sel is not None and sel[0] <= z and sel[1] >= a:

@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 import pyglet
 
-from kge.ui.measure import Font, is_control
+from kge.ui.measure import Advances, Font, is_control
 
 Color = tuple[int, ...]
 _ANCHORS: dict[str, Literal["left", "center", "right"]] = {
@@ -28,7 +28,7 @@ class PygletMeasure:
 
     def __init__(self) -> None:
         self._fonts: dict[Font, Any] = {}
-        self._advances: dict[tuple[Font, str], float] = {}
+        self._advances: dict[Font, Advances] = {}
 
     def font(self, font: Font) -> Any:
         got = self._fonts.get(font)
@@ -38,16 +38,17 @@ class PygletMeasure:
             )
         return got
 
-    def advance(self, ch: str, font: Font) -> float:
-        key = (font, ch)
-        got = self._advances.get(key)
+    def advances(self, font: Font) -> Advances:
+        got = self._advances.get(font)
         if got is None:
-            if is_control(ch):
-                got = 0.0
-            else:
-                glyphs = self.font(font).get_glyphs(ch)[0]
-                got = float(sum(g.advance for g in glyphs))
-            self._advances[key] = got
+            pyglet_font = self.font(font)
+
+            def advance(ch: str) -> float:
+                if is_control(ch):
+                    return 0.0
+                return float(sum(g.advance for g in pyglet_font.get_glyphs(ch)[0]))
+
+            got = self._advances[font] = Advances(advance)
         return got
 
     def line_height(self, font: Font) -> float:

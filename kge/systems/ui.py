@@ -147,6 +147,7 @@ class UIPlugin(Plugin):
 def _tracker(world: World, state: UIState, added: bool) -> Callable[[int, Any], None]:
     def hook(entity: int, component: Any) -> None:
         state.writes.add(entity)
+        state.structural.add(entity)
         if isinstance(component, Tracked):
             if added:
                 bind(component, entity, state.writes, world.validate)

@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from kge.components.transform import Transform
-from kge.components.ui import UINode
+from kge.components.ui import Dialog, ScrollView, Tabs, UINode
 from kge.host import Host
-from kge.ui.layout import Layout, compute_layout
+from kge.ui.layout import Layout, compute_layout, node_shape
 from kge.ui.settings import UISettings
 from kge.ui.state import UIState
 from kge.ui.theme import DEFAULT_THEME, Theme
@@ -57,20 +57,54 @@ def current_layout(world: World, size: tuple[int, int] | None = None,
     if to_screen is None:
         to_screen = _default_to_screen(world)
     lay = state.layout
+    if (state.writes and not state.structural and key == state.layout_key
+            and lay.sizer is not None
+            and all(_neutral(world, lay, e) for e in state.writes)):  # fmt: skip
+        for e in state.writes:  # values changed, not sizes: the same boxes, drawn again
+            state.versions[e] = state.versions.get(e, 0) + 1
+        state.redraw |= state.writes
+        state.writes.clear()
     if state.writes or key != state.layout_key or lay.sizer is None:
+        state.structural.clear()
         for e in state.writes:
             state.versions[e] = state.versions.get(e, 0) + 1
         state.redraw |= state.writes
         state.writes.clear()
         version = lay.version + 1
         lay = compute_layout(world, size, theme, scale=scale, text_scale=settings.text_scale,
-                             measure=state.measure, to_screen=to_screen)  # fmt: skip
+                             measure=state.measure, to_screen=to_screen,
+                             sizer=lay.sizer)  # fmt: skip
         lay.version = version
         state.layout = lay
         state.layout_key = key
     elif lay.follow:
         _refollow(world, state, to_screen)
     return state.layout
+
+
+#: widgets whose writes can move other nodes (a tab's page, wrapped text's height)
+_MOVERS: tuple[type, ...] = (Tabs,)
+
+
+def _neutral(world: World, lay: Layout, e: int) -> bool:
+    """Does the write noted for ``e`` leave every box as it was? (Its UINode fields are
+    as laid out, and an "auto" node's widget still asks for the same size.)"""
+    node = lay.nodes.get(e)
+    if node is None or world.try_get(e, UINode) is not node or e not in lay.shape:
+        return False
+    if node_shape(node) != lay.shape[e]:
+        return False
+    if world.try_get(e, ScrollView) is not None or world.try_get(e, Dialog) is not None:
+        return False
+    w = lay.widget.get(e)
+    if w is None or isinstance(w, _MOVERS) or getattr(w, "wrap", False):
+        return w is None
+    if node.width != "auto" and node.height != "auto":
+        return True
+    natural = lay.natural.get(e)
+    sizer = lay.sizer
+    assert sizer is not None
+    return natural is not None and sizer.intrinsic(e, w, 0.0) == natural
 
 
 def _refollow(world: World, state: UIState, to_screen: ToScreen | None) -> None:
@@ -82,6 +116,7 @@ def _refollow(world: World, state: UIState, to_screen: ToScreen | None) -> None:
         point = to_screen(target, node.follow_offset) if (to_screen and node) else None
         if point is None or not all(v == v and abs(v) < 1e9 for v in point):
             state.writes.add(root)  # gone: lay out again (it is hidden then)
+            state.structural.add(root)
             continue
         dx, dy = point[0] - old[0], point[1] - old[1]
         if dx == 0 and dy == 0:
@@ -90,5 +125,6 @@ def _refollow(world: World, state: UIState, to_screen: ToScreen | None) -> None:
         for e in lay.subtree(root):
             lay.boxes[e] = lay.boxes[e].moved(dx, dy)
             state.redraw.add(e)
+        lay.moved()
     if state.writes:
         current_layout(world, lay.size, to_screen)

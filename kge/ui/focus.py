@@ -24,18 +24,6 @@ _DIRS: dict[str, tuple[float, float]] = {
 }  # fmt: skip
 
 
-def top_modal(world: World, layout: Layout) -> int | None:
-    """The modal dialog drawn on top, if one is shown."""
-    from kge.components.ui import Dialog
-
-    best = None
-    for e in layout.order:
-        d = world.try_get(e, Dialog)
-        if d is not None and d.modal:
-            best = e
-    return best
-
-
 def tab_order(layout: Layout, nodes: dict[int, UINode], can_focus: Callable[[int], bool],
               modal: int | None) -> list[int]:  # fmt: skip
     """The focusable nodes in Tab order (see the module docstring)."""

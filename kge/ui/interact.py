@@ -31,7 +31,7 @@ from kge.keys import Key, Mod, Mouse
 from kge.ui import controls, drag, scrolling, text_controls
 from kge.ui.dialogs import close_dialog
 from kge.ui.events import FocusChanged, ValueChanged
-from kge.ui.focus import nearest, scroll_into_view, step, tab_order, top_modal
+from kge.ui.focus import nearest, scroll_into_view, step, tab_order
 from kge.ui.layout import Layout
 from kge.ui.sizing import Sizer
 from kge.ui.state import Tip, UIState
@@ -64,8 +64,8 @@ class Frame:
         self.events: list[Any] = []
         self.took = False
         self.used_keys: list[int] = []
-        self.nodes: dict[int, UINode] = {e: n for e, (n,) in world.query(UINode)}
-        self.modal = top_modal(world, self.layout)
+        self.nodes: dict[int, UINode] = self.layout.nodes
+        self.modal = self.layout.modal
 
     # -- lookups ---------------------------------------------------------------------------------
     def widget(self, e: int | None) -> Any:

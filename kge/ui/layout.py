@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 from kge.components.ui import (
     ANCHORS,
@@ -52,11 +52,12 @@ from kge.world import World
 MAX_DEPTH = 256
 #: a dialog's nodes are drawn this many depth levels above the base UI
 DIALOG_LAYER = 4096
+_CELL = 64.0  #: pixels per cell of the hit-test grid
 
 
-@dataclass(slots=True, frozen=True)
-class Box:
-    """A rectangle in window pixels, origin bottom-left."""
+class Box(NamedTuple):
+    """A rectangle in window pixels, origin bottom-left (a named tuple: layouts make
+    thousands)."""
 
     x: float
     y: float
@@ -124,17 +125,52 @@ class Layout:
     parent: dict[int, int | None] = field(default_factory=dict)
     dialog: dict[int, int] = field(default_factory=dict)  #: entity -> its dialog (if inside one)
     follow: dict[int, tuple[int, tuple[float, float]]] = field(default_factory=dict)
+    nodes: dict[int, UINode] = field(default_factory=dict)  #: every UI node, shown or not
+    #: what each node's size was computed from: its UINode's fields and, for an "auto"
+    #: size, its widget's natural size (a write that changes neither needs no new layout)
+    shape: dict[int, tuple[Any, ...]] = field(default_factory=dict)
+    natural: dict[int, tuple[float, float]] = field(default_factory=dict)
+    modal: int | None = None  #: the modal dialog drawn on top, if one is shown
     sizer: Sizer | None = None
     size: tuple[int, int] = (0, 0)
     scale: float = 1.0
     version: int = 0  #: bumped by every full layout
+    _cells: dict[tuple[int, int], list[int]] | None = field(default=None, repr=False)
 
     def hit(self, point: tuple[float, float], accept: Callable[[int], bool]) -> int | None:
-        """The topmost node under ``point`` that ``accept`` takes, or None."""
-        for e in reversed(self.order):
+        """The topmost node under ``point`` that ``accept`` takes, or None.
+
+        Looked up in a grid of 64-pixel cells (built on the first hit after a layout),
+        so a pointer move over 1,000 widgets tests the few under it.
+        """
+        cells = self._cells
+        if cells is None:
+            cells = self._cells = self._index()
+        for e in cells.get((int(point[0] // _CELL), int(point[1] // _CELL)), ()):
             if self.visible_box(e).contains(point) and accept(e):
                 return e
         return None
+
+    def _index(self) -> dict[tuple[int, int], list[int]]:
+        cells: dict[tuple[int, int], list[int]] = {}
+        for e in reversed(self.order):  # topmost first
+            b = self.visible_box(e)
+            if b.w <= 0 or b.h <= 0:
+                continue
+            x0, x1 = int(b.x // _CELL), int((b.x + b.w) // _CELL)
+            y0, y1 = int(b.y // _CELL), int((b.y + b.h) // _CELL)
+            if (x1 - x0 + 1) * (y1 - y0 + 1) > 4096:  # larger than the window: clip to it
+                x0, y0 = max(x0, -1), max(y0, -1)
+                x1 = min(x1, int(self.size[0] // _CELL) + 1)
+                y1 = min(y1, int(self.size[1] // _CELL) + 1)
+            for cx in range(x0, x1 + 1):
+                for cy in range(y0, y1 + 1):
+                    cells.setdefault((cx, cy), []).append(e)
+        return cells
+
+    def moved(self) -> None:
+        """Boxes were moved in place (nodes following an entity): hit anew."""
+        self._cells = None
 
     def visible_box(self, e: int) -> Box:
         """The node's box cut by the scroll views around it."""
@@ -158,7 +194,9 @@ class Layout:
 
 
 def _finite(v: float) -> float:
-    return min(max(v, 0.0), MAX_PX) if v == v else 0.0
+    if 0.0 <= v <= MAX_PX:
+        return v
+    return MAX_PX if v > MAX_PX else 0.0  # NaN and negatives: 0
 
 
 def _clamp(v: float, lo: float | None, hi: float | None, s: float) -> float:
@@ -195,7 +233,7 @@ class _Solver:
         self.dialogs: dict[int, Dialog] = {
             e: d for e, (d,) in world.query(Dialog) if e in self.nodes
         }
-        self.out = Layout(widget=self.widget, sizer=sizer, scale=s)
+        self.out = Layout(widget=self.widget, sizer=sizer, scale=s, nodes=self.nodes)
         self._measured: dict[tuple[int, float, float], tuple[float, float]] = {}
         self._dialog_stack: list[int] = []
 
@@ -228,6 +266,7 @@ class _Solver:
         widget = self.widget.get(e)
         pad = n.padding * self.s
         iw, ih = (0.0, 0.0) if widget is None else self.sizer.intrinsic(e, widget, aw - 2 * pad)
+        self.out.natural[e] = (iw, ih)
         kids = self.kids.get(e, [])
         if isinstance(widget, Tabs):
             bar = self.sizer.tab_bar(e, widget)
@@ -279,6 +318,7 @@ class _Solver:
             self._dialog_stack.append(e)
             depth = DIALOG_LAYER * len(self._dialog_stack)
         out.boxes[e] = box
+        out.shape[e] = node_shape(self.nodes[e])
         out.order.append(e)
         out.depth[e] = depth
         out.parent[e] = parent
@@ -471,6 +511,15 @@ class _Solver:
         # dialogs last: drawn over, and hit before, everything else (stable otherwise)
         order = self.out.order
         order.sort(key=lambda k: self.out.depth[k] // DIALOG_LAYER)
+        modal = [e for e in order if e in self.dialogs and self.dialogs[e].modal]
+        self.out.modal = modal[-1] if modal else None
+
+
+def node_shape(n: UINode) -> tuple[Any, ...]:
+    """The UINode fields a layout reads."""
+    return (n.anchor, n.offset, n.width, n.height, n.parent, n.layout, n.padding, n.spacing,
+            n.align, n.justify, n.columns, n.visible, n.order, n.min_width, n.max_width,
+            n.min_height, n.max_height, n.grow, n.shrink, n.follow, n.follow_offset)  # fmt: skip
 
 
 def collect_styles(world: World) -> dict[int, Style]:
@@ -486,13 +535,19 @@ def compute_layout(
     text_scale: float = 1.0,
     measure: TextMeasure | None = None,
     to_screen: Callable[[int, tuple[float, float]], tuple[float, float] | None] | None = None,
+    sizer: Sizer | None = None,
 ) -> Layout:
     """Boxes of every visible UI node for a window of ``size`` pixels.
 
     ``to_screen(entity, offset)`` places nodes that follow an entity (None: they are
-    not shown).
+    not shown). A ``sizer`` from an earlier layout with the same theme, scales and
+    measure is reused (its measured widths are kept).
     """
-    sizer = Sizer(theme, scale, text_scale, measure or TableMeasure(), collect_styles(world))
+    styles = collect_styles(world)
+    if sizer is None or not sizer.same(theme, scale, text_scale, measure):
+        sizer = Sizer(theme, scale, text_scale, measure or TableMeasure(), styles)
+    else:
+        sizer.restyle(styles)
     solver = _Solver(world, sizer, scale, to_screen)
     solver.out.size = (int(size[0]), int(size[1]))
     solver.roots(Box(0.0, 0.0, float(size[0]), float(size[1])))

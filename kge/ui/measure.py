@@ -28,9 +28,9 @@ from __future__ import annotations
 import bisect
 import math
 import unicodedata
-from dataclasses import dataclass
-from functools import lru_cache
-from typing import Protocol
+from collections.abc import Callable, Mapping
+from itertools import accumulate
+from typing import NamedTuple, Protocol
 
 from kge.ui import font_metrics as fm
 
@@ -38,8 +38,7 @@ POINT = 96.0 / 72.0  #: pixels per point (pyglet's 96 dpi)
 ELLIPSIS = "…"
 
 
-@dataclass(slots=True, frozen=True)
-class Font:
+class Font(NamedTuple):
     """Which font text is measured and drawn with (``name`` None: the default)."""
 
     name: str | None = None
@@ -48,11 +47,26 @@ class Font:
     italic: bool = False
 
 
+class Advances(dict[str, float]):
+    """A font's advances by character, each measured once (on first use) by ``fn``."""
+
+    __slots__ = ("fn",)
+
+    def __init__(self, fn: Callable[[str], float]) -> None:
+        super().__init__()
+        self.fn = fn
+
+    def __missing__(self, ch: str) -> float:
+        v = self[ch] = self.fn(ch)
+        return v
+
+
 class TextMeasure(Protocol):
     """What the UI needs to know of a font."""
 
-    def advance(self, ch: str, font: Font) -> float:
-        """Pixels the pen moves after drawing ``ch`` (0 for control characters)."""
+    def advances(self, font: Font) -> Mapping[str, float]:
+        """Pixels the pen moves after drawing each character (0 for control characters):
+        ``advances(font)[ch]``, measured once per character and kept."""
         ...
 
     def line_height(self, font: Font) -> float:
@@ -74,8 +88,15 @@ class TableMeasure:
     """Advances from the DejaVu Sans table (regular and bold; italic measures as regular),
     rounded to whole pixels per glyph as a hinting renderer does."""
 
-    def advance(self, ch: str, font: Font) -> float:
-        return _table_advance(ch, font.size, font.bold)
+    def __init__(self) -> None:
+        self._fonts: dict[Font, Advances] = {}
+
+    def advances(self, font: Font) -> Advances:
+        got = self._fonts.get(font)
+        if got is None:
+            size, bold = font.size, font.bold
+            got = self._fonts[font] = Advances(lambda ch: _table_advance(ch, size, bold))
+        return got
 
     def line_height(self, font: Font) -> float:
         px = font.size * POINT
@@ -85,7 +106,6 @@ class TableMeasure:
         return float(math.ceil(fm.ASCENT * font.size * POINT / fm.UNITS_PER_EM))
 
 
-@lru_cache(maxsize=65536)
 def _table_advance(ch: str, size: float, bold: bool) -> float:
     if is_control(ch):
         return 0.0
@@ -101,19 +121,12 @@ def _table_advance(ch: str, size: float, bold: bool) -> float:
 
 def width(m: TextMeasure, text: str, font: Font) -> float:
     """The width of one line of ``text`` in pixels."""
-    adv = m.advance
-    return float(sum(adv(ch, font) for ch in text))
+    return float(sum(map(m.advances(font).__getitem__, text)))
 
 
 def positions(m: TextMeasure, text: str, font: Font) -> list[float]:
     """x of every caret position 0..len(text), from the start of the line."""
-    out = [0.0]
-    x = 0.0
-    adv = m.advance
-    for ch in text:
-        x += adv(ch, font)
-        out.append(x)
-    return out
+    return list(accumulate(map(m.advances(font).__getitem__, text), initial=0.0))
 
 
 def index_at(m: TextMeasure, text: str, font: Font, x: float) -> int:
@@ -133,17 +146,17 @@ def elide(m: TextMeasure, text: str, font: Font, max_width: float) -> str:
     Only the characters that fit are measured, so a 100,000-character label costs
     what its visible part does.
     """
-    adv = m.advance
+    adv = m.advances(font)
     room = max_width
     x = 0.0
     for i, ch in enumerate(text):
-        x += adv(ch, font)
+        x += adv[ch]
         if x > room:
-            keep = room - adv(ELLIPSIS, font)
+            keep = room - adv[ELLIPSIS]
             cut = 0
             y = 0.0
             for j in range(i):
-                y += adv(text[j], font)
+                y += adv[text[j]]
                 if y > keep:
                     break
                 cut = j + 1
@@ -164,7 +177,7 @@ def wrap(m: TextMeasure, text: str, font: Font, max_width: float | None) -> list
     line is broken between characters). Spaces stay at the end of their line; the
     newline itself belongs to no span."""
     lines: list[tuple[int, int]] = []
-    adv = m.advance
+    adv = m.advances(font)
     start = 0
     n = len(text)
     while True:
@@ -173,22 +186,21 @@ def wrap(m: TextMeasure, text: str, font: Font, max_width: float | None) -> list
         if max_width is None:
             lines.append((start, end))
         else:
-            _wrap_line(text, start, end, font, max_width, adv, lines)
+            _wrap_line(text, start, end, max_width, adv, lines)
         if nl < 0:
             return lines
         start = nl + 1
 
 
-def _wrap_line(text: str, start: int, end: int, font: Font, max_width: float,
-               adv: object, lines: list[tuple[int, int]]) -> None:  # fmt: skip
-    advance = adv  # a bound method; typed loosely to keep the loop lean
+def _wrap_line(text: str, start: int, end: int, max_width: float,
+               adv: Mapping[str, float], lines: list[tuple[int, int]]) -> None:  # fmt: skip
     line = start
     x = 0.0
     brk = -1  # index after the last space on this line
     i = start
     while i < end:
         ch = text[i]
-        w = advance(ch, font)  # type: ignore[operator]
+        w = adv[ch]
         if ch == " ":
             brk = i + 1
             x += w
@@ -199,7 +211,7 @@ def _wrap_line(text: str, start: int, end: int, font: Font, max_width: float,
             lines.append((line, cut))
             line = cut
             brk = -1
-            x = sum(advance(c, font) for c in text[line:i])  # type: ignore[operator]
+            x = sum(adv[c] for c in text[line:i])
             continue
         x += w
         i += 1

@@ -49,16 +49,47 @@ class Sizer:
                  styles: dict[int, Style]) -> None:  # fmt: skip
         self.theme, self.scale, self.text_scale = theme, scale, text_scale
         self.measure, self.styles = measure, styles
+        self._looks: dict[tuple[Any, ...], Look] = {}
+        self._widths: dict[tuple[str, Font], float] = {}
+        self._lines: dict[Font, float] = {}
+
+    def same(self, theme: Theme, scale: float, text_scale: float,
+             measure: TextMeasure | None) -> bool:  # fmt: skip
+        """Does this sizer answer for these settings (so its caches stay good)?"""
+        return (theme is self.theme and scale == self.scale and text_scale == self.text_scale
+                and (measure is None or measure is self.measure))  # fmt: skip
+
+    def restyle(self, styles: dict[int, Style]) -> None:
+        """The entities' own styles of a new layout (looks resolved for them are dropped)."""
+        if styles != self.styles:
+            self.styles = styles
+            self._looks.clear()
+        if len(self._widths) > 20_000:  # texts that come and go (a timer): keep it bounded
+            self._widths.clear()
 
     def look(self, e: int | None, kind: str, state: str = "normal") -> Look:
         own = self.styles.get(e) if e is not None else None
-        return look(self.theme, kind, state, own, self.scale, self.text_scale)
+        key = (id(own), kind, state)
+        got = self._looks.get(key)
+        if got is None:
+            got = self._looks[key] = look(self.theme, kind, state, own, self.scale,
+                                          self.text_scale)  # fmt: skip
+        return got
 
     def line(self, font: Font) -> float:
-        return self.measure.line_height(font)
+        got = self._lines.get(font)
+        if got is None:
+            got = self._lines[font] = self.measure.line_height(font)
+        return got
 
     def width(self, text: str, font: Font) -> float:
-        return width(self.measure, text, font)
+        if len(text) > 256:  # not worth keeping (a 100,000-character label)
+            return width(self.measure, text, font)
+        key = (text, font)
+        got = self._widths.get(key)
+        if got is None:
+            got = self._widths[key] = width(self.measure, text, font)
+        return got
 
     def row_height(self, e: int, declared: float | None, font: Font) -> float:
         """A list or tree row: the declared height, else the theme's (at least a line of

@@ -71,6 +71,8 @@ class UIState:
     measure: TextMeasure = field(default_factory=TableMeasure)
     #: entities whose UI components were written since the last layout
     writes: set[int] = field(default_factory=set)
+    #: entities that gained or lost a UI component since the last layout
+    structural: set[int] = field(default_factory=set)
     #: entities the drawer must sync again (writes, and looks that changed: hover, focus)
     redraw: set[int] = field(default_factory=set)
     #: per-entity count of changes (caches of derived data compare it)
