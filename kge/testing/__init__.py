@@ -1,5 +1,5 @@
 """Testing your own game headless: step until something happens, drive input and the UI
-(``click(app, "Play")``, ``type_text``, ``focus``, ``drag``: :mod:`kge.testing.ui`),
+(``click(app, "Play")``, ``type_text``, ``focus``, ``drag``: :mod:`kge.ui.driving`),
 compare screenshots with golden images.
 
 These helpers work in any test runner; with pytest, kge's plugin (registered when kge
@@ -147,7 +147,7 @@ def compare_with_golden(
         )
 
 
-from kge.testing.ui import (  # noqa: E402  (after the helpers above, which it does not need)
+from kge.ui.driving import (  # noqa: E402  (after the helpers above, which it does not need)
     UITargetError,
     box_of,
     click,

@@ -117,13 +117,16 @@ def scroll_from_thumb(track: Box, view: float, content: float, pointer: float,
 
 def radio_options(box: Box, count: int, horizontal: bool, widths: Sequence[float],
                   gap: float) -> list[Box]:  # fmt: skip
-    """Each option's box (circle and text) in a radio group."""
+    """Each option's box (circle and text) in a radio group; a row wider than the box is
+    squeezed to fit it (the texts are cut)."""
     if horizontal:
+        total = sum(widths[:count]) + gap * max(count - 1, 0)
+        k = min(1.0, box.w / total) if total > 0 else 1.0
         out, x = [], box.x
         for i in range(count):
-            w = widths[i] if i < len(widths) else 0.0
+            w = (widths[i] if i < len(widths) else 0.0) * k
             out.append(Box(x, box.y, w, box.h))
-            x += w + gap
+            x += w + gap * k
         return out
     h = box.h / max(count, 1)
     return [Box(box.x, box.top - (i + 1) * h, box.w, h) for i in range(count)]

@@ -279,6 +279,14 @@ class _Solver:
         if not kids:
             return (iw, ih + title)
         cw, ch = self._kids_extent(n, kids, aw - 2 * pad, ah - 2 * pad - title)
+        sv = self.scrolls.get(e)
+        if sv is not None:  # a scroll view never outgrows the room it has where it scrolls
+            bar = self.sizer.theme.scrollbar * self.s if sv.scrollbar else 0.0
+            if sv.vertical:
+                ch = min(ch, max(ah - 2 * pad - title, 0.0))
+                cw += bar if sv.scrollbar else 0.0
+            if sv.horizontal:
+                cw = min(cw, max(aw - 2 * pad, 0.0))
         return (max(cw + 2 * pad, iw), max(ch + 2 * pad + title, ih))
 
     def _title(self, e: int) -> float:
@@ -418,7 +426,8 @@ class _Solver:
             if free > 0:
                 weights = {i: nodes[i].grow for i in active}
             else:
-                weights = {i: nodes[i].shrink * max(sizes[i], 0.0) for i in active}
+                weights = {i: self._shrink(kids[i], nodes[i], row) * max(sizes[i], 0.0)
+                           for i in active}  # fmt: skip
             total = sum(weights.values())
             if total <= 0:
                 break
@@ -441,6 +450,14 @@ class _Solver:
             if not frozen:
                 break
         return sizes
+
+    def _shrink(self, e: int, n: UINode, row: bool) -> float:
+        """A node's shrink weight: its own, or 1 for an auto-sized scroll view (it scrolls
+        what does not fit instead of overflowing its parent)."""
+        sv = self.scrolls.get(e)
+        if n.shrink == 0 and sv is not None and (sv.horizontal if row else sv.vertical):
+            return 1.0 if (n.width if row else n.height) == "auto" else 0.0
+        return n.shrink
 
     def _line(self, parent: UINode, kids: list[int], sizes: list[tuple[float, float]],
               inner: Box, clip: Box | None) -> list[Placed]:  # fmt: skip

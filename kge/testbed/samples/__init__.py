@@ -17,4 +17,8 @@ from kge.testbed.samples import (  # noqa: F401
     stacking,
     tilemaps,
     ui,
+    ui_editor,
+    ui_overlays,
+    ui_scrolling,
+    ui_world,
 )

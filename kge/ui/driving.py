@@ -1,5 +1,6 @@
 """Driving a game's UI from tests the way a player does: click a widget by its text or
-entity, type, press keys, focus, drag, scroll. No internal import needed.
+entity, type, press keys, focus, drag, scroll. Public as :mod:`kge.testing` (``from
+kge.testing import click``); the testbed's samples check their claims with it too.
 
 Each helper feeds the App's simulated input (the same path a window's events take),
 then steps the App once so the UI handles it and the game sees the result::
@@ -181,11 +182,12 @@ def double_click(app: App, target: Target) -> int:
 
 def focus(app: App, target: Target) -> int:
     """Give ``target`` the keyboard focus (scrolling it into view) and step once."""
-    from kge.systems.ui import focus as set_focus
     from kge.ui.focus import scroll_into_view
 
     e = _entity(app, target)
-    set_focus(app.world, e)
+    state = app.world.resource(UIState)
+    state.touch(state.focused, e)
+    state.focused = e
     scroll_into_view(app.world, _layout(app), e)
     app.step()
     return e
