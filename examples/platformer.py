@@ -7,7 +7,11 @@ planks one-way platforms, and the map's objects (player start, coins, door)
 entities through a spawner registry. The door replaces the scene with the next
 level (``app.replace_scene``); the score travels along as a scene argument.
 
-Keys: left/right (or A/D) run, space/up jumps. Run it:
+Controls are named actions (``left``, ``right``, ``jump``, ``pause``) declared once for
+the App (``App(..., bindings=...)``): left/right or A/D run, space/up/W jumps, a
+gamepad's d-pad and A too. P, Escape or Start pauses: the pause menu's Settings has
+tabs for the volumes, the controls (a scroll view of rebinding buttons, with a reset
+that asks to confirm) and the UI size (``game_menus.py``). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 """
 
@@ -17,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
+import game_menus as ui  # imports kge_required first
 
 import kge
 from kge import (
@@ -26,7 +30,7 @@ from kge import (
     Box,
     Camera,
     Collider,
-    Input,
+    InputMap,
     Key,
     MapObject,
     Physics,
@@ -45,6 +49,18 @@ from kge.testbed.samples.tilemaps import levels
 WIDTH, HEIGHT = 960, 600
 RUN_SPEED = 6.0
 JUMP_SPEED = 11.0
+#: the actions a player can rebind in the settings, with their default bindings
+ACTIONS: ui.Bindings = {
+    "left": ("key:LEFT", "key:A", "pad:dpleft"),
+    "right": ("key:RIGHT", "key:D", "pad:dpright"),
+    "jump": ("key:SPACE", "key:UP", "key:W", "pad:a"),
+}
+
+
+def bindings(actions: InputMap) -> None:
+    """The game's controls (``App(..., bindings=bindings)``): the defaults the settings'
+    Reset restores, and "pause" (P, Escape, Start)."""
+    ui.bind_defaults(actions, ACTIONS)
 
 
 @dataclass(slots=True)
@@ -57,11 +73,11 @@ class Player(Script):
     """Runs with the arrows, jumps when something is under its feet."""
 
     def on_fixed_update(self, dt: float) -> None:
-        inp = self.world.resource(Input)
+        actions = self.world.resource(InputMap)  # rebindable in the settings
         rb = self.get(RigidBody)
-        vx = RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D))
+        vx = RUN_SPEED * (float(actions.held("right")) - float(actions.held("left")))
         vy = rb.velocity[1]
-        if inp.any_held(Key.SPACE, Key.UP) and self.grounded() and vy <= 0.1:
+        if actions.held("jump") and self.grounded() and vy <= 0.1:
             vy = JUMP_SPEED
         rb.velocity = (vx, vy)
 
@@ -119,15 +135,23 @@ SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": lambda s: None, "Door"
 
 
 def level(world: World, path: Path | None = None, score: Score | None = None) -> None:
+    bindings(world.resource(InputMap))  # (already declared by main(); tests start here)
     world.insert_resource(score or Score())
     m = kge.load_map(world, path or levels()[0], spawners=SPAWNERS)
     player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
     world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
     world.spawn(Behaviour(Referee()))
+    world.spawn(Behaviour(ui.PauseKey(title, tuple(ACTIONS))))  # P / Esc / Start: the menu
     hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
     hud.offset = (12.0, float(HEIGHT - 10))
     world.spawn(Transform(), hud)
     _hud(world)
+
+
+def title(world: World) -> None:
+    """The title screen: Play fades into the first level; Settings; Quit."""
+    ui.title_menu(world, "PLATFORMER", "Arrows or A/D run, Space jumps; P pauses. "
+                  "Rebind the keys in Settings.", level, tuple(ACTIONS))  # fmt: skip
 
 
 def play(app: App, levels: int, seconds: float = 60.0) -> None:
@@ -152,10 +176,12 @@ def _door_x(world: World) -> float:
 
 
 def main() -> None:
-    app = App(level, title="kge platformer", size=(WIDTH, HEIGHT), background=(90, 140, 200))
+    app = App(title, title="kge platformer", size=(WIDTH, HEIGHT), background=(90, 140, 200),
+              bindings=bindings)  # fmt: skip
     if not app.headless:
         app.run()
         return
+    app.replace_scene(level)
     play(app, levels=2)
     score = app.world.resource(Score)
     print(f"kge {kge.__version__} platformer, headless: level {score.level}, {score.coins} coins")

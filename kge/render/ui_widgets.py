@@ -108,9 +108,12 @@ def _dialog(d: UIDrawer, c: Canvas, dialog: Dialog) -> None:
     c.rect("panel", c.box, lk.background, 0, lk.radius, lk.border_width, lk.border)
     bar = d.sizer.title_bar(c.e, dialog.title)
     if bar:
-        pad = d.layout.sizer.look(c.e, "Dialog").padding if d.layout.sizer else 0.0
-        title = Box(c.box.x, c.box.top - bar - pad, c.box.w, bar + pad)
-        c.line_of_text("title", dialog.title, title.inset(lk.padding), _bold(lk), lk.text, "left")
+        title = Box(c.box.x, c.box.top - bar - lk.padding, c.box.w, bar + lk.padding)
+        inset = max(lk.border_width, 1.0)
+        c.rect("titlebar", Box(title.x + inset, title.y, title.w - 2 * inset, title.h - inset),
+               d.sizer.theme.button, 1, max(lk.radius - inset, 0.0))  # fmt: skip
+        c.line_of_text("title", dialog.title, title.inset(lk.padding / 2), _bold(lk), lk.text,
+                       "left")  # fmt: skip
 
 
 def _bold(lk: Look) -> Any:

@@ -122,6 +122,7 @@ class UIPlugin(Plugin):
 
     def __init__(self) -> None:
         self.clipboard = Clipboard()  #: shared by every scene of the App
+        self.settings = UISettings()  #: the App's UI and text scale, shared by its scenes
 
     def build(self, world: World) -> None:
         state = world.insert_resource(UIState(store=self.clipboard))
@@ -129,7 +130,7 @@ class UIPlugin(Plugin):
         if world.try_resource(Theme) is None:
             world.insert_resource(DEFAULT_THEME)
         if world.try_resource(UISettings) is None:
-            world.insert_resource(UISettings())
+            world.insert_resource(self.settings)
         world.validator(UINode, _check_node(world))
         for ctype in UI_COMPONENTS:
             world.on_add(ctype, _tracker(world, state, added=True))

@@ -1,5 +1,6 @@
 """``UISettings``: how big the UI is drawn (resolution, high DPI, the player's choice) and
-how big its text is (accessibility).
+how big its text is (accessibility). One object serves every scene of an App (the UI
+plugin puts the same one in each world), so a settings menu changes them all.
 
 UINode pixel values are *design* pixels. The layout multiplies them by
 :meth:`UISettings.factor`: the player's ``scale`` times, when ``design_size`` is

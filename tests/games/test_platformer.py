@@ -4,7 +4,19 @@ from __future__ import annotations
 
 import platformer
 
-from kge import App, MapObject, TileCollider
+from kge import (
+    App,
+    Button,
+    Dialog,
+    Key,
+    MapObject,
+    ScrollView,
+    Slider,
+    TileCollider,
+    Transform,
+    UINode,
+    UISettings,
+)
 from kge.testbed.samples.tilemaps import levels
 
 
@@ -22,3 +34,78 @@ def test_the_door_leads_to_the_second_level_with_the_score() -> None:
         assert {m.map for _, (m,) in app.world.query(MapObject)} == {str(levels()[1])}
     finally:
         app.close()
+
+
+def _open_settings() -> App:
+    from kge.testing import click, press
+
+    app = App(platformer.level, headless=True, size=(platformer.WIDTH, platformer.HEIGHT))
+    app.step(5)
+    press(app, Key.P)  # the pause menu, over the frozen level
+    click(app, "Settings")
+    app.step()
+    return app
+
+
+def test_the_settings_menu_has_tabs_of_volumes_rebindable_controls_and_ui_size() -> None:
+    from kge.testing import box_of, click, press
+
+    app = _open_settings()
+    try:
+        world = app.world
+        assert world.name == "settings" and find_text(app, "Music volume")
+        click(app, "Controls")
+        view = next(e for e, _ in world.query(ScrollView))
+        rows = [e for e, (b,) in world.query(Button) if b.text.startswith(("left:", "jump:"))]
+        assert all(world.get(e, UINode).parent == view for e in rows)
+        click(app, "jump: SPACE / UP / W")
+        press(app, Key.J)
+        assert app.actions.bindings("jump")[0] == "key:J"
+        assert find_text(app, "jump: J")
+        click(app, "Reset controls")
+        assert world.query(Dialog)  # asks first
+        click(app, "Reset")
+        app.step()
+        assert app.actions.bindings("jump")[0] == "key:SPACE" and not world.query(Dialog)
+        click(app, "Display")
+        size = min(e for e, _ in world.query(Slider) if world.get(e, Slider).min == 0.75)
+        b = box_of(app, size)
+        app.input.click(at=(b.right - 1, b.center[1]))
+        app.step()
+        assert world.resource(UISettings).scale == 1.5
+        click(app, "Back")
+        app.step()
+        assert app.world.resource(UISettings).scale == 1.5  # every scene of the App
+    finally:
+        app.close()
+
+
+def test_a_rebound_jump_jumps_in_the_level() -> None:
+    from kge.testing import click, press
+
+    app = _open_settings()
+    try:
+        click(app, "Controls")
+        click(app, "jump: SPACE / UP / W")
+        press(app, Key.J)
+        press(app, Key.ESCAPE)  # leaves the settings
+        press(app, Key.ESCAPE)  # and the pause
+        assert app.world.name == "level"
+        app.step(60)  # landed
+        player = next(e for e, (m,) in app.world.query(MapObject) if m.cls == "PlayerStart")
+        y = app.world.get(player, Transform).y
+        app.input.press(Key.J)
+        app.step(10)
+        assert app.world.get(player, Transform).y > y + 0.5
+    finally:
+        app.close()
+
+
+def find_text(app: App, text: str) -> bool:
+    from kge.testing import UITargetError, find
+
+    try:
+        find(app, text)
+    except UITargetError:
+        return False
+    return True
