@@ -83,6 +83,13 @@ def _area(f: Frame, e: int, w: TextArea) -> AreaView:
 
 # -- typing -----------------------------------------------------------------------------------
 def typed(f: Frame, text: str) -> None:
+    """Text typed (a TextEvent). Line breaks are left out: Enter is handled as a key (a
+    window also sends it as the text "\\r")."""
+    insert_text(f, text.replace("\r", "").replace("\n", ""))
+
+
+def insert_text(f: Frame, text: str) -> None:
+    """Put ``text`` (typed or pasted) into the focused text widget."""
     e = f.state.focused
     if e is None:
         return
@@ -181,7 +188,7 @@ def key(f: Frame, e: int, w: Any, k: int, mods: int) -> bool:
         return True
     if ctrl and k == Key.V:
         if not read_only:
-            typed(f, f.state.clipboard)
+            insert_text(f, f.state.clipboard)
         return True
     if k == Key.TAB:
         if area is not None and area.tab_size > 0 and not ctrl and not read_only:

@@ -252,8 +252,11 @@ def test_control_characters_are_dropped_or_refused_and_writes_are_clamped() -> N
     app, e = _app(field, text="")
     w = app.world.get(e, TextInput)
     focus(app, e)
-    type_text(app, "a\x07\tb\r\nc\x00")
-    assert w.text == "a    b c"
+    type_text(app, "a\x07\tb\r\nc\x00")  # typed line breaks are Enter's: left out
+    assert w.text == "a    bc"
+    app.world.resource(UIState).clipboard = "\r\nd\ne"
+    press(app, Key.V, Mod.CTRL)  # pasted into one line: line breaks become spaces
+    assert w.text == "a    bc d e"
     app2 = App(area, headless=True, size=SIZE)
     app2.step()
     a = next(x for x, _ in app2.world.query(TextArea))
