@@ -287,3 +287,20 @@ def test_tree_and_spin_box_glyphs(make_app: Any) -> None:
     plus_px = mask(_region(px, plus.inset(4)), T.text[:3], tol=60)
     minus_px = mask(_region(px, minus.inset(4)), T.text[:3], tol=60)
     assert plus_px.sum() > minus_px.sum() > 4  # "+" has a vertical stroke too
+
+
+def test_a_style_gives_a_button_a_nine_patch_image_per_state(make_app: Any) -> None:
+    from kge.render.images import solid
+
+    red, green = solid(12, 12, (255, 0, 0)), solid(12, 12, (0, 255, 0))
+    app = make_app(lambda world: _one(world, Button("Go"), w=100, h=40))
+    app.world.add(next(e for e, _ in app.world.query(Button)),
+                  Style(image=red, image_border=4, hover=Style(image=green)))  # fmt: skip
+    app.step()
+    b = box_of(app, "Go")
+    px = pixels(app)
+    assert mask(_region(px, b.inset(2)), (255, 0, 0), tol=10).mean() > 0.7
+    app.input.move_mouse(*b.center)
+    app.step()
+    px = pixels(app)
+    assert mask(_region(px, b.inset(2)), (0, 255, 0), tol=10).mean() > 0.7

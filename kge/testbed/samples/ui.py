@@ -57,7 +57,7 @@ def widget_gallery(world: World) -> None:
     world.spawn(UINode(parent=left), Dropdown(["Easy", "Normal", "Hard"], 1))
     spin = world.spawn(UINode(parent=left), SpinBox(12.5, 0, 100, 0.5, suffix=" m"))
     tip(world, spin, "Drag sideways, or click and type")
-    world.spawn(UINode(parent=left), RadioGroup(["Low", "Medium", "High"], 1, horizontal=True))
+    world.spawn(UINode(parent=left), RadioGroup(["Low", "Mid", "High"], 1, horizontal=True))
     middle = column(world, parent=root, anchor="center", offset=(20, 40), width=320)
     tabs = world.spawn(UINode(parent=middle, height=190), Tabs(["Audio", "Video", "About"]))
     audio = world.spawn(UINode(parent=tabs, layout="column", padding=10, spacing=8,

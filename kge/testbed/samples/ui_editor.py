@@ -90,8 +90,8 @@ def editor_widgets(world: World) -> None:
     world.spawn(UINode(parent=middle, height=170), ColorPicker((46, 196, 182, 255)))
     path = world.spawn(UINode(parent=middle, layout="row", spacing=6))
     world.spawn(UINode(parent=path, grow=1, shrink=1), TextInput("assets/player.png"))
-    world.spawn(UINode(parent=path, width=104, height=34), Button("Browse…"))
-    right = column(world, parent=root, anchor="right", offset=(-16, 0), width=300)
+    world.spawn(UINode(parent=path, width=120, height=34), Button("Browse…"))
+    right = column(world, parent=root, anchor="right", offset=(-16, 0), width=330)
     tabs = world.spawn(UINode(parent=right, height=300), Tabs(["Script", "Notes"]))
     world.spawn(UINode(parent=tabs, padding=6), TextArea(
         "class Player(Script):\n    def on_update(self, dt):\n        ...\n", tab_size=4))
