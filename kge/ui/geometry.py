@@ -11,9 +11,10 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from kge.components.ui import TreeItem, TreeView
+from kge.components.ui import ScrollList, TreeItem, TreeView
 from kge.ui.layout import Box, ScrollArea
 from kge.ui.measure import Font, TextMeasure, width
+from kge.ui.theme import Theme
 
 Row = tuple[TreeItem, int, bool]  #: a visible tree row: item, depth, has children
 
@@ -75,6 +76,15 @@ def list_view(box: Box, count: int, row_h: float, bar: float) -> tuple[Box, floa
     if total > inner.h and bar > 0:
         inner = Box(inner.x, inner.y, max(inner.w - bar, 0.0), inner.h)
     return inner, max(total - inner.h, 0.0)
+
+
+def list_rows(lst: ScrollList, box: Box, theme: Theme, scale: float = 1.0) -> list[tuple[int, Box]]:
+    """(index, box) of a scroll list's rows in view, for code that hit-tests them itself
+    (an editor's drag between rows). Rows are ``row_height`` (or the theme's) tall."""
+    row_h = (lst.row_height or theme.row_height) * scale
+    view, _ = list_view(box, len(lst.items), row_h, theme.scrollbar * scale)
+    return [(i, row_box(view, i, row_h, lst.scroll).intersect(view))
+            for i in visible_rows(view, len(lst.items), row_h, lst.scroll)]  # fmt: skip
 
 
 def scrollbar(track: Box, view: float, content: float, scroll: float,

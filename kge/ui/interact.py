@@ -32,9 +32,12 @@ from kge.ui import controls, drag, scrolling, text_controls
 from kge.ui.dialogs import close_dialog
 from kge.ui.events import FocusChanged, ValueChanged
 from kge.ui.focus import nearest, scroll_into_view, step, tab_order
+from kge.ui.geometry import list_rows
 from kge.ui.layout import Layout
 from kge.ui.sizing import Sizer
 from kge.ui.state import Tip, UIState
+
+__all__ = ["Frame", "UIState", "handle_input", "list_rows"]  # UIState, list_rows: as before
 from kge.ui.style import Look
 from kge.world import World
 
