@@ -16,7 +16,8 @@ noticed like an assignment, so the UI redraws it, and each new item is checked.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import difflib
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any, ClassVar, SupportsIndex
 
 from kge.components.color import Color, rgba
@@ -52,6 +53,16 @@ def touch(component: Any) -> None:
         return
     if binding is not None:
         binding.dirty.add(binding.entity)
+
+
+def known(key: Any, names: Sequence[str], where: str, what: str = "field") -> str:
+    """``key`` if it is one of ``names``; otherwise a ValidationError suggesting the
+    nearest (``Style has no field 'backgruond' (did you mean 'background'?)``)."""
+    if key in names:
+        return str(key)
+    near = difflib.get_close_matches(str(key), names, n=1)
+    hint = f" (did you mean {near[0]!r}?)" if near else ""
+    raise ValidationError(f"{where} has no {what} {key!r}{hint}")
 
 
 def choice(options: tuple[str, ...]) -> Check:

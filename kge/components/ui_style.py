@@ -20,12 +20,11 @@ kge.errors.ValidationError: Style has no field 'backgruond' (did you mean 'backg
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, fields
 from typing import Any, ClassVar
 
 from kge.components.color import Color
-from kge.components.ui_checks import font_size, opt_color, opt_image, px, text
+from kge.components.ui_checks import font_size, known, opt_color, opt_image, px, text
 from kge.errors import ValidationError
 from kge.validate import boolean
 
@@ -112,10 +111,7 @@ class Style:
         names = [f.name for f in fields(cls)]
         values: dict[str, Any] = {}
         for key, value in data.items():
-            if key not in names:
-                near = difflib.get_close_matches(str(key), names, n=1)
-                hint = f" (did you mean {near[0]!r}?)" if near else ""
-                raise ValidationError(f"{where} has no field {key!r}{hint}")
+            known(key, names, where)
             if key in STATES:
                 values[key] = cls.from_data(value, f"{where}.{key}")
             elif isinstance(value, list):

@@ -24,12 +24,12 @@ kge.errors.ValidationError: Theme.styles has no widget kind 'Buton' (did you mea
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, fields, replace
 from dataclasses import field as _field
 from typing import Any
 
 from kge.components.color import Color, rgba
+from kge.components.ui_checks import known
 from kge.components.ui_style import Style
 from kge.errors import ValidationError
 from kge.validate import finite
@@ -107,10 +107,7 @@ class Theme:
             raise ValidationError(f"Theme data must be a dict, got {type(data).__name__}")
         names = [f.name for f in fields(cls)]
         for key in data:
-            if key not in names:
-                near = difflib.get_close_matches(str(key), names, n=1)
-                hint = f" (did you mean {near[0]!r}?)" if near else ""
-                raise ValidationError(f"Theme has no field {key!r}{hint}")
+            known(key, names, "Theme")
         values: dict[str, Any] = {
             k: tuple(v) if isinstance(v, list) else v for k, v in data.items()
         }
@@ -125,10 +122,7 @@ def _styles(value: Any) -> dict[str, Style]:
         raise ValidationError(f"Theme.styles must be a dict of kind -> style, got {value!r}")
     out: dict[str, Style] = {}
     for kind, style in value.items():
-        if kind not in KINDS:
-            near = difflib.get_close_matches(str(kind), KINDS, n=1)
-            hint = f" (did you mean {near[0]!r}?)" if near else ""
-            raise ValidationError(f"Theme.styles has no widget kind {kind!r}{hint}")
+        known(kind, KINDS, "Theme.styles", "widget kind")
         out[kind] = Style.from_data(style, f"Theme.styles[{kind!r}]")
     return out
 
