@@ -37,6 +37,7 @@ from kge.systems.behaviour import BehaviourRunner
 from kge.ui.clipboard import Clipboard
 from kge.ui.current import current_layout
 from kge.ui.events import HOOKS, UIEvents
+from kge.ui.focus import scroll_into_view
 from kge.ui.interact import handle_input
 from kge.ui.layout import MAX_DEPTH
 from kge.ui.settings import UISettings
@@ -159,9 +160,12 @@ def _tracker(world: World, state: UIState, added: bool) -> Callable[[int, Any], 
 
 
 def focus(world: World, entity: int | None) -> None:
-    """Give keyboard/gamepad focus to ``entity`` (a menu's first button), or clear it."""
+    """Give keyboard/gamepad focus to ``entity`` (a menu's first button), or clear it; a
+    node inside scroll views is scrolled into view."""
     if entity is not None and world.try_get(entity, UINode) is None:
         raise ValidationError(f"focus: entity {entity} is not a UI node")
     state = world.resource(UIState)
     state.touch(state.focused, entity)
     state.focused = entity
+    if entity is not None and entity in state.layout.boxes:
+        scroll_into_view(world, state.layout, entity)

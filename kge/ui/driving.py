@@ -188,7 +188,7 @@ def focus(app: App, target: Target) -> int:
     state = app.world.resource(UIState)
     state.touch(state.focused, e)
     state.focused = e
-    scroll_into_view(app.world, _layout(app), e)
+    scroll_into_view(app.world, _layout(app), e)  # (as kge.focus does)
     app.step()
     return e
 

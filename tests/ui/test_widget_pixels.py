@@ -304,3 +304,25 @@ def test_a_style_gives_a_button_a_nine_patch_image_per_state(make_app: Any) -> N
     app.step()
     px = pixels(app)
     assert mask(_region(px, b.inset(2)), (0, 255, 0), tol=10).mean() > 0.7
+
+
+def test_a_text_area_draws_its_lines_and_a_selection_over_two_of_them(make_app: Any) -> None:
+    from kge.components.ui import TextArea
+
+    app = make_app(lambda world: _one(world, TextArea("one\ntwo\nthree"), w=150, h=100))
+    app.step()
+    area = next(e for e, _ in app.world.query(TextArea))
+    focus(app, area)
+    w = app.world.get(area, TextArea)
+    w.anchor, w.caret = 1, 6  # "ne\ntw"
+    px = pixels(app)
+    b = box_of(app, area)
+    sel = mask(_region(px, b), T.selection[:3], tol=45)
+    rows = np.nonzero(sel.any(axis=1))[0]
+    assert len(rows) > 30 and rows.max() - rows.min() > 35  # two lines of selection
+    text = mask(_region(px, b), T.text[:3], tol=60)
+    assert text[: int(b.h) // 2].any() and text[int(b.h) // 2 :].any()
+    drawn = px[..., :3].max(-1) > 0
+    inside = np.zeros_like(drawn)
+    inside[int(b.y) - 4 : int(b.top) + 4, int(b.x) - 4 : int(b.right) + 4] = True  # + focus ring
+    assert not (drawn & ~inside).any()
