@@ -1,7 +1,9 @@
 """UI cost per frame: what an unchanged UI, a changing HUD, hover and a 10,000-row list
 cost, beside re-syncing every widget each frame and a naive redraw.
 
-Timed interleaved in the same run (medians over repetitions), headless EGL, for a grid
+Timed interleaved in the same run (medians over repetitions of the process's CPU time:
+every thread's, llvmpipe's rasteriser included, and steadier than wall time on a
+shared machine), headless EGL, for a grid
 of N buttons with labels; every variant runs the UI's frame work: the layout kept
 current (:func:`kge.ui.current.current_layout`), the input handling
 (:func:`kge.ui.interact.handle_input`) and one drawn frame (``app.render()``: the UI
@@ -90,10 +92,10 @@ def _median_us(fns: dict[str, Callable[[], None]], repeats: int, frames: int) ->
     samples: dict[str, list[float]] = {k: [] for k in fns}
     for _ in range(repeats):
         for name, fn in fns.items():  # interleaved: background load hits every variant alike
-            start = time.perf_counter()
+            start = time.process_time()
             for _ in range(frames):
                 fn()
-            samples[name].append((time.perf_counter() - start) / frames * 1e6)
+            samples[name].append((time.process_time() - start) / frames * 1e6)
     return {k: statistics.median(v) for k, v in samples.items()}
 
 
@@ -164,26 +166,32 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
     return out
 
 
-def measure_list(rows: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
-    """Median µs per frame of a ScrollList of ``rows`` rows, unchanged and scrolling."""
+def measure_lists(sizes: tuple[int, ...], repeats: int = 9,
+                  frames: int = 10) -> dict[int, dict[str, float]]:  # fmt: skip
+    """Median µs per frame of ScrollLists of each size, unchanged and scrolling one row
+    per frame; every list and variant interleaved in one loop, so they compare."""
     from kge import ScrollList
 
-    app = _list_app(rows)
-    world = app.world
-    lst = next(c for _, (c,) in world.query(ScrollList))
-    step = [0]
+    fns: dict[str, Callable[[], None]] = {}
+    apps = []
+    for rows in sizes:
+        app = _list_app(rows)
+        apps.append(app)
+        lst = next(c for _, (c,) in app.world.query(ScrollList))
 
-    def static() -> None:
-        _frame(app)
+        def static(app: Any = app) -> None:
+            _frame(app)
 
-    def scroll() -> None:
-        step[0] = (step[0] + 1) % max(rows - 20, 1)
-        lst.scroll = step[0] * 20.0
-        _frame(app)
+        def scroll(app: Any = app, lst: Any = lst, step: list[int] = [0]) -> None:  # noqa: B006
+            step[0] = (step[0] + 1) % 60  # every list scrolls through its first 80 rows
+            lst.scroll = step[0] * 20.0
+            _frame(app)
 
-    out = _median_us({"static": static, "scroll": scroll}, repeats, frames)
-    app.close()
-    return out
+        fns[f"{rows}:static"], fns[f"{rows}:scroll"] = static, scroll
+    got = _median_us(fns, repeats, frames)
+    for app in apps:
+        app.close()
+    return {rows: {v: got[f"{rows}:{v}"] for v in LIST_VARIANTS} for rows in sizes}
 
 
 def table(results: dict[int, dict[str, float]]) -> str:
@@ -209,7 +217,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     print("µs per frame (median):")
     print(table({n: measure(n, args.repeats) for n in args.sizes}))
-    print(list_table({n: measure_list(n, args.repeats) for n in args.rows}))
+    print(list_table(measure_lists(tuple(args.rows), args.repeats)))
     return 0
 
 
@@ -226,9 +234,10 @@ def bench_section(
         for n in (20,) if quick else (50, 1000):
             progress(f"ui [{n} widgets]")
             out[str(n)] = measure(n, 2 if quick else 9, 3 if quick else 10)
-        for rows in (100, 1000) if quick else (100, 10_000):
-            progress(f"ui [list of {rows} rows]")
-            out[f"list-{rows}"] = measure_list(rows, 2 if quick else 9, 3 if quick else 10)
+        sizes = (100, 1000) if quick else (100, 10_000)
+        progress(f"ui [lists of {' and '.join(map(str, sizes))} rows]")
+        lists = measure_lists(sizes, 2 if quick else 9, 3 if quick else 10)
+        out.update({f"list-{rows}": r for rows, r in lists.items()})
         return out, None
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
         return {}, f"ui skipped: {type(err).__name__}: {err}"
@@ -240,8 +249,8 @@ def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
     lists = {k[5:]: v for k, v in results.items() if k.startswith("list-")}
     out: list[str] = []
     if grids:
-        out += ["", "UI, µs per frame (median; the UI's whole frame: layout kept current, input, "
-                "one drawn frame; `static` = nothing changed, `change` = one label changes, "
+        out += ["", "UI, µs of CPU per frame (median; the UI's whole frame: layout kept current, "
+                "input, one drawn frame; `static` = nothing changed, `change` = one label changes, "
                 "`hover` = the pointer moves to another button, `resync` = every widget synced "
                 "each frame, `rebuild` = fresh pyglet shapes and labels each frame):", "",
                 "| widgets | layout | static | change | hover | resync | rebuild | resync/static |",
@@ -251,7 +260,8 @@ def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
                        f"| {r['hover']:.0f} | {r['resync']:.0f} | {r['rebuild']:.0f} "
                        f"| {r['resync'] / r['static']:.1f} |")  # fmt: skip
     if lists:
-        out += ["", "ScrollList, µs per frame (median; `scroll` = one row further each frame):",
+        out += ["", "ScrollList, µs of CPU per frame (median; `scroll` = one row further each "
+                "frame; only the rows in view are drawn):",
                 "", "| rows | static | scroll |", "|---:|---:|---:|"]  # fmt: skip
         for n, r in sorted(lists.items(), key=lambda kv: int(kv[0])):
             out.append(f"| {n} | {r['static']:.0f} | {r['scroll']:.0f} |")

@@ -10,7 +10,7 @@ def test_ui_bench_measures_every_variant_and_formats_its_tables() -> None:
     assert set(ui.VARIANTS) <= set(got) and all(got[v] > 0 for v in ui.VARIANTS)
     assert got["static_syncs"] == 0  # an unchanged frame syncs no widget
     assert "resync/static" in ui.table({10: got})
-    lst = ui.measure_list(200, repeats=1, frames=2)
+    lst = ui.measure_lists((200,), repeats=1, frames=2)[200]
     assert set(lst) == set(ui.LIST_VARIANTS) and all(v > 0 for v in lst.values())
     lines = ui.markdown_lines({"10": got, "list-200": lst})
     assert any(line.startswith("| 10 |") for line in lines)
