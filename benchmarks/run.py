@@ -446,8 +446,8 @@ def main(argv: list[str] | None = None) -> int:
         from benchmarks import ui as ui_bench
 
         ui_rows, why = ui_bench.bench_section(args.quick, progress)
-        print(why or "\nui, µs per widget and frame (median):\n" + ui_bench.table(
-            {int(n): r for n, r in ui_rows.items()}), file=sys.stderr if why else sys.stdout)
+        print(why or "\nui, µs of CPU per frame (median):\n" + ui_bench.text(ui_rows),
+              file=sys.stderr if why else sys.stdout)
         skipped += [why] if why else []
     game: dict[str, Any] = {}
     if not args.no_game and not args.scene:

@@ -195,7 +195,7 @@ def measure_lists(sizes: tuple[int, ...], repeats: int = 9,
 
 
 def table(results: dict[int, dict[str, float]]) -> str:
-    lines = [f"{'widgets':>8}" + "".join(f"{c:>10}" for c in (*VARIANTS, "resync/static"))]
+    lines = [f"{'widgets':>8}" + "".join(f"{c:>10}" for c in VARIANTS) + f"{'resync/static':>14}"]
     for n, r in sorted(results.items()):
         lines.append(f"{n:>8}" + "".join(f"{r[c]:>10.0f}" for c in VARIANTS)
                      + f"{r['resync'] / r['static']:>14.1f}")  # fmt: skip
@@ -207,6 +207,13 @@ def list_table(results: dict[int, dict[str, float]]) -> str:
     for n, r in sorted(results.items()):
         lines.append(f"{n:>8}" + "".join(f"{r[c]:>10.0f}" for c in LIST_VARIANTS))
     return "\n".join(lines)
+
+
+def text(results: dict[str, dict[str, float]]) -> str:
+    """Both tables of a ``bench_section`` result, as text."""
+    grids = {int(k): v for k, v in results.items() if not k.startswith("list-")}
+    lists = {int(k[5:]): v for k, v in results.items() if k.startswith("list-")}
+    return table(grids) + "\n" + list_table(lists)
 
 
 def main(argv: list[str] | None = None) -> int:

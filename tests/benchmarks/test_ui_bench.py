@@ -12,6 +12,7 @@ def test_ui_bench_measures_every_variant_and_formats_its_tables() -> None:
     assert "resync/static" in ui.table({10: got})
     lst = ui.measure_lists((200,), repeats=1, frames=2)[200]
     assert set(lst) == set(ui.LIST_VARIANTS) and all(v > 0 for v in lst.values())
+    assert "resync/static" in ui.text({"10": got, "list-200": lst})
     lines = ui.markdown_lines({"10": got, "list-200": lst})
     assert any(line.startswith("| 10 |") for line in lines)
     assert lines[-1].startswith("| 200 |")
