@@ -17,7 +17,7 @@ from typing import Any
 
 import pyglet
 from pyglet import gl
-from pyglet.graphics.shader import Shader, ShaderProgram
+from pyglet.graphics.shader import ShaderProgram
 
 Color = tuple[int, ...]  #: RGBA (themes and components always hold four channels)
 
@@ -80,16 +80,11 @@ void main() {
 }
 """
 
-_program: dict[int, ShaderProgram] = {}
-
-
 def program() -> ShaderProgram:
-    """The shared shape program of the current GL context."""
-    ctx = id(gl.current_context)
-    prog = _program.get(ctx)
-    if prog is None:
-        prog = _program[ctx] = ShaderProgram(Shader(_VERTEX, "vertex"),
-                                             Shader(_FRAGMENT, "fragment"))  # fmt: skip
+    """The shape program of the current GL context (pyglet keeps one per context, and
+    forgets it with the context)."""
+    prog: ShaderProgram = gl.current_context.create_program((_VERTEX, "vertex"),
+                                                            (_FRAGMENT, "fragment"))  # fmt: skip
     return prog
 
 
