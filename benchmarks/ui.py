@@ -251,7 +251,7 @@ def bench_section(
 
 
 def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
-    """The UI tables of ``docs/benchmarks.md``."""
+    """The UI tables of ``benchmarks/results/bench.md``."""
     grids = {k: v for k, v in results.items() if not k.startswith("list-")}
     lists = {k[5:]: v for k, v in results.items() if k.startswith("list-")}
     out: list[str] = []

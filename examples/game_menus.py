@@ -39,7 +39,6 @@ from kge import (
     ScrollView,
     Slider,
     Tabs,
-    UIEvents,
     UINode,
     UISettings,
     ValueChanged,
@@ -96,7 +95,7 @@ class _Buttons(Script):
 
     def on_update(self, dt: float) -> None:
         app = self.world.resource(App)
-        for ev in self.world.resource(UIEvents).of(ButtonClicked):
+        for ev in self.world.events(ButtonClicked):
             handler = self.handlers.get(ev.text)
             if handler is not None:
                 handler(app)
@@ -124,7 +123,7 @@ class _Volumes(Script):
 
     def on_update(self, dt: float) -> None:
         audio = self.world.resource(Audio)
-        for ev in self.world.resource(UIEvents).of(ValueChanged):
+        for ev in self.world.events(ValueChanged):
             if ev.entity == self.music:
                 audio.music_volume = ev.value
             elif ev.entity == self.sfx:
@@ -148,15 +147,14 @@ class _Rebind(Script):
                 world.get(self.waiting, Button).text = _binding_text(actions, action)
                 self.waiting = None
             return
-        events = world.resource(UIEvents)
-        for ev in events.of(ButtonClicked):
+        for ev in world.events(ButtonClicked):
             if ev.entity in self.buttons:
                 self.waiting = ev.entity
                 world.get(ev.entity, Button).text = f"{self.buttons[ev.entity]}: press a key..."
             elif ev.text == "Reset controls":
                 confirm(world, "Give every action its default keys back?", ok="Reset",
                         title="Reset controls")  # fmt: skip
-        for closed in events.of(DialogClosed):
+        for closed in world.events(DialogClosed):
             if closed.text == "Reset":
                 self.reset(actions)
 
@@ -182,7 +180,7 @@ class _Display(Script):
 
     def on_update(self, dt: float) -> None:
         settings = self.world.resource(UISettings)
-        for ev in self.world.resource(UIEvents).of(ValueChanged):
+        for ev in self.world.events(ValueChanged):
             if ev.entity == self.size:
                 settings.scale = ev.value
             elif ev.entity == self.text:
@@ -218,8 +216,8 @@ def settings(world: World, rebindable: tuple[str, ...] = ()) -> None:
     actions = world.resource(InputMap)
     buttons = {}
     for action in rebindable:
-        text = _binding_text(actions, action)
-        buttons[world.spawn(UINode(parent=keys, height=36), Button(text))] = action
+        label = _binding_text(actions, action)
+        buttons[world.spawn(UINode(parent=keys, height=36), Button(label))] = action
     world.spawn(UINode(parent=controls, height=36), Button("Reset controls"))
     world.spawn(Behaviour(_Rebind(buttons)))
     display = _page(world, tabs)

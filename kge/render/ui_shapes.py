@@ -83,8 +83,9 @@ void main() {
 def program() -> ShaderProgram:
     """The shape program of the current GL context (pyglet keeps one per context, and
     forgets it with the context)."""
-    prog: ShaderProgram = gl.current_context.create_program((_VERTEX, "vertex"),
-                                                            (_FRAGMENT, "fragment"))  # fmt: skip
+    context = gl.current_context
+    assert context is not None, "UI shapes need a current GL context"
+    prog: ShaderProgram = context.create_program((_VERTEX, "vertex"), (_FRAGMENT, "fragment"))
     return prog
 
 

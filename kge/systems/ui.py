@@ -4,9 +4,10 @@
 is current (:func:`current_layout`: redone only when a UI component changed, the
 window was resized or the scale changed), turns this frame's pointer, keyboard and
 gamepad input into widget changes (:func:`kge.ui.interact.handle_input`), removes
-what the UI took from the game's view of the input, fills the per-frame
-:class:`~kge.ui.events.UIEvents` resource and calls the widget entities' Behaviour
-hooks (``on_click``, ``on_value_changed``, ...). The drawing is a render after-pass
+what the UI took from the game's view of the input, emits the UI events
+(``world.events(ButtonClicked)``; the per-frame :class:`~kge.ui.events.UIEvents`
+resource is kept filled, deprecated, for one release) and calls the widget entities'
+Behaviour hooks (``on_click``, ``on_value_changed``, ...). The drawing is a render after-pass
 (``kge/render/ui.py``), imported only when a frame is drawn.
 """
 
@@ -32,7 +33,7 @@ from kge.errors import ValidationError
 from kge.input import Input
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.systems.behaviour import BehaviourRunner
 from kge.ui.clipboard import Clipboard
 from kge.ui.current import current_layout
@@ -43,7 +44,13 @@ from kge.ui.layout import MAX_DEPTH
 from kge.ui.settings import UISettings
 from kge.ui.state import UIState
 from kge.ui.theme import DEFAULT_THEME, Theme
-from kge.world import World
+from kge.world import World, deprecate_resource, stored_resource
+
+deprecate_resource(
+    UIEvents,
+    "read world.events(ButtonClicked) (or ValueChanged, TextSubmitted, FocusChanged), "
+    "or the widget's Behaviour hooks (on_click...)",
+)
 
 #: every component whose changes the UI follows (layout, looks, behaviour)
 UI_COMPONENTS: tuple[type, ...] = (
@@ -51,16 +58,18 @@ UI_COMPONENTS: tuple[type, ...] = (
     DropTarget,
 )  # fmt: skip
 
+
 class UIInput(System):
     """Handles the UI's input and emits its events (see the module docstring)."""
 
     stage = Stage.INPUT
-    order = 50  # before InputBehaviours (100): the game only sees what the UI left
+    in_set = SystemSet.UI  # before the SCRIPTS' input hooks: the game sees what the UI left
 
     def process(self, dt: float) -> None:
         world = self.world
-        events = world.resource(UIEvents)
-        events.clear()
+        events = stored_resource(world, UIEvents)
+        if events is not None:
+            events.clear()
         inp = world.try_resource(Input)
         if inp is None:
             return
@@ -68,7 +77,10 @@ class UIInput(System):
         if not current_layout(world).order:
             return  # no UI shown: the input is all the game's
         made = handle_input(world, inp, state, dt)
-        events.items.extend(made)
+        if events is not None:
+            events.items.extend(made)
+        for ev in made:
+            world.emit(ev)
         runner = world.try_resource(BehaviourRunner)
         for ev in made:
             hook = HOOKS.get(type(ev))
@@ -143,7 +155,7 @@ class UIPlugin(Plugin):
 
             draw_ui(frame, world)
 
-        passes_for(world).add(draw, phase="after", order=1000)
+        passes_for(world).add(draw, phase="after", name="ui")
 
 
 def _tracker(world: World, state: UIState, added: bool) -> Callable[[int, Any], None]:

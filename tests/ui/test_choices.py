@@ -17,7 +17,7 @@ from kge.components.ui import (
 from kge.errors import ComponentTypeError, ValidationError
 from kge.testing import box_of, click, find, focus, press, type_text
 from kge.ui import geometry as geo
-from kge.ui.events import UIEvents, ValueChanged
+from kge.ui.events import ValueChanged
 from kge.ui.state import UIState
 
 SIZE = (640, 480)
@@ -41,7 +41,7 @@ def _app() -> App:
 
 
 def _changes(app: App) -> list[ValueChanged]:
-    return app.world.resource(UIEvents).of(ValueChanged)
+    return app.world.events(ValueChanged)
 
 
 def test_radio_group_by_click_and_arrows_moving_on_past_its_ends() -> None:

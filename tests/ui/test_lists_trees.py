@@ -17,7 +17,6 @@ from kge.ui.events import (
     ItemActivated,
     ItemToggled,
     TreeDrop,
-    UIEvents,
     ValueChanged,
 )
 
@@ -55,7 +54,7 @@ def test_tree_folds_by_arrow_click_and_keys_and_activates_on_enter_or_double_cli
     row = box_of(app, "Scene")
     app.input.click(at=(row.x + 10, row.center[1]))  # the arrow at the row's left end
     app.step()
-    assert w.expanded == {"root"} and app.world.resource(UIEvents).of(ItemToggled) == [
+    assert w.expanded == {"root"} and app.world.events(ItemToggled) == [
         ItemToggled(tree, "root", True)]  # fmt: skip
     click(app, "Player")
     assert w.selected == "p"
@@ -82,7 +81,7 @@ def test_tree_rows_drag_onto_other_rows_saying_where() -> None:
     drops: list[Dropped] = []
 
     def dropped() -> None:
-        drops.extend(app.world.resource(UIEvents).of(Dropped))
+        drops.extend(app.world.events(Dropped))
 
     sun = box_of(app, "Sun")
     player = box_of(app, "Player")
@@ -100,7 +99,7 @@ def test_tree_rows_drag_onto_other_rows_saying_where() -> None:
     dropped()
     assert drops[-1].payload == TreeDrop("cam", "p", "before")
     drag(app, "Player", "Gun")  # onto its own child: refused
-    assert app.world.resource(UIEvents).of(DragCancelled) == [
+    assert app.world.events(DragCancelled) == [
         DragCancelled(tree, TreeDrop("p"))]  # fmt: skip
     dropped()
     assert len(drops) == 2
@@ -134,7 +133,7 @@ def test_ten_thousand_rows_scroll_select_and_keep_the_selection_in_view() -> Non
     scroll(app, lst, -5)  # five rows down
     assert w.scroll == 100
     click(app, "Row 7")
-    assert w.selected == 7 and app.world.resource(UIEvents).of(ValueChanged) == [
+    assert w.selected == 7 and app.world.events(ValueChanged) == [
         ValueChanged(lst, 7, -1)]  # fmt: skip
     press(app, Key.PAGEDOWN)
     assert w.selected == 7 + 5  # a page: the rows in view less one

@@ -23,7 +23,6 @@ from kge.ui.events import (
     DragCancelled,
     DragStarted,
     Dropped,
-    UIEvents,
 )
 from kge.ui.state import UIState
 
@@ -60,7 +59,7 @@ def test_a_confirm_dialog_is_modal_and_closes_with_its_buttons_result() -> None:
     other = box_of(app, "Other")
     app.input.click(at=other.center)  # behind the dialog: taken, reaches nothing
     app.step()
-    assert app.world.resource(UIEvents).of(ButtonClicked) == [] and game.downs == 0
+    assert app.world.events(ButtonClicked) == [] and game.downs == 0
     app.input.click(at=(5, 5))  # outside every widget: the game does not get it either
     app.step()
     assert game.downs == 0
@@ -68,14 +67,13 @@ def test_a_confirm_dialog_is_modal_and_closes_with_its_buttons_result() -> None:
         press(app, Key.TAB)
         assert st.layout.dialog.get(st.focused) == dialog  # type: ignore[arg-type]
     click(app, "Cancel")
-    events = app.world.resource(UIEvents)
-    assert events.of(DialogClosed) == [DialogClosed(dialog, 0, "Cancel")]
+    assert app.world.events(DialogClosed) == [DialogClosed(dialog, 0, "Cancel")]
     app.step()
     assert not app.world.exists(dialog) and not any(
         b.text == "Cancel" for _, (b,) in app.world.query(Button))  # fmt: skip
     app.input.click(at=other.center)  # the menu works again
     app.step()
-    assert app.world.resource(UIEvents).of(ButtonClicked)[0].text == "Other"
+    assert app.world.events(ButtonClicked)[0].text == "Other"
 
 
 def test_escape_or_gamepad_b_cancels_a_dialog_and_on_dialog_closed_runs() -> None:
@@ -110,9 +108,9 @@ def test_a_kept_dialog_hides_instead_of_going_and_non_modal_ones_let_clicks_thro
     app.world.spawn(UINode(parent=d, height=30), Button("Close"), DialogButton(3))
     app.step()
     click(app, "Other")  # not modal: the rest of the UI works
-    assert app.world.resource(UIEvents).of(ButtonClicked)[0].text == "Other"
+    assert app.world.events(ButtonClicked)[0].text == "Other"
     click(app, "Close")
-    assert app.world.resource(UIEvents).of(DialogClosed) == [DialogClosed(d, 3, "Close")]
+    assert app.world.events(DialogClosed) == [DialogClosed(d, 3, "Close")]
     app.step()
     assert app.world.exists(d) and not app.world.get(d, UINode).visible
 
@@ -176,9 +174,9 @@ def test_mouse_drag_and_drop_onto_a_target_taking_the_kind() -> None:
     bag = next(e for e, (lbl,) in app.world.query(Label) if lbl.text == "Bag")
     assert [(d.source, d.target, d.payload, d.kind) for d in hooks.got] == [
         (sword, bag, "sword", "item")]  # fmt: skip
-    assert app.world.resource(UIEvents).of(ButtonClicked) == []  # a drag is not a click
+    assert app.world.events(ButtonClicked) == []  # a drag is not a click
     drag(app, "Sword", "Spells")  # a target that does not take items
-    assert app.world.resource(UIEvents).of(DragCancelled) == [DragCancelled(sword, "sword")]
+    assert app.world.events(DragCancelled) == [DragCancelled(sword, "sword")]
     assert len(hooks.got) == 1
 
 
@@ -192,7 +190,7 @@ def test_a_small_move_is_still_a_click_and_the_game_never_sees_the_drag() -> Non
     app.step()
     app.input.mouse_up()
     app.step()
-    assert [e.text for e in app.world.resource(UIEvents).of(ButtonClicked)] == ["Sword"]
+    assert [e.text for e in app.world.events(ButtonClicked)] == ["Sword"]
     assert not app.world.resource(Input).mouse_pressed(Mouse.LEFT)
 
 
@@ -213,8 +211,6 @@ def test_keyboard_and_gamepad_drag_and_drop() -> None:
         pad.release(button)
         app.step()
     assert st.drag is None and len(hooks.got) == 1
-    events: list[Any] = []
     pad.press("x")
     app.step()
-    events += app.world.resource(UIEvents).items
-    assert any(isinstance(ev, DragStarted) for ev in events)
+    assert app.world.events(DragStarted)

@@ -12,7 +12,7 @@ from kge import App, Key, Mod, World
 from kge.components.ui import TextArea, TextInput, UINode
 from kge.errors import ValidationError
 from kge.testing import box_of, click, compose, focus, press, type_text
-from kge.ui.events import TextSubmitted, UIEvents
+from kge.ui.events import TextSubmitted
 from kge.ui.measure import Font, positions
 from kge.ui.state import UIState
 from kge.ui.style import look
@@ -122,7 +122,7 @@ def test_a_text_area_edits_lines_moves_by_line_scrolls_and_submits_on_ctrl_enter
     assert w.text[: w.caret].count("\n") >= 2
     app.input.press(Key.ENTER, Mod.CTRL)
     app.step()
-    assert app.world.resource(UIEvents).of(TextSubmitted) == [TextSubmitted(e, w.text)]
+    assert app.world.events(TextSubmitted) == [TextSubmitted(e, w.text)]
     app.input.release(Key.ENTER, Mod.CTRL)
 
 

@@ -34,7 +34,7 @@ from kge.testbed.registry import sample
 from kge.testbed.samples.build import box, static_box
 from kge.testbed.samples.ui_parts import Status, column, root_area, tip
 from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
-from kge.ui.events import ButtonClicked, UIEvents
+from kge.ui.events import ButtonClicked
 from kge.ui.interact import UIState
 from kge.world import World
 
@@ -133,7 +133,7 @@ class _Pause(Script):
 
     def on_update(self, dt: float) -> None:
         inp = self.world.resource(Host).input
-        clicked = any(b.text == "Pause" for ev in self.world.resource(UIEvents).of(ButtonClicked)
+        clicked = any(b.text == "Pause" for ev in self.world.events(ButtonClicked)
                       for b in [self.world.get(ev.entity, Button)])  # fmt: skip
         if inp.pressed(Key.P) or inp.pressed(Key.ESCAPE) or clicked:
             self.world.resource(Host).push_scene(pause_menu, overlay=True)
@@ -157,7 +157,8 @@ class _Resume(Script):
 
     def on_update(self, dt: float) -> None:
         inp = self.world.resource(Host).input
-        if self.world.resource(UIEvents).clicked(self.button) or inp.pressed(Key.ESCAPE):
+        clicked = any(ev.entity == self.button for ev in self.world.events(ButtonClicked))
+        if clicked or inp.pressed(Key.ESCAPE):
             self.world.resource(Host).pop_scene()
 
 
@@ -202,7 +203,7 @@ class _Switch(Script):
         self.target = target
 
     def on_update(self, dt: float) -> None:
-        for ev in self.world.resource(UIEvents).of(ButtonClicked):
+        for ev in self.world.events(ButtonClicked):
             kind = self.world.get(ev.entity, Button).text
             self.world.resource(Host).replace_scene(self.target, transition=_KINDS[kind])
 

@@ -22,7 +22,7 @@ from kge.components.ui import (
 from kge.testbed.registry import sample
 from kge.testbed.samples.ui_parts import Status, column, root_area, tip
 from kge.ui.dialogs import message_box
-from kge.ui.events import ButtonClicked, Dropped, TreeDrop, UIEvents
+from kge.ui.events import ButtonClicked, Dropped, TreeDrop
 from kge.world import World
 
 SCENE = [
@@ -57,11 +57,10 @@ class _Editor(Script):
         self.tree = tree
 
     def on_update(self, dt: float) -> None:
-        events = self.world.resource(UIEvents)
-        for drop in events.of(Dropped):
+        for drop in self.world.events(Dropped):
             if drop.target == self.tree and isinstance(drop.payload, TreeDrop):
                 reparent(self.world.get(self.tree, TreeView), drop.payload)
-        for click in events.of(ButtonClicked):
+        for click in self.world.events(ButtonClicked):
             if click.text == "Browse…":
                 message_box(self.world, "The testbed has no file browser: type a path.",
                             title="Browse")  # fmt: skip

@@ -10,7 +10,7 @@ from kge.components.ui import Button, Draggable, DropTarget, Label, Panel, UINod
 from kge.testbed.registry import sample
 from kge.testbed.samples.ui_parts import Status, column, root_area, tip
 from kge.ui.dialogs import confirm, message_box
-from kge.ui.events import ButtonClicked, DialogClosed, Dropped, UIEvents
+from kge.ui.events import ButtonClicked, DialogClosed, Dropped
 from kge.world import World
 
 ITEMS = (("Sword", "weapon"), ("Shield", "weapon"), ("Fire", "spell"), ("Frost", "spell"))
@@ -21,15 +21,14 @@ class _Bags(Script):
 
     def on_update(self, dt: float) -> None:
         world = self.world
-        events = world.resource(UIEvents)
-        for drop in events.of(Dropped):
+        for drop in world.events(Dropped):
             world.get(drop.source, UINode).parent = drop.target
-        for click in events.of(ButtonClicked):
+        for click in world.events(ButtonClicked):
             if click.text == "Confirm…":
                 confirm(world, "Throw every item away?", ok="Throw away", title="Confirm")
             elif click.text == "Message…":
                 message_box(world, "Saved.", title="Message")
-        for closed in events.of(DialogClosed):
+        for closed in world.events(DialogClosed):
             if closed.text == "Throw away":
                 for e, (d,) in world.query(Draggable):
                     world.despawn(e)
@@ -82,4 +81,4 @@ def _items_drop_into_bags_of_their_kind_and_dialogs_answer(app: Any) -> None:
     click(app, "Confirm…")
     app.step()
     click(app, "Cancel")
-    assert world.resource(UIEvents).of(DialogClosed)[0].text == "Cancel"
+    assert world.events(DialogClosed)[0].text == "Cancel"

@@ -13,7 +13,6 @@ from kge.ui.events import (
     Dropped,
     ItemActivated,
     TextSubmitted,
-    UIEvents,
     ValueChanged,
 )
 from kge.world import World
@@ -26,14 +25,13 @@ class Status(Script):
         self.label = label
 
     def on_update(self, dt: float) -> None:
-        for ev in self.world.resource(UIEvents).items:
-            if isinstance(ev, (ButtonClicked, ValueChanged, TextSubmitted, ItemActivated,
-                               DialogClosed, Dropped)):  # fmt: skip
-                shown = next((getattr(ev, k) for k in ("value", "text", "item", "payload")
-                              if hasattr(ev, k)), "")  # fmt: skip
-                if isinstance(shown, float):
-                    shown = round(shown, 2)
-                self.world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
+        kinds = (ButtonClicked, ValueChanged, TextSubmitted, ItemActivated, DialogClosed, Dropped)
+        for ev in self.world.events(*kinds):  # in the order they happened
+            shown = next((getattr(ev, k) for k in ("value", "text", "item", "payload")
+                          if hasattr(ev, k)), "")  # fmt: skip
+            if isinstance(shown, float):
+                shown = round(shown, 2)
+            self.world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
 
 
 def root_area(world: World) -> int:

@@ -8,7 +8,7 @@ from typing import Any
 from kge.components import Behaviour, Name, Script, Transform
 from kge.components.drawables import Rect
 from kge.components.ui import Label, ProgressBar, UINode
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import box, static_box
 from kge.world import World
@@ -21,7 +21,7 @@ class _Damage(Script):
         self.bars = bars
 
     def on_fixed_update(self, dt: float) -> None:
-        for ev in self.world.resource(PhysicsEvents).contact_begin:
+        for ev in self.world.events(ContactBegin):
             for body in (ev.body_a, ev.body_b):
                 bar = self.bars.get(body) if body is not None else None
                 if bar is not None and self.world.exists(bar):

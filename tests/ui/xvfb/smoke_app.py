@@ -19,7 +19,6 @@ from kge import (
     FocusChanged,
     TextInput,
     TextSubmitted,
-    UIEvents,
     UINode,
     ValueChanged,
     World,
@@ -47,7 +46,7 @@ class Report(System):
         self.frames += 1
         if self.frames == 3:  # drawn and laid out: input can come
             say(ready=True)
-        for ev in world.resource(UIEvents).items:
+        for ev in world.events(FocusChanged, ValueChanged, TextSubmitted, ButtonClicked):
             if isinstance(ev, FocusChanged) and ev.entity in self.fields:
                 say(focus=self.fields[ev.entity])
             elif isinstance(ev, ValueChanged) and ev.entity in self.fields:
