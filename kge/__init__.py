@@ -205,7 +205,7 @@ if TYPE_CHECKING:
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.tilemap import TilemapPlugin
-    from kge.testing import GoldenMismatch, StepTimeout
+    from kge.testing import GoldenMismatch, StepTimeout, UITargetError
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -222,6 +222,7 @@ _LAZY = {
     "ExportError": "kge.export",
     "GoldenMismatch": "kge.testing",
     "StepTimeout": "kge.testing",
+    "UITargetError": "kge.testing",
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
@@ -405,6 +406,7 @@ __all__ = [
     "TweenHandle",
     "TweenSequence",
     "Tweens",
+    "UITargetError",
     "ValidationError",
     "Wait",
     "WaitFrames",
