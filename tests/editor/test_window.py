@@ -6,8 +6,25 @@ from pathlib import Path
 
 import pytest
 
-from kge import App, Button, Collider, Key, Mod, Mouse, RevoluteJoint, TextInput, Time, Transform
+from kge import (
+    App,
+    Button,
+    Collider,
+    ColorPicker,
+    Key,
+    Mod,
+    Mouse,
+    RevoluteJoint,
+    ScrollView,
+    SpinBox,
+    TextInput,
+    Time,
+    Transform,
+    TreeView,
+)
+from kge.components.drawables import Rect
 from kge.editor.app import Editor, editor_app
+from kge.testing import box_of, click, double_click, drag, scroll
 from kge.ui.interact import UIState
 
 from .test_model import LEVEL
@@ -22,16 +39,12 @@ def editor(tmp_path: Path) -> tuple[App, Editor]:
     return app, ed
 
 
-def box_of(app: App, entity: int) -> object:
-    return app.world.resource(UIState).layout.boxes[entity]
-
-
 def button(app: App, text: str) -> int:
     return next(e for e, (b,) in app.world.query(Button) if b.text == text)
 
 
 def click_button(app: App, text: str) -> None:
-    app.input.click(at=box_of(app, button(app, text)).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, button(app, text)).center)
     app.advance(1 / 60)  # a real frame: respects the pause
 
 
@@ -61,7 +74,7 @@ def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     app.step()
     app.step()  # the new inspector rows are laid out
     widget = next(w for w, (_, c, f, _) in ed.widgets.items() if c is Collider and f == "density")
-    app.input.click(at=box_of(app, widget).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, widget).center)
     app.step()
     app.input.press(Key.A, Mod.CTRL)
     app.input.release(Key.A)
@@ -167,7 +180,7 @@ def test_save_and_the_unsaved_changes_prompt(editor: tuple[App, Editor]) -> None
 def test_hierarchy_search_and_delete_key(editor: tuple[App, Editor]) -> None:
     app, ed = editor
     search = ed.search_box
-    app.input.click(at=box_of(app, search).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, search).center)
     app.step()
     app.input.type_text("gro")
     app.step()
@@ -179,3 +192,116 @@ def test_hierarchy_search_and_delete_key(editor: tuple[App, Editor]) -> None:
     app.input.press(Key.DELETE)
     app.step()
     assert "Crate" not in [ed.model.name(e) for e in ed.model.entities()]
+
+
+def named(ed: Editor, name: str) -> int:
+    return next(e for e in ed.model.entities() if ed.model.name(e) == name)
+
+
+def test_the_hierarchy_is_a_tree_whose_row_drops_reparent(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    tree = app.world.get(ed.tree, TreeView)
+    assert [(it.text, it.parent) for it in tree.items] == [
+        ("Ground", None), ("Crate", None), ("hinge", None)]  # fmt: skip
+    before = ed.model.text()
+    crate, ground = named(ed, "Crate"), named(ed, "Ground")
+    drag(app, "Ground", "Crate")  # the middle of the Crate row: inside it (a compound part)
+    app.step()
+    assert ed.model.parent(ground) == crate and len(ed.model.undo_stack) == 1
+    assert {it.text: it.parent for it in tree.items}["Ground"] == crate  # shown under it
+    assert crate in tree.expanded  # a row that gains children opens
+    assert [it.text for it in tree.items] == ["Crate", "Ground", "hinge"]
+    ed.model.undo()
+    assert ed.model.text() == before
+    app.step()
+    assert {it.text: it.parent for it in tree.items}["Ground"] is None
+    drag(app, "Crate", "Ground")  # a static collider cannot carry the crate: refused
+    app.step()
+    assert ed.model.parent(crate) is None and "RigidBody" in ed.message
+    assert ed.model.text() == before
+
+
+def test_a_tree_row_click_selects_and_a_double_click_frames_it(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    click(app, "Ground")
+    assert ed.model.selection == [named(ed, "Ground")]
+    assert app.world.get(ed.tree, TreeView).selected == named(ed, "Ground")
+    zoom = ed.model.camera.zoom
+    double_click(app, "Crate")
+    assert ed.model.selection == [named(ed, "Crate")] and ed.model.camera.zoom != zoom
+
+
+def _spin(ed: Editor, ctype: type, name: str) -> int:
+    return next(w for w, (_, c, f, _) in ed.widgets.items() if c is ctype and f == name)
+
+
+def test_number_fields_are_spin_boxes_and_a_drag_is_one_undo_step(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = named(ed, "Crate")
+    ed.model.select(crate)
+    app.step()
+    app.step()
+    widget = _spin(ed, Collider, "density")
+    assert app.world.get(widget, SpinBox).value == 1.0
+    angle = app.world.get(_spin(ed, Transform, "angle"), SpinBox)
+    assert angle.value == 0.0 and angle.drag_speed == 0.5  # degrees
+    start = box_of(app, widget).center
+    app.input.mouse_down(at=start)
+    app.step()
+    for i in range(1, 6):
+        app.input.move_mouse(start[0] + 10 * i, start[1])
+        app.step()
+        assert ed.model.world.get(crate, Collider).density == pytest.approx(1.0 + 0.2 * i)
+    app.input.mouse_up(at=(start[0] + 50, start[1]))
+    app.step()
+    assert ed.model.world.get(crate, Collider).density == pytest.approx(2.0)
+    assert len(ed.model.undo_stack) == 1 and ed.model.dirty
+    ed.model.undo()
+    assert ed.model.world.get(crate, Collider).density == 1.0 and not ed.model.dirty
+
+
+def test_colour_fields_are_colour_pickers_and_a_drag_is_one_undo_step(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    tile = ed.model.create(Transform(0.0, 0.0), Rect(1.0, 1.0, color=(200, 40, 40, 255)),
+                           name="Tile")  # fmt: skip
+    steps = len(ed.model.undo_stack)
+    app.step()
+    app.step()
+    widget = _spin(ed, Rect, "color")
+    assert app.world.get(widget, ColorPicker).color == (200, 40, 40, 255)
+    box = box_of(app, widget)
+    app.input.mouse_down(at=(box.x + 10, box.top - 10))  # the square's bright top left
+    app.step()
+    app.input.move_mouse(box.x + 12, box.y + 10)  # down: darker
+    app.step()
+    app.input.mouse_up(at=(box.x + 12, box.y + 10))
+    app.step()
+    color = ed.model.world.get(tile, Rect).color
+    assert color != (200, 40, 40, 255) and max(color[:3]) < 100 and color[-1] == 255
+    assert len(ed.model.undo_stack) == steps + 1
+    ed.model.undo()
+    assert ed.model.world.get(tile, Rect).color == (200, 40, 40, 255)
+
+
+def test_the_inspector_scrolls_and_keeps_its_place_across_edits(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = named(ed, "Crate")
+    ed.model.select(crate)
+    app.step()
+    app.step()
+    view = app.world.get(ed.inspector, ScrollView)
+    scroll(app, ed.inspector, -4)  # the wheel down
+    assert view.scroll[1] > 0
+    where = view.scroll
+    ed.model.set_field(crate, Collider, "density", 3.0)  # the rows are rebuilt
+    app.step()
+    app.step()
+    assert view.scroll == where
