@@ -233,7 +233,16 @@ def test_a_tree_row_click_selects_and_a_double_click_frames_it(
     assert ed.model.selection == [named(ed, "Crate")] and ed.model.camera.zoom != zoom
 
 
-def _spin(ed: Editor, ctype: type, name: str) -> int:
+def select(app: App, ed: Editor, name: str) -> int:
+    """Select ``name`` and let the inspector build and lay out its rows."""
+    entity = named(ed, name)
+    ed.model.select(entity)
+    app.step()
+    app.step()
+    return entity
+
+
+def _field(ed: Editor, ctype: type, name: str) -> int:
     return next(w for w, (_, c, f, _) in ed.widgets.items() if c is ctype and f == name)
 
 
@@ -241,13 +250,10 @@ def test_number_fields_are_spin_boxes_and_a_drag_is_one_undo_step(
     editor: tuple[App, Editor]
 ) -> None:
     app, ed = editor
-    crate = named(ed, "Crate")
-    ed.model.select(crate)
-    app.step()
-    app.step()
-    widget = _spin(ed, Collider, "density")
+    crate = select(app, ed, "Crate")
+    widget = _field(ed, Collider, "density")
     assert app.world.get(widget, SpinBox).value == 1.0
-    angle = app.world.get(_spin(ed, Transform, "angle"), SpinBox)
+    angle = app.world.get(_field(ed, Transform, "angle"), SpinBox)
     assert angle.value == 0.0 and angle.drag_speed == 0.5  # degrees
     start = box_of(app, widget).center
     app.input.mouse_down(at=start)
@@ -273,7 +279,7 @@ def test_colour_fields_are_colour_pickers_and_a_drag_is_one_undo_step(
     steps = len(ed.model.undo_stack)
     app.step()
     app.step()
-    widget = _spin(ed, Rect, "color")
+    widget = _field(ed, Rect, "color")
     assert app.world.get(widget, ColorPicker).color == (200, 40, 40, 255)
     box = box_of(app, widget)
     app.input.mouse_down(at=(box.x + 10, box.top - 10))  # the square's bright top left
@@ -293,10 +299,7 @@ def test_the_inspector_scrolls_and_keeps_its_place_across_edits(
     editor: tuple[App, Editor]
 ) -> None:
     app, ed = editor
-    crate = named(ed, "Crate")
-    ed.model.select(crate)
-    app.step()
-    app.step()
+    crate = select(app, ed, "Crate")
     view = app.world.get(ed.inspector, ScrollView)
     scroll(app, ed.inspector, -4)  # the wheel down
     assert view.scroll[1] > 0
