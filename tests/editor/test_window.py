@@ -12,6 +12,7 @@ from kge import (
     Collider,
     ColorPicker,
     Key,
+    Label,
     Mod,
     Mouse,
     RevoluteJoint,
@@ -308,3 +309,24 @@ def test_the_inspector_scrolls_and_keeps_its_place_across_edits(
     app.step()
     app.step()
     assert view.scroll == where
+
+
+def test_the_status_line_marks_unsaved_changes_after_edits_undo_and_save(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+
+    def status() -> str:
+        app.step()
+        return app.world.get(ed.status, Label).text
+
+    assert "*" not in status()
+    crate = named(ed, "Crate")
+    ed.model.set_field(crate, Transform, "x", 4.0)
+    assert "level.scene.toml *" in status()
+    ed.model.undo()
+    assert "*" not in status()
+    ed.model.redo()
+    assert "*" in status()
+    ed.model.save()
+    assert "*" not in status()
