@@ -467,7 +467,7 @@ class EditorInput(System):
                         self.field_edit(ev.entity, "true" if ev.value else "false")
                     elif w[3].widget == "choice":
                         self.field_edit(ev.entity, w[3].choices[int(ev.value)])
-                    elif w[3].widget in ("number", "angle", "colour"):
+                    elif w[3].widget in ("number", "angle", "colour", "vector"):
                         self.live_edit(ev.entity, ev.value)
             elif isinstance(ev, Dropped):
                 if ev.target == ed.tree and isinstance(ev.payload, TreeDrop):
@@ -507,6 +507,9 @@ class EditorInput(System):
         current = getattr(comp, name)
         if kind.widget == "colour":
             text = ", ".join(str(int(v)) for v in tuple(value)[: len(current)])
+        elif kind.widget == "vector":  # this widget's component of the vector
+            parts = [float(value) if i == kind.index else v for i, v in enumerate(current)]
+            text = ", ".join(repr(float(v)) for v in parts)
         else:
             text = repr(float(value))
         info = default_registry().info(ctype)
@@ -825,14 +828,19 @@ def build_inspector(ed: Editor, ui: World) -> None:
             text = show(kind, value, folder or Path.cwd(), m.key)
             widget: Any
             height = 24.0
+            if kind.widget == "vector":  # x and y side by side
+                label = (Label(f.name, size=12.0, align="left"), 130.0)
+                row(label, *((_number_box(v, whole=isinstance(v, int)), 83.0) for v in value))
+                for i, w in enumerate(rows[-2:]):
+                    ed.widgets[w] = (entity, type(comp), f.name, FieldKind("vector", index=i))
+                ed.labels[rows[-3]] = (entity, type(comp), f.name, kind)
+                continue
             if kind.widget == "toggle":
                 widget = Toggle(bool(value))
-            elif kind.widget in ("number", "angle"):
-                angle = kind.widget == "angle"
-                whole = isinstance(value, int)
-                widget = SpinBox(math.degrees(value) if angle else float(value), step=0.0,
-                                 drag_speed=0.5 if angle else 0.1 if whole else 0.02,
-                                 rounded=whole)
+            elif kind.widget == "number":
+                widget = _number_box(value, whole=isinstance(value, int))
+            elif kind.widget == "angle":
+                widget = SpinBox(math.degrees(value), step=0.0, drag_speed=0.5)
             elif kind.widget == "colour":
                 widget = ColorPicker(tuple(value) + (255,) * (4 - len(value)),
                                      alpha=len(value) == 4)
@@ -854,6 +862,11 @@ def build_inspector(ed: Editor, ui: World) -> None:
     row((Dropdown(names, selected=0), 200.0), (Button("Add"), 90.0))
     ed.add_choice, ed.add_button = rows[-3], rows[-1]
     ed.inspector_rows = rows
+
+
+def _number_box(value: float, whole: bool) -> SpinBox:
+    """A number field: 0.02 per pixel dragged (0.1 for whole numbers), typed exactly."""
+    return SpinBox(float(value), step=0.0, drag_speed=0.1 if whole else 0.02, rounded=whole)
 
 
 def update_markers(ed: Editor) -> None:

@@ -10,7 +10,8 @@ asset path         a Dropdown of the files next to the scene (the file picker)
 number             a SpinBox: drag it sideways, the wheel, +/-, or click and type
 angle              the same, in degrees (``angle``, ``*_angle`` fields)
 colour             a ColorPicker (``color``, ``tint``, ``*_color``: 3 or 4 of 0..255)
-vector             a text field of comma-separated numbers ("1.5, 2")
+vector (2 numbers) two SpinBoxes, x and y
+numbers            a text field of comma-separated numbers ("1.5, 2, 3")
 anything else      a text field holding the value as TOML (a shape, a filter)
 =================  ==============================================================
 """
@@ -39,8 +40,10 @@ SOUND_SUFFIXES = (".wav", ".ogg", ".mp3", ".flac")
 class FieldKind:
     """How the inspector shows one field."""
 
-    widget: str  #: "toggle", "choice", "number", "angle", "colour", "numbers", "text", "toml"
+    widget: str  #: "toggle", "choice", "number", "angle", "colour", "vector", "numbers",
+    #: "text", "toml"
     choices: tuple[str, ...] = ()
+    index: int = -1  #: a vector's component shown by this widget (0: x, 1: y)
 
 
 def is_angle(name: str) -> bool:
@@ -75,7 +78,8 @@ def kind_of(info: TypeInfo, name: str, value: Any, entity_keys: list[str],
     if isinstance(value, tuple) and value and all(
         isinstance(v, int | float) and not isinstance(v, bool) for v in value
     ):
-        return FieldKind("numbers")
+        finite = all(math.isfinite(v) for v in value)
+        return FieldKind("vector" if len(value) == 2 and finite else "numbers")
     if isinstance(value, str):
         return FieldKind("text")
     return FieldKind("toml")
@@ -93,7 +97,7 @@ def show(kind: FieldKind, value: Any, folder: Path, key_of: Any) -> str:
         return f"{math.degrees(value):.6g}"
     if kind.widget == "number":
         return f"{value:.6g}" if isinstance(value, float) else str(value)
-    if kind.widget == "numbers":
+    if kind.widget in ("numbers", "vector"):
         return ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
     if kind.widget == "text":
         return str(value)
@@ -127,7 +131,7 @@ def parse(kind: FieldKind, text: str, info: TypeInfo, name: str, current: Any, f
         if kind.widget == "angle":
             v = math.radians(v)
         return int(v) if isinstance(current, int) and v.is_integer() else v
-    if kind.widget in ("numbers", "colour"):
+    if kind.widget in ("numbers", "vector", "colour"):
         try:
             parts = tuple(float(p) for p in text.replace("(", "").replace(")", "").split(","))
         except ValueError:

@@ -16,6 +16,7 @@ from kge import (
     Mod,
     Mouse,
     RevoluteJoint,
+    RigidBody,
     ScrollView,
     SpinBox,
     TextInput,
@@ -330,3 +331,27 @@ def test_the_status_line_marks_unsaved_changes_after_edits_undo_and_save(
     assert "*" in status()
     ed.model.save()
     assert "*" not in status()
+
+
+def test_vector_fields_are_two_spin_boxes_each_changing_its_component(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = select(app, ed, "Crate")
+    x, y = (w for w, (_, c, f, _) in ed.widgets.items() if c is RigidBody and f == "velocity")
+    assert app.world.get(x, SpinBox).value == 0.0 and app.world.get(y, SpinBox).value == 0.0
+    click(app, y)  # a click without a drag: type a value
+    app.input.type_text("-3.5")
+    app.input.press(Key.ENTER)
+    app.step()
+    app.input.release(Key.ENTER)
+    assert ed.model.world.get(crate, RigidBody).velocity == (0.0, -3.5)
+    app.step()
+    x = next(w for w, (_, c, f, k) in ed.widgets.items()
+             if c is RigidBody and f == "velocity" and k.index == 0)  # fmt: skip
+    drag(app, x, (box_of(app, x).center[0] + 50, box_of(app, x).center[1]))
+    app.step()
+    assert ed.model.world.get(crate, RigidBody).velocity == pytest.approx((1.0, -3.5))
+    assert len(ed.model.undo_stack) == 2
+    ed.model.undo()
+    assert ed.model.world.get(crate, RigidBody).velocity == (0.0, -3.5)
