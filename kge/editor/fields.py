@@ -10,7 +10,7 @@ asset path         a Dropdown of the files next to the scene (the file picker)
 number             a SpinBox: drag it sideways, the wheel, +/-, or click and type
 angle              the same, in degrees (``angle``, ``*_angle`` fields)
 colour             a ColorPicker (``color``, ``tint``, ``*_color``: 3 or 4 of 0..255)
-vector (2 numbers) two SpinBoxes, x and y
+2D vector          two SpinBoxes, x and y
 numbers            a text field of comma-separated numbers ("1.5, 2, 3")
 anything else      a text field holding the value as TOML (a shape, a filter)
 =================  ==============================================================
