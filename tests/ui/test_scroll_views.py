@@ -11,7 +11,7 @@ from kge.ui import geometry as geo
 from kge.ui.current import current_layout
 from kge.ui.state import UIState
 
-from .conftest import SIZE, mask, pixels
+from .conftest import SIZE, bbox, mask, pixels
 
 
 def menu(world: World, rows: int = 30) -> None:
@@ -155,3 +155,31 @@ def test_scrolled_content_is_clipped_to_the_view(make_app: Any) -> None:
     assert ys.min() == SIZE[1] // 2 - 30 and ys.max() == SIZE[1] // 2 + 29  # 60 px, no more
     assert xs.min() == SIZE[0] // 2 - 60 and xs.max() == SIZE[0] // 2 + 59
     assert mask(px, (255, 0, 255), tol=10).sum() > 100 * 50
+
+
+def test_the_scrollbar_is_drawn_beside_the_content_and_its_thumb_follows_the_scroll(
+    make_app: Any,
+) -> None:
+    def scene(world: World) -> None:
+        view = world.spawn(UINode(width=120, height=60, layout="column", align="stretch"),
+                           ScrollView())  # fmt: skip
+        for _i in range(8):
+            world.spawn(UINode(parent=view, height=20), Panel(color=(255, 0, 255), radius=0))
+
+    app = make_app(scene)
+    app.step()
+    left, right = SIZE[0] // 2 - 60, SIZE[0] // 2 + 59
+    bottom, top = SIZE[1] // 2 - 30, SIZE[1] // 2 + 29
+    px = pixels(app)
+    cx0, cx1, cy0, cy1 = bbox(mask(px, (255, 0, 255), tol=10))  # (edges are anti-aliased)
+    assert cx0 <= left + 1 and right - 12 <= cx1 <= right - 10  # the bar's 10 px stay clear
+    assert cy0 <= bottom + 1 and cy1 >= top - 1
+    thumb_colour = (150, 158, 172)  # the theme's text_muted
+    x0, x1, y0, y1 = bbox(mask(px, thumb_colour, tol=12))
+    assert right - 10 <= x0 and x1 <= right  # in the bar
+    assert y1 >= top - 4 and y0 > bottom + 20  # at the top: 60 of 160 px shown
+    _, sv = _view(app)
+    sv.scroll = (0.0, 100.0)  # the end
+    app.step()
+    x0, x1, y0, y1 = bbox(mask(pixels(app), thumb_colour, tol=12))
+    assert y0 <= bottom + 4 and y1 < top - 20  # at the bottom
