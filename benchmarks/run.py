@@ -493,6 +493,16 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ntile map:", tilemap.table(tiles))
+    editor_rows: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import editor as editor_bench
+
+        editor_rows, why = editor_bench.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\neditor (kge edit), ms per frame:")
+            print(editor_bench.table({int(n): r for n, r in editor_rows.items()}))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
@@ -518,6 +528,7 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "editor": editor_rows,
         "targets": goals,
         "skipped": skipped,
     }

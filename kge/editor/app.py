@@ -54,6 +54,8 @@ from kge.world import World
 TOOLS = ("select", "move", "rotate", "scale", "shape", "anchor", "paint", "prefab")
 LEFT_W, RIGHT_W, TOP_H, BOTTOM_H = 250.0, 330.0, 40.0, 26.0
 EDITOR_TITLE = "kge edit"
+#: above this many colliders the physics overlay starts off (the Physics button shows it)
+OVERLAY_LIMIT = 1000
 
 
 class EditScene(Scene):
@@ -69,7 +71,10 @@ class EditScene(Scene):
         self.model = EditorModel(world, self.path)
         world.insert_resource(self.model)
         if world.try_resource(DebugDraw) is None:  # the physics overlay (unless the scene has one)
-            world.insert_resource(DebugDraw(joints=True, contacts=False, contact_normals=False))
+            # drawn in Python per collider each frame: off by default on very large scenes
+            many = len(world.query(Collider)) > OVERLAY_LIMIT
+            world.insert_resource(DebugDraw(enabled=not many, joints=True, contacts=False,
+                                            contact_normals=False))
             self.model.own_resources.add(DebugDraw)
 
 
@@ -160,6 +165,8 @@ class Editor:
         self.last_mouse: tuple[float, float] = (0.0, 0.0)
         self.tree_from: int | None = None
         self.grid_key: Any = None
+        self.tree_key: Any = None
+        self.tree_items: list[str] = []
         model.listeners.append(self._changed)
 
     def run_edit(self, fn: Any) -> None:
@@ -239,6 +246,11 @@ class Editor:
             self.say(f"snapping {'on' if m.snap else 'off'} ({m.grid} m)")
         elif name == "frame":
             self.frame(m.selection or None)
+        elif name == "physics":
+            dd = self.edit_world.try_resource(DebugDraw)
+            if dd is not None:
+                dd.enabled = not dd.enabled
+                self.say(f"physics overlay {'on' if dd.enabled else 'off'}")
         elif name == "quit":
             self.quit()
         self.inspector_dirty = True
@@ -359,7 +371,8 @@ class EditorUI(Scene):
         top = world.spawn(UINode(anchor="top_left", width="100%", height=TOP_H, layout="row",
                                  padding=4.0, spacing=3.0, align="stretch"),
                           Panel(color=(24, 27, 34, 245), radius=0.0))
-        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "frame"):
+        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "physics",
+                     "frame"):
             e = world.spawn(UINode(parent=top, width=float(18 + 9 * len(name))),
                             Button(name.capitalize()))
             ed.buttons[e] = name
@@ -374,7 +387,9 @@ class EditorUI(Scene):
         for name in ("new", "duplicate", "delete"):
             e = world.spawn(UINode(parent=actions, width=76.0), Button(name.capitalize()))
             ed.buttons[e] = name
-        ed.tree = world.spawn(UINode(parent=left, height=430.0), ScrollList([]))
+        # fixed sizes: an "auto" list would measure every row's text each frame
+        ed.tree = world.spawn(UINode(parent=left, width=LEFT_W - 12.0, height=430.0),
+                              ScrollList([]))
         right = world.spawn(UINode(anchor="top_right", offset=(0.0, -TOP_H), width=RIGHT_W,
                                    height="100%", layout="column", padding=6.0, spacing=3.0,
                                    align="stretch"), Panel(color=(28, 31, 40, 240), radius=0.0))
@@ -641,10 +656,14 @@ class EditorInput(System):
         ed = self.ed
         m = ed.model
         world = self.world
-        rows = m.hierarchy(ed.search)
-        items = [("   " * d) + m.name(e) for e, d in rows]
         lst = world.get(ed.tree, ScrollList)
-        ed.rows = [e for e, _ in rows]
+        shown = (m.revision, ed.search)
+        if ed.tree_key != shown:  # the hierarchy is rebuilt when the scene changes only
+            ed.tree_key = shown
+            rows = m.hierarchy(ed.search)
+            ed.tree_items = [("   " * d) + m.name(e) for e, d in rows]
+            ed.rows = [e for e, _ in rows]
+        items = ed.tree_items
         sel = ed.rows.index(m.selection[0]) if m.selection and m.selection[0] in ed.rows else -1
         if lst.items != items:
             lst.items = items
@@ -703,8 +722,8 @@ def build_inspector(ed: Editor, ui: World) -> None:
         r = ui.spawn(UINode(parent=ed.inspector, height=24.0, layout="row", spacing=4.0,
                             align="stretch"))
         rows.append(r)
-        for comp, width in widgets:
-            rows.append(ui.spawn(UINode(parent=r, width=width), comp))
+        for comp, width in widgets:  # fixed sizes: "auto" would measure every option
+            rows.append(ui.spawn(UINode(parent=r, width=width, height=24.0), comp))
         return r
 
     rows.append(ui.spawn(UINode(parent=ed.inspector), Label("Inspector", size=14.0,

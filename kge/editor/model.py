@@ -108,8 +108,10 @@ class EditorModel:
         if self.path is not None and self.path.exists():
             load_scene(world, self.path)
         scene_state(world).source = self.path
-        self.saved_text = self.text()
         self.listeners: list[Callable[[str], None]] = []
+        #: bumped by every change (views cache what they show by it)
+        self.revision = 0
+        self._saved_at: tuple[int, int] = self._history_mark()
 
     # -- reading ----------------------------------------------------------------------------
     @property
@@ -187,10 +189,14 @@ class EditorModel:
             rows = [(e, d) for e, d in rows if s in self.name(e).lower() or s in self.key(e)]
         return rows
 
+    def _history_mark(self) -> tuple[int, int]:
+        top = self.undo_stack[-1] if self.undo_stack else None
+        return (len(self.undo_stack), id(top))
+
     @property
     def dirty(self) -> bool:
-        """Unsaved changes?"""
-        return self.text() != self.saved_text
+        """Unsaved changes? (Undoing back to the saved state makes it clean again.)"""
+        return self._history_mark() != self._saved_at
 
     def text(self) -> str:
         folder = self.path.parent if self.path is not None else Path.cwd()
@@ -247,6 +253,7 @@ class EditorModel:
         self._notify(step.label)
 
     def _notify(self, what: str) -> None:
+        self.revision = getattr(self, "revision", 0) + 1
         for fn in list(getattr(self, "listeners", [])):
             fn(what)
 
@@ -697,7 +704,7 @@ class EditorModel:
                            exclude_resources=self.own_resources)
         self.path = Path(os.path.realpath(saved))
         self.state.source = self.path
-        self.saved_text = self.text()
+        self._saved_at = self._history_mark()
         self._notify("save")
         return saved
 
