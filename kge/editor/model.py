@@ -524,6 +524,18 @@ class EditorModel:
         parts = [step] if not isinstance(moved, SetFields) else [step, moved]
         self._push(Compound(parts, "reparent"))
 
+    def add_map(self, source: str | os.PathLike[str], **options: Any) -> None:
+        """Load a Tiled map into the scene (saved as a ``[[tilemap]]`` reference with
+        these ``load_map`` options); one undo step."""
+        from kge.scenefile.state import MapRef
+        from kge.tilemap import load_map
+
+        def change() -> None:
+            handle = load_map(self.world, source, unknown="ignore", **options)
+            self.state.maps.append(MapRef(os.fspath(source), dict(options), handle))
+
+        self.structural("add map", change)
+
     def place_prefab(
         self, prefab: str | os.PathLike[str], at: Vec2, angle: float = 0.0
     ) -> list[int]:
