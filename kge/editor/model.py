@@ -531,7 +531,7 @@ class EditorModel:
         from kge.tilemap import load_map
 
         def change() -> None:
-            handle = load_map(self.world, source, unknown="ignore", **options)
+            handle = load_map(self.world, os.fspath(source), unknown="ignore", **options)
             self.state.maps.append(MapRef(os.fspath(source), dict(options), handle))
 
         self.structural("add map", change)
