@@ -123,8 +123,13 @@ class EditorModel:
         return scene_state(self.world)
 
     def entities(self) -> list[int]:
-        """The scene's entities (not the editor's own), in id order."""
-        return [e for e in self.world.entities() if not self.world.has(e, EditorOnly)]
+        """The scene's entities, in id order: not the editor's own, nor those a Tiled map
+        made (the map is one ``[[tilemap]]`` reference in the file)."""
+        from kge.scenefile.save import map_entities
+
+        skip = map_entities(self.world)
+        return [e for e in self.world.entities()
+                if e not in skip and not self.world.has(e, EditorOnly)]
 
     def key(self, entity: int) -> str:
         k = self.state.keys.get(entity)
