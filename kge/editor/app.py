@@ -17,6 +17,7 @@ never touched. Everything runs headless with simulated input in tests.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import itertools
 import math
@@ -166,6 +167,7 @@ class Editor:
         self.tree_from: int | None = None
         self.grid_key: Any = None
         self.tree_key: Any = None
+        self.num_drag: dict[str, Any] | None = None
         self.tree_items: list[str] = []
         model.listeners.append(self._changed)
 
@@ -416,8 +418,42 @@ class EditorInput(System):
             return
         self.ui_events()
         self.keys()
+        self.number_drag()
         self.viewport()
         self.refresh()
+
+    def number_drag(self) -> None:
+        """Drag a number field's name sideways: the value follows the pointer (one undo step
+        per drag; 0.02 per pixel, half a degree for angles, one per 10 pixels for ints)."""
+        ed, m = self.ed, self.ed.model
+        state = self.world.resource(UIState)
+        x = self.world.resource(Input).mouse_screen[0]
+        d = ed.num_drag
+        if d is None:
+            hit = ed.labels.get(state.pressed) if state.pressed is not None else None
+            if hit is not None and hit[3].widget in ("number", "angle"):
+                e, ctype, name, kind = hit
+                ed.num_drag = {"label": state.pressed, "x0": x, "entity": e, "type": ctype,
+                               "field": name, "kind": kind.widget,
+                               "v0": getattr(m.world.get(e, ctype), name)}
+            return
+        comp = m.world.get(d["entity"], d["type"])
+        v0, dx = d["v0"], x - d["x0"]
+        if d["kind"] == "angle":
+            value: Any = v0 + math.radians(0.5) * dx
+        elif isinstance(v0, int):
+            value = v0 + int(dx / 10)
+        else:
+            value = v0 + 0.02 * dx
+        if state.pressed == d["label"]:
+            with contextlib.suppress(ValueError, TypeError):  # refused: it stays put
+                setattr(comp, d["field"], value)  # live, validated; no undo step yet
+            return
+        ed.num_drag = None
+        final = getattr(comp, d["field"])
+        setattr(comp, d["field"], v0)
+        ed.run_edit(lambda: m.set_fields(d["entity"], d["type"], {d["field"]: final},
+                                         f"drag {d['field']}"))
 
     # -- UI events -----------------------------------------------------------------------------
     def ui_events(self) -> None:
@@ -777,7 +813,10 @@ def build_inspector(ed: Editor, ui: World) -> None:
                 kind = FieldKind("choice", tuple(opts))
             else:
                 widget = TextInput(text, max_length=4000)
-            row((Label(f.name + unit, size=12.0, align="left"), 130.0), (widget, 170.0))
+            name_widget: Any = Label(f.name + unit, size=12.0, align="left")
+            if kind.widget in ("number", "angle"):  # drag the name left or right to change it
+                name_widget = Button(f.name + unit)
+            row((name_widget, 130.0), (widget, 170.0))
             ed.widgets[rows[-1]] = (entity, type(comp), f.name, kind)
             ed.labels[rows[-2]] = (entity, type(comp), f.name, kind)
     names = [n for n in default_registry().names(COMPONENT)

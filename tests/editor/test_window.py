@@ -179,3 +179,54 @@ def test_hierarchy_search_and_delete_key(editor: tuple[App, Editor]) -> None:
     app.input.press(Key.DELETE)
     app.step()
     assert "Crate" not in [ed.model.name(e) for e in ed.model.entities()]
+
+
+def test_drag_a_number_fields_name_to_change_it(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    app.input.click(at=screen_of(ed, "Crate"))
+    app.step()
+    app.step()
+    label = next(w for w, (_, c, f, _) in ed.labels.items() if c is Collider and f == "density")
+    x, y = box_of(app, label).center  # type: ignore[attr-defined]
+    app.input.mouse_down(Mouse.LEFT, at=(x, y))
+    app.step()
+    for dx in (10, 30, 50):
+        app.input.move_mouse(x + dx, y)
+        app.step()
+    crate = ed.model.selection[0]
+    assert ed.model.world.get(crate, Collider).density == pytest.approx(2.0)  # live
+    assert not ed.model.undo_stack
+    app.input.mouse_up(Mouse.LEFT, at=(x + 50, y))
+    app.step()
+    app.step()
+    assert ed.model.world.get(crate, Collider).density == pytest.approx(2.0)
+    assert len(ed.model.undo_stack) == 1
+    ed.model.undo()
+    assert ed.model.world.get(crate, Collider).density == 1.0
+
+
+def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    click_button(app, "Rotate")
+    cx, cy = screen_of(ed, "Crate")
+    k = ed.model.camera.pixels_per_meter * ed.model.camera.zoom
+    app.input.mouse_down(Mouse.LEFT, at=(cx + 0.3 * k, cy))  # on the crate, to its right
+    app.step()
+    app.input.move_mouse(cx, cy + 0.3 * k)  # a quarter turn around it
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    assert ed.model.world.get(crate, Transform).angle == pytest.approx(3.14159265 / 2)
+    click_button(app, "Paint")
+    start = ed.to_screen((1.0, 3.5))
+    app.input.mouse_down(Mouse.LEFT, at=start)
+    app.step()
+    app.input.move_mouse(start[0] + 2.0 * k, start[1])
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    painted = [e for e in ed.model.entities() if ed.model.world.has(e, Transform)
+               and ed.model.world.get(e, Transform).y == 3.5]
+    assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
+    assert ed.model.undo() and len(ed.model.entities()) == 3
