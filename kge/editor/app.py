@@ -677,15 +677,15 @@ class EditorInput(System):
             return None
 
         mouse = inp.mouse_screen
-        if inp.mouse_pressed(Mouse.LEFT) and box.contains(mouse):
+        held = self.world.resource(UIState).pressed == ed.tree  # the list takes the press
+        if held and ed.tree_from is None:
             ed.tree_from = row_at(mouse)
-        elif inp.mouse_released(Mouse.LEFT) and ed.tree_from is not None:
+        elif not held and ed.tree_from is not None:
             src, ed.tree_from = ed.tree_from, None
             dst = row_at(mouse) if box.contains(mouse) else None
-            if src is not None and dst != src and src < len(ed.rows):
-                target = ed.rows[dst] if dst is not None and dst < len(ed.rows) else None
-                if box.contains(mouse):
-                    ed.run_edit(lambda: ed.model.reparent(ed.rows[src], target))
+            if src < len(ed.rows) and dst is not None and dst != src and dst < len(ed.rows):
+                child, target = ed.rows[src], ed.rows[dst]
+                ed.run_edit(lambda: ed.model.reparent(child, target))
 
     # -- panels  -------------------------------------------------------------------------------
     def refresh(self) -> None:

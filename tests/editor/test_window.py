@@ -230,3 +230,27 @@ def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
                and ed.model.world.get(e, Transform).y == 3.5]
     assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
     assert ed.model.undo() and len(ed.model.entities()) == 3
+
+
+def test_reparent_by_dragging_in_the_hierarchy(editor: tuple[App, Editor]) -> None:
+    from kge import Circle, ScrollList, Theme
+    from kge.ui.interact import list_rows
+
+    app, ed = editor
+    part = ed.model.create(Transform(2.0, 2.0), Collider(Circle(0.2)), name="Bumper")
+    app.step()
+    app.step()
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    lst = app.world.get(ed.tree, ScrollList)
+    rows = dict(list_rows(lst, box_of(app, ed.tree), app.world.resource(Theme)))  # type: ignore[arg-type]
+    src, dst = rows[ed.rows.index(part)].center, rows[ed.rows.index(crate)].center
+    app.input.mouse_down(Mouse.LEFT, at=src)
+    app.step()
+    app.input.move_mouse(*dst)
+    app.step()
+    app.input.mouse_up(Mouse.LEFT, at=dst)
+    app.step()
+    assert ed.model.world.get(part, Collider).body == crate
+    assert ed.model.parent(part) == crate
+    app.step()
+    assert ed.model.name(ed.rows[ed.rows.index(crate) + 1]) == "Bumper"  # shown under it
