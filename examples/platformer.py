@@ -28,9 +28,9 @@ from kge import (
     Key,
     Name,
     Physics,
-    PhysicsEvents,
     RigidBody,
     Script,
+    SensorBegin,
     Text,
     Transform,
     World,
@@ -78,7 +78,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             for a, b in ((ev.collider_a, ev.collider_b), (ev.collider_b, ev.collider_a)):
                 if not (world.exists(a) and world.exists(b)) or not world.has(a, Behaviour):
                     continue
@@ -101,7 +101,7 @@ class Referee(Script):
 def _hud(world: World) -> None:
     score = world.resource(Score)
     for _, (t,) in world.query(Text):
-        t.value = f"level {score.level}   coins {score.coins}"
+        t.text = f"level {score.level}   coins {score.coins}"
 
 
 def level(world: World, number: int = 1, score: Score | None = None) -> None:
