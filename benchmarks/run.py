@@ -334,6 +334,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.ui import markdown_lines
 
         out += markdown_lines(report["ui"])
+    if report.get("editor"):
+        from benchmarks import editor as editor_bench
+
+        out += editor_bench.markdown_lines(report["editor"])
     if report.get("game"):
         from benchmarks.particles_lights import game_lines
 
@@ -493,6 +497,16 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ntile map:", tilemap.table(tiles))
+    editor_rows: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import editor as editor_bench
+
+        editor_rows, why = editor_bench.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\neditor (kge edit), µs of CPU per frame (median):")
+            print(editor_bench.table({int(n): r for n, r in editor_rows.items()}))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
@@ -518,6 +532,7 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "editor": editor_rows,
         "targets": goals,
         "skipped": skipped,
     }

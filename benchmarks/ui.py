@@ -23,10 +23,7 @@ The list rows time a ``ScrollList`` of 100 and of 10,000 rows, ``static`` and sc
 row per frame (``scroll``): only the rows in view are laid out and drawn, so the two
 sizes cost the same.
 
-The editor rows time ``kge edit`` on a scene of N entities (a named box each): ``step``
-is a frame of its logic with nothing changing (UI input, the hierarchy's tree and the
-status line kept current), ``select`` the same with a new selection every frame (the
-inspector's rows rebuilt), ``frame`` a ``step`` plus the drawn frame (llvmpipe).
+The editor (``kge edit``) has its own rows: ``benchmarks/editor.py``.
 
 Run ``python benchmarks/ui.py`` for the tables; :func:`measure` with small sizes is what
 ``kge bench --quick`` and the test suite call.
@@ -49,7 +46,6 @@ if __package__ in (None, ""):  # run as a script: make the repository importable
 
 VARIANTS = ("layout", "static", "change", "hover", "resync", "rebuild")
 LIST_VARIANTS = ("static", "scroll")
-EDITOR_VARIANTS = ("step", "select", "frame")
 
 
 def _grid_app(n: int) -> Any:
@@ -94,7 +90,11 @@ def _frame(app: Any) -> None:
     app.render()
 
 
-def _median_us(fns: dict[str, Callable[[], None]], repeats: int, frames: int) -> dict[str, float]:
+def median_cpu_us(
+    fns: dict[str, Callable[[], None]], repeats: int, frames: int
+) -> dict[str, float]:
+    """Median µs of CPU per call of each function, timed interleaved (background load
+    hits every variant alike)."""
     samples: dict[str, list[float]] = {k: [] for k in fns}
     for _ in range(repeats):
         for name, fn in fns.items():  # interleaved: background load hits every variant alike
@@ -164,7 +164,7 @@ def measure(n: int, repeats: int = 9, frames: int = 10) -> dict[str, float]:
 
     fns = {"layout": layout, "static": static, "change": change, "hover": hover,
            "resync": resync, "rebuild": rebuild}  # fmt: skip
-    out = _median_us(fns, repeats, frames)
+    out = median_cpu_us(fns, repeats, frames)
     before = drawer.syncs
     static()
     out["static_syncs"] = float(drawer.syncs - before)  # widgets synced by an unchanged frame
@@ -194,55 +194,24 @@ def measure_lists(sizes: tuple[int, ...], repeats: int = 9,
             _frame(app)
 
         fns[f"{rows}:static"], fns[f"{rows}:scroll"] = static, scroll
-    got = _median_us(fns, repeats, frames)
+    got = median_cpu_us(fns, repeats, frames)
     for app in apps:
         app.close()
     return {rows: {v: got[f"{rows}:{v}"] for v in LIST_VARIANTS} for rows in sizes}
 
 
-def _editor_app(n: int) -> tuple[Any, Any]:
-    from kge import Name, Transform
-    from kge.components.drawables import Rect
-    from kge.editor.app import editor_app
-
-    app, ed = editor_app(None, headless=True, hot_reload=False, size=(1280, 720))
-    for i in range(n):
-        ed.model.world.spawn(Transform(float(i % 50), float(i // 50)), Name(f"Box {i}"),
-                             Rect(0.8, 0.8))  # fmt: skip
-    app.step()
-    app.render()
-    return app, ed
-
-
-def measure_editor(n: int, repeats: int = 9, frames: int = 5) -> dict[str, float]:
-    """µs of CPU per editor frame on a scene of ``n`` entities (see the module docstring)."""
-    app, ed = _editor_app(n)
-    entities = ed.model.entities()
-    picks = iter(range(10**9))
-
-    def select() -> None:
-        ed.model.select(entities[next(picks) % len(entities)])
-        app.step()
-
-    def frame() -> None:
-        app.step()
-        app.render()
-
-    return _median_us({"step": app.step, "select": select, "frame": frame}, repeats, frames)
-
-
-def editor_table(results: dict[int, dict[str, float]]) -> str:
-    lines = [f"{'entities':>8}" + "".join(f"{c:>10}" for c in EDITOR_VARIANTS)]
+def table(
+    results: dict[int, dict[str, float]],
+    variants: tuple[str, ...] = VARIANTS,
+    first: str = "widgets",
+    ratio: tuple[str, str] = ("resync", "static"),
+) -> str:
+    """A text table: a row per size, a column per variant and one for ``ratio``."""
+    top, bottom = ratio
+    lines = [f"{first:>8}" + "".join(f"{c:>10}" for c in variants) + f"{top + '/' + bottom:>14}"]
     for n, r in sorted(results.items()):
-        lines.append(f"{n:>8}" + "".join(f"{r[c]:>10.0f}" for c in EDITOR_VARIANTS))
-    return "\n".join(lines)
-
-
-def table(results: dict[int, dict[str, float]]) -> str:
-    lines = [f"{'widgets':>8}" + "".join(f"{c:>10}" for c in VARIANTS) + f"{'resync/static':>14}"]
-    for n, r in sorted(results.items()):
-        lines.append(f"{n:>8}" + "".join(f"{r[c]:>10.0f}" for c in VARIANTS)
-                     + f"{r['resync'] / r['static']:>14.1f}")  # fmt: skip
+        lines.append(f"{n:>8}" + "".join(f"{r[c]:>10.0f}" for c in variants)
+                     + f"{r[top] / r[bottom]:>14.2f}")  # fmt: skip
     return "\n".join(lines)
 
 
@@ -257,22 +226,18 @@ def text(results: dict[str, dict[str, float]]) -> str:
     """Both tables of a ``bench_section`` result, as text."""
     grids = {int(k): v for k, v in results.items() if k.isdigit()}
     lists = {int(k[5:]): v for k, v in results.items() if k.startswith("list-")}
-    editors = {int(k[7:]): v for k, v in results.items() if k.startswith("editor-")}
-    out = table(grids) + "\n" + list_table(lists)
-    return out + ("\n" + editor_table(editors) if editors else "")
+    return table(grids) + "\n" + list_table(lists)
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="*", default=[50, 1000])
     parser.add_argument("--rows", type=int, nargs="*", default=[100, 10_000])
-    parser.add_argument("--entities", type=int, nargs="*", default=[2000])
     parser.add_argument("--repeats", type=int, default=9)
     args = parser.parse_args(argv)
     print("µs per frame (median):")
     print(table({n: measure(n, args.repeats) for n in args.sizes}))
     print(list_table(measure_lists(tuple(args.rows), args.repeats)))
-    print(editor_table({n: measure_editor(n, args.repeats) for n in args.entities}))
     return 0
 
 
@@ -293,9 +258,6 @@ def bench_section(
         progress(f"ui [lists of {' and '.join(map(str, sizes))} rows]")
         lists = measure_lists(sizes, 2 if quick else 9, 3 if quick else 10)
         out.update({f"list-{rows}": r for rows, r in lists.items()})
-        n = 100 if quick else 2000
-        progress(f"ui [the editor on {n} entities]")
-        out[f"editor-{n}"] = measure_editor(n, 2 if quick else 9, 2 if quick else 5)
         return out, None
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
         return {}, f"ui skipped: {type(err).__name__}: {err}"
@@ -304,7 +266,6 @@ def bench_section(
 def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
     """The UI tables of ``benchmarks/results/bench.md``."""
     grids = {k: v for k, v in results.items() if k.isdigit()}
-    editors = {k[7:]: v for k, v in results.items() if k.startswith("editor-")}
     lists = {k[5:]: v for k, v in results.items() if k.startswith("list-")}
     out: list[str] = []
     if grids:
@@ -324,11 +285,4 @@ def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
                 "", "| rows | static | scroll |", "|---:|---:|---:|"]  # fmt: skip
         for n, r in sorted(lists.items(), key=lambda kv: int(kv[0])):
             out.append(f"| {n} | {r['static']:.0f} | {r['scroll']:.0f} |")
-    if editors:
-        out += ["", "`kge edit`, µs of CPU per frame (median; `step` = its logic with nothing "
-                "changing, `select` = a new selection each frame (the inspector rebuilt), "
-                "`frame` = `step` and the drawn frame):",
-                "", "| entities | step | select | frame |", "|---:|---:|---:|---:|"]  # fmt: skip
-        for n, r in sorted(editors.items(), key=lambda kv: int(kv[0])):
-            out.append(f"| {n} | {r['step']:.0f} | {r['select']:.0f} | {r['frame']:.0f} |")
     return out

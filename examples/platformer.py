@@ -1,11 +1,12 @@
-"""A small platformer on Tiled maps written by code: run, jump, collect coins, take the door.
+"""A small platformer: run, jump, collect coins, take the door.
 
-The two levels are Tiled maps (TMX) written by
-``kge.testbed.samples.tilemaps.write_levels`` from generated tiles, then loaded
-with ``kge.load_map``: the ground becomes a few merged chain outlines, the
-planks one-way platforms, and the map's objects (player start, coins, door)
-entities through a spawner registry. The door replaces the scene with the next
-level (``app.replace_scene``); the score travels along as a scene argument.
+The two levels are scene files made in the editor (``examples/levels/level1.scene.toml``,
+``level2.scene.toml``; ``kge edit examples/levels/level1.scene.toml --game
+examples/platformer.py`` opens one): each loads a Tiled map for its terrain (the ground
+becomes a few merged chain outlines, the planks one-way platforms) and places the player,
+the coins and the door as entities. ``examples/platformer_levels.py`` is the editing
+session that made them, as a script. The door replaces the scene with the next level
+(``app.replace_scene``); the score travels along as a scene argument.
 
 Controls are named actions (``left``, ``right``, ``jump``, ``pause``) declared once for
 the App (``App(..., bindings=...)``): left/right or A/D run, space/up/W jumps, a
@@ -13,13 +14,13 @@ gamepad's d-pad and A too. P, Escape or Start pauses: the pause menu's Settings 
 tabs for the volumes, the controls (a scroll view of rebinding buttons, with a reset
 that asks to confirm) and the UI size (``game_menus.py``). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
+While it runs in a window, edit a level file or this script: the change takes effect.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import game_menus as ui  # imports kge_required first
 
@@ -27,24 +28,17 @@ import kge
 from kge import (
     App,
     Behaviour,
-    Box,
-    Camera,
-    Collider,
     InputMap,
     Key,
-    MapObject,
+    Name,
     Physics,
     RigidBody,
     Script,
     SensorBegin,
-    Spawn,
-    Spawners,
     Text,
     Transform,
     World,
 )
-from kge.components import drawables as draw
-from kge.testbed.samples.tilemaps import levels
 
 WIDTH, HEIGHT = 960, 600
 RUN_SPEED = 6.0
@@ -69,8 +63,16 @@ class Score:
     level: int = 1
 
 
+LEVELS = Path(__file__).resolve().parent / "levels"
+
+
+@kge.register_script
 class Player(Script):
     """Runs with the arrows, jumps when something is under its feet."""
+
+    def on_start(self) -> None:
+        # the controls' defaults also when the level file is played alone (the editor's Play)
+        bindings(self.world.resource(InputMap))
 
     def on_fixed_update(self, dt: float) -> None:
         actions = self.world.resource(InputMap)  # rebindable in the settings
@@ -100,18 +102,18 @@ class Referee(Script):
             for a, b in ((ev.collider_a, ev.collider_b), (ev.collider_b, ev.collider_a)):
                 if not (world.exists(a) and world.exists(b)) or not world.has(a, Behaviour):
                     continue
-                obj = world.try_get(b, MapObject)
-                if obj is None:
+                name = world.try_get(b, Name)
+                if name is None:
                     continue
                 score = world.resource(Score)
-                if obj.cls == "Coin":
+                if name.value == "coin":
                     world.despawn(b)
                     score.coins += 1
                     _hud(world)
-                elif obj.cls == "Door":
-                    nxt = levels()[1] if score.level == 1 else levels()[0]
+                elif name.value == "door":
+                    nxt = 2 if score.level % 2 == 1 else 1
                     world.resource(App).replace_scene(
-                        level, path=nxt, score=Score(score.coins, score.level + 1)
+                        level, number=nxt, score=Score(score.coins, score.level + 1)
                     )
                     return
 
@@ -122,24 +124,11 @@ def _hud(world: World) -> None:
         t.text = f"level {score.level}   coins {score.coins}"
 
 
-def player_start(spawn: Spawn) -> list[Any]:
-    return [
-        RigidBody(fixed_rotation=True),
-        Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
-        draw.Rect(0.8, 0.9, color=(220, 60, 60, 255), layer=1),
-        Behaviour(Player()),
-    ]
-
-
-SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": lambda s: None, "Door": lambda s: None})
-
-
-def level(world: World, path: Path | None = None, score: Score | None = None) -> None:
+def level(world: World, number: int = 1, score: Score | None = None) -> None:
+    """Load level ``number``'s scene file; the HUD and the referee are the game's code."""
     bindings(world.resource(InputMap))  # (already declared by main(); tests start here)
     world.insert_resource(score or Score())
-    m = kge.load_map(world, path or levels()[0], spawners=SPAWNERS)
-    player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
-    world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
+    kge.load_scene(world, LEVELS / f"level{number}.scene.toml")
     world.spawn(Behaviour(Referee()))
     world.spawn(Behaviour(ui.PauseKey(title, tuple(ACTIONS))))  # P / Esc / Start: the menu
     hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
@@ -154,11 +143,15 @@ def title(world: World) -> None:
                   "Rebind the keys in Settings.", level, tuple(ACTIONS))  # fmt: skip
 
 
+def named(world: World, name: str) -> list[int]:
+    return [e for e, (n,) in world.query(Name) if n.value == name]
+
+
 def play(app: App, levels: int, seconds: float = 60.0) -> None:
     """A self-playing run: right, a jump every 2/3 s, no jumps in the last 8 m of a level."""
     app.input.press(Key.RIGHT)
     for i in range(int(seconds * 60)):
-        players = [e for e, (m,) in app.world.query(MapObject) if m.cls == "PlayerStart"]
+        players = named(app.world, "player")
         x = app.world.get(players[0], Transform).x if players else 0.0
         near_door = x > _door_x(app.world) - 8.0
         if i % 40 == 0 and not near_door:
@@ -171,7 +164,7 @@ def play(app: App, levels: int, seconds: float = 60.0) -> None:
 
 
 def _door_x(world: World) -> float:
-    doors = [e for e, (m,) in world.query(MapObject) if m.cls == "Door"]
+    doors = named(world, "door")
     return world.get(doors[0], Transform).x if doors else float("inf")
 
 

@@ -40,6 +40,7 @@ from kge.components.ui import (
     Panel,
     ScrollView,
     SpinBox,
+    Style,
     TextInput,
     Toggle,
     TreeItem,
@@ -63,6 +64,15 @@ LEFT_W, RIGHT_W, TOP_H, BOTTOM_H = 250.0, 330.0, 40.0, 26.0
 EDITOR_TITLE = "kge edit"
 
 
+def _compact() -> Style:
+    """The toolbar's and the hierarchy's buttons: small text, so every label fits."""
+    return Style(font_size=12.0, padding=5.0)
+
+
+#: above this many colliders the physics overlay starts off (the Physics button shows it)
+OVERLAY_LIMIT = 1000
+
+
 class EditScene(Scene):
     """The scene being edited (a world that is drawn but never stepped)."""
 
@@ -76,7 +86,10 @@ class EditScene(Scene):
         self.model = EditorModel(world, self.path)
         world.insert_resource(self.model)
         if world.try_resource(DebugDraw) is None:  # the physics overlay (unless the scene has one)
-            world.insert_resource(DebugDraw(joints=True, contacts=False, contact_normals=False))
+            # drawn in Python per collider each frame: off by default on very large scenes
+            many = len(world.query(Collider)) > OVERLAY_LIMIT
+            world.insert_resource(DebugDraw(enabled=not many, joints=True, contacts=False,
+                                            contact_normals=False))
             self.model.own_resources.add(DebugDraw)
 
 
@@ -166,23 +179,10 @@ class Editor:
         self.last_mouse: tuple[float, float] = (0.0, 0.0)
         self.tree_parents: set[int] = set()  #: hierarchy rows with children, last refresh
         self.tree_shown: Any = None  #: (searching, (entity, depth, name) rows) last shown
-        self._dirty_key: Any = None
-        self._dirty = False
         #: a spin box or colour picker being dragged: (widget, field value before the drag)
         self.live: tuple[int, Any] | None = None
         self.grid_key: Any = None
         model.listeners.append(self._changed)
-
-    def dirty(self) -> bool:
-        """The model's unsaved-changes flag, worked out again only after an edit, an undo,
-        a redo or a save (it writes the whole scene: 1.5 s of CPU per 1,000 frames of a
-        2,000-entity scene if asked every frame)."""
-        m = self.model
-        key = (len(m.undo_stack), id(m.undo_stack[-1]) if m.undo_stack else None,
-               len(m.redo_stack), id(m.saved_text))  # fmt: skip
-        if key != self._dirty_key:
-            self._dirty_key, self._dirty = key, m.dirty
-        return self._dirty
 
     def run_edit(self, fn: Any) -> None:
         """Run an edit; a refused one is shown in the status line, not raised."""
@@ -261,6 +261,11 @@ class Editor:
             self.say(f"snapping {'on' if m.snap else 'off'} ({m.grid} m)")
         elif name == "frame":
             self.frame(m.selection or None)
+        elif name == "physics":
+            dd = self.edit_world.try_resource(DebugDraw)
+            if dd is not None:
+                dd.enabled = not dd.enabled
+                self.say(f"physics overlay {'on' if dd.enabled else 'off'}")
         elif name == "quit":
             self.quit()
         self.inspector_dirty = True
@@ -381,15 +386,16 @@ class EditorUI(Scene):
         top = world.spawn(UINode(anchor="top_left", width="100%", height=TOP_H, layout="row",
                                  padding=4.0, spacing=3.0, align="stretch"),
                           Panel(color=(24, 27, 34, 245), radius=0.0))
-        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "frame"):
-            e = world.spawn(UINode(parent=top, width=float(18 + 9 * len(name))),
-                            Button(name.capitalize()))
+        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "physics",
+                     "frame"):
+            e = world.spawn(UINode(parent=top), Button(name.capitalize()), _compact())
             ed.buttons[e] = name
         # the side panels fill the height between the toolbar and the status line
         frame = world.spawn(UINode(anchor="top_left", width="100%", height="100%",
                                    layout="column", align="stretch"))
         world.spawn(UINode(parent=frame, height=TOP_H))
-        middle = world.spawn(UINode(parent=frame, grow=1.0, layout="row", align="stretch"))
+        middle = world.spawn(UINode(parent=frame, grow=1.0, shrink=1.0, layout="row",
+                                    align="stretch"))  # a long inspector scrolls
         world.spawn(UINode(parent=frame, height=BOTTOM_H))
         left = world.spawn(UINode(parent=middle, width=LEFT_W, layout="column", padding=6.0,
                                   spacing=4.0, align="stretch"),
@@ -400,7 +406,8 @@ class EditorUI(Scene):
         actions = world.spawn(UINode(parent=left, height=28.0, layout="row", spacing=3.0,
                                      align="stretch"))
         for name in ("new", "duplicate", "delete"):
-            e = world.spawn(UINode(parent=actions, width=76.0), Button(name.capitalize()))
+            e = world.spawn(UINode(parent=actions, grow=1.0), Button(name.capitalize()),
+                            _compact())
             ed.buttons[e] = name
         ed.tree = world.spawn(UINode(parent=left, grow=1.0), TreeView(draggable=True))
         world.spawn(UINode(parent=middle, grow=1.0))  # the viewport shows through
@@ -718,7 +725,7 @@ class EditorInput(System):
         if tree.selected != sel:
             tree.selected = sel
         name = m.path.name if m.path else "untitled"
-        status = f"{name}{' *' if ed.dirty() else ''}   tool: {ed.tool}   {ed.message}"
+        status = f"{name}{' *' if m.dirty else ''}   tool: {ed.tool}   {ed.message}"
         reloader = _reloader(world)
         if reloader is not None and reloader.errors:
             status += "   " + " | ".join(reloader.errors.values())
@@ -784,7 +791,7 @@ def build_inspector(ed: Editor, ui: World) -> None:
         r = ui.spawn(UINode(parent=ed.inspector, height=height, layout="row", spacing=4.0,
                             align="stretch"))
         rows.append(r)
-        for comp, width in widgets:
+        for comp, width in widgets:  # fixed sizes: "auto" would measure every option
             rows.append(ui.spawn(UINode(parent=r, width=width), comp))
         return r
 

@@ -9,6 +9,7 @@ import pytest
 from kge import (
     App,
     Button,
+    Circle,
     Collider,
     ColorPicker,
     Key,
@@ -223,6 +224,21 @@ def test_the_hierarchy_is_a_tree_whose_row_drops_reparent(editor: tuple[App, Edi
     assert ed.model.text() == before
 
 
+def test_a_collider_dropped_on_a_body_in_the_tree_becomes_its_part(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    part = ed.model.create(Transform(2.0, 2.0), Collider(Circle(0.2)), name="Bumper")
+    app.step()
+    app.step()
+    crate = named(ed, "Crate")
+    drag(app, "Bumper", "Crate")
+    app.step()
+    assert ed.model.world.get(part, Collider).body == crate
+    assert ed.model.parent(part) == crate
+    assert ed.model.name(ed.rows[ed.rows.index(crate) + 1]) == "Bumper"  # shown under it
+
+
 def test_a_tree_row_click_selects_and_a_double_click_frames_it(
     editor: tuple[App, Editor]
 ) -> None:
@@ -264,6 +280,7 @@ def test_number_fields_are_spin_boxes_and_a_drag_is_one_undo_step(
         app.input.move_mouse(start[0] + 10 * i, start[1])
         app.step()
         assert ed.model.world.get(crate, Collider).density == pytest.approx(1.0 + 0.2 * i)
+        assert not ed.model.undo_stack  # live: the undo step comes with the release
     app.input.mouse_up(at=(start[0] + 50, start[1]))
     app.step()
     assert ed.model.world.get(crate, Collider).density == pytest.approx(2.0)
@@ -355,3 +372,30 @@ def test_vector_fields_are_two_spin_boxes_each_changing_its_component(
     assert len(ed.model.undo_stack) == 2
     ed.model.undo()
     assert ed.model.world.get(crate, RigidBody).velocity == (0.0, -3.5)
+
+
+def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    click_button(app, "Rotate")
+    cx, cy = screen_of(ed, "Crate")
+    k = ed.model.camera.pixels_per_meter * ed.model.camera.zoom
+    app.input.mouse_down(Mouse.LEFT, at=(cx + 0.3 * k, cy))  # on the crate, to its right
+    app.step()
+    app.input.move_mouse(cx, cy + 0.3 * k)  # a quarter turn around it
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    assert ed.model.world.get(crate, Transform).angle == pytest.approx(3.14159265 / 2)
+    click_button(app, "Paint")
+    start = ed.to_screen((1.0, 3.5))
+    app.input.mouse_down(Mouse.LEFT, at=start)
+    app.step()
+    app.input.move_mouse(start[0] + 2.0 * k, start[1])
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    painted = [e for e in ed.model.entities() if ed.model.world.has(e, Transform)
+               and ed.model.world.get(e, Transform).y == 3.5]
+    assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
+    assert ed.model.undo() and len(ed.model.entities()) == 3
