@@ -8,11 +8,18 @@ the coins and the door as entities. ``examples/platformer_levels.py`` is the edi
 session that made them, as a script. The door replaces the scene with the next level
 (``app.replace_scene``); the score travels along as a scene argument.
 
-Controls are named actions (``left``, ``right``, ``jump``, ``pause``) declared once for
-the App (``App(..., bindings=...)``): left/right or A/D run, space/up/W jumps, a
-gamepad's d-pad and A too. P, Escape or Start pauses: the pause menu's Settings has
-tabs for the volumes, the controls (a scroll view of rebinding buttons, with a reset
-that asks to confirm) and the UI size (``game_menus.py``). Run it:
+The art around the tiles is painted in code (``kge.testbed.paint``) and drawn with
+linear filtering: a dusk sky, hills repeated along the level (one sprite), the hero
+and glowing coins, swapped in for the plain shapes the level files show in the editor.
+The camera's post stack blooms the coins; a second camera draws a minimap of the level
+in the corner. The player is a ``CharacterBody`` (docs/character.md).
+
+Controls are named actions (``left``, ``right``, ``jump``, ``drop``, ``pause``) declared
+once for the App (``App(..., bindings=...)``): left/right or A/D run, space/up/W jumps
+(hold for higher), down/S drops through a plank, a gamepad's d-pad and A too. P, Escape
+or Start pauses: the pause menu's Settings has tabs for the volumes, the controls (a
+scroll view of rebinding buttons, with a reset that asks to confirm) and the UI size
+(``game_menus.py``). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 While it runs in a window, edit a level file or this script: the change takes effect.
 """
@@ -28,17 +35,23 @@ import kge
 from kge import (
     App,
     Behaviour,
+    Camera,
+    CharacterBody,
     InputMap,
     Key,
     Name,
-    Physics,
-    RigidBody,
     Script,
     SensorBegin,
+    Sprite,
     Text,
+    TextureFilter,
+    TextureWrap,
     Transform,
     World,
+    draw,
+    from_array,
 )
+from kge.testbed import paint
 
 WIDTH, HEIGHT = 960, 600
 RUN_SPEED = 6.0
@@ -48,6 +61,7 @@ ACTIONS: ui.Bindings = {
     "left": ("key:LEFT", "key:A", "pad:dpleft"),
     "right": ("key:RIGHT", "key:D", "pad:dpright"),
     "jump": ("key:SPACE", "key:UP", "key:W", "pad:a"),
+    "drop": ("key:DOWN", "key:S", "pad:dpdown"),
 }
 
 
@@ -68,7 +82,8 @@ LEVELS = Path(__file__).resolve().parent / "levels"
 
 @kge.register_script
 class Player(Script):
-    """Runs with the arrows, jumps when something is under its feet."""
+    """Runs with the arrows; jumps while standing (higher the longer space is held);
+    down drops through the plank underfoot."""
 
     def on_start(self) -> None:
         # the controls' defaults also when the level file is played alone (the editor's Play)
@@ -76,21 +91,11 @@ class Player(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         actions = self.world.resource(InputMap)  # rebindable in the settings
-        rb = self.get(RigidBody)
+        body = self.get(CharacterBody)
         vx = RUN_SPEED * (float(actions.held("right")) - float(actions.held("left")))
-        vy = rb.velocity[1]
-        if actions.held("jump") and self.grounded() and vy <= 0.1:
-            vy = JUMP_SPEED
-        rb.velocity = (vx, vy)
-
-    def grounded(self) -> bool:
-        t = self.transform
-        physics = self.world.resource(Physics)
-        for dx in (-0.35, 0.0, 0.35):
-            hit = physics.raycast((t.x + dx, t.y - 0.45), (t.x + dx, t.y - 0.6))
-            if hit is not None:
-                return True
-        return False
+        body.velocity = (vx, body.velocity[1])
+        body.jump = actions.held("jump")
+        body.drop_through = actions.held("drop")
 
 
 class Referee(Script):
@@ -124,11 +129,44 @@ def _hud(world: World) -> None:
         t.text = f"level {score.level}   coins {score.coins}"
 
 
+HERO = from_array(paint.hero(64))
+COIN = from_array(paint.orb(32))
+SKY = from_array(paint.sky(256, 128))
+HILLS = from_array(paint.hills(256, 96))
+
+
+def dress(world: World) -> None:
+    """The painted art over a loaded level: the hero and glowing coins (bright enough for
+    the camera's bloom) in place of the files' plain shapes, a sky and hills behind, and
+    a minimap camera in the corner."""
+    for e in named(world, "player"):
+        world.remove(e, draw.Rect)
+        world.add(e, Sprite(HERO, size=(1.0, 1.0), filter=TextureFilter.LINEAR, layer=2))
+    for e in named(world, "coin"):
+        world.remove(e, draw.Circle)
+        world.add(e, Sprite(COIN, size=(0.8, 0.8), filter=TextureFilter.LINEAR, layer=2))
+    (camera,) = named(world, "camera")
+    bounds = world.get(camera, Camera).bounds
+    assert bounds is not None  # the level files bound their camera
+    x0, y0, x1, y1 = bounds
+    world.spawn(Camera(center=((x0 + x1) / 2, (y0 + y1) / 2), order=1,  # the minimap
+                       pixels_per_meter=min(220.0 / (x1 - x0), 120.0 / (y1 - y0)),
+                       viewport=(0.74, 0.76, 0.24, 0.22), background=(15, 20, 35)))  # fmt: skip
+    w, h = x1 - x0, y1 - y0
+    world.spawn(Transform((x0 + x1) / 2, (y0 + y1) / 2), Sprite(
+        SKY, size=(w + 20.0, h + 20.0), filter=TextureFilter.LINEAR, layer=-10))  # fmt: skip
+    world.spawn(Transform((x0 + x1) / 2, y0 + 3.0), Sprite(
+        HILLS, size=(w + 20.0, 6.0), filter=TextureFilter.LINEAR, wrap=TextureWrap.REPEAT,
+        tile=(16.0, 6.0), layer=-9))  # fmt: skip
+
+
 def level(world: World, number: int = 1, score: Score | None = None) -> None:
-    """Load level ``number``'s scene file; the HUD and the referee are the game's code."""
+    """Load level ``number``'s scene file and dress it; the HUD and the referee are the
+    game's code."""
     bindings(world.resource(InputMap))  # (already declared by main(); tests start here)
     world.insert_resource(score or Score())
     kge.load_scene(world, LEVELS / f"level{number}.scene.toml")
+    dress(world)
     world.spawn(Behaviour(Referee()))
     world.spawn(Behaviour(ui.PauseKey(title, tuple(ACTIONS))))  # P / Esc / Start: the menu
     hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
@@ -139,8 +177,8 @@ def level(world: World, number: int = 1, score: Score | None = None) -> None:
 
 def title(world: World) -> None:
     """The title screen: Play fades into the first level; Settings; Quit."""
-    ui.title_menu(world, "PLATFORMER", "Arrows or A/D run, Space jumps; P pauses. "
-                  "Rebind the keys in Settings.", level, tuple(ACTIONS))  # fmt: skip
+    ui.title_menu(world, "PLATFORMER", "Arrows or A/D run, Space jumps, Down drops; "
+                  "P pauses. Rebind the keys in Settings.", level, tuple(ACTIONS))  # fmt: skip
 
 
 def named(world: World, name: str) -> list[int]:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import kge_required  # noqa: F401  (first: names the Python to use when kge is missing)
 
-from kge import App, Behaviour, Box, Camera, Circle, Collider, RigidBody, Transform, draw
+from kge import App, Behaviour, Bloom, Box, Camera, CharacterBody, Circle, Collider, Transform, draw
 from kge.editor import EditorModel
 from kge.testbed.samples.tilemaps import LEVEL_SPECS, write_terrain
 
@@ -23,7 +23,7 @@ ROWS = 15  # the maps are 15 tiles (metres) high; the ground's top is 3 m up
 
 def build(number: int, folder: Path = LEVELS) -> Path:
     """Write ``level{number}.scene.toml`` (and the terrain maps) into ``folder``."""
-    from platformer import Player
+    from platformer import JUMP_SPEED, Player
 
     write_terrain(folder)
     path = folder / f"level{number}.scene.toml"
@@ -32,12 +32,14 @@ def build(number: int, folder: Path = LEVELS) -> Path:
     model = EditorModel(App(lambda w: None, headless=True).world, path)
     model.add_map(folder / f"terrain{number}.tmx")
     ground = float(ROWS - 12)
-    player = model.create(Transform(3.5, ground + 1.0), RigidBody(fixed_rotation=True),
-                          Collider(Box(0.4, 0.45), friction=0.0),
+    player = model.create(Transform(3.5, ground + 1.0),
+                          CharacterBody(Box(0.4, 0.45), jump_speed=JUMP_SPEED),
                           draw.Rect(0.8, 0.9, color=(220, 60, 60, 255), layer=1),
                           Behaviour(Player()), name="player")
     model.create(Camera(pixels_per_meter=40.0, follow=player,
-                        bounds=(0.0, 0.0, float(cols), float(ROWS))), name="camera")
+                        bounds=(0.0, 0.0, float(cols), float(ROWS)),
+                        post=(Bloom(threshold=0.75, intensity=1.3, radius=10.0),)),
+                 name="camera")
     for row, a, b in ledges:
         for c in range(a, b, 2):
             model.create(Transform(c + 0.5, ROWS - row + 0.5),

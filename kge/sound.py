@@ -52,6 +52,8 @@ class SoundData:
             raise ValidationError(f"SoundData.rate must be in [1000, 192000], got {self.rate!r}")
         if len(self.samples) % (2 * self.channels):
             raise ValidationError("SoundData.samples must hold whole 16-bit frames")
+        if not self.samples:  # no player can start a sound of no frames
+            raise ValidationError("SoundData.samples is empty: a sound needs at least one frame")
 
     @property
     def frames(self) -> int:

@@ -19,8 +19,9 @@ taking a picture of the old scene as the window shows it then (nothing is pictur
 before anything was drawn, as in a headless run that never renders). A transition
 asked for during a frame (a script's ``on_update``, a button's ``on_click``) starts
 its clock with the next frame, so it plays whole wherever it was asked for.
-Progress is eased (smoothstep), and every quantity the renderer needs is a property
-of ``ActiveTransition`` at time t:
+Progress is eased (smoothstep, or your own curve: ``ease=`` any function of progress
+0..1, such as ``kge.CubicBezier(0.7, 0, 0.3, 1)`` or ``lambda p: p``), and every
+quantity the renderer needs is a property of ``ActiveTransition`` at time t:
 
 >>> active = ActiveTransition(Fade(0.4))
 >>> active.advance(0.1); round(active.cover, 3)          # a quarter in: half covered
@@ -38,7 +39,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.errors import ValidationError
+from kge.errors import ComponentTypeError, ValidationError
 
 _DIRECTIONS = ("left", "right", "up", "down")
 
@@ -49,6 +50,8 @@ class Transition:
 
     duration: float = 0.4
     color: tuple[int, int, int] = (0, 0, 0)
+    #: the easing of progress: None (smoothstep) or a function of progress 0..1
+    ease: Any = None
 
     #: does it draw a picture of the old scene (taken on the frame before the change)?
     needs_picture: ClassVar[bool] = False
@@ -59,12 +62,38 @@ class Transition:
             raise ValidationError(
                 f"{type(self).__name__}.duration must be a positive number of seconds, got {d!r}"
             )
+        if not isinstance(self.color, (tuple, list)):
+            raise ComponentTypeError(
+                f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"
+            )
         if len(self.color) != 3 or not all(
-            isinstance(c, int) and 0 <= c <= 255 for c in self.color
+            isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in self.color
         ):
             raise ValidationError(
                 f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"
             )
+        if self.ease is not None:
+            _check_ease(self.ease, type(self).__name__)
+
+    def curve(self, t: float) -> float:
+        """Eased progress at linear progress ``t`` (clamped to 0..1)."""
+        t = min(max(t, 0.0), 1.0)
+        if self.ease is None:
+            return t * t * (3.0 - 2.0 * t)
+        return min(max(float(self.ease(t)), 0.0), 1.0)
+
+
+def _check_ease(fn: Any, owner: str) -> None:
+    """A transition's easing must be a function giving finite numbers over 0..1."""
+    if not callable(fn):
+        raise ValidationError(f"{owner}.ease must be a function of progress, got {fn!r}")
+    try:
+        values = [float(fn(p)) for p in (0.0, 0.25, 0.5, 0.75, 1.0)]
+    except Exception as exc:  # the user's function: reported at the call
+        raise ValidationError(f"{owner}.ease failed at progress 0..1 "
+                              f"({type(exc).__name__}: {exc})") from None  # fmt: skip
+    if not all(math.isfinite(v) for v in values):
+        raise ValidationError(f"{owner}.ease gave {values}: not all finite")
 
 
 @dataclass(slots=True, frozen=True)
@@ -132,7 +161,7 @@ class ActiveTransition:
 
     @property
     def eased(self) -> float:
-        return smoothstep(self.t)
+        return self.transition.curve(self.t)
 
     @property
     def swap_due(self) -> bool:
@@ -152,7 +181,7 @@ class ActiveTransition:
         """Opacity (0..1) of the fade colour over the frame (Fade only; 0 for others)."""
         if not isinstance(self.transition, Fade):
             return 0.0
-        return smoothstep(1.0 - abs(2.0 * self.t - 1.0))
+        return self.transition.curve(1.0 - abs(2.0 * self.t - 1.0))
 
     @property
     def picture_alpha(self) -> float:

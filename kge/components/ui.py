@@ -40,7 +40,8 @@ from typing import Any, ClassVar
 from kge.components.tracked import Check, Tracked
 from kge.components.ui_checks import (
     ANCHORS,
-    MAX_PX,
+    MAX_PIXELS,
+    MAX_RANGE,
     Size,
     anchor,
     at_least_one,
@@ -171,7 +172,8 @@ __all__ = [
     "ALIGNS",
     "ANCHORS",
     "LAYOUTS",
-    "MAX_PX",
+    "MAX_PIXELS",
+    "MAX_RANGE",
     "WIDGETS",
     "Button",
     "ColorPicker",

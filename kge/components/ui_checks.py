@@ -1,6 +1,6 @@
 """Value checks shared by the UI components (sizes, anchors, text, lists that notice edits).
 
-Every pixel quantity a UI component holds is finite and at most :data:`MAX_PX`
+Every pixel quantity a UI component holds is finite and at most :data:`MAX_PIXELS`
 (ten million pixels) in size, so no sum of them in a layout can overflow to an
 infinite or NaN box:
 
@@ -23,10 +23,12 @@ from typing import Any, ClassVar, SupportsIndex
 from kge.components.color import Color, rgba
 from kge.components.tracked import Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import finite, integer
+from kge.validate import finite, integer, within
 
 #: the largest pixel size, offset or padding a UI component accepts
-MAX_PX = 1e7
+MAX_PIXELS = 1e7
+#: the largest magnitude of a slider's or bar's min, max and value (max - min stays finite)
+MAX_RANGE = 1e300
 
 Size = float | str
 
@@ -79,13 +81,18 @@ def choice(options: tuple[str, ...]) -> Check:
 
 
 def px(value: Any, owner: str, name: str) -> float:
-    """Pixels in ``0..MAX_PX``."""
+    """Pixels in ``0..MAX_PIXELS``."""
     v = finite(value, owner, name)
-    if not 0.0 <= v <= MAX_PX:
+    if not 0.0 <= v <= MAX_PIXELS:
         raise ValidationError(
-            f"{owner}.{name} must be a number of pixels in 0..{MAX_PX:g}, got {v!r}"
+            f"{owner}.{name} must be a number of pixels in 0..{MAX_PIXELS:g}, got {v!r}"
         )
     return v
+
+
+def ranged(value: Any, owner: str, name: str) -> float:
+    """A slider's or bar's min, max or value: finite, within +-:data:`MAX_RANGE`."""
+    return within(value, MAX_RANGE, owner, name)
 
 
 def scroll_px(value: Any, owner: str, name: str) -> float:
@@ -101,20 +108,20 @@ def opt_px(value: Any, owner: str, name: str) -> float | None:
 
 
 def offset(value: Any, owner: str, name: str) -> tuple[float, float]:
-    """An (x, y) offset in pixels, each within ``MAX_PX``."""
+    """An (x, y) offset in pixels, each within ``MAX_PIXELS``."""
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
         raise ComponentTypeError(f"{owner}.{name} must be an (x, y) pair, got {value!r}")
     x, y = finite(value[0], owner, f"{name}[0]"), finite(value[1], owner, f"{name}[1]")
     for v in (x, y):
-        if abs(v) > MAX_PX:
+        if abs(v) > MAX_PIXELS:
             raise ValidationError(
-                f"{owner}.{name} must lie within {MAX_PX:g} pixels, got {tuple(value)!r}"
+                f"{owner}.{name} must lie within {MAX_PIXELS:g} pixels, got {tuple(value)!r}"
             )
     return (x, y)
 
 
 def size(value: Any, owner: str, name: str) -> Size:
-    """A size: pixels in ``0..MAX_PX``, ``"NN%"`` (0..1000) or ``"auto"``."""
+    """A size: pixels in ``0..MAX_PIXELS``, ``"NN%"`` (0..1000) or ``"auto"``."""
     bad = ValidationError(
         f"{owner}.{name} must be >= 0 pixels, a percent like '50%' or 'auto', got {value!r}"
     )
@@ -132,7 +139,7 @@ def size(value: Any, owner: str, name: str) -> Size:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise bad
     v = float(value)
-    if not 0.0 <= v <= MAX_PX:  # NaN fails too
+    if not 0.0 <= v <= MAX_PIXELS:  # NaN fails too
         raise bad
     return v
 

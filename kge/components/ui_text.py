@@ -1,12 +1,16 @@
 """Text widgets: a one-line field, a multi-line editor and rich (marked-up) text.
 
 ``caret`` and ``anchor`` are character indices; the selection lies between them
-(``anchor`` -1: none). Writing either out of range is clamped into the text (the
-documented, safe reading of "put the caret at 99" in an 8-character field):
+(``anchor`` -1: none; ``caret`` -1: at the end). Writing either outside the text is
+refused:
 
 >>> field = TextInput("hello")
->>> field.caret = 99; field.caret
+>>> field.caret = -1; field.caret
 5
+>>> field.caret = 99
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: TextInput.caret must be a character index 0..5 (or -1), got 99
 >>> TextInput("toolong", max_length=3)
 Traceback (most recent call last):
 ...
@@ -27,7 +31,7 @@ from kge.validate import boolean, integer
 
 
 def _editable_setattr(self: Any, name: str, value: Any) -> None:
-    """Writes of a text widget: ``text`` within ``max_length``; caret/anchor clamped."""
+    """Writes of a text widget: ``text`` within ``max_length``; caret/anchor in the text."""
     if name == "text":
         value = text(value, self._owner(), name)
         limit = getattr(self, "max_length", None)
@@ -37,18 +41,22 @@ def _editable_setattr(self: Any, name: str, value: Any) -> None:
             )
     elif name in ("caret", "anchor") and hasattr(self, "anchor"):  # not inside __init__
         value = integer(value, self._owner(), name)
-        lo = 0 if name == "caret" else -1
-        value = min(max(value, lo), len(self.text))
+        if not -1 <= value <= len(self.text):
+            raise ValidationError(
+                f"{self._owner()}.{name} must be a character index 0..{len(self.text)} "
+                f"(or -1), got {value}"
+            )
+        if name == "caret" and value < 0:  # -1: at the end, as in the constructor
+            value = len(self.text)
     elif name in ("caret", "anchor"):
         value = integer(value, self._owner(), name)
     elif name == "max_length":
         value = integer(value, self._owner(), name)
-        if value < 0:
-            raise ValidationError(f"{self._owner()}.max_length must be >= 0, got {value}")
-        if hasattr(self, "caret") and len(self.text) > value:  # not inside __init__
+        held = len(self.text) if hasattr(self, "caret") else 0  # not inside __init__
+        if value < held or value < 0:
             raise ValidationError(
-                f"{self._owner()}.max_length {value} is shorter than its text "
-                f"({len(self.text)} characters)"
+                f"{self._owner()}.max_length must be >= 0 and hold the text's {held} "
+                f"characters, got {value}"
             )
     Tracked.__setattr__(self, name, value)
     if name == "text" and hasattr(self, "caret"):
@@ -58,7 +66,10 @@ def _editable_setattr(self: Any, name: str, value: Any) -> None:
 
 def _editable_init(self: Any) -> None:
     if self.max_length < 0:
-        raise ValidationError(f"{self._owner()}.max_length must be >= 0, got {self.max_length}")
+        raise ValidationError(
+            f"{self._owner()}.max_length must be >= 0 and hold the text's {len(self.text)} "
+            f"characters, got {self.max_length}"
+        )
     if len(self.text) > self.max_length:
         raise ValidationError(
             f"{self._owner()}.text has {len(self.text)} characters, more than max_length "

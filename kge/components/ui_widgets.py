@@ -24,6 +24,7 @@ from kge.components.ui_checks import (
     opt_color,
     opt_image,
     px,
+    ranged,
     text,
 )
 from kge.errors import ValidationError
@@ -54,7 +55,8 @@ def _check_range(self: Any) -> None:
 
 
 def fraction(value: float, lo: float, hi: float) -> float:
-    """Where ``value`` sits in [lo, hi], 0..1 (exact for ranges as wide as (-1e308, 1e308))."""
+    """Where ``value`` sits in [lo, hi], 0..1 (exact for any finite range: a spin box's
+    bounds are not limited to +-MAX_RANGE)."""
     span = hi * 0.5 - lo * 0.5  # halves: hi - lo may overflow to inf
     if not span > 0:
         return 0.0
@@ -92,6 +94,7 @@ class Label(Tracked):
 class UIImage(Tracked):
     """An image (asset name) stretched over the node, tinted by ``tint``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"image": image, "tint": rgba}
 
     image: Any  #: an asset name, a PixelImage or a pyglet image
@@ -106,6 +109,7 @@ class Panel(Tracked):
     edges and middle, so one small image makes a frame of any size.
     """
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {
         "color": opt_color, "image": opt_image, "border": px, "radius": px, "blocks": boolean,
     }  # fmt: skip
@@ -121,6 +125,7 @@ class Panel(Tracked):
 class Button(Tracked):
     """A button with text and/or an image. Clicked: ``ButtonClicked`` and ``on_click``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"text": text, "image": opt_image, "disabled": boolean}
 
     text: str = ""
@@ -145,7 +150,8 @@ class Slider(Tracked):
     continuous. Dragging, arrow keys, the d-pad and the wheel change it."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "min": finite, "max": finite, "value": finite, "step": non_negative, "disabled": boolean,
+        "min": ranged, "max": ranged, "value": ranged, "step": non_negative,
+        "disabled": boolean,
     }  # fmt: skip
 
     min: float = 0.0
@@ -169,7 +175,7 @@ class ProgressBar(Tracked):
     """A bar filled to ``value`` between ``min`` and ``max`` (health bars, loading)."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "value": finite, "max": finite, "color": opt_color, "min": finite,
+        "value": ranged, "max": ranged, "color": opt_color, "min": ranged,
     }  # fmt: skip
 
     value: float = 0.0

@@ -23,8 +23,10 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.material import Material
 from kge.render.groups import WORLD
 from kge.render.passes import Frame
+from kge.render.programs import FS_HEAD, apply_frame_uniforms, material_program, set_uniforms
 from kge.render.textures import TextureCache
 from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, LayerStyle, MapData, TileLayerData
 from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
@@ -32,24 +34,74 @@ from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
 _VERTEX = """#version 330 core
 in vec2 position;
 in vec2 tex_coords;
+in vec4 uv_rect;
 out vec2 uv;
+flat out vec4 rect;
 uniform WindowBlock { mat4 projection; mat4 view; } window;
 uniform vec2 shift;
 void main() {
     uv = tex_coords;
+    rect = uv_rect;
     gl_Position = window.projection * window.view * vec4(position + shift, 0.0, 1.0);
 }
 """
 _FRAGMENT = """#version 330 core
 in vec2 uv;
+flat in vec4 rect;
 out vec4 color;
 uniform sampler2D tile_texture;
 uniform vec4 tint;
 void main() {
-    color = texture(tile_texture, uv) * tint;
+    // stay half a texel inside the tile's own image: a fragment on a tile's edge,
+    // wherever the camera sits, never samples the next tile of the sheet
+    vec2 inset = 0.5 / vec2(textureSize(tile_texture, 0));
+    vec2 lo = min(rect.xy, rect.zw) + inset;
+    vec2 hi = max(rect.xy, rect.zw) - inset;
+    color = texture(tile_texture, clamp(uv, lo, max(lo, hi))) * tint;
+}
+"""
+# a tile layer drawn with a Material: the user's ``effect`` gets the layer's tint as its
+# colour and the clamped texture coordinate (see :mod:`kge.components.material`)
+_MATERIAL_VERTEX = """#version 150 core
+in vec2 position;
+in vec2 tex_coords;
+in vec4 uv_rect;
+out vec4 v_color;
+out vec2 v_uv;
+out vec2 v_world;
+flat out vec4 v_rect;
+uniform WindowBlock { mat4 projection; mat4 view; } window;
+uniform vec2 shift;
+uniform vec4 tint;
+void main() {
+    v_world = position + shift;
+    v_uv = tex_coords;
+    v_rect = uv_rect;
+    v_color = tint;
+    gl_Position = window.projection * window.view * vec4(v_world, 0.0, 1.0);
+}
+"""
+_MATERIAL_HEAD = FS_HEAD + "flat in vec4 v_rect;\n"
+_MATERIAL_MAIN = """
+void main() {
+    vec2 inset = 0.5 / vec2(textureSize(kge_texture, 0));
+    vec2 lo = min(v_rect.xy, v_rect.zw) + inset;
+    vec2 hi = max(v_rect.xy, v_rect.zw) - inset;
+    kge_out = effect(v_color, kge_texture, clamp(v_uv, lo, max(lo, hi)), v_world);
 }
 """
 _program_cache: list[Any] = []
+
+
+def layer_program(material: Material | None) -> Any:
+    """The program a tile layer is drawn with: its material's, else kge's (also when the
+    material's shader does not compile: a ShaderWarning says why, once)."""
+    if material is not None:
+        prog = material_program(material.shader, "tile", _MATERIAL_VERTEX, _MATERIAL_HEAD,
+                                _MATERIAL_MAIN)  # fmt: skip
+        if prog is not None:
+            return prog
+    return tile_program()
 
 
 def tile_program() -> Any:
@@ -66,17 +118,24 @@ def tile_program() -> Any:
 class LayerGroup(pyglet.graphics.Group):
     """One layer's texture, tint and shift (offset + parallax), read at draw time."""
 
-    def __init__(self, program: Any, texture: Any, parent: Any) -> None:
+    def __init__(self, program: Any, texture: Any, parent: Any,
+                 material: Material | None = None, textures: Any = None) -> None:  # fmt: skip
         super().__init__(parent=parent)
         self.program = program
         self.texture = texture
         self.shift = (0.0, 0.0)
         self.tint = (1.0, 1.0, 1.0, 1.0)
+        self.material = material if program is not tile_program() else None
+        self.textures = textures
 
     def set_state(self) -> None:
         self.program.use()
         self.program["shift"] = self.shift
         self.program["tint"] = self.tint
+        m = self.material
+        if m is not None:  # read now: a tween changes them without touching a vertex
+            apply_frame_uniforms(self.program)
+            set_uniforms(self.program, m.uniforms, self.textures, m.shader.uniforms)
         gl.glActiveTexture(gl.GL_TEXTURE0)
         gl.glBindTexture(self.texture.target, self.texture.id)
         gl.glEnable(gl.GL_BLEND)
@@ -133,6 +192,15 @@ def tile_uvs(
     return out
 
 
+def uv_rects(uvs: np.ndarray) -> np.ndarray:
+    """(n, 4, 4) per-corner (u0, v0, u1, v1) of each tile's image, from (n, 4, 2) uvs.
+
+    The fragment shader clamps sampling inside it (no bleeding from neighbours).
+    """
+    rect = np.concatenate([uvs.min(axis=1), uvs.max(axis=1)], axis=-1)
+    return np.repeat(rect[:, None, :], 4, axis=1).astype(np.float32)
+
+
 def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarray) -> np.ndarray:
     """(n, 4, 2) world positions of tiles at grid (rows, cols): BL, BR, TR, TL.
 
@@ -171,6 +239,8 @@ class MapDrawing:
         self.chunks: dict[tuple[int, int, int], _Chunk] = {}
         self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group)
         self.animated = np.zeros(max(data.tiles.size, 1), bool)
+        self.materials: dict[int, Material | None] = {}  #: tile layer position -> drawn with
+        self._shaders: dict[int, int | None] = {}
         for g in data.tiles.animations:
             self.animated[g] = True
 
@@ -180,8 +250,26 @@ class MapDrawing:
         g = self.groups.get((li, image))
         if g is None:
             parent = frame.groups.get(draw_layer, WORLD, order)
-            g = self.groups[(li, image)] = LayerGroup(self.program, texture, parent)
+            material = self.materials.get(li)
+            g = self.groups[(li, image)] = LayerGroup(layer_program(material), texture, parent,
+                                                      material, self.textures)  # fmt: skip
         return g
+
+    def _materials_changed(self) -> None:
+        """A layer whose Material was set, replaced or removed is drawn again from scratch
+        (its vertex lists belong to the program they were made for)."""
+        data = self.map.data
+        for li, layer in enumerate(data.tile_layers):
+            m = self.map.materials.get(layer.name)
+            was = self.materials.get(li)
+            if m is was and (m is None or self._shaders.get(li) == hash(m.shader)):
+                continue
+            self.materials[li] = m
+            self._shaders[li] = hash(m.shader) if m is not None else None
+            for key in [k for k in self.chunks if k[0] == li]:
+                self._drop(key)
+            for gkey in [k for k in self.groups if k[0] == li]:
+                del self.groups[gkey]
 
     def draw(self, frame: Frame) -> None:
         tmap = self.map
@@ -189,6 +277,7 @@ class MapDrawing:
         for key in list(tmap.dirty):
             tmap.dirty.discard(key)
             self._drop(key)
+        self._materials_changed()
         wanted: set[tuple[int, int, int]] = set()
         for li, layer in enumerate(data.tile_layers):
             style = layer.style
@@ -272,7 +361,7 @@ class MapDrawing:
             base = (np.arange(n) * 4)[:, None]
             idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
             g = self.group(frame, li, image, self.tex[image], draw_layer, order)
-            vl = self.program.vertex_list_indexed(
+            vl = g.program.vertex_list_indexed(
                 n * 4,
                 gl.GL_TRIANGLES,
                 idx.tolist(),
@@ -280,6 +369,7 @@ class MapDrawing:
                 group=g,
                 position=("f", quads[sel].ravel()),
                 tex_coords=("f", uvs[sel].ravel()),
+                uv_rect=("f", uv_rects(uvs[sel]).ravel()),
             )
             chunk.lists.append(vl)
         return chunk
@@ -314,6 +404,7 @@ class MapDrawing:
                     group=g,
                     position=("f", pos),
                     tex_coords=("f", uv),
+                    uv_rect=("f", np.tile(np.array(b, np.float32), 4)),
                 )
                 entry = self.images[i] = (vl, g)
             entry[1].shift = _shift(frame, data, layer.style)

@@ -29,12 +29,13 @@ from kge.components.ui import (
     Tooltip,
     UINode,
 )
-from kge.errors import ValidationError
+from kge.errors import ValidationError, where
 from kge.input import Input
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.schedule import Stage, System, SystemSet
 from kge.systems.behaviour import BehaviourRunner
+from kge.systems.ui_images import check_ui_images
 from kge.ui.clipboard import Clipboard
 from kge.ui.current import current_layout
 from kge.ui.events import HOOKS, UIEvents
@@ -97,35 +98,38 @@ class UIInput(System):
 
 def _check_node(world: World) -> Any:
     def check(entity: int | None, node: UINode) -> None:
-        prefix = f"entity {entity}, " if entity is not None else ""
         p = node.parent
         if p is not None:
+            at = where(entity, "UINode", "parent")
             if p == entity:
-                raise ValidationError(f"{prefix}UINode.parent: a node cannot be its own parent")
+                raise ValidationError(f"{at}: a node cannot be its own parent")
             if not world.exists(p) or world.try_get(p, UINode) is None:
-                raise ValidationError(f"{prefix}UINode.parent: entity {p} is not a UI node")
+                raise ValidationError(f"{at}: entity {p} is not a UI node")
             depth, seen = 1, {entity}
             cur: int | None = p
-            while cur is not None:
+            while cur is not None:  # a loop (a parent that is a descendant) or a nest too deep
                 if cur in seen:
                     raise ValidationError(
-                        f"{prefix}UINode.parent: entity {p} would make a parent cycle"
+                        f"{at}: entity {p} is inside this node (a loop): it would make a "
+                        "parent cycle"
                     )
                 seen.add(cur)
                 depth += 1
                 if depth > MAX_DEPTH:
                     raise ValidationError(
-                        f"{prefix}UINode.parent: UI nodes nest at most {MAX_DEPTH} deep"
+                        f"{at}: entity {p} is {depth - 1} levels deep, the most a UI nests "
+                        f"is {MAX_DEPTH}"
                     )
-                up = world.try_get(cur, UINode)
+                up = world.try_get(cur, UINode) if world.exists(cur) else None
                 cur = up.parent if up is not None else None
         if node.follow is not None:
+            at = where(entity, "UINode", "follow")
             if node.parent is not None:
                 raise ValidationError(
-                    f"{prefix}UINode.follow: only a root node (parent None) can follow an entity"
+                    f"{at}: only a root node (parent None) can follow an entity"
                 )
             if not world.exists(node.follow):
-                raise ValidationError(f"{prefix}UINode.follow: entity {node.follow} does not exist")
+                raise ValidationError(f"{at}: entity {node.follow} does not exist")
 
     return check
 
@@ -145,6 +149,7 @@ class UIPlugin(Plugin):
         if world.try_resource(UISettings) is None:
             world.insert_resource(self.settings)
         world.validator(UINode, _check_node(world))
+        check_ui_images(world)  # a missing image is refused at spawn, add and write
         for ctype in UI_COMPONENTS:
             world.on_add(ctype, _tracker(world, state, added=True))
             world.on_remove(ctype, _tracker(world, state, added=False))

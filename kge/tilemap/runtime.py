@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from kge.components.material import Material as DrawMaterial
 from kge.errors import KgeError
 from kge.gcpause import without_gc
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
@@ -77,6 +78,8 @@ class TileMap:
         for gid, (frames, _) in data.tiles.animations.items():
             self.shown[gid] = frames[0]  # time 0: the first frame
         self.loaded = True
+        #: tile layer name -> the Material its tiles are drawn with (:meth:`set_material`)
+        self.materials: dict[str, DrawMaterial] = {}
 
     # -- geometry ------------------------------------------------------------------------
     @property
@@ -114,6 +117,22 @@ class TileMap:
     # -- queries -------------------------------------------------------------------------
     def layer(self, name: str) -> TileLayerData:
         return self.data.layer(name)
+
+    def set_material(self, layer: str, material: DrawMaterial | None) -> None:
+        """Draw tile layer ``layer`` with ``material`` (your shader and its uniforms, as
+        for sprites: ``effect`` gets the layer's tint and the tile's texture); None
+        draws it plainly again. Its uniforms are read at draw time, so tweening or
+        ``material.set`` changes them without rebuilding a tile."""
+        self.data.layer(layer)  # an unknown name raises, naming the map and its layers
+        if material is None:
+            self.materials.pop(layer, None)
+            return
+        if not isinstance(material, DrawMaterial):
+            raise TilemapError(
+                f"{self.path}: set_material on layer {layer!r}: expected a Material, "
+                f"got {type(material).__name__}"
+            )
+        self.materials[layer] = material
 
     def tile_at(self, point: tuple[float, float], layer: str | None = None) -> int:
         """The gid under a world point (0 when empty or outside); ``layer=None``: the topmost."""

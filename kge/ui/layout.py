@@ -34,7 +34,7 @@ from typing import Any, NamedTuple
 
 from kge.components.ui import (
     ANCHORS,
-    MAX_PX,
+    MAX_PIXELS,
     WIDGETS,
     Dialog,
     ScrollView,
@@ -49,7 +49,7 @@ from kge.ui.theme import DEFAULT_THEME, Theme
 from kge.world import World
 
 #: the deepest nesting of UI nodes (the parent check refuses deeper ones)
-MAX_DEPTH = 256
+MAX_DEPTH = 100
 #: a dialog's nodes are drawn this many depth levels above the base UI
 DIALOG_LAYER = 4096
 _CELL = 64.0  #: pixels per cell of the hit-test grid
@@ -194,9 +194,9 @@ class Layout:
 
 
 def _finite(v: float) -> float:
-    if 0.0 <= v <= MAX_PX:
+    if 0.0 <= v <= MAX_PIXELS:
         return v
-    return MAX_PX if v > MAX_PX else 0.0  # NaN and negatives: 0
+    return MAX_PIXELS if v > MAX_PIXELS else 0.0  # NaN and negatives: 0
 
 
 def _clamp(v: float, lo: float | None, hi: float | None, s: float) -> float:

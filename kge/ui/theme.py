@@ -29,10 +29,11 @@ from dataclasses import field as _field
 from typing import Any
 
 from kge.components.color import Color, rgba
-from kge.components.ui_checks import known
+from kge.components.text import MAX_FONT_SIZE
+from kge.components.ui_checks import MAX_PIXELS, known
 from kge.components.ui_style import Style
 from kge.errors import ValidationError
-from kge.validate import finite
+from kge.validate import at_most, finite
 
 #: the widget kinds a theme can style (a node's widget class name, plus the parts
 #: that are not widgets of their own)
@@ -83,8 +84,15 @@ class Theme:
                 object.__setattr__(self, f.name, rgba(v, "Theme", f.name))
             else:
                 n = finite(v, "Theme", f.name)
-                if n < 0 or (f.name in ("font_size", "row_height") and n == 0) or n > 1e4:
-                    raise ValidationError(f"Theme.{f.name} must be in (0, 1e4], got {v!r}")
+                sized = f.name in ("font_size", "row_height")
+                if n < 0 or (sized and n == 0):
+                    raise ValidationError(
+                        f"Theme.{f.name} must be {'> 0' if sized else '>= 0'}, got {v!r}"
+                    )
+                if f.name == "font_size":  # FreeType refuses much larger glyphs
+                    at_most(n, MAX_FONT_SIZE, "Theme", f.name, "points")
+                else:  # layout boxes stay finite
+                    at_most(n, MAX_PIXELS, "Theme", f.name, "pixels")
                 object.__setattr__(self, f.name, n)
 
     def __hash__(self) -> int:

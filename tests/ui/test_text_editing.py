@@ -264,14 +264,19 @@ def test_control_characters_are_dropped_or_refused_and_writes_are_clamped() -> N
     app2.world.resource(UIState).clipboard = "one\r\ntwo\x1b"
     press(app2, Key.V, Mod.CTRL)
     assert app2.world.get(a, TextArea).text == "one\ntwo"
-    w.caret = 99
-    w.anchor = -7
-    assert (w.caret, w.anchor) == (len(w.text), -1)
+    w.caret, w.anchor = 2, 4
+    with pytest.raises(ValidationError, match=r"caret must be a character index 0\.\.11"):
+        w.caret = 99
+    with pytest.raises(ValidationError, match=r"anchor must be a character index"):
+        w.anchor = -7
+    assert (w.caret, w.anchor) == (2, 4)  # a refused write leaves the field as it was
+    w.caret = -1  # at the end, as in the constructor
+    assert w.caret == len(w.text)
     with pytest.raises(ValidationError, match="more than max_length 8"):
         TextInput("x" * 9, max_length=8)
     with pytest.raises(ValidationError, match="max_length must be >= 0"):
         TextInput(max_length=-1)
-    with pytest.raises(ValidationError, match="shorter than its text"):
+    with pytest.raises(ValidationError, match="hold the text's 11 characters, got 2"):
         w.max_length = 2
 
 
