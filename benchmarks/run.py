@@ -424,8 +424,8 @@ def main(argv: list[str] | None = None) -> int:
                                progress=progress, seed=args.seed)
     print(table(results))
     fitting = fits(results)
-    sizes = {s.name: s.sizes for s in chosen}
-    labels = {name: {e: fitting_label(n, sizes[name]) for e, n in per.items()}
+    scene_sizes = {s.name: s.sizes for s in chosen}
+    labels = {name: {e: fitting_label(n, scene_sizes[name]) for e, n in per.items()}
               for name, per in fitting.items()}
     print("\nlargest size fitting a 16.7 ms frame (interpolated between measured sizes):")
     for name, per in labels.items():
