@@ -21,6 +21,7 @@ from collections.abc import Callable, Iterable, Sequence
 from typing import Any, ClassVar, SupportsIndex
 
 from kge.components.color import Color, rgba
+from kge.components.text import font_points
 from kge.components.tracked import Tracked
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import finite, integer, within
@@ -182,13 +183,8 @@ def at_least_one(value: Any, owner: str, name: str) -> int:
 
 
 def font_size(value: Any, owner: str, name: str) -> float | None:
-    """None (the theme's) or points in (0, 1000]."""
-    if value is None:
-        return None
-    v = finite(value, owner, name)
-    if not 0 < v <= 1000:
-        raise ValidationError(f"{owner}.{name} must be in (0, 1000] points, got {v}")
-    return v
+    """None (the theme's) or points in (0, 1000], as for Text."""
+    return None if value is None else font_points(value, owner, name)
 
 
 def opt_color(value: Any, owner: str, name: str) -> Color | None:
