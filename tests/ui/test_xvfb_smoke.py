@@ -12,7 +12,6 @@ from __future__ import annotations
 import json
 import os
 import selectors
-import shutil
 import subprocess
 import sys
 import time
@@ -20,19 +19,12 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-import pytest
+from .. import xvfb
+from ..xvfb import virtual_display
 
 HERE = Path(__file__).parent
 TIMEOUT = 60.0  #: seconds to wait for any one report (a busy machine is slow, never wrong)
 
-
-def _need(tool: str) -> str:
-    path = shutil.which(tool)
-    if path is None:
-        pytest.fail(
-            f"{tool} is not installed: run tools/bootstrap.sh (Debian packages xvfb, xdotool)"
-        )
-    return path
 
 
 class Reports:
@@ -66,57 +58,37 @@ class Reports:
 
 
 def test_real_window_clicks_typing_enter_and_the_system_clipboard(tmp_path: Path) -> None:
-    xvfb = _need("Xvfb")
-    _need("xdotool")
-    read, write = os.pipe()
-    server = subprocess.Popen(
-        [xvfb, "-displayfd", str(write), "-screen", "0", "800x600x24", "-nolisten", "tcp"],
-        pass_fds=(write,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-    )  # fmt: skip
-    os.close(write)
     app = None
-    try:
-        number = b""
-        while not number.endswith(b"\n"):
-            chunk = os.read(read, 16)
-            assert chunk, "Xvfb exited before reporting its display"
-            number += chunk
-        display = f":{number.decode().strip()}"
+    with virtual_display("800x600x24") as (display, env):
 
         def xdo(*args: str) -> str:
-            out = subprocess.run([_need("xdotool"), *args], env={**os.environ, "DISPLAY": display},
-                                 capture_output=True, text=True, timeout=30, check=True)  # fmt: skip
-            return out.stdout.strip()
+            return xvfb.xdo(display, *args)
 
-        env = {k: v for k, v in os.environ.items() if k not in ("PYGLET_HEADLESS", "KGE_HEADLESS")}
-        env.update(DISPLAY=display, PYGLET_AUDIO="silent")
-        app = subprocess.Popen([sys.executable, str(HERE / "xvfb" / "smoke_app.py")], env=env,
-                               stdout=subprocess.PIPE)  # fmt: skip
-        reports = Reports(app)
-        wid = xdo("search", "--sync", "--name", "kge-smoke").splitlines()[0]
-        reports.wait(lambda r: r.get("ready"), "that it was ready")
-        xdo("windowfocus", "--sync", wid)
-        xdo("mousemove", "--window", wid, "200", "90", "click", "1")  # the first field
-        reports.wait(lambda r: r.get("focus") == "first", "the first field's focus")
-        xdo("type", "--delay", "20", "hello")
-        reports.wait(lambda r: r.get("field") == "first" and r.get("text") == "hello", "hello")
-        xdo("key", "Return")
-        reports.wait(lambda r: r.get("submitted") == "hello", "the submit")
-        xdo("key", "ctrl+a", "ctrl+c")
-        copied = reports.wait(lambda r: r.get("clipboard") == "hello", "the copy")
-        assert copied["system"] is True  # through pyglet's X11 window, not the fallback
-        xdo("mousemove", "--window", wid, "200", "140", "click", "1")  # the second field
-        reports.wait(lambda r: r.get("focus") == "second", "the second field's focus")
-        xdo("key", "ctrl+v")
-        reports.wait(lambda r: r.get("field") == "second" and r.get("text") == "hello", "paste")
-        xdo("mousemove", "--window", wid, "200", "200", "click", "1")  # Done
-        done = reports.wait(lambda r: r.get("clicked"), "the click on Done")
-        assert done["frames"] > 5
-        assert app.wait(timeout=TIMEOUT) == 0
-    finally:
-        if app is not None and app.poll() is None:
-            app.kill()
-            app.wait(timeout=10)
-        server.terminate()
-        server.wait(timeout=10)
-        os.close(read)
+        try:
+            app = subprocess.Popen([sys.executable, str(HERE / "xvfb" / "smoke_app.py")], env=env,
+                                   stdout=subprocess.PIPE)  # fmt: skip
+            reports = Reports(app)
+            wid = xdo("search", "--sync", "--name", "kge-smoke").splitlines()[0]
+            reports.wait(lambda r: r.get("ready"), "that it was ready")
+            xdo("windowfocus", "--sync", wid)
+            xdo("mousemove", "--window", wid, "200", "90", "click", "1")  # the first field
+            reports.wait(lambda r: r.get("focus") == "first", "the first field's focus")
+            xdo("type", "--delay", "20", "hello")
+            reports.wait(lambda r: r.get("field") == "first" and r.get("text") == "hello", "hello")
+            xdo("key", "Return")
+            reports.wait(lambda r: r.get("submitted") == "hello", "the submit")
+            xdo("key", "ctrl+a", "ctrl+c")
+            copied = reports.wait(lambda r: r.get("clipboard") == "hello", "the copy")
+            assert copied["system"] is True  # through pyglet's X11 window, not the fallback
+            xdo("mousemove", "--window", wid, "200", "140", "click", "1")  # the second field
+            reports.wait(lambda r: r.get("focus") == "second", "the second field's focus")
+            xdo("key", "ctrl+v")
+            reports.wait(lambda r: r.get("field") == "second" and r.get("text") == "hello", "paste")
+            xdo("mousemove", "--window", wid, "200", "200", "click", "1")  # Done
+            done = reports.wait(lambda r: r.get("clicked"), "the click on Done")
+            assert done["frames"] > 5
+            assert app.wait(timeout=TIMEOUT) == 0
+        finally:
+            if app is not None and app.poll() is None:
+                app.kill()
+                app.wait(timeout=10)
