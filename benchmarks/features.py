@@ -8,6 +8,10 @@
 * ``particle_forces``: one step of N particles, plain (gravity and drag) and with
   the forces about the origin (radial, tangential, orbit), side by side.
 
+* ``particle_turbulence``: the curl-noise field on N particles (the velocity update
+  of :class:`~kge.systems.particle_turbulence.ParticleTurbulenceSystem`) beside the
+  plain step of the same particles.
+
 Other sections (sub-emitters, trails, audio effects) join this module as they land.
 Timings are medians of interleaved repetitions, reported, never asserted. Run
 ``python benchmarks/features.py`` for the table.
@@ -159,6 +163,30 @@ def measure_particle_forces(n: int = 20000, repeats: int = 15) -> Row:
             "extra_us_per_1000": max(w - p, 0.0) * 1e3 / (n / 1000)}  # fmt: skip
 
 
+def measure_particle_turbulence(n: int = 5000, repeats: int = 15) -> Row:
+    """ms per frame of the turbulence field on ``n`` particles beside their plain step."""
+    from kge.particles.pool import ParticlePool
+    from kge.particles.turbulence import curl
+
+    rng = np.random.default_rng(3)
+    pool = ParticlePool(max_particles=n)
+    pool.add(rng.uniform(-5, 5, (n, 2)), rng.uniform(-1, 1, (n, 2)), np.full(n, 1e9),
+             np.zeros(n), np.zeros(n))  # fmt: skip
+
+    def field() -> None:
+        acc = curl(pool.pos[:n], 1.5, 0.7, 0.5, 4)
+        acc *= np.float32(2.0 / 60)
+        pool.data[2:4, :n] += acc.T
+
+    plain, noise = [], []
+    for _ in range(repeats):  # interleaved
+        plain.append(_median_ms(lambda: pool.step(1 / 60, (0.0, -9.8), 0.5), 1))
+        noise.append(_median_ms(field, 1))
+    p, t = statistics.median(plain), statistics.median(noise)
+    return {"particles": float(n), "plain_ms": p, "turbulence_ms": t,
+            "us_per_1000": t * 1e3 / (n / 1000)}  # fmt: skip
+
+
 def _finish() -> None:
     from pyglet import gl
 
@@ -174,6 +202,8 @@ def run_features(quick: bool, progress: Any) -> tuple[dict[str, Row], str | None
         out["timings"] = measure_timings(frames=5 if quick else 20, repeats=repeats)
         progress("particle forces")
         out["particle_forces"] = measure_particle_forces(5000 if quick else 20000, repeats)
+        progress("particle turbulence")
+        out["particle_turbulence"] = measure_particle_turbulence(1000 if quick else 5000, repeats)
         progress("gizmos")
         out["gizmos"] = measure_gizmos(200 if quick else 1000, repeats)
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
@@ -206,6 +236,17 @@ def feature_lines(features: dict[str, Row]) -> list[str]:
             "|---:|---:|---:|---:|",
             f"| {f['plain_ms']:.3f} ms | {f['forces_ms']:.3f} ms | {f['ratio']:.2f} "
             f"| {f['extra_us_per_1000']:.1f} µs |",
+        ]
+    tb = features.get("particle_turbulence")
+    if tb:
+        out += [
+            "",
+            f"Particle turbulence (curl noise), {tb['particles']:,.0f} particles, per frame:",
+            "",
+            "| plain step (gravity, drag) | turbulence field | per 1,000 particles |",
+            "|---:|---:|---:|",
+            f"| {tb['plain_ms']:.3f} ms | {tb['turbulence_ms']:.3f} ms "
+            f"| {tb['us_per_1000']:.1f} µs |",
         ]
     g = features.get("gizmos")
     if g:

@@ -64,6 +64,7 @@ from kge.components.debug import DebugDraw
 # particles and lights (issue 18): components here, plugins and the resource on first use
 from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
 from kge.components.material import Material, Shader, ShaderWarning
+from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     BurstOnHit,
     EmitBox,
@@ -219,6 +220,7 @@ if TYPE_CHECKING:
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.lighting import LightingPlugin
+    from kge.systems.particle_effects import ParticleEffectsPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.tilemap import TilemapPlugin
@@ -257,6 +259,7 @@ _LAZY = {
     "UIPlugin": "kge.systems.ui",
     "focus": "kge.systems.ui",
     "Particles": "kge.particles",
+    "ParticleEffectsPlugin": "kge.systems.particle_effects",
     "ParticlesPlugin": "kge.systems.particles",
     "LightingPlugin": "kge.systems.lighting",
     "TilemapPlugin": "kge.systems.tilemap",
@@ -381,8 +384,10 @@ __all__ = [
     "ParticleAttractor",
     "ParticleBurst",
     "ParticleCollision",
+    "ParticleEffectsPlugin",
     "ParticleEmitter",
     "ParticleSpace",
+    "ParticleTurbulence",
     "Particles",
     "ParticlesPlugin",
     "Physics",

@@ -8,6 +8,7 @@
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
 ``ParticlesPlugin``    particle emitters: numpy particles, bursts on hits, drawn per layer
+``ParticleEffectsPlugin``  turbulence, flipbooks, sub-emitters, trails, stretched particles
 ``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
 ``TilemapPlugin``      Tiled maps loaded with ``kge.load_map`` are drawn (chunked, culled)
@@ -33,6 +34,7 @@ def default_plugins() -> list[Plugin]:
     from kge.systems.behaviour import BehaviourPlugin
     from kge.systems.character import CharacterPlugin
     from kge.systems.lighting import LightingPlugin
+    from kge.systems.particle_effects import ParticleEffectsPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
     from kge.systems.render import RenderPlugin
@@ -47,6 +49,7 @@ def default_plugins() -> list[Plugin]:
         RenderPlugin(),
         AnimationPlugin(),
         ParticlesPlugin(),
+        ParticleEffectsPlugin(),
         LightingPlugin(),
         UIPlugin(),
         TilemapPlugin(),

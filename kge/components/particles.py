@@ -344,6 +344,10 @@ def _inherit(value: Any, owner: str, field: str) -> float:
     return in_range(value, -100.0, 100.0, owner, field)
 
 
+def _falloff(value: Any, owner: str, field: str) -> float:
+    return in_range(value, 0.0, 8.0, owner, field)
+
+
 def _rate(value: Any, owner: str, field: str) -> float:
     v = non_negative(value, owner, field)
     if v > 1e7:
@@ -490,18 +494,21 @@ class BurstOnHit(Tracked):
 @dataclass(slots=True)
 class ParticleAttractor(Tracked):
     """On an entity with a Transform: pulls the particles of every world-space emitter
-    within ``radius`` metres towards it (``strength`` m/s^2 at its centre, falling
-    linearly to 0 at ``radius``; a negative strength pushes them away). Emitters in
-    local space are not affected.
+    within ``radius`` metres towards it (``strength`` m/s^2 at its centre, falling to 0
+    at ``radius`` as ``(1 - distance / radius) ** falloff``: 0 a constant pull inside
+    the radius, 1 linear, 2 and more a pull that gathers near the centre; a negative
+    strength pushes them away, a repulsor). Emitters in local space are not affected.
     """
 
     _checks: ClassVar[dict[str, Check]] = {
         "strength": _limited_float,
-        "radius": positive,
+        "radius": _extent,
+        "falloff": _falloff,
         "enabled": boolean,
     }
 
     strength: float = 10.0
     radius: float = 5.0
     enabled: bool = True
+    falloff: float = 1.0  #: exponent of (1 - distance / radius), 0..8
 

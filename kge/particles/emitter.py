@@ -81,6 +81,9 @@ class EmitterState:
         self._style: tuple[Any, ...] = ()
         self.sizes = size_table((0.1,))
         self.colors = color_table(((255, 255, 255),), (255.0,))
+        #: the running state of particle features (turbulence clock, trail heads,
+        #: sub-emitter marks), by feature module: carried by snapshots with the rest
+        self.extras: dict[str, Any] = {}
 
     # -- looks --------------------------------------------------------------------------------
     def refresh_style(self, em: ParticleEmitter) -> None:
@@ -186,7 +189,7 @@ class EmitterState:
         velocity: tuple[float, float],
         collider: Any = None,
         grid: StaticGrid | None = None,
-        attractors: list[tuple[float, float, float, float]] | None = None,
+        attractors: list[tuple[float, ...]] | None = None,
     ) -> None:
         """One frame of game time: move the live particles, then emit the new ones
         (``attractors``: (x, y, strength, radius) pulling world-space particles)."""
@@ -226,7 +229,7 @@ class EmitterState:
 
     def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None,
               pose: Pose | None = None,
-              attractors: list[tuple[float, float, float, float]] | None = None) -> None:
+              attractors: list[tuple[float, ...]] | None = None) -> None:
         use_grid = grid if em.collide != "none" and em.space == "world" else None
         bounce = em.bounciness if em.collide == "bounce" else None
         around = None

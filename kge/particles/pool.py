@@ -52,6 +52,11 @@ class ParticlePool:
         self.count = 0
         self.dropped = 0  #: particles refused because the pool was full
         self.data = np.zeros((self.ROWS, 0), F)
+        #: record where particles hit and die (``hits`` / ``deaths``: (4, k) x, y, vx, vy
+        #: arrays per step, until taken): sub-emitters turn on ``watch``
+        self.watch = False
+        self.hits: list[np.ndarray] = []
+        self.deaths: list[np.ndarray] = []
 
     @property
     def capacity(self) -> int:
@@ -87,9 +92,17 @@ class ParticlePool:
         if need <= self.capacity:
             return
         cap = min(self.max_particles, max(64, 1 << (need - 1).bit_length()))
-        new = np.zeros((self.ROWS, cap), F)
+        new = np.zeros((self.data.shape[0], cap), F)
         new[:, : self.count] = self.data[:, : self.count]
         self.data = new
+
+    def extra_rows(self, k: int) -> int:
+        """Give every particle ``k`` more float32 rows (a feature's per-particle state,
+        moved with the particle when the dead are removed; zero at birth): the index
+        of the first."""
+        first = int(self.data.shape[0])
+        self.data = np.concatenate([self.data, np.zeros((k, self.capacity), F)])
+        return first
 
     def set_max(self, max_particles: int) -> None:
         """Change the cap; live particles past a lower cap are dropped."""
@@ -122,6 +135,8 @@ class ParticlePool:
         d[5] = life[:n]
         d[6] = angle[:n]
         d[7] = spin[:n]
+        if len(d) > self.ROWS:
+            d[self.ROWS :] = 0.0
         self.count += n
         return n
 
@@ -133,14 +148,15 @@ class ParticlePool:
         grid: StaticGrid | None = None,
         bounce: float | None = None,
         around: tuple[float, float, float, float, float] | None = None,
-        attractors: list[tuple[float, float, float, float]] | None = None,
+        attractors: list[tuple[float, ...]] | None = None,
     ) -> None:
         """Advance every live particle ``dt`` seconds, then drop the dead.
 
         ``around`` = (cx, cy, radial, tangential, orbit): accelerations away from and
         counter-clockwise round the point (cx, cy) (m/s^2), and an orbit (rad/s) that
-        turns the positions round it. ``attractors``: (x, y, strength, radius) each,
-        pulling particles within radius (strength at the centre, linear to 0).
+        turns the positions round it. ``attractors``: (x, y, strength, radius[, falloff])
+        each, pulling particles within radius (strength at the centre, to 0 at the
+        radius as (1 - distance / radius) ** falloff, linear by default).
 
         ``grid`` collides particles with static geometry: ``bounce=None`` kills
         those that enter a solid cell, a number reflects them with that
@@ -160,8 +176,8 @@ class ParticlePool:
             d[3] += F(ay * dt)
         if around is not None:
             self._around(d, dt, *around)
-        for ax_, ay_, strength, radius in attractors or ():
-            self._attract(d, dt, ax_, ay_, strength, radius)
+        for ax_, ay_, strength, radius, *falloff in attractors or ():
+            self._attract(d, dt, ax_, ay_, strength, radius, *falloff)
         if drag > 0.0:
             d[2:4] *= F(math.exp(-drag * dt))
         if grid is not None:
@@ -169,6 +185,8 @@ class ParticlePool:
             d[0:2] += d[2:4] * fdt
             pos, vel = d[0:2].T, d[2:4].T
             hit = grid.collide(old, pos, vel, bounce)
+            if hit is not None and self.watch:
+                self.hits.append(d[0:4, hit].copy())
             if bounce is None and hit is not None:
                 d[4, hit] = np.inf  # dies below
         else:
@@ -179,6 +197,8 @@ class ParticlePool:
         alive = d[4] < d[5]
         dead = np.flatnonzero(~alive)
         if len(dead):
+            if self.watch:
+                self.deaths.append(d[0:4, dead].copy())
             m = n - len(dead)
             holes = dead[dead < m]
             if len(holes):
@@ -200,14 +220,17 @@ class ParticlePool:
 
     @staticmethod
     def _attract(d: np.ndarray, dt: float, x: float, y: float, strength: float,
-                 radius: float) -> None:
-        """Pull towards (x, y): strength x (1 - distance / radius) inside the radius."""
+                 radius: float, falloff: float = 1.0) -> None:
+        """Pull towards (x, y): strength x (1 - distance / radius) ** falloff inside."""
         dx, dy = F(x) - d[0], F(y) - d[1]
         dist = np.hypot(dx, dy)
         near = (dist < radius) & (dist > 0)
         if not near.any():
             return
-        k = np.where(near, F(strength * dt) * (1 - dist / F(radius)), 0)
+        share = 1 - dist / F(radius)
+        if falloff != 1.0:
+            share = np.power(np.maximum(share, 0), F(falloff))
+        k = np.where(near, F(strength * dt) * share, 0)
         k = np.divide(k, dist, out=np.zeros_like(k), where=near)
         d[2] += k * dx
         d[3] += k * dy

@@ -14,7 +14,7 @@ The list grows (by re-allocation) with the emitter's pool, which is capped by
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pyglet
@@ -82,12 +82,18 @@ def soft_dot(size: int = 64) -> PixelImage:
 SOFT_DOT = soft_dot()
 SQUARE = PixelImage(1, 1, b"\xff\xff\xff\xff")
 
-def particle_program(material: Material | None = None) -> Any:
+def particle_program(material: Material | None = None, vertex: str = _VERTEX,
+                     name: str = "particle") -> Any:  # fmt: skip
     """The particle program: kge's default effect, or a material's (None when its shader
-    does not compile: the caller keeps the default)."""
+    does not compile: the caller keeps the default); ``vertex`` and ``name`` for another
+    vertex layout (:mod:`kge.render.particle_effects`)."""
     if material is not None:
-        return material_program(material.shader, "particle", vertex=_VERTEX)
-    return program("kge-particle", _VERTEX, fragment_source(DEFAULT_EFFECT))
+        return material_program(material.shader, name, vertex=vertex)
+    return program(f"kge-{name}", vertex, fragment_source(DEFAULT_EFFECT))
+
+
+#: the vertex attributes of the particle program and their buffer formats
+FORMATS = {"particle": "f", "corner": "f", "colors": "Bn"}
 
 
 _ROWS = np.zeros(0, np.intp)
@@ -134,7 +140,8 @@ class ParticleGroup(pyglet.graphics.Group):
         return hash((self.texture.id, self.blend, id(self.parent), id(self.program)))
 
 
-def _quad_list(program: Any, batch: Any, group: Any, quads: int) -> Any:
+def _quad_list(program: Any, batch: Any, group: Any, quads: int,
+               formats: dict[str, str] = FORMATS) -> Any:  # fmt: skip
     """An indexed vertex list of ``quads`` particle quads, filled with numpy.
 
     ``ShaderProgram.vertex_list_indexed`` converts indices and initial data one
@@ -142,7 +149,6 @@ def _quad_list(program: Any, batch: Any, group: Any, quads: int) -> Any:
     time an emitter grows); this asks the batch for the domain and writes the
     corners and indices straight into its buffers instead.
     """
-    formats = {"particle": "f", "corner": "f", "colors": "Bn"}
     attributes = program.attributes.copy()
     for name, fmt in formats.items():
         attributes[name] = {**attributes[name], "format": fmt, "instance": False}
@@ -186,11 +192,17 @@ def _view(vertex_list: Any, name: str) -> tuple[np.ndarray, Any]:
 class ParticleDrawer:
     """Uploads every emitter's particles into the world's batch (a before-pass)."""
 
+    #: the vertex shader, its attributes' formats and its program's name (a subclass
+    #: with more attributes changes them)
+    VERTEX = _VERTEX
+    FORMATS: ClassVar[dict[str, str]] = FORMATS
+    NAME = "particle"
+
     def __init__(self, world: Any, batch: Any, groups: Groups) -> None:
         self.world = world
         self.batch = batch
         self.groups = groups
-        self.program = particle_program()
+        self.program = particle_program(None, self.VERTEX, self.NAME)
         self.textures = TextureCache(world)
         self.meshes: dict[int, _EmitterMesh] = {}
 
@@ -206,7 +218,7 @@ class ParticleDrawer:
                 f"entity {entity}, ParticleEmitter.texture {em.texture!r}: {exc}"
             ) from exc
         material = self.world.try_get(entity, Material)
-        prog = particle_program(material) if material is not None else None
+        prog = particle_program(material, self.VERTEX, self.NAME) if material is not None else None
         prog = prog or self.program
         key = (tex.id, em.blend, em.layer, em.order, id(prog), id(material))
         mesh = self.meshes.get(entity)
@@ -218,7 +230,7 @@ class ParticleDrawer:
         if prog is not self.program and material is not None:
             parent = MaterialGroup(material, prog, self.textures, parent)
         group = ParticleGroup(tex, em.blend, prog, parent)
-        vl = _quad_list(prog, self.batch, group, capacity)
+        vl = _quad_list(prog, self.batch, group, capacity, self.FORMATS)
         mesh = self.meshes[entity] = _EmitterMesh(vl, capacity, key)
         return mesh
 
@@ -257,6 +269,7 @@ class ParticleDrawer:
             else:
                 rows[:, 0:2] = pool.pos[:n]
                 rows[:, 3] = pool.angle[:n]
+            self.more(entity, em, st, mesh, n)
             # each particle's row onto its 4 vertices: a gather straight into the vertex
             # buffer (no temporary: a 50,000-particle frame allocates nothing here)
             idx = _vertex_rows(n)
@@ -271,6 +284,11 @@ class ParticleDrawer:
             arr[lo + 4 * n : lo + 4 * mesh.written, 2] = 0.0
             buf.invalidate_region(lo + 4 * n, 4 * (mesh.written - n))
         mesh.written = n
+
+    def more(self, entity: int, em: ParticleEmitter, st: EmitterState, mesh: _EmitterMesh,
+             n: int) -> None:  # fmt: skip
+        """Before the rows are written: a subclass adjusts ``mesh.rows[:n]`` and writes its
+        own attributes of the ``n`` live particles."""
 
     def close(self) -> None:
         for mesh in self.meshes.values():

@@ -184,7 +184,7 @@ class ParticleSystem(System):
         grid = None
         if any(em.collide != "none" for _, (em, _t) in emitters):
             grid = self._grid()
-        attractors = [(at.x, at.y, a.strength, a.radius)
+        attractors: list[tuple[float, ...]] = [(at.x, at.y, a.strength, a.radius, a.falloff)
                       for _, (a, at) in world.query(ParticleAttractor, Transform) if a.enabled]
         finished = []
         for e, (em, t) in emitters:
@@ -285,13 +285,13 @@ class ParticlesPlugin(Plugin):
         drawer: dict[str, Any] = {}
 
         def draw(frame: Any) -> None:
-            from kge.render.particles import ParticleDrawer
+            from kge.render.particle_effects import EffectDrawer
 
             d = drawer.get("d")
             if d is None or d.batch is not frame.batch:
                 if d is not None:
                     d.close()
-                d = drawer["d"] = ParticleDrawer(world, frame.batch, frame.groups)
+                d = drawer["d"] = EffectDrawer(world, frame.batch, frame.groups)
             d.draw(frame)
 
         passes_for(world).add(

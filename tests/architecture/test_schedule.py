@@ -39,7 +39,9 @@ DEFAULT_FRAME = {
         ("AnimationSystem", "animation"),
         ("TileAnimationSystem", "animation"),
         ("TweenSystem", "animation"),
+        ("ParticleTurbulenceSystem", "effects"),
         ("ParticleSystem", "effects"),
+        ("ParticleEffectsSystem", "effects"),
     ],
     Stage.LATE: [
         ("LateBehaviours", "scripts"),

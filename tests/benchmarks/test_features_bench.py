@@ -8,6 +8,7 @@ from benchmarks.features import (
     feature_targets,
     measure_gizmos,
     measure_particle_forces,
+    measure_particle_turbulence,
     measure_timings,
 )
 
@@ -28,6 +29,13 @@ def test_the_particle_forces_row_runs_both_kinds_of_step() -> None:
     assert r["particles"] == 500 and r["plain_ms"] > 0 and r["forces_ms"] > 0 and r["ratio"] > 0
     text = "\n".join(feature_lines({"particle_forces": r}))
     assert "Particle forces about the origin, 500 particles" in text
+
+
+def test_the_particle_turbulence_row_runs_the_field_and_the_plain_step() -> None:
+    r = measure_particle_turbulence(300, repeats=2)
+    assert r["particles"] == 300 and r["plain_ms"] > 0 and r["turbulence_ms"] > 0
+    assert "Particle turbulence (curl noise), 300 particles" in "\n".join(
+        feature_lines({"particle_turbulence": r}))
 
 
 def test_the_section_reaches_the_report_and_its_targets() -> None:

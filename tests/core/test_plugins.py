@@ -60,7 +60,8 @@ def test_default_app_has_the_default_plugins_in_order() -> None:
     names = [p.name for p in app.plugins]
     assert names == [
         "BehaviourPlugin", "PhysicsPlugin", "CharacterPlugin", "AudioPlugin", "RenderPlugin",
-        "AnimationPlugin", "ParticlesPlugin", "LightingPlugin", "UIPlugin", "TilemapPlugin",
+        "AnimationPlugin", "ParticlesPlugin", "ParticleEffectsPlugin", "LightingPlugin", "UIPlugin",
+        "TilemapPlugin",
         "DebugPlugin",
     ]
     assert [p.name for p in app.world.plugins] == names

@@ -56,3 +56,18 @@ def test_bad_attractors_are_refused() -> None:
     with pytest.raises(ValidationError, match="radius"):
         a.radius = -1.0
     assert a.radius == 5.0
+
+
+@pytest.mark.parametrize(("falloff", "share"), [(0.0, 1.0), (1.0, 0.5), (2.0, 0.25), (3.0, 0.125)])
+def test_falloff_shapes_the_pull_between_centre_and_radius(falloff: float, share: float) -> None:
+    # resting particles 2 m from an attractor of radius 4: one step's pull is
+    # strength x (1 - 2 / 4) ** falloff
+    p = _run(ParticleAttractor(strength=8.0, radius=4.0, falloff=falloff), steps=2)
+    dt = 1 / 60
+    np.testing.assert_allclose(p[:, 0], 8.0 * share * dt * dt, rtol=1e-4)
+
+
+def test_a_bad_falloff_is_refused() -> None:
+    for bad in (-0.5, 9.0, float("nan")):
+        with pytest.raises(ValidationError, match="ParticleAttractor.falloff"):
+            ParticleAttractor(falloff=bad)

@@ -15,6 +15,7 @@ from kge.testbed.samples import (  # noqa: F401
     large,
     lights,
     materials,
+    particle_effects,
     particles,
     queries,
     rendering,
