@@ -64,6 +64,8 @@ from kge.components.debug import DebugDraw
 # particles and lights (issue 18): components here, plugins and the resource on first use
 from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
 from kge.components.material import Material, Shader, ShaderWarning
+from kge.components.particle_flipbook import ParticleFlipbook
+from kge.components.particle_stretch import ParticleStretch
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     BurstOnHit,
@@ -386,7 +388,9 @@ __all__ = [
     "ParticleCollision",
     "ParticleEffectsPlugin",
     "ParticleEmitter",
+    "ParticleFlipbook",
     "ParticleSpace",
+    "ParticleStretch",
     "ParticleTurbulence",
     "Particles",
     "ParticlesPlugin",

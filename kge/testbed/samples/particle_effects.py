@@ -2,18 +2,24 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from kge.components import Name, Transform
+from kge.components.particle_flipbook import ParticleFlipbook
+from kge.components.particle_stretch import ParticleStretch
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     Blend,
+    EmitBox,
     EmitCircle,
     EmitLine,
     ParticleAttractor,
     ParticleEmitter,
 )
-from kge.particles import Particles
+from kge.particles import Particles, flipbook
+from kge.render.images import PixelImage, from_array
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import named
 from kge.world import World
@@ -53,3 +59,46 @@ def _smoke_billows_and_the_stream_parts(app) -> None:  # type: ignore[no-untyped
     assert near.min() > 0.3, "the repulsor keeps a hole in the stream"
     hole = np.hypot(stream[:, 0] - 4.0, stream[:, 1] - 4.2)
     assert (hole < 0.5).sum() > 5, "the black hole gathers sparks"
+
+
+def flame_sheet(cell: int = 16) -> PixelImage:
+    """A 4 x 2 sheet of a soft flame that grows, then shrinks and cools (generated)."""
+    sheet = np.zeros((2 * cell, 4 * cell, 4), np.uint8)
+    ys, xs = np.mgrid[0:cell, 0:cell] + 0.5
+    for i in range(8):
+        row, col = divmod(i, 4)
+        grow = 0.45 + 0.45 * math.sin(math.pi * (i + 0.5) / 8)
+        r = np.hypot((xs - cell / 2) / grow, (ys - cell * 0.6) / (grow * 1.3)) / (cell / 2)
+        alpha = np.clip(1.0 - r, 0.0, 1.0)
+        heat = 1.0 - i / 10
+        tile = sheet[row * cell : (row + 1) * cell, col * cell : (col + 1) * cell]
+        tile[..., 0] = 255
+        tile[..., 1] = np.uint8(200 * heat)
+        tile[..., 2] = np.uint8(60 * heat * heat)
+        tile[..., 3] = np.rint(alpha * 255).astype(np.uint8)
+    return from_array(sheet)
+
+
+@sample("Particles", "Flipbook And Stretch", help="Left: a fire of animated flame sprites "
+        "(a generated 4 x 2 sheet, each particle from a random frame at 12 fps). Right: sparks "
+        "drawn stretched along their velocity, longer the faster they fly.",
+        camera=(0.0, 3.0, 1.0))
+def flipbook_and_stretch(world: World) -> None:
+    world.spawn(Transform(-3.5, 0.5), Name("fire"), ParticleEmitter(
+        rate=40.0, speed=(0.6, 1.2), spread=0.5, lifetime=(0.8, 1.4), shape=EmitBox(1.0, 0.2),
+        size=(0.9, 1.3, 0.6), opacity=(0, 255, 255, 0), texture=flame_sheet(),
+        blend=Blend.ADDITIVE, seed=7,
+    ), ParticleFlipbook(4, 2, fps=12.0, random_start=True))  # fmt: skip
+    world.spawn(Transform(3.5, 0.5), Name("sparks"), ParticleEmitter(
+        rate=120.0, speed=(3.0, 9.0), spread=1.2, lifetime=(0.6, 1.0), acceleration=(0.0, -9.8),
+        size=0.06, flat=True, color=((255, 255, 200), (255, 120, 20)), blend=Blend.ADDITIVE,
+        seed=8,
+    ), ParticleStretch(speed_scale=0.05, max_length=0.6))  # fmt: skip
+
+
+@flipbook_and_stretch.claim
+def _flames_flicker_out_of_step(app) -> None:  # type: ignore[no-untyped-def]
+    st = app.world.resource(Particles).state(named(app.world, "fire")[0])
+    n = st.pool.count
+    starts = st.pool.data[st.extras[flipbook.KEY]["row"], :n]
+    assert n > 20 and len(set(starts.tolist())) >= 6, "random start frames"
