@@ -12,7 +12,12 @@
   of :class:`~kge.systems.particle_turbulence.ParticleTurbulenceSystem`) beside the
   plain step of the same particles.
 
-Other sections (sub-emitters, trails, audio effects) join this module as they land.
+* ``particle_subemitters``: an emitter kept at N live particles (N births and deaths
+  a second) whose every death sprays 4 particles of a sub-emitter, beside the same
+  emitter without it: the particle update, the effects pass and the sub-emitter's own
+  particles per frame.
+
+Other sections (trails, audio effects) join this module as they land.
 Timings are medians of interleaved repetitions, reported, never asserted. Run
 ``python benchmarks/features.py`` for the table.
 """
@@ -187,6 +192,54 @@ def measure_particle_turbulence(n: int = 5000, repeats: int = 15) -> Row:
             "us_per_1000": t * 1e3 / (n / 1000)}  # fmt: skip
 
 
+def _frame_systems(subs: bool, n: int) -> tuple[Any, list[Any]]:
+    """An App with an emitter of ``n`` live particles (and a death sub-emitter), and the
+    particle systems of its frame."""
+    from kge import App, ParticleSubEmitters, SubEmitEvent, SubEmitter, Transform
+    from kge.components.particles import ParticleEmitter
+    from kge.systems.particle_effects import ParticleEffectsSystem
+    from kge.systems.particles import ParticleSystem
+
+    def scene(world: Any) -> None:
+        kids = world.spawn(Transform(), ParticleEmitter(
+            emitting=False, speed=(1.0, 2.0), spread=6.28, lifetime=0.25, max_particles=4 * n,
+            seed=2))  # fmt: skip
+        extra = (ParticleSubEmitters(SubEmitter(kids, SubEmitEvent.DEATH, count=4,
+                                                inherit_velocity=0.5)),) if subs else ()
+        world.spawn(Transform(), ParticleEmitter(
+            rate=float(n), lifetime=(0.8, 1.2), speed=(2.0, 5.0), spread=1.2,
+            acceleration=(0.0, -9.8), max_particles=2 * n, prewarm=1.0, seed=1), *extra)
+
+    app = App(scene, headless=True)
+    app.step(30)
+    world = app.world
+    return app, [world.get_system(ParticleSystem), world.get_system(ParticleEffectsSystem)]
+
+
+def measure_particle_subemitters(n: int = 3000, repeats: int = 15) -> Row:
+    """ms per frame of the particle systems for ``n`` live particles with and without a
+    death sub-emitter (4 particles per death)."""
+    from kge.particles import Particles
+
+    plain_app, plain = _frame_systems(False, n)
+    subs_app, subs = _frame_systems(True, n)
+    times: dict[str, list[float]] = {"plain": [], "subs": []}
+    for _ in range(repeats):  # interleaved
+        for name, systems in (("plain", plain), ("subs", subs)):
+            t0 = time.perf_counter()
+            for system in systems:
+                system.process(1 / 60)
+            times[name].append((time.perf_counter() - t0) * 1e3)
+    particles = subs_app.world.resource(Particles)
+    out = {"particles": float(particles.count(2)), "spawned": float(particles.count(1)),
+           "plain_ms": statistics.median(times["plain"]),
+           "subs_ms": statistics.median(times["subs"])}  # fmt: skip
+    out["extra_ms"] = max(out["subs_ms"] - out["plain_ms"], 0.0)
+    plain_app.close()
+    subs_app.close()
+    return out
+
+
 def _finish() -> None:
     from pyglet import gl
 
@@ -204,6 +257,9 @@ def run_features(quick: bool, progress: Any) -> tuple[dict[str, Row], str | None
         out["particle_forces"] = measure_particle_forces(5000 if quick else 20000, repeats)
         progress("particle turbulence")
         out["particle_turbulence"] = measure_particle_turbulence(1000 if quick else 5000, repeats)
+        progress("particle sub-emitters")
+        out["particle_subemitters"] = measure_particle_subemitters(600 if quick else 3000,
+                                                                   repeats)  # fmt: skip
         progress("gizmos")
         out["gizmos"] = measure_gizmos(200 if quick else 1000, repeats)
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
@@ -247,6 +303,17 @@ def feature_lines(features: dict[str, Row]) -> list[str]:
             "|---:|---:|---:|",
             f"| {tb['plain_ms']:.3f} ms | {tb['turbulence_ms']:.3f} ms "
             f"| {tb['us_per_1000']:.1f} µs |",
+        ]
+    se = features.get("particle_subemitters")
+    if se:
+        out += [
+            "",
+            f"Particle sub-emitters, {se['particles']:,.0f} live particles whose every death "
+            f"sprays 4 (a pool of {se['spawned']:,.0f}), particle systems per frame:",
+            "",
+            "| without sub-emitters | with | extra |",
+            "|---:|---:|---:|",
+            f"| {se['plain_ms']:.3f} ms | {se['subs_ms']:.3f} ms | {se['extra_ms']:.3f} ms |",
         ]
     g = features.get("gizmos")
     if g:

@@ -66,6 +66,7 @@ from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaste
 from kge.components.material import Material, Shader, ShaderWarning
 from kge.components.particle_flipbook import ParticleFlipbook
 from kge.components.particle_stretch import ParticleStretch
+from kge.components.particle_subemitters import ParticleSubEmitters, SubEmitEvent, SubEmitter
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     BurstOnHit,
@@ -391,6 +392,7 @@ __all__ = [
     "ParticleFlipbook",
     "ParticleSpace",
     "ParticleStretch",
+    "ParticleSubEmitters",
     "ParticleTurbulence",
     "Particles",
     "ParticlesPlugin",
@@ -437,6 +439,8 @@ __all__ = [
     "Sprite",
     "Stage",
     "StepTimeout",
+    "SubEmitEvent",
+    "SubEmitter",
     "System",
     "SystemSet",
     "Text",

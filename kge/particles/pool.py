@@ -186,7 +186,10 @@ class ParticlePool:
             pos, vel = d[0:2].T, d[2:4].T
             hit = grid.collide(old, pos, vel, bounce)
             if hit is not None and self.watch:
-                self.hits.append(d[0:4, hit].copy())
+                rows = d[0:4, hit].copy()
+                if bounce is None:  # it dies inside: the event is where it last was free
+                    rows[0:2] = old[hit].T
+                self.hits.append(rows)
             if bounce is None and hit is not None:
                 d[4, hit] = np.inf  # dies below
         else:

@@ -8,6 +8,7 @@ from benchmarks.features import (
     feature_targets,
     measure_gizmos,
     measure_particle_forces,
+    measure_particle_subemitters,
     measure_particle_turbulence,
     measure_timings,
 )
@@ -36,6 +37,13 @@ def test_the_particle_turbulence_row_runs_the_field_and_the_plain_step() -> None
     assert r["particles"] == 300 and r["plain_ms"] > 0 and r["turbulence_ms"] > 0
     assert "Particle turbulence (curl noise), 300 particles" in "\n".join(
         feature_lines({"particle_turbulence": r}))
+
+
+def test_the_sub_emitter_row_times_both_scenes_and_the_sparks_exist() -> None:
+    r = measure_particle_subemitters(200, repeats=2)
+    assert 150 <= r["particles"] <= 250 and r["spawned"] > 0
+    assert r["plain_ms"] > 0 and r["subs_ms"] > 0
+    assert "Particle sub-emitters, " in "\n".join(feature_lines({"particle_subemitters": r}))
 
 
 def test_the_section_reaches_the_report_and_its_targets() -> None:

@@ -9,6 +9,7 @@ import numpy as np
 from kge.components import Name, Transform
 from kge.components.particle_flipbook import ParticleFlipbook
 from kge.components.particle_stretch import ParticleStretch
+from kge.components.particle_subemitters import ParticleSubEmitters, SubEmitEvent, SubEmitter
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     Blend,
@@ -16,12 +17,13 @@ from kge.components.particles import (
     EmitCircle,
     EmitLine,
     ParticleAttractor,
+    ParticleCollision,
     ParticleEmitter,
 )
 from kge.particles import Particles, flipbook
 from kge.render.images import PixelImage, from_array
 from kge.testbed.registry import sample
-from kge.testbed.samples.build import named
+from kge.testbed.samples.build import named, static_box
 from kge.world import World
 
 
@@ -102,3 +104,49 @@ def _flames_flicker_out_of_step(app) -> None:  # type: ignore[no-untyped-def]
     n = st.pool.count
     starts = st.pool.data[st.extras[flipbook.KEY]["row"], :n]
     assert n > 20 and len(set(starts.tolist())) >= 6, "random start frames"
+
+
+@sample("Particles", "Fireworks And Splashes", help="Left: rockets leave a trail of embers "
+        "(sub-emitter on birth) and burst into 80 sparks where they die (on death, inheriting "
+        "30% of the rocket's velocity). Right: rain splashes where it hits the ground (on "
+        "collision).", camera=(0.0, 3.0, 1.0))
+def fireworks_and_splashes(world: World) -> None:
+    sparks = world.spawn(Transform(), Name("sparks"), ParticleEmitter(
+        emitting=False, speed=(2.0, 4.0), spread=2 * math.pi, lifetime=(0.8, 1.2), drag=1.2,
+        acceleration=(0.0, -2.5), size=(0.1, 0.03), color=((255, 240, 160), (255, 60, 120)),
+        blend=Blend.ADDITIVE, max_particles=4000, seed=2,
+    ))  # fmt: skip
+    embers = world.spawn(Transform(), Name("embers"), ParticleEmitter(
+        emitting=False, speed=(0.0, 0.3), spread=2 * math.pi, lifetime=(0.3, 0.5), size=0.05,
+        color=((255, 180, 80),), opacity=(200, 0), blend=Blend.ADDITIVE, max_particles=2000,
+        seed=3,
+    ))  # fmt: skip
+    world.spawn(Transform(-4.0, -1.0), Name("rockets"), ParticleEmitter(
+        rate=1.5, speed=(8.0, 9.5), spread=0.5, lifetime=(0.9, 1.1), acceleration=(0.0, -5.0),
+        rate_per_meter=0.0, size=0.12, color=((255, 255, 255),), seed=1,
+    ), ParticleSubEmitters(
+        SubEmitter(sparks, SubEmitEvent.DEATH, count=80, inherit_velocity=0.3),
+        SubEmitter(embers, SubEmitEvent.BIRTH, count=1),
+    ))  # fmt: skip
+    static_box(world, 4.0, -1.5, 3.0, 0.5, name="ground")
+    splash = world.spawn(Transform(), Name("splash"), ParticleEmitter(
+        emitting=False, speed=(0.8, 1.6), direction=math.pi / 2, spread=1.6, lifetime=0.35,
+        acceleration=(0.0, -9.8), size=0.05, color=((180, 200, 255),), max_particles=3000,
+        collide=ParticleCollision.DIE, seed=4,
+    ))  # fmt: skip
+    world.spawn(Transform(4.0, 6.0), Name("rain"), ParticleEmitter(
+        rate=60.0, speed=6.0, direction=-math.pi / 2, lifetime=2.0, shape=EmitBox(5.0, 0.1),
+        size=0.04, color=((170, 190, 255),), collide=ParticleCollision.DIE, seed=5,
+    ), ParticleSubEmitters(SubEmitter(splash, SubEmitEvent.COLLISION, count=4)),
+        ParticleStretch(speed_scale=0.05))  # fmt: skip
+
+
+@fireworks_and_splashes.claim
+def _rockets_burst_and_rain_splashes(app) -> None:  # type: ignore[no-untyped-def]
+    particles = app.world.resource(Particles)
+    burst = particles.state(named(app.world, "sparks")[0])
+    assert burst.born >= 80 and burst.born % 80 == 0, burst.born
+    rockets = particles.state(named(app.world, "rockets")[0])
+    assert particles.state(named(app.world, "embers")[0]).born == rockets.born
+    drops = particles.positions(named(app.world, "splash")[0])
+    assert len(drops) > 20 and drops[:, 1].min() > -1.1, "splashes start on the ground"
