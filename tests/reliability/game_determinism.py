@@ -1,7 +1,8 @@
 """A game-layer scene whose whole state is hashed: the cross-process determinism check.
 
 Physics bodies fall and collide; an emitter with a seed sprays particles that inherit
-its body's velocity; tweens (a yoyo on a sprite's x, a sequence on its opacity, the
+its body's velocity, swirl in a turbulence field, play flipbook frames from random
+starts and burst into bouncing sparks (a sub-emitter) where they die; tweens (a yoyo on a sprite's x, a sequence on its opacity, the
 camera's zoom) run; an animator plays and changes clips through its parameters; UI
 widgets are written every few frames. :func:`game_hash` hashes every pose, every
 live particle's fields, every tweened value, the animators' clip and frame and the
@@ -28,9 +29,14 @@ from kge import (
     Clip,
     Collider,
     ParticleEmitter,
+    ParticleFlipbook,
+    ParticleSubEmitters,
+    ParticleTurbulence,
     RigidBody,
     Slider,
     Sprite,
+    SubEmitEvent,
+    SubEmitter,
     TextInput,
     Transform,
     Tween,
@@ -39,6 +45,7 @@ from kge import (
     UINode,
 )  # fmt: skip
 from kge.assets import Assets
+from kge.components.particles import ParticleCollision
 from kge.components.animation import Transition
 
 from .game_catalogue import _assets_dir
@@ -53,10 +60,17 @@ def _scene(root: Any) -> Any:
                 Transform(-3.0 + 0.55 * i, 2.0 + 0.9 * (i % 4), 0.1 * i), RigidBody(),
                 Collider(Circle(0.25) if i % 2 else Box(0.25, 0.2)),
             )  # fmt: skip
+        sparks = world.spawn(Transform(), ParticleEmitter(
+            emitting=False, speed=(0.5, 2.0), spread=6.0, lifetime=(0.2, 0.5),
+            acceleration=(0.0, -9.8), collide=ParticleCollision.BOUNCE, seed=8))  # fmt: skip
         runner = world.spawn(
             Transform(0.0, 4.0), RigidBody(velocity=(1.5, 0.0)), Collider(Circle(0.3)),
             ParticleEmitter(rate=120.0, speed=(1.0, 3.0), spread=1.0, lifetime=(0.3, 0.9),
                             inherit_velocity=0.5, drag=0.3, acceleration=(0.0, -4.0), seed=7),
+            ParticleTurbulence(strength=3.0, frequency=0.8, speed=0.7, seed=2),
+            ParticleFlipbook(2, 2, fps=8.0, random_start=True),
+            ParticleSubEmitters(SubEmitter(sparks, SubEmitEvent.DEATH, count=3,
+                                           inherit_velocity=0.4)),
         )  # fmt: skip
         clips = {
             "idle": Clip.grid("sheet.png", (4, 2), frames=[0, 1, 2, 3], fps=8),
