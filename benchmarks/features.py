@@ -17,7 +17,11 @@
   emitter without it: the particle update, the effects pass and the sub-emitter's own
   particles per frame.
 
-Other sections (trails, audio effects) join this module as they land.
+* ``particle_trails``: N live particles with 12-point trails: the ring-buffer
+  sampling (the effects system) and the strips' vertex write (the trail drawer), per
+  frame, beside the particles' own update and quad upload.
+
+Other sections (audio effects) join this module as they land.
 Timings are medians of interleaved repetitions, reported, never asserted. Run
 ``python benchmarks/features.py`` for the table.
 """
@@ -240,6 +244,57 @@ def measure_particle_subemitters(n: int = 3000, repeats: int = 15) -> Row:
     return out
 
 
+def measure_particle_trails(n: int = 3000, points: int = 12, repeats: int = 15) -> Row:
+    """ms per frame for ``n`` particles with ``points``-point trails: sampling and
+    strip upload, beside the particles' own update and quad upload."""
+    from kge import App, ParticleTrail, Transform
+    from kge.components.particles import ParticleEmitter
+    from kge.particles import Particles
+    from kge.render.particle_trails import TrailDrawer
+    from kge.render.particles import ParticleDrawer
+    from kge.systems.particle_effects import ParticleEffectsSystem
+    from kge.systems.particles import ParticleSystem
+    from kge.systems.render import RenderSystem
+
+    def scene(world: Any) -> None:
+        world.spawn(Transform(), ParticleEmitter(
+            rate=float(n), lifetime=1.0, speed=(2.0, 5.0), spread=1.2, acceleration=(0.0, -9.8),
+            max_particles=n + n // 10, prewarm=1.0, seed=1),
+            ParticleTrail(duration=0.4, points=points, width=(0.1, 0.0)))  # fmt: skip
+
+    app = App(scene, headless=True, size=(320, 180))
+    app.step(1)
+    app.render()
+    world = app.world
+    update, effects = world.get_system(ParticleSystem), world.get_system(ParticleEffectsSystem)
+    view = world.get_system(RenderSystem)
+    assert update is not None and effects is not None and view is not None
+    quads = ParticleDrawer(world, view.view.batch, view.view.groups)
+    strips = TrailDrawer(world, view.view.batch, view.view.groups)
+    st = world.resource(Particles).state(1)
+    em, trail = world.get(1, ParticleEmitter), world.get(1, ParticleTrail)
+    times: dict[str, list[float]] = {"update": [], "upload": [], "record": [], "strips": []}
+    for _ in range(repeats):
+        marks = [time.perf_counter()]
+        update.process(1 / 60)
+        marks.append(time.perf_counter())
+        quads.upload(1, em, st)
+        marks.append(time.perf_counter())
+        effects.process(1 / 60)
+        marks.append(time.perf_counter())
+        strips.upload(1, em, st, trail)
+        marks.append(time.perf_counter())
+        for key, a, b in zip(times, marks, marks[1:], strict=False):
+            times[key].append((b - a) * 1e3)
+    out = {k: statistics.median(v) for k, v in times.items()}
+    out["particles"] = float(st.pool.count)
+    out["points"] = float(points)
+    quads.close()
+    strips.close()
+    app.close()
+    return out
+
+
 def _finish() -> None:
     from pyglet import gl
 
@@ -260,6 +315,8 @@ def run_features(quick: bool, progress: Any) -> tuple[dict[str, Row], str | None
         progress("particle sub-emitters")
         out["particle_subemitters"] = measure_particle_subemitters(600 if quick else 3000,
                                                                    repeats)  # fmt: skip
+        progress("particle trails")
+        out["particle_trails"] = measure_particle_trails(600 if quick else 3000, 12, repeats)
         progress("gizmos")
         out["gizmos"] = measure_gizmos(200 if quick else 1000, repeats)
     except Exception as err:  # no GL (headless EGL missing): report, do not fail the run
@@ -314,6 +371,19 @@ def feature_lines(features: dict[str, Row]) -> list[str]:
             "| without sub-emitters | with | extra |",
             "|---:|---:|---:|",
             f"| {se['plain_ms']:.3f} ms | {se['subs_ms']:.3f} ms | {se['extra_ms']:.3f} ms |",
+        ]
+    tr = features.get("particle_trails")
+    if tr:
+        out += [
+            "",
+            f"Particle trails, {tr['particles']:,.0f} live particles with {tr['points']:.0f}-point "
+            "trails, median ms per frame:",
+            "",
+            "| particles: update | particles: quad upload | trails: sampling | trails: strip "
+            "upload |",
+            "|---:|---:|---:|---:|",
+            f"| {tr['update']:.3f} | {tr['upload']:.3f} | {tr['record']:.3f} "
+            f"| {tr['strips']:.3f} |",
         ]
     g = features.get("gizmos")
     if g:

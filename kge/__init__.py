@@ -67,6 +67,7 @@ from kge.components.material import Material, Shader, ShaderWarning
 from kge.components.particle_flipbook import ParticleFlipbook
 from kge.components.particle_stretch import ParticleStretch
 from kge.components.particle_subemitters import ParticleSubEmitters, SubEmitEvent, SubEmitter
+from kge.components.particle_trail import ParticleTrail, TrailMode
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     BurstOnHit,
@@ -393,6 +394,7 @@ __all__ = [
     "ParticleSpace",
     "ParticleStretch",
     "ParticleSubEmitters",
+    "ParticleTrail",
     "ParticleTurbulence",
     "Particles",
     "ParticlesPlugin",
@@ -455,6 +457,7 @@ __all__ = [
     "TilemapPlugin",
     "TilemapWarning",
     "Time",
+    "TrailMode",
     "Transform",
     "Transition",
     "Tween",

@@ -21,6 +21,7 @@ from kge.components.particles import ParticleEmitter
 from kge.particles import flipbook
 from kge.particles.emitter import EmitterState, Particles
 from kge.render.groups import Groups
+from kge.render.particle_trails import TrailDrawer
 from kge.render.particles import FORMATS, ParticleDrawer, _EmitterMesh, _vertex_rows, _view
 
 _VERTEX = """#version 150 core
@@ -82,6 +83,7 @@ class EffectDrawer(ParticleDrawer):
     def __init__(self, world: Any, batch: Any, groups: Groups) -> None:
         super().__init__(world, batch, groups)
         self.plain = ParticleDrawer(world, batch, groups)
+        self.trails = TrailDrawer(world, batch, groups)
 
     def draw(self, frame: Any) -> None:
         particles = self.world.try_resource(Particles)
@@ -101,6 +103,7 @@ class EffectDrawer(ParticleDrawer):
             if dropped is not None:
                 dropped.vertex_list.delete()
             mine.upload(entity, em, st)
+        self.trails.draw()
 
     def more(self, entity: int, em: ParticleEmitter, st: EmitterState, mesh: _EmitterMesh,
              n: int) -> None:  # fmt: skip
@@ -131,3 +134,4 @@ class EffectDrawer(ParticleDrawer):
     def close(self) -> None:
         super().close()
         self.plain.close()
+        self.trails.close()

@@ -6,7 +6,8 @@
   sub-emitters fire at the births, collisions and deaths of their parents' particles
   (in entity order, at most :data:`GENERATIONS` generations of a chain per frame; a
   parent despawned this frame, a finished one-shot, still fires for its last
-  deaths), then the particles born this frame get their flipbook start frames.
+  deaths), then the particles born this frame get their flipbook start frames, and
+  trails sample their particles' positions into their ring buffers.
 """
 
 from __future__ import annotations
@@ -14,11 +15,12 @@ from __future__ import annotations
 from kge.components.particle_flipbook import ParticleFlipbook
 from kge.components.particle_stretch import ParticleStretch
 from kge.components.particle_subemitters import ParticleSubEmitters
+from kge.components.particle_trail import ParticleTrail, TrailMode
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import ParticleEmitter
 from kge.components.tracked import validate_writes
 from kge.errors import ValidationError, where
-from kge.particles import flipbook, subemit
+from kge.particles import flipbook, subemit, trails
 from kge.particles.emitter import EmitterState, Particles
 from kge.plugin import Plugin
 from kge.schedule import Stage, System, SystemSet
@@ -53,6 +55,10 @@ class ParticleEffectsSystem(System):
             st = particles.state(e)
             fs = flipbook.state(st, e if em.seed is None else em.seed)
             flipbook.start_new(st, fs, fb.count, fb.random_start)
+        for e, (trail, _em) in self.world.query(ParticleTrail, ParticleEmitter):
+            if trail.mode is TrailMode.PARTICLE:
+                st = particles.state(e)
+                trails.record(st, trails.state(st, trail.points), trail.duration, dt)
 
 
     def _sub_emit(self) -> None:
@@ -112,5 +118,6 @@ class ParticleEffectsPlugin(Plugin):
         world.add_system(ParticleEffectsSystem())
         world.validator(ParticleSubEmitters,
                         lambda entity, subs: _check_subemitters(world, entity, subs))
-        for kind in (ParticleTurbulence, ParticleFlipbook, ParticleStretch, ParticleSubEmitters):
+        for kind in (ParticleTurbulence, ParticleFlipbook, ParticleStretch, ParticleSubEmitters,
+                     ParticleTrail):  # fmt: skip
             validate_writes(world, kind)

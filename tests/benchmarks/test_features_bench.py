@@ -9,6 +9,7 @@ from benchmarks.features import (
     measure_gizmos,
     measure_particle_forces,
     measure_particle_subemitters,
+    measure_particle_trails,
     measure_particle_turbulence,
     measure_timings,
 )
@@ -44,6 +45,13 @@ def test_the_sub_emitter_row_times_both_scenes_and_the_sparks_exist() -> None:
     assert 150 <= r["particles"] <= 250 and r["spawned"] > 0
     assert r["plain_ms"] > 0 and r["subs_ms"] > 0
     assert "Particle sub-emitters, " in "\n".join(feature_lines({"particle_subemitters": r}))
+
+
+def test_the_trail_row_times_sampling_and_strips() -> None:
+    r = measure_particle_trails(200, 6, repeats=2)
+    assert 150 <= r["particles"] <= 250 and r["points"] == 6
+    assert all(r[k] > 0 for k in ("update", "upload", "record", "strips"))
+    assert "Particle trails, " in "\n".join(feature_lines({"particle_trails": r}))
 
 
 def test_the_section_reaches_the_report_and_its_targets() -> None:

@@ -2,7 +2,7 @@
 
 Physics bodies fall and collide; an emitter with a seed sprays particles that inherit
 its body's velocity, swirl in a turbulence field, play flipbook frames from random
-starts and burst into bouncing sparks (a sub-emitter) where they die; tweens (a yoyo on a sprite's x, a sequence on its opacity, the
+starts, keep trails and burst into bouncing sparks (a sub-emitter) where they die; tweens (a yoyo on a sprite's x, a sequence on its opacity, the
 camera's zoom) run; an animator plays and changes clips through its parameters; UI
 widgets are written every few frames. :func:`game_hash` hashes every pose, every
 live particle's fields, every tweened value, the animators' clip and frame and the
@@ -31,6 +31,7 @@ from kge import (
     ParticleEmitter,
     ParticleFlipbook,
     ParticleSubEmitters,
+    ParticleTrail,
     ParticleTurbulence,
     RigidBody,
     Slider,
@@ -45,8 +46,8 @@ from kge import (
     UINode,
 )  # fmt: skip
 from kge.assets import Assets
-from kge.components.particles import ParticleCollision
 from kge.components.animation import Transition
+from kge.components.particles import ParticleCollision
 
 from .game_catalogue import _assets_dir
 
@@ -68,7 +69,7 @@ def _scene(root: Any) -> Any:
             ParticleEmitter(rate=120.0, speed=(1.0, 3.0), spread=1.0, lifetime=(0.3, 0.9),
                             inherit_velocity=0.5, drag=0.3, acceleration=(0.0, -4.0), seed=7),
             ParticleTurbulence(strength=3.0, frequency=0.8, speed=0.7, seed=2),
-            ParticleFlipbook(2, 2, fps=8.0, random_start=True),
+            ParticleFlipbook(2, 2, fps=8.0, random_start=True), ParticleTrail(points=6),
             ParticleSubEmitters(SubEmitter(sparks, SubEmitEvent.DEATH, count=3,
                                            inherit_velocity=0.4)),
         )  # fmt: skip

@@ -70,3 +70,31 @@ def test_a_fast_particle_is_drawn_long_along_its_velocity(make_app) -> None:
     assert abs((x1 - x0 + 1) - 2.4 * PPM) <= 2 and abs((y1 - y0 + 1) - 0.4 * PPM) <= 2
     x0, x1, y0, y1 = bbox(mask(px, RED, tol=30))
     assert abs((y1 - y0 + 1) - 1.0 * PPM) <= 2 and abs((x1 - x0 + 1) - 0.4 * PPM) <= 2  # capped
+
+
+def test_a_trail_is_a_band_behind_its_particle_and_a_ribbon_joins_them(make_app) -> None:
+    from kge.components.particle_trail import ParticleTrail, TrailMode
+
+    def scene(world):
+        world.insert_resource(Camera(pixels_per_meter=PPM))
+        # moving +x at 5 m/s, a 0.4 s trail 0.5 m wide: a 2 m band behind the particle
+        world.spawn(Transform(-4.0, 2.0), ParticleEmitter(
+            burst=1, speed=5.0, direction=0.0, lifetime=5.0, size=0.0, color=(255, 255, 255)),
+            ParticleTrail(duration=0.4, points=8, width=0.5, color=(0, 255, 0),
+                          opacity=255))  # fmt: skip
+        # one particle a frame rising at 1 m/s: the ribbon joins them into a column
+        world.spawn(Transform(-3.0, -2.0), ParticleEmitter(
+            rate=60.0, speed=1.0, lifetime=5.0, size=0.0, seed=2),
+            ParticleTrail(mode=TrailMode.RIBBON, width=0.4, color=(255, 0, 0),
+                          opacity=255))  # fmt: skip
+
+    app = make_app(scene)
+    app.step(1 + 36)  # the green particle at x = -4 + 5 x 0.6 = -1
+    px = pixels(app)
+    x0, x1, y0, y1 = bbox(mask(px, GREEN, tol=30))
+    head = SIZE[0] / 2 + (-1.0) * PPM
+    assert abs(x1 + 1 - head) <= 2 and abs((x1 - x0 + 1) - 2.0 * PPM) <= 0.2 * PPM + 2
+    assert abs((y1 - y0 + 1) - 0.5 * PPM) <= 2
+    x0, x1, y0, y1 = bbox(mask(px, RED, tol=30))
+    assert abs((y1 - y0 + 1) - 0.6 * PPM) <= 2  # the oldest is 0.6 s old: 0.6 m up
+    assert abs((x1 - x0 + 1) - 0.4 * PPM) <= 2 and abs(y0 - (SIZE[1] / 2 - 2.0 * PPM)) <= 1

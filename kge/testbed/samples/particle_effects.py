@@ -10,6 +10,7 @@ from kge.components import Name, Transform
 from kge.components.particle_flipbook import ParticleFlipbook
 from kge.components.particle_stretch import ParticleStretch
 from kge.components.particle_subemitters import ParticleSubEmitters, SubEmitEvent, SubEmitter
+from kge.components.particle_trail import ParticleTrail, TrailMode
 from kge.components.particle_turbulence import ParticleTurbulence
 from kge.components.particles import (
     Blend,
@@ -150,3 +151,32 @@ def _rockets_burst_and_rain_splashes(app) -> None:  # type: ignore[no-untyped-de
     assert particles.state(named(app.world, "embers")[0]).born == rockets.born
     drops = particles.positions(named(app.world, "splash")[0])
     assert len(drops) > 20 and drops[:, 1].min() > -1.1, "splashes start on the ground"
+
+
+@sample("Particles", "Trails And Ribbons", help="Left: comets with tapering, cooling trails "
+        "(0.4 s of path in 12 samples each, ring buffers in numpy). Right: a ribbon joins a "
+        "stream of particles rising through a turbulence field.", camera=(0.0, 3.0, 1.0))
+def trails_and_ribbons(world: World) -> None:
+    world.spawn(Transform(-4.0, 0.0), Name("comets"), ParticleEmitter(
+        rate=12.0, speed=(6.0, 8.0), spread=0.8, direction=1.25, lifetime=(1.4, 1.8),
+        acceleration=(0.0, -6.0), size=0.18, color=((255, 240, 180),), blend=Blend.ADDITIVE,
+        seed=11,
+    ), ParticleTrail(duration=0.4, points=12, width=(0.16, 0.0),
+                     color=((255, 200, 80), (255, 40, 0)), opacity=(255, 0)))  # fmt: skip
+    world.spawn(Transform(3.5, 0.0), Name("stream"), ParticleEmitter(
+        rate=40.0, speed=1.5, lifetime=3.0, size=0.0, seed=12,
+    ), ParticleTurbulence(strength=2.0, frequency=0.5, speed=0.3, seed=1),
+        ParticleTrail(mode=TrailMode.RIBBON, width=(0.35, 0.05), color=((80, 200, 255),),
+                      opacity=(255, 40)))  # fmt: skip
+
+
+@trails_and_ribbons.claim
+def _trails_lie_behind_their_comets(app) -> None:  # type: ignore[no-untyped-def]
+    from kge.particles import trails
+
+    st = app.world.resource(Particles).state(named(app.world, "comets")[0])
+    lines = trails.polylines(st, st.extras[trails.KEY])
+    old = st.pool.age[: st.pool.count] > 0.5
+    vel = st.pool.vel[: st.pool.count][old]
+    back = (lines[:, old, 0] - lines[:, old, -1]).T  # head minus tail: along the flight
+    assert old.sum() > 3 and np.all(np.sum(back * vel, axis=1) > 0)
