@@ -69,14 +69,16 @@ def record(st: EmitterState, ts: dict[str, Any], duration: float, dt: float) -> 
         ring[ts["head"], :, :n] = pool.data[0:2, :n]
 
 
-def polylines(st: EmitterState, ts: dict[str, Any]) -> np.ndarray:
+def polylines(st: EmitterState, ts: dict[str, Any], out: np.ndarray | None = None
+              ) -> np.ndarray:  # fmt: skip
     """(2, n, points + 1) x and y planes of each live particle's trail: its position,
-    then its samples from the newest to the oldest (in the emitter's space)."""
+    then its samples from the newest to the oldest (in the emitter's space); into
+    ``out`` (at least that big) when given."""
     pool = st.pool
     n = pool.count
     p = ts["points"]
     order = (ts["head"] - np.arange(p)) % p
-    out = np.empty((2, n, p + 1), np.float32)
+    out = np.empty((2, n, p + 1), np.float32) if out is None else out[:, :n, : p + 1]
     out[:, :, 0] = pool.data[0:2, :n]
     out[:, :, 1:] = _ring(st, ts)[order, :, :n].transpose(1, 2, 0)
     return out
@@ -91,23 +93,30 @@ def ribbon(st: EmitterState) -> np.ndarray:
     return pool.data[0:2, :n][:, order][:, None, :]
 
 
-def strip(lines: np.ndarray, widths: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+def strip(lines: np.ndarray, widths: np.ndarray, out: np.ndarray | None = None,
+          work: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """(s, m, 2, 2) left and right edge points of the ``s`` lines of ``m`` points in the
     x and y planes ``lines`` (2, s, m), each point ``widths[j]`` wide across the line's
     direction there (a point whose neighbours coincide gets no width); into ``out``.
 
     Points are complex numbers here (x + iy): a turn by 90 degrees is a product by i,
-    and each vertex is written as one 8-byte value."""
-    p = np.empty(lines.shape[1:], np.complex64)
+    and each vertex is written as one 8-byte value. ``work``: scratch arrays (complex,
+    complex, float32, each at least (s, m)) reused from frame to frame, as fresh pages
+    are what a loaded machine makes slow."""
+    s_, m = lines.shape[1:]
+    if work is None:
+        p, t, length = (np.empty((s_, m), np.complex64), np.empty((s_, m), np.complex64),
+                        np.empty((s_, m), np.float32))  # fmt: skip
+    else:
+        p, t, length = (w[:s_, :m] for w in work)
     p.real, p.imag = lines[0], lines[1]
-    t = np.empty_like(p)
     np.subtract(p[:, 2:], p[:, :-2], out=t[:, 1:-1])
     t[:, 0] = p[:, 1] - p[:, 0]
     t[:, -1] = p[:, -1] - p[:, -2]
-    length = np.abs(t)
-    half = np.broadcast_to(widths * np.float32(0.5), length.shape)
-    scale = np.divide(half, length, out=np.zeros_like(length), where=length > 0)
-    t *= scale
+    np.abs(t, out=length)
+    np.maximum(length, np.float32(1e-30), out=length)  # t is 0 there: the width too
+    np.divide(widths * np.float32(0.5), length, out=length)
+    t *= length
     t *= np.complex64(1j)  # across the line, to the left
     if out is None:
         out = np.empty((p.shape[0], p.shape[1], 2, 2), np.float32)

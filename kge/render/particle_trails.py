@@ -56,7 +56,7 @@ def _strip_indices(strips: int, m: int) -> np.ndarray:
 
 
 class _TrailMesh:
-    __slots__ = ("key", "points", "strips", "vertex_list", "written")
+    __slots__ = ("key", "lines", "points", "shades", "strips", "vertex_list", "work", "written")
 
     def __init__(self, vertex_list: Any, strips: int, points: int, key: tuple[Any, ...]) -> None:
         self.vertex_list = vertex_list
@@ -64,6 +64,12 @@ class _TrailMesh:
         self.points = points
         self.key = key
         self.written = 0
+        # scratch reused every frame (no fresh pages per frame)
+        self.lines = np.empty((2, strips, points), np.float32)
+        self.work = (np.empty((strips, points), np.complex64),
+                     np.empty((strips, points), np.complex64),
+                     np.empty((strips, points), np.float32))  # fmt: skip
+        self.shades = np.empty((strips, points, 4), np.uint16)
 
 
 class TrailDrawer:
@@ -124,14 +130,18 @@ class TrailDrawer:
         if ribbon:
             strips, points = 1, max(st.pool.capacity, 2)
             lines = trails.ribbon(st) if n >= 2 else np.zeros((2, 0, 2), np.float32)
+            if len(lines[0]) == 0 and entity not in self.meshes:
+                return
         else:
             ts = trails.state(st, trail.points)
             strips, points = max(st.pool.capacity, 1), trail.points + 1
-            lines = trails.polylines(st, ts) if n else np.zeros((2, 0, points), np.float32)
-        live, m = lines.shape[1], lines.shape[2]
-        if live == 0 and entity not in self.meshes:
-            return
+            if n == 0 and entity not in self.meshes:
+                return
         mesh = self._mesh(entity, em, strips, points)
+        if not ribbon:
+            lines = (trails.polylines(st, ts, mesh.lines) if n
+                     else np.zeros((2, 0, points), np.float32))  # fmt: skip
+        live, m = lines.shape[1], lines.shape[2]
         vl = mesh.vertex_list
         lo = vl.start
         pos, pbuf = _view(vl, "position")
@@ -147,14 +157,15 @@ class TrailDrawer:
                 lines[0] = np.float32(x) + c * lx - s * ly
                 lines[1] = np.float32(y) + s * lx + c * ly
             widths, rgba = trails.looks(trail, m)
-            trails.strip(lines, widths, out=pos4[:live, :m])
+            trails.strip(lines, widths, out=pos4[:live, :m], work=mesh.work)
             if ribbon:
                 shades = rgba[None].astype(np.uint8)
                 pos4[0, m:] = pos4[0, m - 1, 0]  # the unused rest: one point
             else:  # times each particle's current colour: (a x b + 255) >> 8 ~ a x b / 255
                 _, colors = st.looks()
-                tint = colors.view(np.uint8).reshape(-1, 1, 4).astype(np.uint16)
-                wide = tint * rgba[None]
+                tint = colors.view(np.uint8).reshape(-1, 1, 4)
+                wide = mesh.shades[:live, :m]
+                np.multiply(tint, rgba[None], out=wide)
                 wide += 255
                 wide >>= 8
                 shades = wide.astype(np.uint8)
