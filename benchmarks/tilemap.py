@@ -3,7 +3,7 @@
 What is timed, in one run:
 
 * ``load_s``: ``kge.load_map`` on a TMX file (CSV data) written beforehand:
-  parsing (pytiled-parser), numpy grids, tracing the solid outlines, spawning
+  parsing (kge.tilemap.source), numpy grids, tracing the solid outlines, spawning
   the static colliders, and the first physics step that puts them into the
   pymunk space; the map's drawing data is its numpy grid, so nothing else is
   built up front (chunk vertex lists are made when they come into view);

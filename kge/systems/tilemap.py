@@ -31,7 +31,9 @@ class TilemapPlugin(Plugin):
         maps_in(world)
         world.add_system(TileAnimationSystem())
         if not world.has_resource(MapFiles):
-            world.insert_resource(MapFiles(lambda name: map_file(world, name)))
+            world.insert_resource(
+                MapFiles(lambda name: map_file(world, name), lambda: asset_roots(world))
+            )
         state: dict[str, Any] = {}
 
         def draw_maps(frame: Any) -> None:
@@ -53,7 +55,7 @@ def map_file(world: World, name: str | Path) -> Path:
     """
     p = Path(name)
     if p.is_absolute() or p.is_file():
-        return p
+        return p.resolve()  # relative to the working directory now, never later
     from kge.assets import assets_for
 
     try:
@@ -66,6 +68,13 @@ def map_file(world: World, name: str | Path) -> Path:
             "Tiled maps and their tilesets must be files on disk"
         )
     return found.path
+
+
+def asset_roots(world: World) -> list[Path]:
+    """The folders of the world's asset store: a map's files may be there too."""
+    from kge.assets import DirLocation, assets_for
+
+    return [loc.root for loc in assets_for(world).locations if isinstance(loc, DirLocation)]
 
 
 __all__ = ["MapFiles", "TileMaps", "TilemapPlugin", "map_file"]

@@ -231,9 +231,14 @@ class LayerCollision:
         units = self.data.units
         w, h = float(table.rect[gid, 2]), float(table.rect[gid, 3])
         ox, oy = (float(v) for v in table.offset[gid])
-        # the tile image's top-left in map pixels (tiles sit on the cell's bottom-left)
-        left = units.left_px + c * units.tile_w + ox
-        top = (self.data.units.row0 + r + 1) * units.tile_h - h + oy
+        # the tile image's top-left in map pixels (tiles sit on the cell box's bottom-left)
+        grid = self.data.grid
+        if grid is None:
+            left = units.left_px + c * units.tile_w + ox
+            top = (self.data.units.row0 + r + 1) * units.tile_h - h + oy
+        else:
+            bx, by, _, bh = grid.cell_box(c, r)
+            left, top = bx + ox, by + bh - h + oy
         cx, cy = units.point(left + w / 2, top + h / 2)
         mat = self.materials[int(self.material[r, c])]
         out = []

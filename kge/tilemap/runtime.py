@@ -17,8 +17,10 @@ import numpy as np
 
 from kge.errors import KgeError
 from kge.gcpause import without_gc
+from kge.tilemap.cellcollision import CellCollision
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
+from kge.tilemap.files import MapLimits
 from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, MapData, TileLayerData
 from kge.tilemap.objects import Spawners, SpawnFn, Unknown, object_components
 from kge.tilemap.parse import read_map
@@ -41,6 +43,9 @@ class MapFiles:
     """
 
     resolve: Callable[[str | Path], Path]
+    #: folders besides a map's own that its tilesets, templates and images may be in
+    #: (TilemapPlugin: the asset store's folders)
+    roots: Callable[[], Iterable[Path]] = tuple
 
 
 @dataclass(slots=True)
@@ -64,7 +69,7 @@ class TileMap:
         self.world = world
         self.data = data
         self.draw_layer = draw_layer
-        self.collision: dict[str, LayerCollision] = {}
+        self.collision: dict[str, LayerCollision | CellCollision] = {}
         self.objects: list[int] = []  #: entities spawned from map objects
         self.colliders: list[int] = []  #: static collider entities from tile layers (initial)
         self._live: dict[int, Piece] = {}  #: collider entity -> piece
@@ -88,28 +93,78 @@ class TileMap:
         return self.data.units
 
     @property
+    def orientation(self) -> str:
+        """ "orthogonal", "isometric", "staggered" or "hexagonal"."""
+        return self.data.orientation
+
+    @property
     def bounds(self) -> tuple[float, float, float, float]:
-        """(left, bottom, right, top) of the tile grid in metres: clamp the camera to it."""
+        """(left, bottom, right, top) of the map in metres: clamp the camera to it."""
         u = self.data.units
-        w, h = u.tile_size
-        return (
-            u.origin[0],
-            u.origin[1],
-            u.origin[0] + self.data.cols * w,
-            u.origin[1] + self.data.rows * h,
-        )
+        grid = self.data.grid
+        if grid is None or grid.orientation == "orthogonal":
+            w, h = u.tile_size
+            return (
+                u.origin[0],
+                u.origin[1],
+                u.origin[0] + self.data.cols * w,
+                u.origin[1] + self.data.rows * h,
+            )
+        pw, ph = grid.size_px
+        return (u.origin[0], u.origin[1], u.origin[0] + u.length(pw), u.origin[1] + u.length(ph))
+
+    def map_to_world(self, px: float, py: float) -> tuple[float, float]:
+        """Tiled map pixels (y down from the map's top-left) as world metres (y up)."""
+        return self.data.units.point(float(px), float(py))
+
+    def world_to_map(self, x: float, y: float) -> tuple[float, float]:
+        """World metres as Tiled map pixels: :meth:`map_to_world` inverted."""
+        return self.data.units.pixel(float(x), float(y))
 
     def cell_at(self, point: tuple[float, float]) -> tuple[int, int] | None:
-        """The (column, row) under a world point (row 0 at the top), or None outside the map."""
-        col, row = self.data.units.cell_at(float(point[0]), float(point[1]))
+        """The (column, row) whose cell holds a world point (row 0 at the top), or None.
+
+        Any orientation: diamonds on isometric maps, hexagons on hexagonal ones.
+        """
+        grid = self.data.grid
+        if grid is None or grid.orientation == "orthogonal":
+            col, row = self.data.units.cell_at(float(point[0]), float(point[1]))
+        else:
+            col, row = grid.cell_at(*self.world_to_map(*point))
         if 0 <= col < self.data.cols and 0 <= row < self.data.rows:
             return col, row
         return None
 
     def cell_center(self, col: int, row: int) -> tuple[float, float]:
-        """World centre of a grid cell."""
-        x, y = self.data.units.corner(col + 0.5, row + 0.5)
-        return (x, y)
+        """World centre of a grid cell (of its diamond or hexagon on other orientations)."""
+        grid = self.data.grid
+        if grid is None or grid.orientation == "orthogonal":
+            x, y = self.data.units.corner(col + 0.5, row + 0.5)
+            return (x, y)
+        bx, by, w, h = grid.cell_box(col, row)
+        return self.map_to_world(bx + w / 2, by + h / 2)
+
+    def cell_outline(self, col: int, row: int) -> list[tuple[float, float]]:
+        """The cell's corners in world metres (a rectangle, diamond or hexagon)."""
+        grid = self.data.grid
+        if grid is None:
+            raise TilemapError(f"{self.path}: the map has no grid")
+        return [self.map_to_world(x, y) for x, y in grid.cell_outline(col, row)]
+
+    def depth_order(self, point: tuple[float, float]) -> int:
+        """The ``Sprite.order`` that draws a sprite standing at ``point`` among the tile rows.
+
+        On isometric, staggered and hexagonal maps tile rows are drawn back to front
+        (each row in its own order, from ``DEPTH_BASE`` up); a sprite with this order
+        is drawn in front of the rows behind its feet and behind the rows in front.
+        Orthogonal maps draw layer by layer: this returns 0 there.
+        """
+        if self.orientation == "orthogonal":
+            return 0
+        from kge.tilemap.objects import DEPTH_BASE, DEPTH_STEPS
+
+        _, py = self.world_to_map(*point)
+        return DEPTH_BASE + round(py * DEPTH_STEPS / max(self.data.units.tile_h, 1))
 
     # -- queries -------------------------------------------------------------------------
     def layer(self, name: str) -> TileLayerData:
@@ -159,6 +214,8 @@ class TileMap:
         flip_diagonal: bool = False,
     ) -> None:
         """Put tile ``gid`` (0 clears) at (col, row): its chunk redraws, its colliders rebuild."""
+        if not self.loaded:
+            raise TilemapError(f"{self.path}: set_tile on a map that was unloaded")
         lay = self.layer(layer)
         self._check_cell(lay, col, row, "set_tile")
         if isinstance(gid, bool) or not isinstance(gid, (int, np.integer)) or gid < 0:
@@ -237,6 +294,8 @@ def load_map(
     layer: int = 0,
     friction: float = DEFAULT_MATERIAL[0],
     restitution: float = DEFAULT_MATERIAL[1],
+    roots: Iterable[str | Path] | None = None,
+    limits: MapLimits | None = None,
 ) -> TileMap:
     """Load a Tiled map into ``world`` in one call and return its :class:`TileMap`.
 
@@ -250,6 +309,10 @@ def load_map(
     (tile layers sort below sprites of the same layer; a layer property
     ``layer`` overrides it).
 
+    The map reads only files inside ``roots`` (default: the map's own folder and
+    the folders of the world's asset store) and checks ``limits`` (default
+    :class:`MapLimits()`) before allocating anything.
+
     On any error a :class:`TilemapError` names the file, layer and object, and
     nothing of the map is left in the world.
     """
@@ -261,7 +324,11 @@ def load_map(
     files = world.try_resource(MapFiles)
     if files is not None:
         path = files.resolve(path)
-    data = read_map(path, pixels_per_meter=pixels_per_meter, origin=origin)
+    if roots is None:
+        roots = list(files.roots()) if files is not None else []
+    data = read_map(
+        path, pixels_per_meter=pixels_per_meter, origin=origin, roots=roots, limits=limits
+    )
     solid_names = set(solid_layers)
     known = {t.name for t in data.tile_layers}
     missing = solid_names - known
@@ -275,7 +342,11 @@ def load_map(
             solid = (
                 lay.name in solid_names or str(lay.properties.get("solid", "")).lower() == "true"
             )
-            coll = LayerCollision(data, lay, solid, base)
+            coll = (
+                LayerCollision(data, lay, solid, base)
+                if data.orientation == "orthogonal"
+                else CellCollision(data, lay, solid, base)
+            )
             tmap.collision[lay.name] = coll
             pieces.extend(coll.build())
     except (KgeError, ValueError) as exc:
@@ -312,3 +383,4 @@ def load_map(
     tmap.colliders = list(tmap._live)
     maps_in(world).maps.append(tmap)
     return tmap
+
