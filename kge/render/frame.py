@@ -161,6 +161,9 @@ class WorldView:
             if row is not None:
                 lag = poses[row, :2] - self.poses.last_live[row, :2]
                 center = (center[0] + float(lag[0]), center[1] + float(lag[1]))
+                # the lag must not carry the view past the bounds: a strip of clear
+                # colour showed at a map's edge while a bounded follow camera started
+                center = cam.clamped(center, viewport)
         world_view = view_matrix(center, cam.scale, viewport)
         self.state.matrices[WORLD] = world_view
         self.state.matrices[TEXT] = scaled(world_view, 1.0 / ppm)

@@ -24,28 +24,51 @@ import pyglet
 from pyglet import gl
 
 from kge.render.groups import WORLD
+from kge.render.images import PixelImage
 from kge.render.passes import Frame
 from kge.render.textures import TextureCache
-from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, LayerStyle, MapData, TileLayerData
+from kge.tilemap.model import (
+    FLIP_D,
+    FLIP_H,
+    FLIP_V,
+    LayerStyle,
+    MapData,
+    TileLayerData,
+    split_gids,
+)
+from kge.tilemap.objects import DEPTH_BASE, DEPTH_STEPS
 from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
 
+# ``local`` is the point inside the tile image (0..1, flips applied; beyond 1 on
+# repeated image layers), ``rect`` the image's (u0, v0, u1, v1) in its texture.
+# Sampling is clamped half a texel inside the rect, so a tile never shows its
+# neighbour's texels in the sheet: no seams at fractional camera positions,
+# zooms below 1 or fractional layer offsets.
 _VERTEX = """#version 330 core
 in vec2 position;
-in vec2 tex_coords;
-out vec2 uv;
+in vec2 local;
+in vec4 rect;
+out vec2 v_local;
+out vec4 v_rect;
 uniform WindowBlock { mat4 projection; mat4 view; } window;
 uniform vec2 shift;
 void main() {
-    uv = tex_coords;
+    v_local = local;
+    v_rect = rect;
     gl_Position = window.projection * window.view * vec4(position + shift, 0.0, 1.0);
 }
 """
 _FRAGMENT = """#version 330 core
-in vec2 uv;
+in vec2 v_local;
+in vec4 v_rect;
 out vec4 color;
 uniform sampler2D tile_texture;
 uniform vec4 tint;
+uniform int wrap;
 void main() {
+    vec2 t = wrap == 1 ? fract(v_local) : clamp(v_local, 0.0, 1.0);
+    vec2 half_texel = 0.5 / vec2(textureSize(tile_texture, 0));
+    vec2 uv = clamp(mix(v_rect.xy, v_rect.zw, t), v_rect.xy + half_texel, v_rect.zw - half_texel);
     color = texture(tile_texture, uv) * tint;
 }
 """
@@ -66,10 +89,13 @@ def tile_program() -> Any:
 class LayerGroup(pyglet.graphics.Group):
     """One layer's texture, tint and shift (offset + parallax), read at draw time."""
 
-    def __init__(self, program: Any, texture: Any, parent: Any) -> None:
-        super().__init__(parent=parent)
+    def __init__(
+        self, program: Any, texture: Any, parent: Any, order: int = 0, wrap: bool = False
+    ) -> None:
+        super().__init__(order=order, parent=parent)
         self.program = program
         self.texture = texture
+        self.wrap = int(wrap)
         self.shift = (0.0, 0.0)
         self.tint = (1.0, 1.0, 1.0, 1.0)
 
@@ -77,6 +103,7 @@ class LayerGroup(pyglet.graphics.Group):
         self.program.use()
         self.program["shift"] = self.shift
         self.program["tint"] = self.tint
+        self.program["wrap"] = self.wrap
         gl.glActiveTexture(gl.GL_TEXTURE0)
         gl.glBindTexture(self.texture.target, self.texture.id)
         gl.glEnable(gl.GL_BLEND)
@@ -103,8 +130,9 @@ def tile_uvs(
     gids: np.ndarray,
     flags: np.ndarray,
     bounds: list[tuple[float, float, float, float]],
-) -> np.ndarray:
-    """(n, 4, 2) texture coordinates of n tiles (corners BL, BR, TR, TL), flips applied.
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per corner (BL, BR, TR, TL) of n tiles: the point inside the tile (n, 4, 2), flips
+    applied, and the tile's (u0, v0, u1, v1) texture rect (n, 4, 4).
 
     ``bounds[i]`` is image i's (u0, v0, u1, v1) inside its texture. Tiled flips
     the image diagonally, then horizontally, then vertically; a corner on
@@ -124,13 +152,16 @@ def tile_uvs(
     sy[fv] = 1.0 - sy[fv]
     sx[fh] = 1.0 - sx[fh]
     sx[fd], sy[fd] = sy[fd].copy(), sx[fd].copy()
-    # image fraction (u right, v up from the image's bottom)
-    u = (x[:, None] + sx * w[:, None]) / iw[:, None]
-    v = 1.0 - (y[:, None] + sy * h[:, None]) / ih[:, None]
-    out = np.empty((len(gids), 4, 2), np.float32)
-    out[..., 0] = b[:, 0, None] + u * (b[:, 2, None] - b[:, 0, None])
-    out[..., 1] = b[:, 1, None] + v * (b[:, 3, None] - b[:, 1, None])
-    return out
+    local = np.empty((len(gids), 4, 2), np.float32)
+    local[..., 0] = sx
+    local[..., 1] = 1.0 - sy  # v up
+    # the tile's rect in the texture (u right, v up from the image's bottom)
+    u0 = b[:, 0] + x / iw * (b[:, 2] - b[:, 0])
+    u1 = b[:, 0] + (x + w) / iw * (b[:, 2] - b[:, 0])
+    v0 = b[:, 1] + (1.0 - (y + h) / ih) * (b[:, 3] - b[:, 1])
+    v1 = b[:, 1] + (1.0 - y / ih) * (b[:, 3] - b[:, 1])
+    rect = np.repeat(np.stack([u0, v0, u1, v1], axis=-1)[:, None, :], 4, axis=1)
+    return local, rect.astype(np.float32)
 
 
 def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarray) -> np.ndarray:
@@ -143,8 +174,12 @@ def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarr
     t = data.tiles
     w, h = t.rect[gids, 2].astype(float), t.rect[gids, 3].astype(float)
     ox, oy = t.offset[gids, 0].astype(float), t.offset[gids, 1].astype(float)
-    left = u.left_px + cols * u.tile_w + ox
-    bottom = (u.row0 + rows + 1) * u.tile_h + oy
+    if data.grid is None:
+        left = u.left_px + cols * u.tile_w + ox
+        bottom = (u.row0 + rows + 1) * u.tile_h + oy
+    else:
+        bx, by, _, bh = data.grid.cell_boxes(cols, rows)
+        left, bottom = bx + ox, by + bh + oy
     px = left[:, None] + _SX * w[:, None]
     py = bottom[:, None] - (1.0 - _SY) * h[:, None]
     x, y = u.points(px, py)
@@ -157,30 +192,73 @@ class _Chunk:
     anim_key: tuple[int, ...] = ()
 
 
+def map_image(path: Any, key: tuple[int, int, int] | None) -> PixelImage:
+    """A map image as RGBA pixels (Pillow), its transparent colour made transparent."""
+    from PIL import Image
+
+    with Image.open(path) as im:
+        rgba = np.asarray(im.convert("RGBA"), np.uint8).copy()
+    if key is not None:
+        rgba[(rgba[..., :3] == np.array(key, np.uint8)).all(axis=-1)] = 0
+    return PixelImage(rgba.shape[1], rgba.shape[0], rgba[::-1].tobytes())
+
+
+def _quad_list(
+    program: Any, n: int, batch: Any, group: Any, pos: Any, local: Any, rect: Any
+) -> Any:
+    base = (np.arange(n) * 4)[:, None]
+    idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
+    return program.vertex_list_indexed(
+        n * 4,
+        gl.GL_TRIANGLES,
+        idx.tolist(),
+        batch=batch,
+        group=group,
+        position=("f", np.ascontiguousarray(pos, np.float32).ravel()),
+        local=("f", np.ascontiguousarray(local, np.float32).ravel()),
+        rect=("f", np.ascontiguousarray(rect, np.float32).ravel()),
+    )
+
+
 class MapDrawing:
-    """The drawing state of one map: textures, groups and live chunks."""
+    """The drawing state of one map: textures, groups and live chunks.
+
+    Orthogonal layers draw layer by layer, as Tiled does. On isometric, staggered
+    and hexagonal maps each chunk draws its tiles in Tiled's order (back to front)
+    and chunks draw back to front too (taller tiles overlap the row behind them);
+    a tile layer with the property ``depth_sort: true`` draws each row of tiles at
+    its own depth order instead, so sprites with ``TileMap.depth_order`` (and the
+    map's tile objects) are drawn between the rows in front and behind them.
+    """
 
     def __init__(self, tmap: TileMap, textures: TextureCache) -> None:
         self.map = tmap
         self.textures = textures
         self.program = tile_program()
         data = tmap.data
-        self.tex = [textures.texture(str(p)) for p in data.tiles.images]
+        self.tex = [
+            textures.texture(map_image(p, k))
+            for p, k in zip(data.tiles.images, data.tiles.image_keys or [None] * 0, strict=False)
+        ]
         self.bounds = [_tex_bounds(t) for t in self.tex]
-        self.groups: dict[tuple[int, int], LayerGroup] = {}
+        self.groups: dict[tuple[int, int, int], LayerGroup] = {}
         self.chunks: dict[tuple[int, int, int], _Chunk] = {}
-        self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group)
+        self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group, view)
+        self.extras: list[tuple[Any, LayerGroup, Any]] = []  # (list, group, style)
         self.animated = np.zeros(max(data.tiles.size, 1), bool)
         for g in data.tiles.animations:
             self.animated[g] = True
+        self._objects_built = False
 
     def group(
-        self, frame: Frame, li: int, image: int, texture: Any, draw_layer: int, order: int
+        self, frame: Frame, li: int, image: int, sub: int, draw_layer: int, order: int
     ) -> LayerGroup:
-        g = self.groups.get((li, image))
+        g = self.groups.get((li, image, sub))
         if g is None:
             parent = frame.groups.get(draw_layer, WORLD, order)
-            g = self.groups[(li, image)] = LayerGroup(self.program, texture, parent)
+            g = self.groups[(li, image, sub)] = LayerGroup(
+                self.program, self.tex[image], parent, order=sub
+            )
         return g
 
     def draw(self, frame: Frame) -> None:
@@ -204,12 +282,14 @@ class MapDrawing:
                 if chunk is None or chunk.anim_key != anim:
                     self._drop(key)
                     self.chunks[key] = self._build(frame, li, layer, key, anim, draw_layer, order)
-            for (gl_li, _), g in self.groups.items():
+            for (gl_li, _, _), g in self.groups.items():
                 if gl_li == li:
                     g.shift, g.tint = shift, tint
         for key in [k for k in self.chunks if k not in wanted]:
             self._drop(key)
+        self._background(frame)
         self._image_layers(frame)
+        self._tile_objects(frame)
 
     def _placement(self, props: dict[str, Any], index: int) -> tuple[int, int]:
         layer = props.get("layer", self.map.draw_layer)
@@ -220,8 +300,11 @@ class MapDrawing:
     ) -> list[tuple[int, int, int]]:
         data = self.map.data
         u = data.units
-        tw, th = u.tile_size
         left, bottom, right, top = frame.view
+        grid = data.grid
+        if grid is not None and grid.orientation != "orthogonal":
+            return self._visible_cells(frame, li, shift)
+        tw, th = u.tile_size
         # the layer is drawn moved by ``shift``: look at the view moved back
         c0 = math.floor((left - shift[0] - u.origin[0]) / tw) - 1
         c1 = math.floor((right - shift[0] - u.origin[0]) / tw) + 1
@@ -232,6 +315,44 @@ class MapDrawing:
         if c1 < 0 or r1 < 0 or c0 >= data.cols or r0 >= data.rows:
             return []
         return [(li, cr, cc) for cr in range(cr0, cr1 + 1) for cc in range(cc0, cc1 + 1)]
+
+    def _visible_cells(
+        self, frame: Frame, li: int, shift: tuple[float, float]
+    ) -> list[tuple[int, int, int]]:
+        """Chunks whose cells' boxes (grown by the tallest tile) meet the view."""
+        data = self.map.data
+        grid = data.grid
+        assert grid is not None
+        u = data.units
+        left, bottom, right, top = frame.view
+        x0, y0 = u.pixel(left - shift[0], top - shift[1])  # map pixels, y down
+        x1, y1 = u.pixel(right - shift[0], bottom - shift[1])
+        tall = float(data.tiles.rect[:, 3].max(initial=0)) + abs(
+            float(data.tiles.offset.min(initial=0))
+        )
+        wide = float(data.tiles.rect[:, 2].max(initial=0))
+        y1 += tall  # a tall tile below the view reaches up into it
+        x0 -= wide
+        nr, nc = -(-data.rows // CHUNK), -(-data.cols // CHUNK)
+        key = ("cells", nr, nc)
+        boxes = self.__dict__.get("_chunk_boxes")
+        if boxes is None or boxes[0] != key:
+            cr, cc = np.meshgrid(np.arange(nr), np.arange(nc), indexing="ij")
+            corners = []
+            for dr, dc in ((0, 0), (0, 1), (1, 0), (1, 1)):
+                rr = np.minimum(cr * CHUNK + dr * (CHUNK - 1), data.rows - 1)
+                ccs = np.minimum(cc * CHUNK + dc * (CHUNK - 1), data.cols - 1)
+                bx, by, w, h = grid.cell_boxes(ccs, rr)
+                corners.append((bx, by, bx + w, by + h))
+            lo_x = np.minimum.reduce([c[0] for c in corners])
+            lo_y = np.minimum.reduce([c[1] for c in corners])
+            hi_x = np.maximum.reduce([c[2] for c in corners])
+            hi_y = np.maximum.reduce([c[3] for c in corners])
+            boxes = (key, cr, cc, lo_x, lo_y, hi_x, hi_y)
+            self.__dict__["_chunk_boxes"] = boxes
+        _, cr, cc, lo_x, lo_y, hi_x, hi_y = boxes
+        hit = (hi_x >= x0) & (lo_x <= x1) & (hi_y >= y0) & (lo_y <= y1)
+        return [(li, int(r), int(c)) for r, c in zip(cr[hit], cc[hit], strict=True)]
 
     def _anim_key(self, layer: TileLayerData, key: tuple[int, int, int]) -> tuple[int, ...]:
         """The frames the chunk's animated tiles show now: a change rebuilds the chunk."""
@@ -260,26 +381,34 @@ class MapDrawing:
         chunk = _Chunk(anim_key=anim)
         if not len(rr):
             return chunk
-        gids = sub[rr, cols].astype(np.int64)
-        flags = layer.flags[r0 : r0 + CHUNK, c0 : c0 + CHUNK][rr, cols]
+        rr, cols = rr + r0, cols + c0
+        grid = data.grid
+        flat = grid is None or grid.orientation == "orthogonal"
+        if not flat:  # Tiled's order: back to front
+            assert grid is not None
+            sort = grid.depth(cols, rr)
+            rr, cols = rr[sort], cols[sort]
+        gids = layer.gids[rr, cols].astype(np.int64)
+        flags = layer.flags[rr, cols]
         shown = self.map.shown[gids] if anim else gids
-        quads = tile_quads(data, rr + r0, cols + c0, gids)
-        uvs = tile_uvs(data, shown, flags, self.bounds)
+        quads = tile_quads(data, rr, cols, gids)
+        local, rect = tile_uvs(data, shown, flags, self.bounds)
         images = data.tiles.image[shown]
-        for image in np.unique(images).tolist():
-            sel = images == image
-            n = int(sel.sum())
-            base = (np.arange(n) * 4)[:, None]
-            idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
-            g = self.group(frame, li, image, self.tex[image], draw_layer, order)
-            vl = self.program.vertex_list_indexed(
-                n * 4,
-                gl.GL_TRIANGLES,
-                idx.tolist(),
-                batch=frame.batch,
-                group=g,
-                position=("f", quads[sel].ravel()),
-                tex_coords=("f", uvs[sel].ravel()),
+        if flat:
+            subs = np.zeros(len(gids), np.int64)
+        elif _truthy(layer.properties.get("depth_sort")):
+            assert grid is not None
+            _, by, _, bh = grid.cell_boxes(cols, rr)
+            subs = np.round((by + bh / 2) * DEPTH_STEPS / grid.tile_h).astype(np.int64) - 1
+            order = DEPTH_BASE  # the sub-order is the depth, sprites interleave
+        else:
+            subs = np.full(len(gids), cr + cc if grid.orientation == "isometric" else cr)  # type: ignore[union-attr]
+        for image, s_ in sorted({(int(i), int(k)) for i, k in zip(images, subs, strict=True)}):
+            sel = (images == image) & (subs == s_)
+            parent_order = order + s_ if order == DEPTH_BASE else order
+            g = self.group(frame, li, image, s_, draw_layer, parent_order)
+            vl = _quad_list(
+                self.program, int(sel.sum()), frame.batch, g, quads[sel], local[sel], rect[sel]
             )
             chunk.lists.append(vl)
         return chunk
@@ -290,41 +419,134 @@ class MapDrawing:
             for vl in chunk.lists:
                 vl.delete()
 
+    def _background(self, frame: Frame) -> None:
+        """The map's background colour under everything of its draw layer, over the view."""
+        bg = self.map.data.background
+        if bg is None:
+            return
+        entry = self.__dict__.get("_bg")
+        if entry is None:
+            tex = self.textures.texture(PixelImage(1, 1, bytes((255, 255, 255, 255))))
+            g = LayerGroup(self.program, tex, frame.groups.get(self.map.draw_layer, WORLD, -2000))
+            b = _tex_bounds(tex)
+            vl = _quad_list(
+                self.program, 1, frame.batch, g, np.zeros((4, 2)), _SX_LOCAL, np.tile(b, (4, 1))
+            )
+            entry = self.__dict__["_bg"] = (vl, g)
+            self.extras.append((vl, g, None))
+        vl, g = entry
+        left, bottom, right, top = frame.view
+        vl.position[:] = [left, bottom, right, bottom, right, top, left, top]
+        g.tint = tuple(c / 255 for c in bg)
+
     def _image_layers(self, frame: Frame) -> None:
         data = self.map.data
         for i, layer in enumerate(data.image_layers):
             if not layer.style.visible:
                 continue
             entry = self.images.get(i)
-            if entry is None:
-                tex = self.textures.texture(str(layer.image))
+            shift = _shift(frame, data, layer.style)
+            u = data.units
+            iw, ih = layer.size
+            x0, y1 = u.point(u.left_px, u.row0 * u.tile_h if data.grid is None else 0.0)
+            w, h = u.length(iw), u.length(ih)
+            # repeated axes cover the view (in whole image steps from the layer's origin)
+            left, bottom, right, top = frame.view
+            rx, ry = layer.repeat
+            a0, a1 = (0.0, 1.0)
+            if rx:
+                a0 = math.floor((left - shift[0] - x0) / w)
+                a1 = math.ceil((right - shift[0] - x0) / w)
+            b0, b1 = (0.0, 1.0)
+            if ry:
+                b0 = math.floor((y1 - (top - shift[1])) / h)
+                b1 = math.ceil((y1 - (bottom - shift[1])) / h)
+            view = (a0, a1, b0, b1)
+            if entry is None or entry[2] != view:
+                if entry is not None:
+                    entry[0].delete()
+                tex = self.textures.texture(map_image(layer.image, layer.key))
                 draw_layer, order = self._placement(layer.properties, layer.index)
-                g = LayerGroup(self.program, tex, frame.groups.get(draw_layer, WORLD, order))
-                u = data.units
-                x0, y1 = u.point(u.left_px, u.row0 * u.tile_h)
-                x1, y0 = u.point(u.left_px + tex.width, u.row0 * u.tile_h + tex.height)
-                pos = np.array([x0, y0, x1, y0, x1, y1, x0, y1], np.float32)
-                b = _tex_bounds(tex)
-                uv = np.array([b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[3]], np.float32)
-                vl = self.program.vertex_list_indexed(
-                    4,
-                    gl.GL_TRIANGLES,
-                    [0, 1, 2, 0, 2, 3],
-                    batch=frame.batch,
-                    group=g,
-                    position=("f", pos),
-                    tex_coords=("f", uv),
+                g = (
+                    entry[1]
+                    if entry is not None
+                    else LayerGroup(
+                        self.program, tex, frame.groups.get(draw_layer, WORLD, order), wrap=rx or ry
+                    )
                 )
-                entry = self.images[i] = (vl, g)
-            entry[1].shift = _shift(frame, data, layer.style)
+                xa, xb = x0 + a0 * w, x0 + a1 * w
+                ya, yb = y1 - b1 * h, y1 - b0 * h
+                pos = np.array([[xa, ya], [xb, ya], [xb, yb], [xa, yb]], float)
+                loc = np.array([[a0, -b1 + 1], [a1, -b1 + 1], [a1, -b0 + 1], [a0, -b0 + 1]])
+                loc = np.array([[p[0], p[1]] for p in loc], float)
+                b = _tex_bounds(tex)
+                vl = _quad_list(self.program, 1, frame.batch, g, pos, loc, np.tile(b, (4, 1)))
+                entry = self.images[i] = (vl, g, view)
+            entry[1].shift = shift
             entry[1].tint = _tint(layer.style)
+
+    def _tile_objects(self, frame: Frame) -> None:
+        """Tile objects of parallax object layers (drawn with the map, like their layer)."""
+        data = self.map.data
+        if not self._objects_built:
+            self._objects_built = True
+            for layer in data.object_layers:
+                objs = [o for o in layer.objects if o.gid and o.visible]
+                if layer.style.parallax == (1.0, 1.0) or not objs or not layer.style.visible:
+                    continue
+                self._object_layer(frame, layer, objs)
+        for _, g, style in self.extras:
+            if style is not None:
+                g.shift, g.tint = _shift(frame, data, style), _tint(style)
+
+    def _object_layer(self, frame: Frame, layer: Any, objs: list[Any]) -> None:
+        data = self.map.data
+        u = data.units
+        gids = np.array([o.gid for o in objs], np.uint32)
+        g_, flags = split_gids(gids)
+        g_ = g_.astype(np.int64)
+        quads = []
+        for o, gid in zip(objs, g_.tolist(), strict=True):
+            w = o.width or float(data.tiles.rect[gid, 2])
+            h = o.height or float(data.tiles.rect[gid, 3])
+            px, py = data.grid.object_px(o.x, o.y) if data.grid is not None else (o.x, o.y)
+            if data.orientation == "isometric":
+                px -= w / 2
+            xs = px + _SX * w
+            ys = py - (1.0 - _SY) * h
+            x, y = u.points(xs, ys)
+            quads.append(np.stack([x, y], axis=-1))
+        pos = np.array(quads, np.float32)
+        local, rect = tile_uvs(data, g_, flags, self.bounds)
+        images = data.tiles.image[g_]
+        draw_layer, order = self._placement(layer.properties, layer.index)
+        for image in np.unique(images).tolist():
+            sel = images == image
+            grp = LayerGroup(
+                self.program, self.tex[image], frame.groups.get(draw_layer, WORLD, order)
+            )
+            vl = _quad_list(
+                self.program, int(sel.sum()), frame.batch, grp, pos[sel], local[sel], rect[sel]
+            )
+            self.extras.append((vl, grp, layer.style))
 
     def delete(self) -> None:
         for key in list(self.chunks):
             self._drop(key)
-        for vl, _ in self.images.values():
+        for vl, _, _ in self.images.values():
             vl.delete()
         self.images.clear()
+        for vl, _, _ in self.extras:
+            vl.delete()
+        self.extras.clear()
+        self.__dict__.pop("_bg", None)
+
+
+_SX_LOCAL = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+
+
+def _truthy(value: Any) -> bool:
+    return value is True or (isinstance(value, str) and value.lower() in ("true", "1", "yes"))
 
 
 def _tex_bounds(tex: Any) -> tuple[float, float, float, float]:

@@ -383,4 +383,3 @@ def load_map(
     tmap.colliders = list(tmap._live)
     maps_in(world).maps.append(tmap)
     return tmap
-

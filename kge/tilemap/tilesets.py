@@ -106,12 +106,12 @@ class TilesetBuilder:
             limits.check(f"{where}: tilecount", max(count, 0), "tilecount")
             n = max([max(count, 0), *(i + 1 for i in ids)])
             limits.check(f"{where}: tile ids", n, "tilecount")
-            finals.append(max(count, 0))
+            finals.append((max(count, 0), max(columns, 0)))
             size = max(size, first + n)
             limits.check(f"{where}: the highest gid + 1", first + n, "gids")
         spans = sorted(
             (p[4], p[4] + max([f, *(i + 1 for i in p[10])]), p[2])
-            for p, f in zip(plans, finals, strict=True)
+            for p, (f, _) in zip(plans, finals, strict=True)
         )
         for (a0, a1, an), (b0, _, bn) in itertools.pairwise(spans):
             if b0 < a1:
@@ -131,8 +131,10 @@ class TilesetBuilder:
             image_keys=scratch.image_keys,
         )
         sets = []
-        for index, (plan, img, count) in enumerate(zip(plans, table_images, finals, strict=True)):
-            sets.append(self._fill(table, index, plan, img, count))
+        for index, (plan, img, (count, cols)) in enumerate(
+            zip(plans, table_images, finals, strict=True)
+        ):
+            sets.append(self._fill(table, index, (*plan[:-1], cols), img, count))
         classify(table)
         return sets, table
 
