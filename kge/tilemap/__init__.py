@@ -5,6 +5,7 @@ No GL here: the drawing lives in :mod:`kge.render.tilemap` and is installed by
 """
 
 from kge.tilemap.errors import TilemapError, TilemapWarning
+from kge.tilemap.files import MapLimits
 from kge.tilemap.objects import Spawn, Spawners
 from kge.tilemap.runtime import CHUNK, MapFiles, TileMap, TileMaps, load_map, maps_in
 from kge.tilemap.units import MapUnits
@@ -12,6 +13,7 @@ from kge.tilemap.units import MapUnits
 __all__ = [
     "CHUNK",
     "MapFiles",
+    "MapLimits",
     "MapUnits",
     "Spawn",
     "Spawners",

@@ -65,13 +65,10 @@ def _inflate(raw: bytes, compression: str, size: int, where: str) -> bytes:
             out = d.decompress(raw, size + 1)
         except zlib.error as exc:
             raise TilemapError(f"{where}: corrupt {compression} data ({exc})") from None
-        if len(out) == size and not d.eof:  # exactly full: the stream must end here
-            try:
-                more = d.decompress(d.unconsumed_tail, 1)
-            except zlib.error as exc:
-                raise TilemapError(f"{where}: corrupt {compression} data ({exc})") from None
-            if more or not d.eof:
-                raise TilemapError(f"{where}: truncated or oversized {compression} data")
+        if len(out) > size:
+            raise TilemapError(f"{where}: oversized {compression} data (more than {size} bytes)")
+        if not d.eof:
+            raise TilemapError(f"{where}: truncated {compression} data")
         return out
     if compression == "zstd":
         try:
@@ -83,9 +80,12 @@ def _inflate(raw: bytes, compression: str, size: int, where: str) -> bytes:
             ) from None
         try:
             reader = zstandard.ZstdDecompressor().stream_reader(raw, read_across_frames=True)
-            return bytes(reader.read(size + 1))
+            out = bytes(reader.read(size + 1))
         except zstandard.ZstdError as exc:
             raise TilemapError(f"{where}: corrupt zstd data ({exc})") from None
+        if len(out) > size:
+            raise TilemapError(f"{where}: oversized zstd data (more than {size} bytes)")
+        return out
     raise TilemapError(
         f"{where}: unknown compression {compression!r} (Tiled writes zlib, gzip or zstd)"
     )
