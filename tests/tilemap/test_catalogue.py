@@ -57,7 +57,7 @@ def json_map(**over: object) -> str:
 
 
 #: (id, file name, text or a function of the folder writing the files, expected message)
-CASES: list[tuple[str, str, str | Callable[[Path], None], str]] = [
+CASES: list[tuple[str, str, str | Callable[[Path], object], str]] = [
     ("huge-grid-200-bytes", "m.tmx", tmx(100_000, 100_000, ""), r"width x height in tiles is 10,000,000,000, above the limit"),
     ("negative-width", "m.tmx", tmx(-3, 2, ""), r"map: width = -3 is below 0"),
     ("tilecount-2^31", "m.tmx", tmx(count="2147483648"), r"tilecount is 2,147,483,648, above the limit"),
@@ -118,7 +118,7 @@ CASES: list[tuple[str, str, str | Callable[[Path], None], str]] = [
 ]  # fmt: skip
 
 
-def _prepare(folder: Path, name: str, spec: str | Callable[[Path], None]) -> Path:
+def _prepare(folder: Path, name: str, spec: str | Callable[[Path], object]) -> Path:
     png.write(folder / "t.png", np.full((16, 32, 4), 200, np.uint8))
     (folder / "a.tx").write_text('<template><object template="b.tx"/></template>')
     (folder / "b.tx").write_text('<template><object template="a.tx"/></template>')
@@ -136,7 +136,7 @@ def _prepare(folder: Path, name: str, spec: str | Callable[[Path], None]) -> Pat
 
 @pytest.mark.parametrize(("case", "name", "spec", "message"), CASES, ids=[c[0] for c in CASES])
 def test_bad_map_is_refused_at_load_and_leaves_the_world_unchanged(
-    tmp_path: Path, case: str, name: str, spec: str | Callable[[Path], None], message: str
+    tmp_path: Path, case: str, name: str, spec: str | Callable[[Path], object], message: str
 ) -> None:
     folder = tmp_path / "game" / "levels"
     folder.mkdir(parents=True)
