@@ -8,7 +8,7 @@ there is no display and GL is not loaded yet. Everything else in
 :mod:`kge.assets` stays importable and testable without pyglet.
 
 Decoder failures are translated into :class:`~kge.assets.errors.AssetDecodeError`
-naming the file. Sounds are decoded by soundfile (:mod:`kge.audio.decode`):
+naming the file. Sounds are decoded by soundfile (:mod:`kge.assets.sounds`):
 WAV, OGG, MP3 and FLAC need no system library.
 """
 
@@ -86,11 +86,11 @@ def load_image(found: Found) -> Any:
 def load_sound(found: Found, streaming: bool) -> Any:
     """Decode a sound file into a pyglet ``StaticSource`` or ``StreamingSource``.
 
-    Every format goes through soundfile (:mod:`kge.audio.decode`): WAV of any
+    Every format goes through soundfile (:mod:`kge.assets.sounds`): WAV of any
     common depth, OGG Vorbis/Opus, MP3 and FLAC, with no system library. Errors
     are raised here, at the call, never at a later frame.
     """
-    from kge.audio.decode import static_source, streaming_source
+    from kge.assets.sounds import static_source, streaming_source
 
     try:
         data = found.read_bytes()
