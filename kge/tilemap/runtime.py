@@ -237,6 +237,39 @@ class TileMap:
                 raise TilemapError(f"{self.path}: set_tile on layer {layer!r}: {exc}") from exc
         self.dirty.add((self.data.tile_layers.index(lay), row // CHUNK, col // CHUNK))
 
+    def set_terrain(
+        self, layer: str, col: int, row: int, color: int | str, *, wangset: str | None = None
+    ) -> list[tuple[int, int, int]]:
+        """Paint a terrain colour at (col, row) and autotile around it (Tiled's Wang sets).
+
+        ``color`` is a colour name of the set (or its number; 0 erases). The cell
+        and its neighbours get the tiles whose corners (or edges) match, through
+        :meth:`set_tile`, so drawing and colliders follow. Returns the
+        (col, row, gid) cells changed. ``wangset`` names the set when the map has
+        several (Tiled 0.9-1.4 terrains are the set ``"terrains"``).
+        """
+        from kge.tilemap.wang import WangPainter, color_index
+
+        if not self.loaded:
+            raise TilemapError(f"{self.path}: set_terrain on a map that was unloaded")
+        lay = self.layer(layer)
+        self._check_cell(lay, col, row, "set_terrain")
+        sets = [w for ts in self.data.tilesets for w in ts.wangsets]
+        chosen = [w for w in sets if wangset is None or w.name == wangset]
+        if not chosen:
+            names = ", ".join(repr(w.name) for w in sets) or "none"
+            raise TilemapError(f"{self.path}: no Wang set {wangset!r} (sets: {names})")
+        wang = chosen[0]
+        painters = self.__dict__.setdefault("_painters", {})
+        painter = painters.get((lay.name, wang.name))
+        if painter is None:
+            painter = painters[(lay.name, wang.name)] = WangPainter(wang, lay)
+        idx = color_index(wang, color, f"{self.path}: set_terrain")
+        changes = painter.paint(col, row, idx)
+        for c, r, gid in changes:
+            self.set_tile(lay.name, c, r, gid)
+        return changes
+
     def clear_tile(self, layer: str, col: int, row: int) -> None:
         self.set_tile(layer, col, row, 0)
 
