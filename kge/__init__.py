@@ -82,6 +82,7 @@ from kge.errors import (
     KgeError,
     MissingComponentError,
     MissingResourceError,
+    SceneStackError,
     ValidationError,
     WorldLockedError,
 )
@@ -283,6 +284,7 @@ __all__ = [
     "RigidBody",
     "RopeJoint",
     "Scene",
+    "SceneStackError",
     "Script",
     "SensorBegin",
     "SensorEnd",

@@ -14,7 +14,12 @@ One frame, in the order of DESIGN.md:
    ``alpha`` = leftover accumulator / fixed_dt.
 
 Scene changes requested during a frame (``replace_scene`` from a script, say)
-take effect when the frame ends, never half-way through a step.
+take effect when the frame ends, never half-way through a step. Changes requested
+while another one is being made (from ``on_exit``, ``on_destroy`` or a setup) queue
+behind it and apply in order, each to the stack as the ones before it left it. A
+scene whose setup raises leaves the stack as it was (its error propagates, and the
+changes queued behind it are dropped), and the App never loses its last scene:
+``pop_scene`` refuses to (use ``replace_scene``, or ``quit``).
 
 Headless use, as in tests::
 
@@ -33,7 +38,7 @@ from typing import Any
 
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
-from kge.errors import ValidationError, WorldLockedError
+from kge.errors import SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
@@ -102,7 +107,12 @@ class App(Host):
         self.transition: ActiveTransition | None = None
         self._swap: Callable[[], None] | None = None
         self._plugins: list[Plugin] = []
-        self._scene_ops: list[Callable[[], None]] = []
+        #: scene changes waiting for the frame (or the change being made) to end, with
+        #: how many scenes each adds to the stack
+        self._scene_ops: list[tuple[int, Callable[[], None]]] = []
+        self._applying = False
+        self._closing = False
+        self._leaving = 0  #: scenes a replace being made will close once its setup ends
         self._in_frame = False
         self._running = False
         self.frame_count = 0
@@ -172,7 +182,13 @@ class App(Host):
 
     @property
     def scenes(self) -> list[Scene]:
+        """The scenes of the stack, bottom first."""
         return [s for s, _ in self._stack]
+
+    @property
+    def worlds(self) -> list[World]:
+        """The worlds of the stack's scenes, bottom first (``worlds[-1]`` is ``world``)."""
+        return [w for _, w in self._stack]
 
     def push_scene(
         self, scene: SceneLike, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
@@ -186,34 +202,54 @@ class App(Host):
         target = as_scene(scene)
         if run_below and not overlay:
             raise ValueError("push_scene(run_below=True) needs overlay=True")
-        self._schedule(lambda: self._push(target, kwargs, overlay=(run_below if overlay else None)))
+        keeps_running = run_below if overlay else None
+        self._schedule(+1, lambda: self._push(target, kwargs, overlay=keeps_running))
 
     def pop_scene(self) -> None:
-        """Close the top scene and resume the one below."""
-        self._schedule(self._pop)
+        """Close the top scene and resume the one below.
+
+        Refused with :class:`~kge.errors.SceneStackError` when it would pop the App's
+        last scene (counting the changes already queued): change scene with
+        :meth:`replace_scene`, or stop with :meth:`quit`.
+        """
+        if self._depth_when_queued() <= 1:
+            raise SceneStackError(
+                "pop_scene() would leave the App with no scene: use replace_scene() to "
+                "change scene, or app.quit() to stop"
+            )
+        self._schedule(-1, self._pop)
 
     def replace_scene(
         self, scene: SceneLike, *, transition: Transition | None = None, **kwargs: Any
     ) -> None:
         """Close the top scene and start ``scene`` (with kwargs) in its place.
 
-        ``transition`` (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``,
-        ``Wipe``) plays over the change; the scene changes when it is due.
+        The new scene is set up first and the old one exits once it is ready, so a
+        setup that raises leaves the old scene running. ``transition``
+        (:mod:`kge.transitions`: ``Fade(0.4)``, ``Crossfade``, ``Slide``, ``Wipe``)
+        plays over the change and the scene changes when it is due: the scene on top
+        when it starts (after the changes asked for before it) leaves then, with any
+        scene pushed over it meanwhile (a pause menu opened during the fade).
         """
         target = as_scene(scene)
         if transition is not None and not isinstance(transition, Transition):
             raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
-
-        def op() -> None:
-            if self._stack:
-                self._close_top()
-            self._push(target, kwargs, resume_below=False)
-
+        grows = 0 if self._depth_when_queued() else 1
         if transition is None:
-            self._schedule(op)
-        else:  # the newest transition wins; the scene changes when it is due
-            self._swap = op
-            self.transition = ActiveTransition(transition)
+            self._schedule(grows, lambda: self._replace(target, kwargs, None))
+            return
+
+        def begin() -> None:  # in order with the changes queued before it
+            leaving = self._stack[-1][1] if self._stack else None
+            self._swap = lambda: self._replace(target, kwargs, leaving)
+            self.transition = ActiveTransition(transition)  # the newest one wins
+
+        self._schedule(0, begin)
+
+    def _depth_when_queued(self) -> int:
+        """How many scenes the stack will hold once the queued changes are made."""
+        queued = sum(grows for grows, _ in self._scene_ops)
+        return len(self._stack) - self._leaving + queued
 
     def _advance_transition(self, real_dt: float) -> None:
         """Play the running transition: change the scene when due, end it when done."""
@@ -225,7 +261,7 @@ class App(Host):
         if active.swap_due and swap is not None:
             active.swapped = True
             self._swap = None
-            swap()
+            self._schedule(0, swap)
         if active.done:
             self.transition = None
 
@@ -249,29 +285,64 @@ class App(Host):
             worlds.append(world)
         return worlds
 
-    def _schedule(self, op: Callable[[], None]) -> None:
-        if self._in_frame:
-            self._scene_ops.append(op)
-        else:
-            op()
+    def _schedule(self, grows: int, op: Callable[[], None]) -> None:
+        """Queue a scene change; make it now unless a frame or another change runs."""
+        if self._closing:
+            return
+        self._scene_ops.append((grows, op))
+        if not self._in_frame:
+            self._run_scene_ops()
 
     def _push(
         self,
         scene: Scene,
         kwargs: dict[str, Any],
-        resume_below: bool = True,
         overlay: bool | None = None,
     ) -> None:
-        if self._stack and resume_below:
-            below, below_world = self._stack[-1]
-            below.on_pause(below_world)
+        below = self._stack[-1] if self._stack else None
+        if below is not None:
+            below[0].on_pause(below[1])
+        try:
+            self._start(scene, kwargs, overlay)
+        except BaseException:
+            if below is not None:
+                below[0].on_resume(below[1])
+            raise
+
+    def _replace(self, scene: Scene, kwargs: dict[str, Any], leaving: World | None) -> None:
+        """Start ``scene``, then close ``leaving`` and every scene above it (the top
+        scene when ``leaving`` is None; nothing when it has already left)."""
+        worlds = [w for _, w in self._stack]
+        if leaving is None:
+            first = len(worlds) - 1 if worlds else 0
+        else:
+            first = worlds.index(leaving) if leaving in worlds else len(worlds)
+        self._leaving = len(worlds) - first  # for pops its setup asks for
+        try:
+            self._start(scene, kwargs, None)
+        finally:
+            self._leaving = 0
+        new = self._stack.pop()
+        while len(self._stack) > first:
+            self._close_top()
+        self._stack.append(new)
+
+    def _start(self, scene: Scene, kwargs: dict[str, Any], overlay: bool | None) -> None:
+        """Make a world for ``scene`` on top and set it up; on any error, take it off
+        again (closing it) and leave the stack as it was."""
         world = self._make_world(scene)
         self._stack.append((scene, world))
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
-        scene.setup(world, **kwargs)
-        world.flush()
+        try:
+            scene.setup(world, **kwargs)
+            world.flush()
+        except BaseException:
+            self._stack.pop()
+            self._overlays.pop(world, None)
+            world.close()
+            raise
 
     def _close_top(self) -> None:
         scene, world = self._stack.pop()
@@ -280,13 +351,12 @@ class App(Host):
         world.close()
 
     def _pop(self) -> None:
-        if not self._stack:
-            raise RuntimeError("pop_scene() with no scene on the stack")
+        if len(self._stack) <= 1:
+            raise SceneStackError("pop_scene() would leave the App with no scene")
         self._close_top()
         self.input.reset()
-        if self._stack:
-            scene, world = self._stack[-1]
-            scene.on_resume(world)
+        scene, world = self._stack[-1]
+        scene.on_resume(world)
 
     def _make_world(self, scene: Scene) -> World:
         world = World(name=scene.name or type(scene).__name__)
@@ -327,7 +397,7 @@ class App(Host):
             old.close()
             self._stack.append((scene, world))
 
-        self._schedule(op)
+        self._schedule(0, op)
 
     # -- plugins ----------------------------------------------------------------------------
     def add_plugins(self, *plugins: PluginLike) -> None:
@@ -429,9 +499,21 @@ class App(Host):
         schedule.run(Stage.LATE, game_dt)
 
     def _run_scene_ops(self) -> None:
-        ops, self._scene_ops = self._scene_ops, []
-        for op in ops:
-            op()
+        """Make the queued scene changes in order; one asked for while another is being
+        made (from on_exit, on_destroy, a setup) waits for it. If a change raises, the
+        error propagates and the changes behind it are dropped with it."""
+        if self._applying:
+            return
+        self._applying = True
+        try:
+            while self._scene_ops:
+                _, op = self._scene_ops.pop(0)
+                op()
+        except BaseException:
+            self._scene_ops.clear()
+            raise
+        finally:
+            self._applying = False
 
     def _frontend(self, what: str) -> Frontend:
         if self.frontend is None:
@@ -481,7 +563,12 @@ class App(Host):
 
     def close(self) -> None:
         """Close every scene (despawning all entities), then let each plugin clean up
-        (the audio plugin stops the App's music)."""
+        (the audio plugin stops the App's music). Scene changes asked for while the
+        App closes (from on_exit or on_destroy) are dropped."""
+        self._closing = True
+        self._scene_ops.clear()
+        self._swap = None
+        self.transition = None
         while self._stack:
             self._close_top()
         for plugin in reversed(self._plugins):

@@ -59,3 +59,7 @@ def where(entity: int | None, component: str, field: str | None = None) -> str:
 
 class DisplayError(KgeError, RuntimeError):
     """A window was asked for and the display cannot give one (a stale ``DISPLAY``...)."""
+
+
+class SceneStackError(KgeError, RuntimeError):
+    """A scene-stack change that cannot be made (popping the App's last scene)."""
