@@ -96,9 +96,10 @@ def load_sound(found: Found, streaming: bool) -> Any:
         data = found.read_bytes()
     except OSError as exc:
         raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc
+    media = pyglet_module("media")
     if streaming:
-        return streaming_source(data, found.name, found.where)
-    return static_source(data, found.name, found.where)
+        return streaming_source(media, data, found.name, found.where)
+    return static_source(media, data, found.name, found.where)
 
 
 def load_generated(sound: SoundData) -> Any:

@@ -99,11 +99,8 @@ def _stereo_at_most(pcm: np.ndarray) -> np.ndarray:
     return pcm[:, :2]  # surround files: front left and right
 
 
-def static_source(data: bytes, name: str, where: str) -> Any:
-    """A pyglet StaticSource of the decoded sound."""
-    from kge.assets.loaders import pyglet_module
-
-    media = pyglet_module("media")
+def static_source(media: Any, data: bytes, name: str, where: str) -> Any:
+    """A pyglet StaticSource of the decoded sound (``media``: the pyglet.media module)."""
     pcm, rate = decode(data, name, where)
     fmt = media.codecs.AudioFormat(channels=pcm.shape[1], sample_size=16, sample_rate=rate)
     return _static(media, np.ascontiguousarray(pcm).tobytes(), fmt)
@@ -121,11 +118,8 @@ def _static(media: Any, data: bytes, fmt: Any) -> Any:
     return _Decoded()
 
 
-def streaming_source(data: bytes, name: str, where: str) -> Any:
+def streaming_source(media: Any, data: bytes, name: str, where: str) -> Any:
     """A pyglet StreamingSource decoding blocks as it plays (long music)."""
-    from kge.assets.loaders import pyglet_module
-
-    media = pyglet_module("media")
     f = _open(data, name, where)
     channels = min(f.channels, 2)
 

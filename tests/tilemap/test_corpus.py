@@ -8,7 +8,6 @@ import os
 
 os.environ.setdefault("PYGLET_HEADLESS", "1")
 
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -24,13 +23,6 @@ from . import corpus
 
 CASES = [(o, f) for o in corpus.ORIENTATIONS for f in corpus.FLAVOURS]
 
-
-@pytest.fixture
-def apps() -> Iterator[list[App]]:
-    made: list[App] = []
-    yield made
-    for a in made:
-        a.close()
 
 
 def draw(apps: list[App], path: Path, orientation: str) -> np.ndarray:
