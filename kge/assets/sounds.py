@@ -123,7 +123,7 @@ def streaming_source(media: Any, data: bytes, name: str, where: str) -> Any:
     f = _open(data, name, where)
     channels = min(f.channels, 2)
 
-    class _Stream(media.StreamingSource):  # type: ignore[name-defined]
+    class _Stream(media.StreamingSource):
         def __init__(self) -> None:
             self.audio_format = media.codecs.AudioFormat(
                 channels=channels, sample_size=16, sample_rate=f.samplerate

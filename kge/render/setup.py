@@ -134,6 +134,9 @@ def ensure_renderer(app: Host, window: Any = None) -> Renderer:
         window, owns = _new_window(app)
     else:
         owns = True
+    from kge.render.programs import pin_programs
+
+    pin_programs(getattr(window, "context", None))
     r = _renderers[app] = Renderer(app, window, owns)
     return r
 
