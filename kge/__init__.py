@@ -107,6 +107,18 @@ from kge.platform import has_display
 from kge.plugin import FunctionPlugin, Plugin, PluginError
 from kge.plugins import default_plugins
 from kge.scene import Scene, Time
+from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md)
+    SceneFile,
+    SceneFileError,
+    instantiate,
+    load_game,
+    load_scene,
+    register_script,
+    register_type,
+    save_game,
+    save_prefab,
+    save_scene,
+)
 from kge.schedule import Stage, System
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
@@ -284,6 +296,8 @@ __all__ = [
     "RigidBody",
     "RopeJoint",
     "Scene",
+    "SceneFile",
+    "SceneFileError",
     "SceneStackError",
     "Script",
     "SensorBegin",
@@ -324,8 +338,16 @@ __all__ = [
     "from_array",
     "gif_clip",
     "has_display",
+    "instantiate",
+    "load_game",
     "load_map",
+    "load_scene",
+    "register_script",
+    "register_type",
     "run",
+    "save_game",
+    "save_prefab",
+    "save_scene",
     "shake",
     "solid",
 ]

@@ -1,5 +1,5 @@
 """Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
-command), ``kge testbed``, ``kge bench``.
+command), ``kge testbed``, ``kge bench``, ``kge export`` (a standalone build).
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -62,17 +62,69 @@ def _bench(args: list[str]) -> int:
     return int(bench_main(args) or 0)
 
 
+EDIT_HELP = """usage: kge edit [FILE] [--headless --frames N --screenshot PNG]
+                [--game MODULE.py ...]
+
+The scene editor: a window on the scene file FILE (.scene.toml; a new one when it does
+not exist yet). --game imports a Python file first, so its registered components and
+Behaviour scripts can be placed and played (it reloads when you change it).
+--headless --frames N runs N frames without a window and --screenshot saves the last.
+"""
+
+
+def _edit(args: list[str]) -> int:
+    import argparse
+    import importlib.util
+
+    parser = argparse.ArgumentParser(prog="kge edit", add_help=False)
+    parser.add_argument("file", nargs="?")
+    parser.add_argument("--game", action="append", default=[])
+    parser.add_argument("--headless", action="store_true")
+    parser.add_argument("--frames", type=int)
+    parser.add_argument("--screenshot")
+    parser.add_argument("-h", "--help", action="store_true")
+    opts = parser.parse_args(args)
+    if opts.help:
+        print(EDIT_HELP, end="")
+        return 0
+    for game in opts.game:  # the game's own code, named on the command line by its user
+        path = Path(game).resolve()
+        sys.path.insert(0, str(path.parent))
+        spec = importlib.util.spec_from_file_location(path.stem, path)
+        if spec is None or spec.loader is None:
+            print(f"kge edit: cannot import {game}", file=sys.stderr)
+            return 2
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[path.stem] = module
+        spec.loader.exec_module(module)
+    from kge.editor.app import editor_app
+
+    target = None if opts.file is None else Path(opts.file).resolve()
+    app, _ = editor_app(target, headless=True if opts.headless else None)
+    app.run(opts.frames, opts.screenshot)
+    app.close()
+    return 0
+
+
 def _new(args: list[str]) -> int:
     from kge.scaffold import main as new_main
 
     return new_main(args)
 
 
+def _export(args: list[str]) -> int:
+    from kge.export.cli import main as export_main
+
+    return export_main(args)
+
+
 COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
     "new": (_new, "create a small game project with a test: kge new NAME"),
     "demo": (_demo, "the demo: the testbed window, or a headless showcase without a display"),
     "testbed": (_testbed, "the Box2D-style testbed (kge testbed --help)"),
+    "edit": (_edit, "the scene editor: kge edit levels/one.scene.toml"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
+    "export": (_export, "a standalone build of a game project: kge export [PROJECT]"),
 }
 
 

@@ -34,7 +34,7 @@ import functools
 import os
 import sys
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
 from kge.components.camera import Camera, active_camera
@@ -51,7 +51,12 @@ from kge.transitions import ActiveTransition, Transition
 from kge.validate import boolean, integer, non_negative
 from kge.world import World
 
+if TYPE_CHECKING:
+    from kge.snapshot import Restorable
+
 SystemFactory = Callable[[], System]
+#: what App, push_scene and replace_scene take: a scene, or a scene file's path
+SceneSource = SceneLike | str | os.PathLike[str]
 
 #: ``App()`` with no scene (push one later); distinct from ``App(None)``, which is refused
 NO_SCENE: Any = type("NoScene", (), {"__repr__": lambda self: "NO_SCENE"})()
@@ -67,7 +72,7 @@ class App(Host):
 
     def __init__(
         self,
-        scene: SceneLike = NO_SCENE,
+        scene: SceneSource = NO_SCENE,
         *,
         headless: bool | None = None,
         size: tuple[int, int] = (960, 540),
@@ -104,6 +109,8 @@ class App(Host):
         self._stack: list[tuple[Scene, World]] = []
         #: worlds pushed as overlays: True if the scene below keeps running
         self._overlays: dict[World, bool] = {}
+        #: the keyword arguments each world's setup ran with (reload_scene runs it again)
+        self._setup_kwargs: dict[World, dict[str, Any]] = {}
         self.transition: ActiveTransition | None = None
         self._swap: Callable[[], None] | None = None
         self._plugins: list[Plugin] = []
@@ -191,7 +198,7 @@ class App(Host):
         return [w for _, w in self._stack]
 
     def push_scene(
-        self, scene: SceneLike, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+        self, scene: SceneSource, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
     ) -> None:
         """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
 
@@ -199,7 +206,7 @@ class App(Host):
         the scene below stays frozen, or keeps running (without input) when
         ``run_below=True``. Popping returns to it with its state intact.
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if run_below and not overlay:
             raise ValueError("push_scene(run_below=True) needs overlay=True")
         keeps_running = run_below if overlay else None
@@ -220,7 +227,7 @@ class App(Host):
         self._schedule(-1, self._pop)
 
     def replace_scene(
-        self, scene: SceneLike, *, transition: Transition | None = None, **kwargs: Any
+        self, scene: SceneSource, *, transition: Transition | None = None, **kwargs: Any
     ) -> None:
         """Close the top scene and start ``scene`` (with kwargs) in its place.
 
@@ -231,7 +238,7 @@ class App(Host):
         when it starts (after the changes asked for before it) leaves then, with any
         scene pushed over it meanwhile (a pause menu opened during the fade).
         """
-        target = as_scene(scene)
+        target = _as_scene(scene)
         if transition is not None and not isinstance(transition, Transition):
             raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
         grows = 0 if self._depth_when_queued() else 1
@@ -332,6 +339,7 @@ class App(Host):
         again (closing it) and leave the stack as it was."""
         world = self._make_world(scene)
         self._stack.append((scene, world))
+        self._setup_kwargs[world] = kwargs
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
@@ -341,12 +349,48 @@ class App(Host):
         except BaseException:
             self._stack.pop()
             self._overlays.pop(world, None)
+            self._setup_kwargs.pop(world, None)
             world.close()
             raise
+
+    def reload_scene(self) -> None:
+        """Build the top scene again from its setup, and swap it in only if that succeeds.
+
+        Hot reload calls this when a scene file or map changes. On any error the new
+        world is closed, the error is raised, and the running world carries on as it was.
+        """
+        if not self._stack:
+            raise RuntimeError("App.reload_scene() needs a running scene")
+        scene, old = self._stack[-1]
+        kwargs = self._setup_kwargs.get(old, {})
+        world = self._make_world(scene)
+        try:
+            scene.setup(world, **kwargs)
+            world.flush()
+        except BaseException:
+            world.close()
+            raise
+
+        def op() -> None:
+            if not self._stack or self._stack[-1][1] is not old:
+                world.close()  # the scene changed meanwhile: the rebuilt world is stale
+                return
+            self._stack.pop()
+            overlay = self._overlays.pop(old, None)
+            self._setup_kwargs.pop(old, None)
+            scene.on_exit(old)
+            old.close()
+            self._stack.append((scene, world))
+            self._setup_kwargs[world] = kwargs
+            if overlay is not None:
+                self._overlays[world] = overlay
+
+        self._schedule(0, op)
 
     def _close_top(self) -> None:
         scene, world = self._stack.pop()
         self._overlays.pop(world, None)
+        self._setup_kwargs.pop(world, None)
         scene.on_exit(world)
         world.close()
 
@@ -370,8 +414,9 @@ class App(Host):
             world.add_system(factory())
         return world
 
-    def restore(self, data: bytes) -> None:
-        """Replace the current scene's world with one restored from ``world.snapshot()``.
+    def restore(self, data: bytes | Restorable) -> None:
+        """Replace the current scene's world with one restored from ``world.snapshot()``
+        (in memory) or from a save file read by ``kge.load_game(path)``.
 
         The scene object stays; its ``setup`` is not run again. Systems are rebuilt,
         and the physics system recreates every body from the restored components.
@@ -386,7 +431,10 @@ class App(Host):
             raise RuntimeError("App.restore() needs a running scene")
         world = self._make_world(self._stack[-1][0])
         try:
-            restore_into(world, data)
+            if isinstance(data, bytes | bytearray):
+                restore_into(world, data)
+            else:
+                data.restore_into(world)
         except BaseException:
             world.close()
             raise
@@ -576,12 +624,44 @@ class App(Host):
 
 
 def run(
-    scene: SceneLike, *, title: str = "kge", size: tuple[int, int] = (960, 540), **kwargs: Any
+    scene: SceneSource,
+    *,
+    title: str = "kge",
+    size: tuple[int, int] = (960, 540),
+    hot_reload: bool | None = None,
+    **kwargs: Any,
 ) -> App:
-    """One-line entry point: ``kge.run(my_scene, title="Pong")``."""
+    """One-line entry point: ``kge.run(my_scene, title="Pong")``.
+
+    ``hot_reload`` (default: on when a window opens, or when ``KGE_HOT_RELOAD=1``)
+    reloads changed scene, prefab, map, image, sound and Python files while the
+    game runs (:mod:`kge.hotreload`).
+    """
     app = App(scene, title=title, size=size, **kwargs)
-    app.run()
+    if hot_reload is None:
+        env = os.environ.get("KGE_HOT_RELOAD")
+        hot_reload = env == "1" if env in ("0", "1") else not app.headless
+    reloader = None
+    if hot_reload:
+        from kge.hotreload import HotReloadPlugin
+
+        reloader = HotReloadPlugin()
+        app.add_plugins(reloader)
+    try:
+        app.run()
+    finally:
+        if reloader is not None:
+            reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
+
+
+def _as_scene(scene: SceneSource) -> Scene:
+    """A Scene from a Scene, a setup function or a scene file's path (``App("a.scene.toml")``)."""
+    if isinstance(scene, str | os.PathLike):
+        from kge.scenefile.scene import SceneFile
+
+        return SceneFile(scene)
+    return as_scene(scene)
 
 
 @functools.cache

@@ -20,6 +20,13 @@ What is not saved, and why:
 Behaviour scripts are saved when their classes are importable (module level),
 as with any pickle.
 
+Snapshots are for memory only. Unpickling runs whatever code the bytes name, so
+the bytes are signed with a key made when the process starts, and :func:`restore`
+refuses bytes it did not sign: a snapshot written to disk and read back (or sent
+from another process) is refused before pickle sees it. Files go through the
+safe text format instead: ``kge.save_game(world, path)`` and
+``kge.load_game(path)`` (:mod:`kge.scenefile`), which never run code.
+
 >>> from kge.components import Transform
 >>> from kge.world import World
 >>> w = World()
@@ -33,10 +40,13 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import hashlib
+import hmac
 import itertools
 import os
 import pickle
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, Protocol
 
 import esper
 
@@ -50,6 +60,39 @@ FORMAT = 1
 
 class SnapshotError(KgeError, ValueError):
     """The data is not a kge snapshot, or one of an unsupported format."""
+
+
+class Restorable(Protocol):
+    """A saved world read by a safe loader (``kge.load_game``): ``App.restore`` takes it."""
+
+    name: str
+
+    def restore_into(self, world: World) -> World: ...
+
+
+#: the key snapshots are signed with: made per process, never written anywhere
+_KEY = os.urandom(32)
+_TAG = b"kge-snapshot-hmac"
+
+
+def _sign(payload: bytes) -> bytes:
+    return hmac.new(_KEY, payload, hashlib.sha256).digest()
+
+
+def seal(data: dict[str, Any]) -> bytes:
+    """Pickle and sign ``data`` (a snapshot's dictionary) for :func:`restore_into`.
+
+    What :func:`snapshot` does after collecting the world; tests that craft a
+    snapshot by hand (a NaN pose, a dangling reference) seal it the same way.
+    """
+    try:
+        payload = pickle.dumps(data, protocol=5)
+    except (pickle.PicklingError, TypeError, AttributeError) as err:
+        raise SnapshotError(
+            f"cannot snapshot world {data.get('name')!r}: {err} (components and scripts must "
+            "be picklable: define their classes at module level)"
+        ) from err
+    return payload + _TAG + _sign(payload)
 
 
 #: resource types that are simulation state, kept in snapshots (registered by their
@@ -82,25 +125,30 @@ def snapshot(world: World) -> bytes:
         raise KgeError("snapshot() inside a running system: take it between steps")
     world.flush()
     entities = {e: world.components(e) for e in world.entities()}
-    data = {
-        "format": FORMAT,
-        "name": world.name,
-        "next_id": _next_id(world),
-        "entities": entities,
-        "resources": _state_resources(world),
-    }
-    try:
-        return pickle.dumps(data, protocol=5)
-    except (pickle.PicklingError, TypeError, AttributeError) as err:
-        raise SnapshotError(
-            f"cannot snapshot world {world.name!r}: {err} (components and scripts must be "
-            "picklable: define their classes at module level)"
-        ) from err
+    return seal(
+        {
+            "format": FORMAT,
+            "name": world.name,
+            "next_id": _next_id(world),
+            "entities": entities,
+            "resources": _state_resources(world),
+        }
+    )
 
 
 def _load(data: bytes) -> dict[str, Any]:
+    if not isinstance(data, bytes | bytearray):
+        raise SnapshotError(f"not a kge snapshot: {type(data).__name__} (snapshots are bytes)")
+    cut = len(data) - len(_TAG) - 32
+    payload, tag, mac = bytes(data[:cut]), bytes(data[cut:-32]), bytes(data[-32:])
+    if cut < 0 or tag != _TAG or not hmac.compare_digest(mac, _sign(payload)):
+        raise SnapshotError(
+            "not a kge snapshot taken in this process: snapshots live in memory only "
+            "(unpickling could run code a file names); save files with kge.save_game(world, "
+            "path) and read them with kge.load_game(path)"
+        )
     try:
-        loaded = pickle.loads(data)
+        loaded = pickle.loads(payload)
     except Exception as err:  # pickle raises many types on garbage
         raise SnapshotError(f"not a kge snapshot: {err}") from err
     if not isinstance(loaded, dict) or loaded.get("format") != FORMAT:
@@ -184,22 +232,34 @@ def restore_into(world: World, data: bytes) -> World:
     :class:`SnapshotError` is raised and ``world`` is left empty and unchanged.
     """
     loaded = _load(data)
+    return restore_state(
+        world, loaded.get("entities"), loaded.get("next_id"), loaded.get("resources", [])
+    )
+
+
+def restore_state(
+    world: World, entities: Any, next_id: Any, resources: Sequence[Any] = ()
+) -> World:
+    """Fill an empty ``world`` from an entity table ``{id: [components]}`` keeping the ids.
+
+    The safe save loader (``kge.load_game``) builds the table from a text file and
+    restores it through here, with the checks :func:`restore_into` runs.
+    """
     if world.entities():
         raise SnapshotError(f"restore needs an empty world; {world.name!r} has entities")
-    resources = loaded.get("resources", [])
     for resource in resources:
         _recheck(resource, f"snapshot resource {type(resource).__name__}")
-    _validate(world, loaded.get("entities"), loaded.get("next_id"))
+    _validate(world, entities, next_id)
     for resource in resources:
         world.insert_resource(resource)
     world._use()
     table = esper._entities
-    for entity in sorted(loaded["entities"]):
+    for entity in sorted(entities):
         table[entity] = {}
-        for component in loaded["entities"][entity]:
+        for component in entities[entity]:
             world._apply_add(entity, component)
     world._use()
-    esper._entity_count = itertools.count(start=loaded["next_id"])
+    esper._entity_count = itertools.count(start=next_id)
     esper.clear_cache()
     return world
 
@@ -210,13 +270,11 @@ def world_name(data: bytes) -> str:
     return name
 
 
-def save(world: World, path: str | os.PathLike[str]) -> None:
-    """Write a snapshot of ``world`` to ``path``."""
-    with open(path, "wb") as f:
-        f.write(snapshot(world))
-
-
-def load(path: str | os.PathLike[str]) -> bytes:
-    """Read snapshot bytes from ``path`` (give them to ``restore`` or ``App.restore``)."""
-    with open(path, "rb") as f:
-        return f.read()
+def __getattr__(name: str) -> Any:
+    if name in ("save", "load"):
+        raise AttributeError(
+            f"kge.snapshot.{name} is gone: it wrote pickle to disk, and reading such a file "
+            "back could run any code it names. Use kge.save_game(world, path) and "
+            "kge.load_game(path) (a text format that never runs code); snapshots stay in memory"
+        )
+    raise AttributeError(f"module 'kge.snapshot' has no attribute {name!r}")

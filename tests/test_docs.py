@@ -10,6 +10,7 @@ Blocks marked ``<!-- test-file: NAME -->`` are whole test files, run in a fresh 
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from pathlib import Path
@@ -56,9 +57,11 @@ TUTORIALS = [
 def _run(code: str, filename: str, namespace: dict[str, object]) -> None:
     # a pybox2d page may install kge.box2d as ``Box2D``: leave sys.modules as found
     saved = {k: sys.modules.get(k) for k in ("Box2D", "Box2D.b2", "Box2D.Box2D")}
+    cwd = os.getcwd()  # a snippet may change folder (into a temporary one, say)
     try:
         exec(compile(code, filename, "exec", dont_inherit=True), namespace)
     finally:
+        os.chdir(cwd)
         for k, v in saved.items():
             if v is None:
                 sys.modules.pop(k, None)

@@ -14,7 +14,11 @@ moves them all with a handful of numpy operations:
   and the clip's speed; loops wrap it, ``once``/``hold`` clips finish;
 * frame events and finished events are found by counting crossings of the
   frames' start times between the previous and the new time, so a long frame
-  (a slow machine, a large time scale) never skips an event.
+  (a slow machine, a large time scale) never skips an event;
+* the table holds only clips some row plays: :meth:`ClipState.compact` drops the
+  others once they outnumber the live ones, so a game that spawns entities with
+  clips of their own keeps a table the size of what is alive, and registering a
+  clip rebuilds the arrays once per frame, not once per clip.
 
 Frames are identified by *source ids* (one per distinct :class:`FrameRef`), which
 the renderer maps to atlas texture coordinates; this module needs no GL.
@@ -68,7 +72,23 @@ class ClipTable:
         self._has_events: list[bool] = []
         self._next_base = 0.0
         self.version = 0
+        self._stale = False
         self._arrays()
+
+    def __len__(self) -> int:
+        """How many clips are registered."""
+        return len(self.infos)
+
+    def ensure(self) -> None:
+        """Rebuild the numpy arrays if clips were registered since the last call."""
+        if self._stale:
+            self._stale = False
+            self._arrays()
+            self.version += 1
+
+    def first_frame(self, slot: int) -> int:
+        """The global index of clip ``slot``'s first frame (valid before :meth:`ensure`)."""
+        return self._first[slot]
 
     def _arrays(self) -> None:
         self.frame_end = np.array(self._ends, float)
@@ -127,9 +147,22 @@ class ClipTable:
         self._speed.append(clip.speed)
         self._variant.append(int(clip.flip_x) | (int(clip.flip_y) << 1))
         self._has_events.append(bool(events))
-        self._arrays()
-        self.version += 1
+        self._stale = True  # the arrays are rebuilt once, by ensure(), for many new clips
         return info
+
+    def rebuilt(self, slots: list[int]) -> tuple[ClipTable, np.ndarray]:
+        """A table of only the clips ``slots`` (in that order), and old slot -> new slot
+        (-1 for the dropped ones). Frame sources keep their ids: the renderer's atlas
+        regions stay valid."""
+        table = ClipTable()
+        table.sources = self.sources
+        table._source_ids = self._source_ids
+        remap = np.full(len(self.infos), -1, np.intp)
+        for slot in slots:
+            remap[slot] = table.register(self.infos[slot].clip).slot
+        table.ensure()
+        table.version = self.version + 1
+        return table, remap
 
 
 @dataclass(slots=True)
@@ -213,20 +246,37 @@ class ClipState:
 
     def start(self, row: int, slot: int, *, stopped: bool = False) -> None:
         """Row ``row`` plays clip ``slot`` from its first frame (``stopped``: shows it, still)."""
-        t = self.table
         self.clip[row] = slot
         self.time[row] = 0.0
         self.finished[row] = stopped
         self.fresh[row] = not stopped
-        self.shown[row] = t.first[slot]
+        self.shown[row] = self.table.first_frame(slot)
+
+    def compact(self, slack: int = 32) -> bool:
+        """Drop the clips no row plays once they outnumber the played ones (plus
+        ``slack``), renumbering the rows' slots and frames; True if it did."""
+        t = self.table
+        live = np.unique(self.clip).tolist() if len(self.clip) else []
+        if len(t) - len(live) <= max(len(live), slack if live else 0):
+            return False
+        t.ensure()
+        table, remap = t.rebuilt(live)
+        offset = self.shown - t.first[self.clip]
+        self.clip = remap[self.clip]
+        self.shown = table.first[self.clip] + offset
+        self.table = table
+        self.version += 1
+        return True
 
     def local_frame(self, row: int) -> int:
         """The original frame index (inside its clip) shown by ``row``."""
+        self.table.ensure()
         return int(self.table.frame_orig[self.shown[row]])
 
     def advance(self, dt: float) -> Crossings:
         """Move every playing row by ``dt`` seconds of game time; see the module docstring."""
         t = self.table
+        t.ensure()
         n = len(self.entity)
         if n == 0 or not len(t.total):
             return Crossings([], np.zeros(0, np.intp))

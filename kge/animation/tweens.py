@@ -169,7 +169,14 @@ class TweenTable:
         self.on_finish: Callable[[TweenHandle], None] | None = None
 
     def __len__(self) -> int:
+        """How many tween channels are running."""
         return int(np.count_nonzero(self.live))
+
+    @property
+    def rows(self) -> int:
+        """Channel rows held: the running ones and finished ones not yet compacted away
+        (never more than twice the running ones, plus a little slack)."""
+        return len(self.live)
 
     # -- starting ----------------------------------------------------------------------
     def start(self, target: Any, spec: Any) -> TweenHandle:
@@ -333,6 +340,7 @@ class TweenTable:
             self._stop_bodies(dt)
         gsel = self.g_live & (self.g_fixed == fixed)
         if not gsel.any():
+            self._maybe_compact()
             return []
         self.g_elapsed[gsel] += dt
         sel = self.live & (self.fixed == fixed)
@@ -488,9 +496,12 @@ class TweenTable:
                 v[axis] = 0.0
                 rb.velocity = (v[0], v[1])
 
-    def _maybe_compact(self) -> None:
-        dead = len(self.live) - int(np.count_nonzero(self.live))
-        if dead < 256 or dead * 2 < len(self.live):
+    def _maybe_compact(self, slack: int = 32) -> None:
+        """Drop finished rows once they outnumber the running ones (plus ``slack``; all
+        of them once nothing runs), so the table tracks what is alive in a long game."""
+        live = int(np.count_nonzero(self.live))
+        dead = len(self.live) - live
+        if dead == 0 or (live and dead <= max(live, slack)):
             return
         keep = np.flatnonzero(self.live)
         remap = {int(old): new for new, old in enumerate(keep.tolist())}

@@ -138,6 +138,11 @@ def anchor_dir(anchor: str | os.PathLike[str] | None) -> Path | None:
             return path.resolve()
         if path.is_file():
             return path.resolve().parent
+        frozen = getattr(sys, "frozen", False)
+        if frozen and path.suffix in (".py", ".pyc") and path.parent.is_dir():
+            # a built game (kge export): modules live in an archive, so a module's
+            # __file__ names no file, but its package folder holds the assets
+            return path.parent.resolve()
         raise ValidationError(f"asset anchor {text!r} does not exist")
     try:  # a relative string is a module name: relative paths would depend on the cwd
         module = importlib.import_module(text)

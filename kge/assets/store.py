@@ -278,6 +278,16 @@ class Assets:
         """Forget decoded assets (they reload on next use)."""
         self._cache.clear()
 
+    def forget(self, path: str | os.PathLike[str]) -> bool:
+        """Forget what was decoded from the file ``path`` (it reloads on next use; hot
+        reload calls this when the file changes). True when something was cached."""
+        target = os.path.realpath(path)
+        stale = [k for k in self._cache if isinstance(k[1], str)
+                 and os.path.realpath(k[1]) == target]
+        for k in stale:
+            del self._cache[k]
+        return bool(stale)
+
     def preload(self, names: Iterable[str | os.PathLike[str]]) -> Preload:
         """Queue ``names`` for loading a few at a time (see :class:`Preload`)."""
         return Preload(self, names)

@@ -36,13 +36,17 @@ _FLIPS = ([0, 1, 2, 3], [1, 0, 3, 2], [3, 2, 1, 0], [2, 3, 0, 1])
 class AtlasFrames:
     """The atlas of one world's animation frames and the bulk texture-coordinate writer."""
 
+    @property
+    def table(self) -> ClipTable:
+        """The state's clip table (a new one after each compaction; sources keep ids)."""
+        return self.state.table
+
     def __init__(
         self, world: Any, table: ClipTable, state: ClipState, sprites: Any, sync: Any = None
     ) -> None:
         self.world = world
         #: brings ``state`` up to date with the components (new animators get rows)
         self.sync = sync
-        self.table = table
         self.state = state
         self.sprites = sprites
         self.atlas = pyglet.image.atlas.TextureAtlas(ATLAS_SIZE, ATLAS_SIZE)

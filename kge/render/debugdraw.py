@@ -77,7 +77,15 @@ class DebugDrawer:
 
     # -- inputs from the fixed step ----------------------------------------------------
     def record_contacts(self, now: float) -> None:
-        """Keep this step's new contact points (events last one step; markers linger)."""
+        """Keep this step's new contact points (events last one step; markers linger for
+        ``contact_seconds``). Nothing is kept while contact markers are not drawn."""
+        settings = self.world.try_resource(DebugDraw)
+        if settings is None or not (settings.enabled and settings.contacts):
+            self._contacts.clear()
+            return
+        keep = now - settings.contact_seconds
+        if self._contacts and self._contacts[0][0] < keep:
+            self._contacts = [c for c in self._contacts if c[0] >= keep]
         ev = self.world.try_resource(PhysicsEvents)
         if ev is None:
             return

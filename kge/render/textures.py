@@ -9,10 +9,30 @@ draw in one call.
 
 from __future__ import annotations
 
+import os
+import weakref
 from typing import Any
 
 from kge.errors import ValidationError
 from kge.render.images import PixelImage
+
+
+def _resolves_to(name: str, world: Any) -> str | None:
+    if world is not None:
+        from kge.assets import assets_for
+
+        found = assets_for(world).find(name)
+        return None if found is None or found.path is None else os.path.realpath(found.path)
+    return os.path.realpath(name)
+
+
+def forget_file(path: str) -> list[str]:
+    """Every cache drops the textures made from the file ``path`` (its image changed);
+    returns the image names that pointed at it, so their sprites can be redrawn."""
+    names: list[str] = []
+    for cache in list(_CACHES):
+        names += cache.forget_file(path)
+    return names
 
 
 def _load_path(name: str, world: Any) -> Any:
@@ -28,12 +48,27 @@ def _load_path(name: str, world: Any) -> Any:
         raise ValidationError(f"image {name!r} not found") from exc
 
 
+#: every live cache, so a changed image file reaches them all (hot reload)
+_CACHES: weakref.WeakSet[TextureCache] = weakref.WeakSet()
+
+
 class TextureCache:
     """Image value -> pyglet texture (with its pixel size)."""
 
     def __init__(self, world: Any = None) -> None:
         self.world = world
         self._cache: dict[Any, Any] = {}
+        _CACHES.add(self)
+
+    def forget_file(self, path: str) -> list[str]:
+        """Drop the textures of image names that resolve to the file ``path``; the names."""
+        target = os.path.realpath(path)
+        dropped = []
+        for key in [k for k in self._cache if isinstance(k, str)]:
+            if _resolves_to(key, self.world) == target:
+                del self._cache[key]
+                dropped.append(key)
+        return dropped
 
     @staticmethod
     def key(image: Any) -> Any:

@@ -94,18 +94,25 @@ def level(world: World) -> None:
     world.spawn(Text("coins: 0", size=18, screen_space=True, offset=(12, 520), anchor=(0, 1)))
 
 
-def main(frames: int | None = None) -> App:
+def main(frames: int | None = None, screenshot: str | None = None) -> App:
     """Open a window (headless without a display) and play."""
     app = App(level, title="{{title}}")
-    app.run(frames=frames)
+    app.run(frames=frames, screenshot=screenshot)
     return app
 '''
 
-MAIN = '''import sys
+MAIN = '''"""python -m {{pkg}} [FRAMES] [--screenshot FILE]: play (stop after FRAMES frames,
+saving the last one as a PNG: how tests and exported builds are checked headless)."""
+
+import argparse
 
 from {{pkg}}.game import main
 
-main(int(sys.argv[1]) if len(sys.argv) > 1 else None)
+parser = argparse.ArgumentParser(prog="{{pkg}}", description="{{title}}")
+parser.add_argument("frames", nargs="?", type=int, help="stop after this many frames")
+parser.add_argument("--screenshot", help="save the last frame as this PNG")
+args = parser.parse_args()
+main(args.frames, args.screenshot)
 '''
 
 TEST = '''"""{{title}}'s rules, tested headless with kge's pytest fixtures."""

@@ -47,8 +47,8 @@ class Animations:
 
     def __init__(self, world: World) -> None:
         self.world = world
-        self.table = ClipTable()
-        self.state = ClipState(self.table)
+        self.state = ClipState(ClipTable())
+        self._compacted_at = self._table_at = -1
         self.dirty: set[int] = set()
         self._new: list[int] = []
         self._serials: dict[int, int] = {}
@@ -103,6 +103,11 @@ class Animations:
         return row
 
     # -- syncing from the components --------------------------------------------------------
+    @property
+    def table(self) -> ClipTable:
+        """The clips the animators play (replaced when it is compacted)."""
+        return self.state.table
+
     def sync(self) -> None:
         if self._new:
             self.state.add_many(self._new)
@@ -111,6 +116,10 @@ class Animations:
             for entity in sorted(self.dirty):
                 self._sync_one(entity)
             self.dirty.clear()
+        if self.state.version != self._compacted_at or self.table.version != self._table_at:
+            self.state.compact()  # rows or clips came or went: drop clips nobody plays
+            self.table.ensure()
+            self._compacted_at, self._table_at = self.state.version, self.table.version
 
     def _sync_one(self, entity: int) -> None:
         anim = self.world.try_get(entity, Animator)

@@ -63,6 +63,13 @@ class BehaviourRunner:
         if "on_destroy" in behaviour.hooks:
             behaviour.script.on_destroy()
 
+    def refresh(self, entity: int, behaviour: Behaviour) -> None:
+        """The script's class changed (hot reload): call its new hooks from now on."""
+        if entity in self._scripts:
+            self._scripts[entity] = behaviour.script
+            self._hooks[entity] = behaviour.hooks
+            self._lists = None
+
     def adopt(self, script: Any) -> None:
         """Take over the coroutines a script started (before or after being attached)."""
         pending = getattr(script, "__dict__", {}).get("_kge_coroutines")

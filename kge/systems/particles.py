@@ -4,8 +4,8 @@
   animation): one vectorised update per emitter per frame on game time (so
   ``App.time_scale``, pause and single-stepping apply), births, bursts,
   one-shot clean-up, and collision with static colliders through the grid of
-  :mod:`kge.particles.grid` (rebuilt only when a collider or body is added or
-  removed).
+  :mod:`kge.particles.grid` (rebuilt only when static geometry comes or goes:
+  dynamic bodies spawning and despawning over a large map cost nothing).
 * :class:`ParticleTriggers` (FIXED stage, order 350, after physics and contact
   delivery): turns each fixed step's physics ``Hit`` / ``ContactBegin`` on
   colliders with :class:`~kge.components.particles.BurstOnHit`, and
@@ -61,15 +61,20 @@ def _to_world(points: Any, pose: tuple[float, float, float]) -> np.ndarray:
 
 
 def static_geometry(
-    world: World,
+    world: World, members: set[int] | None = None
 ) -> tuple[list[np.ndarray], list[tuple[float, float, float]], list[np.ndarray]]:
-    """World-space (polygons, circles, segments) of every non-sensor static collider."""
+    """World-space (polygons, circles, segments) of every non-sensor static collider;
+    the entities of those colliders and their bodies are added to ``members``."""
     polys: list[np.ndarray] = []
     circles: list[tuple[float, float, float]] = []
     segs: list[np.ndarray] = []
     for e, (col,) in world.query(Collider):
         if col.sensor or not _is_static(world, e, col):
             continue
+        if members is not None:
+            members.add(e)
+            if col.body is not None:
+                members.add(col.body)
         pose = _body_pose(world, e, col)
         shape = col.shape
         if isinstance(shape, Circle):
@@ -92,24 +97,72 @@ class ParticleSystem(System):
     stage = Stage.UPDATE
     order = 300
 
+    #: entities changed since the grid was built, past which it is simply rebuilt
+    MAX_PENDING = 100_000
+
     def attach(self, world: World) -> None:
         super().attach(world)
         self.particles = world.try_resource(Particles) or world.insert_resource(Particles(world))
         world.on_remove(ParticleEmitter, self._emitter_removed)
-        for ctype in (Collider, RigidBody):
-            world.on_add(ctype, self._geometry_changed)
-            world.on_remove(ctype, self._geometry_changed)
+        #: entities whose colliders or bodies came or went since the grid was built
+        self._pending: set[int] = set()
+        #: the grid's collider entities and their bodies
+        self._members: set[int] = set()
+        #: body entity -> how many colliders elsewhere attach to it (Collider.body)
+        self._attached: dict[int, int] = {}
+        world.on_add(Collider, self._collider_added)
+        world.on_remove(Collider, self._collider_removed)
+        world.on_add(RigidBody, self._changed)
+        world.on_remove(RigidBody, self._changed)
 
     def _emitter_removed(self, entity: int, em: Any) -> None:
         self.particles.states.pop(entity, None)
 
-    def _geometry_changed(self, entity: int, comp: Any) -> None:
-        self.particles.grid_dirty = True
+    def _changed(self, entity: int, comp: Any) -> None:
+        self._pending.add(entity)
+        if len(self._pending) > self.MAX_PENDING:
+            self.particles.grid_dirty = True
+            self._pending.clear()
+
+    def _collider_added(self, entity: int, col: Collider) -> None:
+        if col.body is not None:
+            self._attached[col.body] = self._attached.get(col.body, 0) + 1
+        self._changed(entity, col)
+
+    def _collider_removed(self, entity: int, col: Collider) -> None:
+        if col.body is not None:
+            left = self._attached.get(col.body, 0) - 1
+            if left > 0:
+                self._attached[col.body] = left
+            else:
+                self._attached.pop(col.body, None)
+        self._changed(entity, col)
+
+    def _static_changed(self) -> bool:
+        """Did any pending entity add or take away static geometry?"""
+        world = self.world
+        for e in self._pending:
+            if e in self._members:
+                return True  # it was in the grid: removed, or no longer static
+            col = world.try_get(e, Collider)
+            if col is not None and not col.sensor and _is_static(world, e, col):
+                return True  # a new static collider
+            if e in self._attached:
+                rb = world.try_get(e, RigidBody)
+                if rb is None or rb.type is BodyType.STATIC:
+                    return True  # colliders attached to it became static
+        return False
 
     def _grid(self) -> StaticGrid | None:
         p = self.particles
+        if self._pending:
+            p.grid_dirty = p.grid_dirty or self._static_changed()
+            self._pending.clear()
         if p.grid_dirty:
-            p.grid = StaticGrid.from_geometry(*static_geometry(self.world), cell=p.cell)
+            self._members = set()
+            p.grid = StaticGrid.from_geometry(
+                *static_geometry(self.world, self._members), cell=p.cell
+            )
             p.grid_dirty = False
         return p.grid
 

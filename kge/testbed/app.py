@@ -261,8 +261,11 @@ def run_testbed(start: str | None = None, size: tuple[int, int] = (1280, 720),
     ``frames`` closes it after that many frames (smoke tests on a virtual display);
     ``screenshot`` then saves the last frame.
     """
+    from kge.hotreload import HotReloadPlugin
+
     sample = get_sample(start) if start else all_samples()[0]
     app = App(TestbedScene(sample), title="kge testbed", size=size, headless=False)
+    app.add_plugins(HotReloadPlugin())  # edit a prefab or a sample's module: it reloads
     app.run(frames, screenshot)
     app.close()
     return 0

@@ -1,4 +1,5 @@
-"""Tiled maps: loading (pytiled-parser), merged tile collision, objects to entities.
+"""Tiled maps: loading (kge's own TMX/TSX/TX and JSON reader), merged tile collision,
+objects to entities.
 
 No GL here: the drawing lives in :mod:`kge.render.tilemap` and is installed by
 :class:`kge.systems.tilemap.TilemapPlugin`. See docs/tilemaps.md.

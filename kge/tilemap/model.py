@@ -1,6 +1,6 @@
 """A loaded Tiled map as plain data: numpy gid grids and per-gid lookup tables.
 
-Everything here is independent of pytiled-parser (see :mod:`kge.tilemap.parse`)
+Everything here is independent of the file formats (see :mod:`kge.tilemap.parse`)
 and of GL: the collision builder, the object spawner and the renderer read it.
 
 Grids keep Tiled's order (row 0 at the top). Tiled stores flips in the top bits

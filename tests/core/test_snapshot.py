@@ -5,7 +5,8 @@ from dataclasses import dataclass
 import pytest
 
 from kge import App, Behaviour, Script, Transform, World
-from kge.snapshot import SnapshotError, load, save, snapshot
+from kge.scenefile import load_game, register_script, save_game
+from kge.snapshot import SnapshotError, snapshot
 
 
 @dataclass(slots=True)
@@ -13,6 +14,7 @@ class Health:
     hp: int
 
 
+@register_script
 class Counter(Script):
     def __init__(self) -> None:
         self.ticks = 0
@@ -56,10 +58,10 @@ def test_app_restore_continues_scripts(tmp_path) -> None:
 
     app = App(scene, headless=True)
     app.step(10)
-    path = tmp_path / "save.kge"
-    save(app.world, path)
+    path = tmp_path / "save.toml"
+    save_game(app.world, path)
     app.step(5)
-    app.restore(load(path))
+    app.restore(load_game(path))
     ((_, (beh,)),) = app.world.query(Behaviour)
     assert beh.script.ticks == 10
     app.step(3)
@@ -70,6 +72,29 @@ def test_app_restore_continues_scripts(tmp_path) -> None:
 def test_garbage_is_a_clear_error() -> None:
     with pytest.raises(SnapshotError, match="not a kge snapshot"):
         World.restore(b"hello")
+
+
+def test_snapshot_bytes_from_disk_never_reach_pickle(tmp_path) -> None:
+    """A pickle that would run code, written to a file as a save: refused before unpickling."""
+    import pickle
+
+    ran: list[str] = []
+
+    class Boom:
+        def __reduce__(self):
+            return (ran.append, ("code ran",))
+
+    evil = pickle.dumps({"format": 1, "entities": Boom()}, protocol=5)
+    (tmp_path / "save.kge").write_bytes(evil)
+    with pytest.raises(SnapshotError, match="not a kge snapshot taken in this process"):
+        App(lambda w: None, headless=True).restore((tmp_path / "save.kge").read_bytes())
+    with pytest.raises(SnapshotError, match="taken in this process"):
+        World.restore(snapshot(World())[:-1] + b"x")  # a tampered signature
+    assert ran == []
+    import kge.snapshot
+
+    with pytest.raises(AttributeError, match="save_game"):
+        kge.snapshot.save  # noqa: B018  (the pickle-to-disk helpers are gone, with a pointer)
 
 
 def test_unpicklable_component_is_reported() -> None:

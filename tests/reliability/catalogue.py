@@ -316,13 +316,17 @@ CASES: list[Case] = [
     Case("snapshot holding a NaN position", "World.restore(bad)", SnapshotError,
          r"snapshot entity 2, Transform: Transform\.x must be finite, got nan",
          setup="import pickle; d = pickle.loads(world.snapshot()); "
-               "object.__setattr__(d['entities'][a][0], 'x', nan); bad = pickle.dumps(d)"),
+               "object.__setattr__(d['entities'][a][0], 'x', nan); "
+               "from kge.snapshot import seal; bad = seal(d)"),
     Case("snapshot of a collider on a missing body",
          "App(lambda w: None, headless=True).restore(bad)", SnapshotError,
          r"snapshot entity 2: entity 2, Collider\.body: body entity 999 does not exist",
          setup="import pickle; d = pickle.loads(world.snapshot()); "
                "c = [c for c in d['entities'][a] if type(c) is Collider][0]; "
-               "object.__setattr__(c, 'body', 999); bad = pickle.dumps(d)"),
+               "object.__setattr__(c, 'body', 999); from kge.snapshot import seal; bad = seal(d)"),
+    Case("snapshot bytes not signed in this process (a file, another process)",
+         "World.restore(bad)", SnapshotError, r"not a kge snapshot taken in this process",
+         setup="import pickle; bad = pickle.dumps(pickle.loads(world.snapshot()))"),
     # -- callbacks (issue 15, class 8) --------------------------------------------------
     Case("closing the world inside pre-solve", "physics.on_pre_solve(close_in_hook); step()",
          WorldLockedError, r"world\.close\(\) inside a physics callback", in_step=True),

@@ -22,7 +22,7 @@ from kge.physics.contacts import PreSolve
 from kge.physics.resource import Physics
 from kge.scene_carry import RestoreWarning
 from kge.schedule import Stage
-from kge.snapshot import SnapshotError
+from kge.snapshot import SnapshotError, seal
 
 from .harness import state_dump
 
@@ -42,7 +42,7 @@ def _bad_snapshots(app: App) -> dict[str, bytes]:
     def variant(name: str, edit: Any) -> None:
         data = pickle.loads(pickle.dumps(good))
         edit(data)
-        out[name] = pickle.dumps(data, protocol=5)
+        out[name] = seal(data)  # signed like a real snapshot: the checks behind the seal run
 
     def nan_x(d: dict[str, Any]) -> None:
         raw_set(next(c for c in d["entities"][2] if isinstance(c, Transform)), "x", math.nan)

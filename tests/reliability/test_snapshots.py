@@ -21,7 +21,7 @@ from kge import (
     Transform,
     World,
 )
-from kge.snapshot import load, save
+from kge.scenefile import load_game, save_game
 from kge.testbed.samples.stacking import pyramid
 
 from .harness import AppProbe, check_invariants, space_counts
@@ -60,10 +60,10 @@ def _components(world: World) -> dict[int, list[object]]:
 def test_restore_loses_no_entity_component_joint_or_velocity(tmp_path: Path) -> None:
     original = App(busy, headless=True)
     original.step(40)
-    path = tmp_path / "busy.kge"
-    save(original.world, path)
+    path = tmp_path / "busy.save.toml"
+    save_game(original.world, path)
     restored = App(busy, headless=True)
-    restored.restore(load(path))
+    restored.restore(load_game(path))
     # every component, with every field (velocities, awake flags, joint state) equal
     assert _components(restored.world) == _components(original.world)
     moving = [rb.velocity for _, (rb,) in restored.world.query(RigidBody) if rb.velocity != (0, 0)]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from kge import Transform
 from kge.components.camera import Camera
@@ -168,3 +169,37 @@ def test_shapes_are_filled_translucently_under_their_outlines(make_app):
     assert int(np.argmax(fill)) == int(np.argmax(outline))
     assert mask(px, D.static_color[:3], 12)[cy - 40 : cy + 41, cx - 41 : cx - 38].any()  # outline
     assert np.all(np.abs(px[cy + 64, cx, :3].astype(int) - fill) <= 2)  # the circle too
+
+
+def _bouncing_balls(world, debug: DebugDraw | None) -> None:
+    if debug is not None:
+        world.insert_resource(debug)
+    world.spawn(Transform(0, -3), Collider(Box(10, 0.5)))
+    for i in range(30):
+        world.spawn(Transform(-7.5 + 0.5 * i, 1 + (i % 5)), RigidBody(),
+                    Collider(Circle(0.2), restitution=0.9))
+
+
+@pytest.mark.parametrize("debug", [None, DebugDraw(enabled=False), DebugDraw(contacts=False)])
+def test_contact_markers_are_not_kept_while_they_are_not_drawn(make_app, debug) -> None:
+    from kge.physics.events import PhysicsEvents
+
+    app = make_app(lambda world: _bouncing_balls(world, debug))
+    app.render()  # the renderer now records every fixed step
+    begins = 0
+    for _ in range(600):
+        app.step()
+        begins += len(app.world.resource(PhysicsEvents).contact_begin)
+    assert begins > 100
+    assert len(app.world.get_system(RenderSystem).view.debug._contacts) == 0
+
+
+def test_contact_markers_linger_only_contact_seconds(make_app) -> None:
+    app = make_app(lambda world: _bouncing_balls(world, DebugDraw(contact_seconds=0.25)))
+    app.render()
+    kept = []
+    for _ in range(600):
+        app.step()
+        kept.append(len(app.world.get_system(RenderSystem).view.debug._contacts))
+    # a quarter second of begins at most (30 balls bouncing: a few a step), never all of them
+    assert 0 < max(kept) < 150

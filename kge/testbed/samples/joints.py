@@ -6,6 +6,7 @@ Every joint is an entity naming its two bodies (``None`` = the static ground).
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 from kge.components import Behaviour, Name, Script, Transform
 from kge.components.collider import Collider
@@ -477,3 +478,30 @@ def _friction_joints_stop_crates(app) -> None:  # type: ignore[no-untyped-def]
         vx, vy = app.world.get(e, RigidBody).velocity
         assert math.hypot(vx, vy) < 0.05, "friction joints should have stopped every crate"
 
+
+
+PREFABS = Path(__file__).resolve().parent.parent / "prefabs"
+
+
+@sample("Joints", "Prefabs", help="Two cars and three ragdolls placed from prefab files "
+        "(kge/testbed/prefabs/*.prefab.toml); the second car overrides its motor speed.",
+        follow="chassis")
+def prefabs(world: World) -> None:
+    from kge.scenefile import instantiate
+
+    hills = [(-30.0, 0.0), (60.0, 0.0), (60.0, 5.0)]
+    world.spawn(Transform(), Collider(Chain([(-30.0, 5.0), *hills]), friction=0.6),
+                Name("ground"))
+    instantiate(world, PREFABS / "car.prefab.toml", at=(0.0, 1.0), key="car")
+    instantiate(world, PREFABS / "car.prefab.toml", at=(-8.0, 1.0), key="fast_car",
+                overrides={"rear_axle": {"WheelJoint": {"motor_speed": -35.0}}})
+    for i in range(3):
+        instantiate(world, PREFABS / "ragdoll.prefab.toml", at=(-20.0 + 3.0 * i, 3.0 + 2.0 * i),
+                    key=f"ragdoll{i + 1}")
+
+
+@prefabs.claim
+def _prefab_cars_drive_and_ragdolls_hold(app) -> None:  # type: ignore[no-untyped-def]
+    xs = sorted(app.world.get(e, Transform).x for e in named(app.world, "chassis"))
+    assert len(xs) == 2 and xs[1] > 6.0, f"the cars reached {xs}"
+    _ragdolls_stay_assembled(app)
