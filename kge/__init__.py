@@ -152,6 +152,7 @@ if TYPE_CHECKING:
     from kge.audio import Audio, SoundHandle
     from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.render.sheets import SheetError, SpriteSheet, load_sheet
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.lighting import LightingPlugin
@@ -175,6 +176,9 @@ _LAZY = {
     "checker": "kge.render.images",
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
+    "SheetError": "kge.render.sheets",
+    "SpriteSheet": "kge.render.sheets",
+    "load_sheet": "kge.render.sheets",
     "AudioPlugin": "kge.systems.audio",
     "AnimationPlugin": "kge.systems.animation",
     "Animations": "kge.systems.animation",
@@ -304,11 +308,13 @@ __all__ = [
     "SensorEnd",
     "Sequence",
     "ShadowCaster",
+    "SheetError",
     "SoundData",
     "SoundHandle",
     "Spawn",
     "Spawners",
     "Sprite",
+    "SpriteSheet",
     "Stage",
     "System",
     "Text",
@@ -342,6 +348,7 @@ __all__ = [
     "load_game",
     "load_map",
     "load_scene",
+    "load_sheet",
     "register_script",
     "register_type",
     "run",
