@@ -95,6 +95,17 @@ class GridShape:
         x = ci * (tw2 + sx) + np.where(self._staggered(ri), col_w, 0.0)
         return x.astype(np.float64), ri * row_h, tw, th
 
+    def lattice(self, cols: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Map pixels of grid corners (col, row) of an isometric map: the top corner of
+        cell (c, r) is corner (c, r), its right corner (c + 1, r), and so on.
+
+        >>> [float(v[0]) for v in GridShape("isometric", 64, 32, cols=4, rows=4).lattice(
+        ...     np.array([0.0]), np.array([1.0]))]
+        [96.0, 16.0]
+        """
+        c, r = np.asarray(cols, np.float64), np.asarray(rows, np.float64)
+        return (c - r + self.rows) * self.tile_w / 2, (c + r) * self.tile_h / 2
+
     def cell_box(self, col: int, row: int) -> tuple[float, float, float, float]:
         x, y, w, h = self.cell_boxes(np.array([col]), np.array([row]))
         return (float(x[0]), float(y[0]), w, h)

@@ -17,7 +17,7 @@ import numpy as np
 
 from kge.errors import KgeError
 from kge.gcpause import without_gc
-from kge.tilemap.cellcollision import CellCollision
+from kge.tilemap.cellcollision import CellCollision, IsoCollision
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
 from kge.tilemap.files import MapLimits
@@ -375,11 +375,8 @@ def load_map(
             solid = (
                 lay.name in solid_names or str(lay.properties.get("solid", "")).lower() == "true"
             )
-            coll = (
-                LayerCollision(data, lay, solid, base)
-                if data.orientation == "orthogonal"
-                else CellCollision(data, lay, solid, base)
-            )
+            kinds = {"orthogonal": LayerCollision, "isometric": IsoCollision}
+            coll = kinds.get(data.orientation, CellCollision)(data, lay, solid, base)
             tmap.collision[lay.name] = coll
             pieces.extend(coll.build())
     except (KgeError, ValueError) as exc:
