@@ -23,7 +23,6 @@ BLOCK = re.compile(r"(?:<!-- (runnable|step|test-file)(?:: \S+)? -->\n)?```pytho
 
 #: pages whose older snippets are not run yet, with how many: convert them, never add
 NOT_YET_RUN = {
-    "docs/audio-assets.md": 7,
     "docs/box2d.md": 1,
     "docs/collision.md": 1,
     "docs/joints.md": 1,
