@@ -26,7 +26,9 @@ from pyglet import gl
 from kge.render.groups import WORLD
 from kge.render.images import PixelImage
 from kge.render.passes import Frame
+from kge.render.programs import per_context
 from kge.render.textures import TextureCache
+from kge.render.tileobjects import ObjectQuads, layer_objects, object_entities, place
 from kge.tilemap.model import (
     FLIP_D,
     FLIP_H,
@@ -34,7 +36,6 @@ from kge.tilemap.model import (
     LayerStyle,
     MapData,
     TileLayerData,
-    split_gids,
 )
 from kge.tilemap.objects import DEPTH_BASE, DEPTH_STEPS
 from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
@@ -72,18 +73,18 @@ void main() {
     color = texture(tile_texture, uv) * tint;
 }
 """
-_program_cache: list[Any] = []
 
 
 def tile_program() -> Any:
-    if not _program_cache:
-        _program_cache.append(
-            pyglet.graphics.shader.ShaderProgram(
-                pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
-                pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
-            )
-        )
-    return _program_cache[0]
+    """The tile shader program of the current GL context (one per context: its
+    uniforms change per layer, see :mod:`kge.render.programs`)."""
+    return per_context(
+        "tiles",
+        lambda: pyglet.graphics.shader.ShaderProgram(
+            pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
+            pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
+        ),
+    )
 
 
 class LayerGroup(pyglet.graphics.Group):
@@ -231,9 +232,13 @@ class MapDrawing:
     map's tile objects) are drawn between the rows in front and behind them.
     """
 
-    def __init__(self, tmap: TileMap, textures: TextureCache) -> None:
+    def __init__(self, tmap: TileMap, textures: TextureCache, poses: Any = None) -> None:
         self.map = tmap
         self.textures = textures
+        #: () -> the world's pose table (sprites' blended poses), or None
+        self.poses = poses
+        self.object_quads: list[ObjectQuads] = []
+        self._held: list[int] = []
         self.program = tile_program()
         data = tmap.data
         self.tex = [
@@ -486,49 +491,57 @@ class MapDrawing:
             entry[1].tint = _tint(layer.style)
 
     def _tile_objects(self, frame: Frame) -> None:
-        """Tile objects of parallax object layers (drawn with the map, like their layer)."""
+        """Tile objects of parallax object layers: drawn with the map, shifted like their
+        layer, around their entities' poses (:mod:`kge.render.tileobjects`)."""
         data = self.map.data
+        world = self.map.world
         if not self._objects_built:
             self._objects_built = True
+            by_id = object_entities(world, self.map.objects)
             for layer in data.object_layers:
-                objs = [o for o in layer.objects if o.gid and o.visible]
-                if layer.style.parallax == (1.0, 1.0) or not objs or not layer.style.visible:
+                if layer.style.parallax == (1.0, 1.0) or not layer.style.visible:
                     continue
-                self._object_layer(frame, layer, objs)
-        for _, g, style in self.extras:
-            if style is not None:
-                g.shift, g.tint = _shift(frame, data, style), _tint(style)
+                self._object_layer(frame, layer, by_id)
+        for q in self.object_quads:
+            q.group.shift, q.group.tint = _shift(frame, data, q.style), _tint(q.style)
+            place(q, frame, world, self._release)
 
-    def _object_layer(self, frame: Frame, layer: Any, objs: list[Any]) -> None:
+    def _object_layer(self, frame: Frame, layer: Any, by_id: dict[tuple[str, int], int]) -> None:
         data = self.map.data
-        u = data.units
-        gids = np.array([o.gid for o in objs], np.uint32)
-        g_, flags = split_gids(gids)
-        g_ = g_.astype(np.int64)
-        quads = []
-        for o, gid in zip(objs, g_.tolist(), strict=True):
-            w = o.width or float(data.tiles.rect[gid, 2])
-            h = o.height or float(data.tiles.rect[gid, 3])
-            px, py = data.grid.object_px(o.x, o.y) if data.grid is not None else (o.x, o.y)
-            if data.orientation == "isometric":
-                px -= w / 2
-            xs = px + _SX * w
-            ys = py - (1.0 - _SY) * h
-            x, y = u.points(xs, ys)
-            quads.append(np.stack([x, y], axis=-1))
-        pos = np.array(quads, np.float32)
-        local, rect = tile_uvs(data, g_, flags, self.bounds)
-        images = data.tiles.image[g_]
+        objs, gids, flags, entities, sizes = layer_objects(data, layer, by_id)
+        if not objs:
+            return
+        for e in entities:
+            self._hold(e)
+        local, rect = tile_uvs(data, gids, flags, self.bounds)
+        images = data.tiles.image[gids]
         draw_layer, order = self._placement(layer.properties, layer.index)
         for image in np.unique(images).tolist():
             sel = images == image
+            n = int(sel.sum())
             grp = LayerGroup(
                 self.program, self.tex[image], frame.groups.get(draw_layer, WORLD, order)
             )
             vl = _quad_list(
-                self.program, int(sel.sum()), frame.batch, grp, pos[sel], local[sel], rect[sel]
+                self.program, n, frame.batch, grp, np.zeros((n, 4, 2)), local[sel], rect[sel]
             )
-            self.extras.append((vl, grp, layer.style))
+            ents = [e for e, keep in zip(entities, sel.tolist(), strict=True) if keep]
+            self.object_quads.append(ObjectQuads(vl, grp, layer.style, ents, sizes[sel]))
+
+    def _hold(self, entity: int) -> None:
+        """Keep a pose-table row for an object entity (blended with the sprites)."""
+        table = self.poses() if self.poses is not None else None
+        if table is not None:
+            from kge.components.transform import Transform
+
+            table.acquire(entity, self.map.world.try_get(entity, Transform))
+            self._held.append(entity)
+
+    def _release(self, entity: int) -> None:
+        table = self.poses() if self.poses is not None else None
+        if table is not None and entity in self._held:
+            self._held.remove(entity)
+            table.release(entity)
 
     def delete(self) -> None:
         for key in list(self.chunks):
@@ -539,6 +552,11 @@ class MapDrawing:
         for vl, _, _ in self.extras:
             vl.delete()
         self.extras.clear()
+        for q in self.object_quads:
+            q.vlist.delete()
+        self.object_quads.clear()
+        for e in list(self._held):
+            self._release(e)
         self.__dict__.pop("_bg", None)
 
 
@@ -576,8 +594,9 @@ def _tint(style: LayerStyle) -> tuple[float, float, float, float]:
 class TilemapRenderer:
     """The render pass: draws every map in the world's :class:`TileMaps`."""
 
-    def __init__(self, world: Any) -> None:
+    def __init__(self, world: Any, poses: Any = None) -> None:
         self.world = world
+        self.poses = poses  #: () -> the world's pose table, or None
         self.textures: TextureCache | None = None
         self.drawings: dict[int, MapDrawing] = {}
 
@@ -593,7 +612,7 @@ class TilemapRenderer:
         for key, tmap in live.items():
             d = self.drawings.get(key)
             if d is None:
-                d = self.drawings[key] = MapDrawing(tmap, self.textures)
+                d = self.drawings[key] = MapDrawing(tmap, self.textures, self.poses)
             d.draw(frame)
 
     @property

@@ -41,11 +41,20 @@ class TilemapPlugin(Plugin):
             if renderer is None:
                 from kge.render.tilemap import TilemapRenderer
 
-                renderer = state["renderer"] = TilemapRenderer(world)
+                renderer = state["renderer"] = TilemapRenderer(world, lambda: _poses(world))
             renderer(frame)
 
         draw_maps.state = state  # type: ignore[attr-defined]  # tests read the renderer
         passes_for(world).add(draw_maps, phase="before", order=PASS_ORDER)
+
+
+def _poses(world: World) -> Any:
+    """The world's pose table (what sprites are drawn from), once it renders."""
+    from kge.systems.render import RenderSystem
+
+    rs = world.get_system(RenderSystem)
+    view = getattr(rs, "view", None) if rs is not None else None
+    return getattr(view, "poses", None)
 
 
 def map_file(world: World, name: str | Path) -> Path:
