@@ -55,14 +55,14 @@ def _finish() -> None:
 
 def _particle_app(n: int) -> tuple[Any, int]:
     from kge import App, Transform
-    from kge.components.particles import EmitCircle, ParticleEmitter
+    from kge.components.particles import Blend, EmitCircle, ParticleEmitter
 
     def scene(world: Any) -> None:
         world.spawn(Transform(0.0, -2.0), ParticleEmitter(
             rate=float(n), lifetime=1.0, speed=(2.0, 5.0), spread=1.2,
             acceleration=(0.0, -9.8), drag=0.3, spin=(-2.0, 2.0), shape=EmitCircle(0.5),
-            size=(0.05, 0.12, 0.0), color=((255, 240, 120), (255, 80, 0)), alpha=(1.0, 0.0),
-            blend="additive", max_particles=n + n // 10, prewarm=1.0, seed=1,
+            size=(0.05, 0.12, 0.0), color=((255, 240, 120), (255, 80, 0)), opacity=(255, 0),
+            blend=Blend.ADDITIVE, max_particles=n + n // 10, prewarm=1.0, seed=1,
         ))  # fmt: skip
 
     app = App(scene, headless=True, size=(480, 270))

@@ -29,6 +29,7 @@ import os
 import statistics
 import sys
 import time
+from collections.abc import Callable
 from typing import Any
 
 os.environ.setdefault("PYGLET_HEADLESS", "1")
@@ -249,14 +250,15 @@ class Exclusive:
     under-counted the joint batch by 3x).
     """
 
-    def __init__(self) -> None:
+    def __init__(self, clock: Callable[[], float] = time.perf_counter) -> None:
         self.acc: dict[str, float] = {}
+        self.clock = clock  #: seconds (a test passes a fake clock)
         self._stack: list[float] = []
         self._undo: list[tuple[Any, str, Any]] = []
 
     def wrap(self, obj: Any, name: str, key: str) -> None:
         inner = getattr(obj, name)
-        acc, stack, clock = self.acc, self._stack, time.perf_counter
+        acc, stack, clock = self.acc, self._stack, self.clock
         acc.setdefault(key, 0.0)
 
         def timed(*args: Any, **kwargs: Any) -> Any:

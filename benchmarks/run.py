@@ -2,8 +2,8 @@
 
 Writes a table to the terminal (with progress on stderr), ``out/bench.json``,
 ``out/bench.png`` (matplotlib) and ``out/bench.md`` (the same report as
-markdown, for docs/benchmarks.md). ``--quick`` runs every scene at its smallest
-size in seconds (the test suite does this so the benchmarks cannot rot);
+markdown, as kept in benchmarks/results/bench.md). ``--quick`` runs every scene at its
+smallest size in seconds (the test suite does this so the benchmarks cannot rot);
 ``--breakdown`` adds kge's time per phase (sync-in, step, sync-out, events).
 Render sync (sprites moved per frame, headless) is measured in the same run
 unless ``--no-render``; the issue's targets are checked against the numbers at
@@ -277,7 +277,7 @@ def render_table(render: dict[int, dict[str, float]]) -> str:
 
 
 def markdown(report: dict[str, Any], chart_link: str | None) -> str:
-    """The report as markdown (what docs/benchmarks.md carries)."""
+    """The report as markdown (what benchmarks/results/bench.md keeps)."""
     res = [Result(**r) for r in report["results"]]
     out = [f"Measured {report['date']} on {report['machine']}.", "",
            "Versions: " + ", ".join(f"{k} {v}" for k, v in report["versions"].items()) + ".", ""]

@@ -159,7 +159,7 @@ def bench_section(
 
 
 def markdown_lines(results: dict[str, dict[str, float]]) -> list[str]:
-    """The UI table of ``docs/benchmarks.md``."""
+    """The UI table of ``benchmarks/results/bench.md``."""
     if not results:
         return []
     out = ["", "UI, µs per widget and frame (median; `draw` = kge's cached after-pass, "

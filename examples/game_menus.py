@@ -33,7 +33,6 @@ from kge import (
     Panel,
     Script,
     Slider,
-    UIEvents,
     UINode,
     ValueChanged,
     World,
@@ -81,7 +80,7 @@ class _Buttons(Script):
 
     def on_update(self, dt: float) -> None:
         app = self.world.resource(App)
-        for ev in self.world.resource(UIEvents).of(ButtonClicked):
+        for ev in self.world.events(ButtonClicked):
             handler = self.handlers.get(ev.text)
             if handler is not None:
                 handler(app)
@@ -109,7 +108,7 @@ class _Volumes(Script):
 
     def on_update(self, dt: float) -> None:
         audio = self.world.resource(Audio)
-        for ev in self.world.resource(UIEvents).of(ValueChanged):
+        for ev in self.world.events(ValueChanged):
             if ev.entity == self.music:
                 audio.music_volume = ev.value
             elif ev.entity == self.sfx:
@@ -132,7 +131,7 @@ class _Rebind(Script):
                 world.get(self.waiting, Button).text = _binding_text(actions, action)
                 self.waiting = None
             return
-        for ev in world.resource(UIEvents).of(ButtonClicked):
+        for ev in world.events(ButtonClicked):
             if ev.entity in self.buttons:
                 self.waiting = ev.entity
                 world.get(ev.entity, Button).text = f"{self.buttons[ev.entity]}: press a key..."

@@ -19,6 +19,7 @@ import kge
 from kge import (
     App,
     Behaviour,
+    Blend,
     Box,
     Camera,
     Collider,
@@ -26,6 +27,7 @@ from kge import (
     Light,
     Lighting,
     Name,
+    ParticleCollision,
     ParticleEmitter,
     RigidBody,
     Script,
@@ -78,18 +80,19 @@ def night(world: World) -> None:
                 Light(radius=9.0, cone=0.8, softness=0.4, offset=(1.0, 0.1),
                       color=(255, 255, 220), shadows=True),
                 ParticleEmitter(rate=40.0, lifetime=(0.6, 1.0), speed=(0.2, 0.5), spread=0.8,
-                                acceleration=(0.0, 0.5), size=(0.1, 0.5), alpha=(0.5, 0.0),
+                                acceleration=(0.0, 0.5), size=(0.1, 0.5), opacity=(128, 0),
                                 color=((160, 160, 160), (80, 80, 80)), layer=3, seed=2),
                 Behaviour(Drive()))  # fmt: skip
     world.spawn(Transform(0.0, 10.0), Name("rain"), ParticleEmitter(
         rate=400.0, shape=EmitBox(30.0, 0.1), direction=-math.pi / 2 - 0.15, speed=(9.0, 11.0),
-        lifetime=2.0, size=0.06, color=(170, 190, 230), alpha=0.6, collide="die", flat=True,
+        lifetime=2.0, size=0.06, color=(170, 190, 230), opacity=153, flat=True,
+        collide=ParticleCollision.DIE,
         max_particles=2000, layer=3, seed=4,
     ))  # fmt: skip
     world.spawn(Transform(-2.0, 3.0), Name("fireflies"), ParticleEmitter(
         rate=6.0, shape=EmitBox(8.0, 3.0), spread=2 * math.pi, speed=(0.05, 0.3),
         lifetime=(2.0, 4.0), size=0.12, color=((200, 255, 120), (120, 220, 60)),
-        alpha=(0.0, 1.0, 0.0), blend="additive", layer=101, prewarm=3.0, seed=6,
+        opacity=(0, 255, 0), blend=Blend.ADDITIVE, layer=101, prewarm=3.0, seed=6,
     ))  # fmt: skip
 
 

@@ -30,9 +30,9 @@ from kge import (
     Key,
     MapObject,
     Physics,
-    PhysicsEvents,
     RigidBody,
     Script,
+    SensorBegin,
     Spawn,
     Spawners,
     Text,
@@ -80,7 +80,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             for a, b in ((ev.collider_a, ev.collider_b), (ev.collider_b, ev.collider_a)):
                 if not (world.exists(a) and world.exists(b)) or not world.has(a, Behaviour):
                     continue
@@ -103,7 +103,7 @@ class Referee(Script):
 def _hud(world: World) -> None:
     score = world.resource(Score)
     for _, (t,) in world.query(Text):
-        t.value = f"level {score.level}   coins {score.coins}"
+        t.text = f"level {score.level}   coins {score.coins}"
 
 
 def player_start(spawn: Spawn) -> list[Any]:

@@ -40,12 +40,12 @@ from kge import (
     Name,
     RigidBody,
     Script,
-    Sequence,
     Sprite,
     Text,
     Transform,
     Tween,
     Tweens,
+    TweenSequence,
     Wait,
     World,
 )
@@ -81,7 +81,7 @@ class Score(Script):
 
     def add(self) -> None:
         self.points += 1
-        self.get(Text).value = str(self.points)
+        self.get(Text).text = str(self.points)
         self.world.resource(Tweens).start(self.entity, SCORE_POP)  # the number pops
         if self.hud is not None:  # the HUD corner shows it, and pops the same way
             self.world.get(self.hud, kge.Label).text = f"{self.side}  {self.points}"
@@ -89,9 +89,9 @@ class Score(Script):
 
 
 #: a point scored: the score grows quickly, then bounces back to its size
-SCORE_POP = Sequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
+SCORE_POP = TweenSequence(Tween(Text, "size", 24.0, 0.12, ease="quad_out", start=15.0),
                      Tween(Text, "size", 15.0, 0.35, ease="bounce_out"), name="score-pop")
-HUD_POP = Sequence(Tween(kge.Label, "size", 30.0, 0.12, ease="quad_out", start=22.0),
+HUD_POP = TweenSequence(Tween(kge.Label, "size", 30.0, 0.12, ease="quad_out", start=22.0),
                    Tween(kge.Label, "size", 22.0, 0.35, ease="bounce_out"), name="hud-pop")
 
 
@@ -297,7 +297,7 @@ def main() -> None:
         app.input.press(Key.SPACE)
         app.step(2)
         app.step(60 * 8)
-        scores = {n.value: t.value for _, (n, t) in app.world.query(Name, Text)
+        scores = {n.value: t.text for _, (n, t) in app.world.query(Name, Text)
                   if n.value.startswith("score")}
         print(f"kge {kge.__version__} pong, 8 s headless with an idle player: {scores}")
         app.screenshot("out/pong.png")

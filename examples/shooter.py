@@ -33,12 +33,14 @@ from kge import (
     Assets,
     Audio,
     Behaviour,
+    Blend,
     Chain,
     Circle,
     Clip,
     Collider,
     Input,
     Key,
+    Loop,
     Mouse,
     Name,
     Polygon,
@@ -50,7 +52,7 @@ from kge import (
     World,
     draw,
 )
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import SensorBegin
 from kge.systems.animation import shake
 
 ASSETS = Assets(anchor=__file__)
@@ -173,9 +175,10 @@ def spawn_enemy(world: World, x: float, y: float, speed: float) -> int:
 def engine_trail() -> kge.ParticleEmitter:
     """Hot exhaust behind an enemy (local -y): 25 puffs per metre flown, fading red."""
     return kge.ParticleEmitter(
-        rate_per_metre=25.0, offset=(0.0, -ENEMY_SCALE / 2), direction=-math.pi / 2, spread=0.6,
-        speed=(0.2, 0.6), lifetime=(0.25, 0.5), size=(0.14, 0.02), alpha=(0.9, 0.0),
-        color=((255, 220, 120), (255, 90, 20), (90, 20, 10)), blend="additive", max_particles=64,
+        rate_per_meter=25.0, offset=(0.0, -ENEMY_SCALE / 2), direction=-math.pi / 2, spread=0.6,
+        speed=(0.2, 0.6), lifetime=(0.25, 0.5), size=(0.14, 0.02), opacity=(230, 0),
+        color=((255, 220, 120), (255, 90, 20), (90, 20, 10)), blend=Blend.ADDITIVE,
+        max_particles=64,
     )  # fmt: skip
 
 
@@ -183,7 +186,7 @@ def explosion(world: World, at: tuple[float, float]) -> int:
     """A one-shot burst of sparks where an enemy died; the entity despawns itself when done."""
     return world.spawn(Transform(*at), Name("sparks"), kge.ParticleEmitter(
         burst=60, one_shot=True, spread=2 * math.pi, speed=(1.0, 4.0), drag=3.0,
-        lifetime=(0.3, 0.7), size=(0.18, 0.03), alpha=(1.0, 0.0), blend="additive",
+        lifetime=(0.3, 0.7), size=(0.18, 0.03), opacity=(255, 0), blend=Blend.ADDITIVE,
         color=((255, 255, 200), (255, 150, 40), (160, 30, 0)),
     ))  # fmt: skip
 
@@ -195,7 +198,7 @@ class Referee(Script):
 
     def on_fixed_update(self, dt: float) -> None:
         world = self.world
-        for ev in world.resource(PhysicsEvents).sensor_begin:
+        for ev in world.events(SensorBegin):
             a, b = sorted((ev.collider_a, ev.collider_b))
             kinds = {_kind(world, a): a, _kind(world, b): b}
             if "shot" in kinds and "enemy" in kinds:
@@ -237,7 +240,7 @@ class Referee(Script):
 
 
 # -- animation: explosions and the thruster, cut from generated sheets ---------------------
-EXPLOSION = Clip.grid("explosion_sheet.png", (8, 1), fps=20, loop="once")
+EXPLOSION = Clip.grid("explosion_sheet.png", (8, 1), fps=20, loop=Loop.ONCE)
 THRUSTER = Clip.grid("thruster.png", (4, 1), duration=[0.06, 0.05, 0.07, 0.05])
 
 
@@ -290,8 +293,8 @@ class Hud(Script):
         if ships:
             self.score = ships[0][1][1].script.score
         text = f"Score : {self.score}"
-        if self.get(Text).value != text:
-            self.get(Text).value = text
+        if self.get(Text).text != text:
+            self.get(Text).text = text
             if self.label is not None:
                 self.world.get(self.label, kge.Label).text = text
 
@@ -376,7 +379,7 @@ def main() -> None:
                 app.input.move_mouse(*app.world_to_screen((t.x, t.y)))
             app.step()
         hud = next(t for _, (n, t) in app.world.query(Name, Text) if n.value == "score")
-        print(f"kge {kge.__version__} shooter, 10 s headless with auto-aim: {hud.value}")
+        print(f"kge {kge.__version__} shooter, 10 s headless with auto-aim: {hud.text}")
         app.screenshot("out/shooter.png")
         print("screenshot: out/shooter.png")
         app.close()

@@ -52,7 +52,7 @@ from kge.components import (
     WheelJoint,
 )
 from kge.components import drawables as draw
-from kge.components.animation import Animator, Clip, FrameRef, Transition
+from kge.components.animation import Animator, Clip, FrameRef, Loop, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
@@ -60,6 +60,7 @@ from kge.components.debug import DebugDraw
 # particles and lights (issue 18): components here, plugins and the resource on first use
 from kge.components.lights import Light, Lighting, ShadowCaster
 from kge.components.particles import (
+    Blend,
     BurstOnHit,
     EmitBox,
     EmitCircle,
@@ -67,22 +68,26 @@ from kge.components.particles import (
     EmitLine,
     EmitPoint,
     ParticleBurst,
+    ParticleCollision,
     ParticleEmitter,
+    ParticleSpace,
 )
 from kge.components.shake import CameraShake
 from kge.components.sprite import Sprite
 from kge.components.text import Text
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
-from kge.components.tween import Delay, Parallel, Sequence, Tween
+from kge.components.tween import Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
+    DisplayError,
     EntityNotFoundError,
     HookSignatureError,
     KgeError,
     MissingComponentError,
     MissingResourceError,
     SceneStackError,
+    ScheduleError,
     ValidationError,
     WorldLockedError,
 )
@@ -100,13 +105,14 @@ from kge.physics.events import (
     SensorEnd,
 )
 from kge.physics.mass import MassData
-from kge.physics.queries import QueryHit, RayHit
+from kge.physics.queries import QueryHit, RayHit, RayMode
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.platform import has_display
 from kge.plugin import FunctionPlugin, Plugin, PluginError
 from kge.plugins import default_plugins
 from kge.scene import Scene, Time
+from kge.scene_carry import RestoreWarning
 from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md)
     SceneFile,
     SceneFileError,
@@ -119,10 +125,12 @@ from kge.scenefile import (  # scene, prefab and save files (docs/scene-files.md
     save_prefab,
     save_scene,
 )
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
+from kge.snapshot import SnapshotError
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
 from kge.systems.physics import PhysicsPlugin
+from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
 from kge.world import World
@@ -148,17 +156,26 @@ from kge.transitions import Crossfade, Fade, Slide, Wipe  # base class: kge.tran
 from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
 
 if TYPE_CHECKING:
-    from kge.assets import AssetDecodeError, AssetError, AssetNotFoundError, Assets
+    from kge.assets import (
+        AssetDecodeError,
+        AssetError,
+        AssetNotFoundError,
+        Assets,
+        DecoderMissingError,
+    )
     from kge.audio import Audio, SoundHandle
+    from kge.export import ExportError
     from kge.particles import Particles
     from kge.render.images import PixelImage, checker, from_array, solid
     from kge.render.sheets import SheetError, SpriteSheet, load_sheet
+    from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
     from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.tilemap import TilemapPlugin
+    from kge.testing import GoldenMismatch, StepTimeout
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -170,6 +187,11 @@ _LAZY = {
     "AssetError": "kge.assets",
     "AssetNotFoundError": "kge.assets",
     "Assets": "kge.assets",
+    "DecoderMissingError": "kge.assets",
+    "ScaffoldError": "kge.scaffold",
+    "ExportError": "kge.export",
+    "GoldenMismatch": "kge.testing",
+    "StepTimeout": "kge.testing",
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
@@ -194,7 +216,19 @@ _LAZY = {
 }
 
 
+#: old names kept for one release: name -> (module, new name); reading one warns
+_RENAMED = {
+    "Sequence": ("kge.components.tween", "TweenSequence"),  # shadowed typing.Sequence
+}
+
+
 def __getattr__(name: str) -> Any:
+    renamed = _RENAMED.get(name)
+    if renamed is not None:
+        from kge.deprecation import warn
+
+        warn(f"kge.{name} is now kge.{renamed[1]}")
+        return getattr(import_module(renamed[0]), renamed[1])
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'kge' has no attribute {name!r}")
@@ -223,6 +257,7 @@ __all__ = [
     "AudioSource",
     "Behaviour",
     "BehaviourPlugin",
+    "Blend",
     "BodyType",
     "Box",
     "BurstOnHit",
@@ -237,7 +272,9 @@ __all__ = [
     "ContactEnd",
     "Coroutine",
     "DebugDraw",
+    "DecoderMissingError",
     "Delay",
+    "DisplayError",
     "DistanceJoint",
     "Edge",
     "EmitBox",
@@ -246,12 +283,15 @@ __all__ = [
     "EmitLine",
     "EmitPoint",
     "EntityNotFoundError",
+    "ExportError",
     "Filter",
     "FixedTimestep",
+    "FontWarning",
     "FrameRef",
     "FrictionJoint",
     "FunctionPlugin",
     "GearJoint",
+    "GoldenMismatch",
     "Hit",
     "HookSignatureError",
     "ImpactSound",
@@ -265,6 +305,7 @@ __all__ = [
     "Light",
     "Lighting",
     "LightingPlugin",
+    "Loop",
     "MapObject",
     "MassData",
     "MissingComponentError",
@@ -278,7 +319,9 @@ __all__ = [
     "OneWayPlatform",
     "Parallel",
     "ParticleBurst",
+    "ParticleCollision",
     "ParticleEmitter",
+    "ParticleSpace",
     "Particles",
     "ParticlesPlugin",
     "Physics",
@@ -295,20 +338,24 @@ __all__ = [
     "PulleyJoint",
     "QueryHit",
     "RayHit",
+    "RayMode",
     "RenderPlugin",
+    "RestoreWarning",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
+    "ScaffoldError",
     "Scene",
     "SceneFile",
     "SceneFileError",
     "SceneStackError",
+    "ScheduleError",
     "Script",
     "SensorBegin",
     "SensorEnd",
-    "Sequence",
     "ShadowCaster",
     "SheetError",
+    "SnapshotError",
     "SoundData",
     "SoundHandle",
     "Spawn",
@@ -316,7 +363,9 @@ __all__ = [
     "Sprite",
     "SpriteSheet",
     "Stage",
+    "StepTimeout",
     "System",
+    "SystemSet",
     "Text",
     "TileCollider",
     "TileMap",
@@ -329,6 +378,7 @@ __all__ = [
     "Tween",
     "TweenFinished",
     "TweenHandle",
+    "TweenSequence",
     "Tweens",
     "ValidationError",
     "Wait",
@@ -338,6 +388,7 @@ __all__ = [
     "World",
     "WorldLockedError",
     "checker",
+    "collision",
     "default_plugins",
     "draw",
     "ease",

@@ -1,5 +1,6 @@
 """Command line: ``kge new NAME`` (a game project), ``kge demo`` (the README's demo
-command), ``kge testbed``, ``kge bench``, ``kge export`` (a standalone build).
+command), ``kge testbed``, ``kge bench``, ``kge export`` (a standalone build), ``kge
+schedule`` (the frame order).
 
 Also reachable as ``python -m kge ...``. Each command forwards its remaining
 arguments to its own parser (``kge testbed --help``).
@@ -112,6 +113,12 @@ def _new(args: list[str]) -> int:
     return new_main(args)
 
 
+def _schedule(args: list[str]) -> int:
+    from kge.schedule_cli import main as schedule_main
+
+    return schedule_main(args)
+
+
 def _export(args: list[str]) -> int:
     from kge.export.cli import main as export_main
 
@@ -125,6 +132,7 @@ COMMANDS: dict[str, tuple[Callable[[list[str]], int], str]] = {
     "edit": (_edit, "the scene editor: kge edit levels/one.scene.toml"),
     "bench": (_bench, "benchmarks: kge beside raw pymunk and pybox2d (kge bench --help)"),
     "export": (_export, "a standalone build of a game project: kge export [PROJECT]"),
+    "schedule": (_schedule, "print the frame order: stages, sets, systems (kge schedule --help)"),
 }
 
 
@@ -145,7 +153,7 @@ def version() -> str:
 def usage() -> str:
     names = ",".join(COMMANDS)
     lines = [f"usage: kge [--version] {{{names}}} [options]", ""]
-    lines += [f"  {name:<8} {text}" for name, (_, text) in COMMANDS.items()]
+    lines += [f"  {name:<9} {text}" for name, (_, text) in COMMANDS.items()]
     lines += ["", "Each command has its own help: kge COMMAND --help"]
     return "\n".join(lines)
 

@@ -5,13 +5,16 @@ One frame, in the order of DESIGN.md:
 1. **input**: window events (or test calls such as ``app.input.press``) are in
    the :class:`~kge.input.Input` resource; ``on_key_*`` / ``on_mouse_*`` hooks run.
 2. **fixed loop**: the accumulator decides how many fixed steps run; each one
-   clears the per-step event lists, shows the input edges since the previous
-   step to fixed-step code, and runs the FIXED stage (behaviours
-   ``on_fixed_update`` -> physics -> contact events), flushing queued changes
-   after every system.
+   shows the input edges since the previous step to fixed-step code and runs
+   the FIXED stage (behaviours ``on_fixed_update`` -> physics -> contact
+   events), flushing queued changes after every system.
 3. **update**: UPDATE then LATE stages with the scaled frame time.
 4. **render** (when a window or ``app.render()`` asks): poses are blended by
    ``alpha`` = leftover accumulator / fixed_dt.
+
+Inside each stage the systems run in the order of :mod:`kge.schedule` (named
+sets, ``before`` / ``after``; ``kge schedule`` prints it); events follow
+:mod:`kge.events` (readable for one step or one frame, never consumed).
 
 Scene changes requested during a frame (``replace_scene`` from a script, say)
 take effect when the frame ends, never half-way through a step. Changes requested
@@ -526,14 +529,16 @@ class App(Host):
         self._run_scene_ops()
 
     def _run_world(self, world: World, steps: int, game_dt: float, with_input: bool) -> None:
+        """One frame of ``world``: its stages in order (kge/schedule.py's FRAME)."""
         time = world.resource(Time)
+        inp, schedule, log = self.input, world.schedule, world.eventlog
+        log.begin_frame()
         if with_input:  # input hooks and the UI
-            world.schedule.run(Stage.INPUT, game_dt)
-        inp, schedule = self.input, world.schedule
+            schedule.run(Stage.INPUT, game_dt)
         for _ in range(steps):
             if self._scene_ops:
                 break  # the scene is changing: do not step a world about to close
-            world.clear_events()
+            log.begin_step()
             inp.begin_step()  # fixed-step code sees each input edge once
             schedule.run(Stage.FIXED, self.fixed_dt)
             inp.end_step()
@@ -545,6 +550,7 @@ class App(Host):
         time.alpha = self.timestep.alpha
         schedule.run(Stage.UPDATE, game_dt)
         schedule.run(Stage.LATE, game_dt)
+        log.end_frame()
 
     def _run_scene_ops(self) -> None:
         """Make the queued scene changes in order; one asked for while another is being
@@ -583,6 +589,11 @@ class App(Host):
     def quit(self) -> None:
         """Stop :meth:`run` after the current frame."""
         self._running = False
+
+    @property
+    def running(self) -> bool:
+        """True while :meth:`run` loops (a window, or headless), until ``quit``."""
+        return self._running
 
     def run(self, frames: int | None = None, screenshot: str | None = None) -> None:
         """Open a window and run until it closes (headless: until ``quit`` or ``frames``).

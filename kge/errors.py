@@ -63,3 +63,8 @@ class DisplayError(KgeError, RuntimeError):
 
 class SceneStackError(KgeError, RuntimeError):
     """A scene-stack change that cannot be made (popping the App's last scene)."""
+
+
+class ScheduleError(KgeError, ValueError):
+    """A system's place in the frame is impossible: an unknown set, an anchor in another
+    stage, or ``before`` / ``after`` constraints that form a cycle."""

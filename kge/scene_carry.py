@@ -106,7 +106,7 @@ def carry_over(old: World, new: World) -> list[str]:
     for name, fns in old._handlers.items():
         for fn in fns:
             if fn not in new._handlers.get(name, ()):
-                new.set_handler(name, fn)
+                new._handlers[name].append(fn)  # as set_handler, without its warnings
                 carried.append(fn)
     carried += _carry_hooks(old._on_add, new._on_add, new.on_add, moved)
     carried += _carry_hooks(old._on_remove, new._on_remove, new.on_remove, moved)

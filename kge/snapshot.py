@@ -17,6 +17,13 @@ What is not saved, and why:
   back-references scripts hold to their world; ``on_start`` does not run again.
 * pyglet and audio objects: they are rebuilt from components by their systems.
 
+What systems are running goes along: each system-owned resource registered with
+:func:`carry_running` exports its running state, keyed by entity ids, and the
+restored world's resource continues from it. So running tweens go on from where
+they were, live particles keep flying (and one-shot bursts do not fire again), and
+animators keep their clip time. Handles game code kept (a ``TweenHandle``) belong
+to the old world: ask the restored world's resources for new ones.
+
 Behaviour scripts are saved when their classes are importable (module level),
 as with any pickle.
 
@@ -111,6 +118,34 @@ def _state_resources(world: World) -> list[Any]:
     return [r for t in _KEPT if (r := world.try_resource(t)) is not None]
 
 
+class RunningState(Protocol):
+    """A system-owned resource whose running state (tween rows, live particles, clip
+    times) a snapshot carries: what :func:`carry_running` registers."""
+
+    def export_running(self) -> Any:
+        """Picklable data of what is running, keyed by entity ids (never by objects)."""
+
+    def import_running(self, data: Any) -> None:
+        """Continue from ``data`` in a restored world (its entities are already there)."""
+
+
+#: resource types whose running state snapshots carry (registered by their modules)
+_RUNNING: list[type] = []
+
+
+def carry_running(resource_type: type) -> type:
+    """Carry what ``resource_type`` is running through snapshots (a class decorator:
+    the class implements :class:`RunningState`)."""
+    if resource_type not in _RUNNING:
+        _RUNNING.append(resource_type)
+    return resource_type
+
+
+def _running(world: World) -> list[tuple[type, Any]]:
+    found: list[tuple[type, RunningState | None]] = [(t, world.try_resource(t)) for t in _RUNNING]
+    return [(t, r.export_running()) for t, r in found if r is not None]
+
+
 def _next_id(world: World) -> int:
     world._use()
     counter = esper._entity_count
@@ -132,6 +167,7 @@ def snapshot(world: World) -> bytes:
             "next_id": _next_id(world),
             "entities": entities,
             "resources": _state_resources(world),
+            "running": _running(world),
         }
     )
 
@@ -232,9 +268,14 @@ def restore_into(world: World, data: bytes) -> World:
     :class:`SnapshotError` is raised and ``world`` is left empty and unchanged.
     """
     loaded = _load(data)
-    return restore_state(
+    restore_state(
         world, loaded.get("entities"), loaded.get("next_id"), loaded.get("resources", [])
     )
+    for resource_type, running in loaded.get("running", []):
+        resource = world.try_resource(resource_type)
+        if resource is not None:  # a world without that system has nothing to continue
+            resource.import_running(running)
+    return world
 
 
 def restore_state(

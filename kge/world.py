@@ -43,6 +43,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import esper
 
+from kge import deprecation
 from kge.errors import (
     ComponentTypeError,
     EntityNotFoundError,
@@ -51,8 +52,9 @@ from kge.errors import (
     ValidationError,
     WorldLockedError,
 )
+from kge.events import EventLog
 from kge.plugin import Plugin, PluginLike, resolve
-from kge.schedule import Schedule, System
+from kge.schedule import Anchor, Schedule, System, SystemSet
 
 if TYPE_CHECKING:
     from kge.snapshot import Restorable
@@ -67,6 +69,28 @@ Hook = Callable[[int, Any], None]
 Validator = Callable[[int | None, Any], None]
 
 _world_ids = itertools.count(1)
+
+#: resource types kept for one release: reading one through ``world.resource`` warns
+_DEPRECATED_RESOURCES: dict[type, str] = {}
+#: ``set_handler`` names kept for one release (the physics events' esper names)
+_DEPRECATED_HANDLERS: dict[str, str] = {}
+
+
+def deprecate_resource(resource_type: type, instead: str) -> None:
+    """Reading ``resource_type`` with ``world.resource`` warns, pointing at ``instead``."""
+    _DEPRECATED_RESOURCES[resource_type] = instead
+
+
+def deprecate_handler(name: str, instead: str) -> None:
+    """``world.set_handler(name, ...)`` warns, pointing at ``instead``."""
+    _DEPRECATED_HANDLERS[name] = instead
+
+
+def stored_resource(world: World, resource_type: type[T]) -> T | None:
+    """The resource stored under exactly ``resource_type``, without a deprecation warning
+    (kge's own systems keep serving the deprecated resources for one release)."""
+    found: T | None = world._resources.get(resource_type)
+    return found
 
 
 def _check_component(component: object, entity: int | None = None) -> None:
@@ -128,7 +152,8 @@ class World:
         # an unclosed world's esper tables go with it instead of living on in esper's globals
         self._forget = weakref.finalize(self, _forget_esper_world, self._esper_name)
         self._resources: dict[type, Any] = {}
-        self._events: dict[type, list[Any]] = defaultdict(list)
+        #: every event of the world (see :mod:`kge.events`)
+        self.eventlog = EventLog()
         self._handlers: dict[str, list[Callable[..., Any]]] = defaultdict(list)
         self._on_add: dict[type, list[Hook]] = defaultdict(list)
         self._on_remove: dict[type, list[Hook]] = defaultdict(list)
@@ -196,8 +221,8 @@ class World:
         if self._lock_depth:
             raise WorldLockedError(
                 f"world.{op}() inside a physics callback: the world is locked during the "
-                "step (as in Box2D). Queue the change from a Behaviour hook or read "
-                "PhysicsEvents after the step instead."
+                "step (as in Box2D). Make the change from a Behaviour hook (on_contact_begin...) "
+                "or a system after the step instead."
             )
         if self._closed:
             raise WorldLockedError(f"world.{op}() on a closed world ({self.name})")
@@ -586,9 +611,12 @@ class World:
         return resource
 
     def resource(self, resource_type: type[T]) -> T:
-        """The singleton of ``resource_type`` (settings, physics, input, events...)."""
+        """The singleton of ``resource_type`` (settings, physics, input...)."""
         try:
-            return self._resources[resource_type]
+            found: T = self._resources[resource_type]
+            if resource_type in _DEPRECATED_RESOURCES:
+                _warn_deprecated(resource_type)
+            return found
         except (KeyError, TypeError):
             _check_type(resource_type, "resource")
             for value in self._resources.values():
@@ -608,27 +636,48 @@ class World:
     def has_resource(self, resource_type: type) -> bool:
         return self.try_resource(resource_type) is not None
 
-    # -- per-step events ---------------------------------------------------------------
+    # -- events ------------------------------------------------------------------------
     def emit(self, event: Any) -> None:
-        """Append ``event`` to this step's list for its type."""
-        self._events[type(event)].append(event)
+        """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`)."""
+        self.eventlog.emit(event)
 
-    def events(self, event_type: type[T]) -> list[T]:
-        """Events of ``event_type`` emitted since the current fixed step began."""
-        return self._events.get(event_type, [])
+    @overload
+    def events(self, event_type: type[T], /) -> list[T]: ...
+    @overload
+    def events(self, *event_types: type) -> list[Any]: ...
+    def events(self, *event_types: type) -> list[Any]:
+        """The events of ``event_type`` this code may read: those emitted since the same
+        point of the previous fixed step (in fixed-step code) or frame (elsewhere).
+
+        Reading never consumes: every reader sees every event (see :mod:`kge.events`).
+        With several types, their events together, in the order they were emitted
+        (``world.events(ButtonClicked, ValueChanged)``).
+        """
+        for t in event_types:
+            if not isinstance(t, type):
+                _check_type(t, "events")
+        if len(event_types) == 1:
+            return self.eventlog.read(event_types[0])
+        if not event_types:
+            raise ComponentTypeError("world.events(): name at least one event type")
+        return self.eventlog.read_many(event_types)
 
     def clear_events(self) -> None:
-        """Start a new step's event lists (the App calls this before each fixed step)."""
-        for lst in self._events.values():
-            lst.clear()
+        """Drop every event now (a bare World stepped by hand; an App needs no call)."""
+        self.eventlog.clear()
 
     def set_handler(self, name: str, handler: Callable[..., Any]) -> None:
         """Call ``handler(*args)`` for every ``dispatch(name, ...)`` on this world.
 
-        The world keeps a strong reference (esper's own registry holds weak ones,
-        so a lambda registered there vanishes at once, and its clean-up callback
-        can fire against whichever esper world happens to be current).
+        esper's immediate named events, for code written against esper; kge's own
+        events are read with :meth:`events` or Behaviour hooks. The world keeps a
+        strong reference (esper's own registry holds weak ones, so a lambda
+        registered there vanishes at once, and its clean-up callback can fire
+        against whichever esper world happens to be current).
         """
+        instead = _DEPRECATED_HANDLERS.get(name)
+        if instead is not None:
+            deprecation.warn(f"world.set_handler({name!r}, ...): {instead}")
         self._handlers[name].append(handler)
 
     def remove_handler(self, name: str, handler: Callable[..., Any]) -> None:
@@ -671,7 +720,11 @@ class World:
         before any plugin is built.
         """
         for plugin in resolve(self._plugins, plugins, f"world {self.name!r}"):
-            plugin.build(self)
+            outer, self.schedule.building = self.schedule.building, plugin.name
+            try:
+                plugin.build(self)
+            finally:
+                self.schedule.building = outer
             self._plugins.append(plugin)
 
     @property
@@ -684,10 +737,21 @@ class World:
         return any(p.key is plugin or p.key is type(plugin) for p in self._plugins)
 
     # -- systems -----------------------------------------------------------------------
-    def add_system(self, system: S) -> S:
-        """Add ``system`` to this world's schedule (see :mod:`kge.schedule`); returns it."""
+    def add_system(
+        self,
+        system: S,
+        *,
+        in_set: SystemSet | str | None = None,
+        after: tuple[Anchor, ...] | list[Anchor] | None = None,
+        before: tuple[Anchor, ...] | list[Anchor] | None = None,
+    ) -> S:
+        """Add ``system`` to this world's schedule; returns it.
+
+        ``in_set``, ``after`` and ``before`` override the system class's own
+        placement (see :mod:`kge.schedule`; ``kge schedule`` prints the frame).
+        """
         self._use()
-        return self.schedule.add(system)
+        return self.schedule.add(system, in_set=in_set, after=after, before=before)
 
     def get_system(self, system_type: type[S]) -> S | None:
         return self.schedule.get(system_type)
@@ -717,3 +781,9 @@ class World:
 
     def __repr__(self) -> str:
         return f"World({self.name!r})"
+
+
+def _warn_deprecated(resource_type: type) -> None:
+    deprecation.warn(
+        f"the {resource_type.__name__} resource: {_DEPRECATED_RESOURCES[resource_type]}"
+    )

@@ -16,7 +16,7 @@ drawn headless every ``--render-every`` steps, and the render system's pyglet
 objects (sprites, meshes) are counted against the entities that should have
 them.
 
-Commands (see docs/reliability.md for the figures)::
+Commands (see benchmarks/results/reliability.md for the figures)::
 
     .venv/bin/python tools/soak.py                     # 100,000 steps (about 10 min)
     .venv/bin/python tools/soak.py --steps 3000 --interval 500   # the CI run

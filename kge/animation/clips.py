@@ -268,6 +268,18 @@ class ClipState:
         self.version += 1
         return True
 
+    def seek(self, row: int, time: float) -> None:
+        """Put ``row`` at clip time ``time`` (clamped to the clip), showing its frame."""
+        t = self.table
+        t.ensure()
+        slot = int(self.clip[row])
+        total = float(t.total[slot])
+        time = min(max(float(time), 0.0), total)
+        self.time[row] = time
+        first = int(t.first[slot])
+        g = int(np.searchsorted(t.frame_end, t.base[slot] + time + EPS, side="right"))
+        self.shown[row] = min(max(g, first), first + int(t.length[slot]) - 1)
+
     def local_frame(self, row: int) -> int:
         """The original frame index (inside its clip) shown by ``row``."""
         self.table.ensure()

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from kge.components.animation import Clip, FrameRef
+from kge.components.animation import Clip, FrameRef, Loop
 from kge.errors import ValidationError
 
 DEFAULT_DELAY = 0.1
@@ -78,7 +78,7 @@ def gif_clip(path: Any, *, assets: Any = None, **options: Any) -> Clip:
         refs,
         options.get("duration"),
         options.get("fps"),
-        options.get("loop", "loop"),
+        options.get("loop", Loop.LOOP),
         options.get("speed", 1.0),
         options.get("flip_x", False),
         options.get("flip_y", False),

@@ -1,6 +1,6 @@
 """Running tweens: every live tween is a row of numpy arrays, eased in one pass per frame.
 
-A started spec (a :class:`~kge.components.tween.Tween`, or a Sequence/Parallel
+A started spec (a :class:`~kge.components.tween.Tween`, or a TweenSequence/Parallel
 tree of them) becomes one *group* and one *channel* per Tween: the tree is
 flattened into start offsets inside the group, so sequences and parallel
 groups cost nothing per frame beyond their channels. Each pass:
@@ -35,8 +35,9 @@ from kge.animation.easing import apply, easing_code
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import Tracked, raw_set
 from kge.components.transform import Transform
-from kge.components.tween import Delay, Parallel, Sequence, Tween
+from kge.components.tween import Delay, Parallel, Tween, TweenSequence
 from kge.errors import ComponentTypeError, ValidationError, where
+from kge.snapshot import carry_running
 from kge.validate import MAX_COORDINATE, coordinate, finite
 
 WIDTH = 4  # widest value: an RGBA colour
@@ -117,16 +118,18 @@ def _flatten(spec: Any, offset: float, out: list[_Plan], top: bool) -> float:
         return spec.total
     if isinstance(spec, Parallel):
         return max(_flatten(s, offset, out, False) for s in spec.steps)
-    if isinstance(spec, Sequence):
+    if isinstance(spec, TweenSequence):
         if spec.repeat < 0 and not top:
-            raise ValidationError("Sequence(repeat=-1) repeats forever: only the outermost may")
+            raise ValidationError(
+                "TweenSequence(repeat=-1) repeats forever: only the outermost may"
+            )
         reps = 1 if spec.repeat < 0 else spec.repeat + 1
         t = offset
         for _ in range(reps):
             for s in spec.steps:
                 t += _flatten(s, t, out, False)
         return (t - offset) if spec.repeat >= 0 else math.inf
-    raise ComponentTypeError(f"cannot start {spec!r}: expected a Tween, Sequence or Parallel")
+    raise ComponentTypeError(f"cannot start {spec!r}: expected a Tween, TweenSequence or Parallel")
 
 
 class TweenTable:
@@ -178,6 +181,56 @@ class TweenTable:
         (never more than twice the running ones, plus a little slack)."""
         return len(self.live)
 
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[str, Any]:
+        """The rows and groups, with each channel's target named by entity and type (or
+        by resource type): a restored world finds its own components again."""
+        world, keys = self.world, []
+        for i, (obj, field, width, kind, ent, axis) in enumerate(self.targets):
+            key: tuple[Any, ...] | None = None
+            if self.live[i] and ent is not None:
+                key = ("entity", ent, type(obj))
+            elif self.live[i] and world.try_resource(type(obj)) is obj:
+                key = ("resource", type(obj))
+            keys.append(None if key is None else (*key, field, width, kind, axis))
+        arrays = {k: v.copy() for k, v in vars(self).items() if isinstance(v, np.ndarray)}
+        groups = {gid: (h.entity, h.name) for gid, h in self.handles.items()}
+        return {"arrays": arrays, "targets": keys, "groups": groups, "serial": self._serial,
+                "stop_next": list(self.stop_next)}  # fmt: skip
+
+    def import_running(self, data: dict[str, Any]) -> None:
+        """Continue the tweens of a restored world; a channel whose target is gone ends."""
+        world = self.world
+        for name, arr in data["arrays"].items():
+            setattr(self, name, arr)
+        self.targets, self.objs, self.fields, self._by_target = [], [], [], {}
+        for i, key in enumerate(data["targets"]):
+            obj = None
+            if key is not None and key[0] == "entity":
+                _, ent, ctype, field, width, kind, axis = key
+                obj = world.try_get(ent, ctype) if world.exists(ent) else None
+            elif key is not None:
+                _, ctype, field, width, kind, axis = key
+                ent, obj = None, world.try_resource(ctype)
+            if obj is None:
+                self.live[i] = False
+                self.targets.append((None, "", 0, 0, None, -1))
+                self.objs.append(None)
+                self.fields.append("")
+                continue
+            self.targets.append((obj, field, width, kind, ent, axis))
+            self.objs.append(obj)
+            self.fields.append(field)
+            if ent is not None:
+                self._by_target.setdefault((ent, ctype), []).append(i)
+                self._hook(ctype)
+        self.handles = {}
+        for gid, (ent, name) in data["groups"].items():
+            self.handles[gid] = TweenHandle(self, gid, ent, name)
+            self._group_maybe_gone(gid)
+        self._serial = data["serial"]
+        self.stop_next = list(data["stop_next"])
+
     # -- starting ----------------------------------------------------------------------
     def start(self, target: Any, spec: Any) -> TweenHandle:
         """Start ``spec`` on ``target`` (an entity id, or a component/resource instance).
@@ -187,7 +240,7 @@ class TweenTable:
         """
         plans: list[_Plan] = []
         top_total = _flatten(spec, 0.0, plans, True)
-        forever_seq = isinstance(spec, Sequence) and spec.repeat < 0
+        forever_seq = isinstance(spec, TweenSequence) and spec.repeat < 0
         period = spec.once if forever_seq else top_total
         if not plans:
             raise ValidationError(f"{spec!r} animates nothing (only delays)")
@@ -524,6 +577,7 @@ class TweenTable:
             setattr(self, name, getattr(self, name)[gkeep])
 
 
+@carry_running
 class Tweens(TweenTable):
     """The world's tweens (a resource): ``start(target, spec)`` or the one-line :meth:`to`.
 

@@ -109,9 +109,14 @@ def load_generated(sound: SoundData) -> Any:
 
 
 def register_font(found: Found) -> None:
-    """Make the font file's family available to pyglet text."""
-    font = pyglet_module("font")
+    """Make the font file's face available to text (kge's registry; pyglet on first draw).
+
+    The registry (:data:`kge.text.fonts.FONTS`) knows each face's weight and slant, so
+    a file whose face is a Light Italic is drawn as one, whatever style asks for it.
+    """
+    from kge.text.fonts import FONTS
+
     try:
-        font.add_file(io.BytesIO(found.read_bytes()))
+        FONTS.register(found.read_bytes(), found.where)
     except OSError as exc:
         raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc

@@ -104,7 +104,7 @@ class b2World:
         self._system = PhysicsSystem()
         self._kworld.add_system(self._system)
         self._physics: Physics = self._kworld.resource(Physics)
-        self._events: PhysicsEvents = self._kworld.resource(PhysicsEvents)
+        self._events: PhysicsEvents = self._system.events  # the step's record
         self._bodies: dict[int, b2Body] = {}
         self._fixtures: dict[int, b2Fixture] = {}
         self._joints: dict[int, b2Joint] = {}

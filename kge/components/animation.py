@@ -1,14 +1,15 @@
 """Sprite animation as data: ``Clip`` (frames and timing) and ``Animator`` (which clip plays).
 
 A :class:`Clip` is an immutable list of frames, each a :class:`FrameRef` (an
-image, and which part of it) with a duration in seconds, plus how it repeats:
+image, and which part of it) with a duration in seconds, plus how it repeats
+(:class:`Loop`):
 
-=============  ==========================================================
-``loop``       frame 0 again after the last, forever
-``once``       plays once, then shows frame 0 and stops (a finished event)
-``hold``       plays once, then holds the last frame (a finished event)
-``ping_pong``  0, 1, ..., n-1, n-2, ..., 1, 0, 1, ... forever
-=============  ==========================================================
+==================  ==========================================================
+``Loop.LOOP``       frame 0 again after the last, forever
+``Loop.ONCE``       plays once, then shows frame 0 and stops (a finished event)
+``Loop.HOLD``       plays once, then holds the last frame (a finished event)
+``Loop.PING_PONG``  0, 1, ..., n-1, n-2, ..., 1, 0, 1, ... forever
+==================  ==========================================================
 
 Clips come from a sheet grid (:meth:`Clip.grid`), a list of images
 (:meth:`Clip.images`), an Aseprite-style tag list (:meth:`Clip.tags`) or a GIF
@@ -41,13 +42,25 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
+from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import boolean, finite, integer, positive
 
-LOOP_MODES = ("loop", "once", "hold", "ping_pong")
+
+class Loop(StrEnum):
+    """How a :class:`Clip` repeats (see the module docstring)."""
+
+    LOOP = "loop"
+    ONCE = "once"
+    HOLD = "hold"
+    PING_PONG = "ping_pong"
+
+
+LOOP_MODES = tuple(Loop)
 Rect4 = tuple[int, int, int, int]
 
 
@@ -147,7 +160,7 @@ class Clip:
 
     frames: tuple[FrameRef, ...]
     durations: tuple[float, ...]
-    loop: str = "loop"
+    loop: Loop = Loop.LOOP
     speed: float = 1.0
     flip_x: bool = False
     flip_y: bool = False
@@ -166,10 +179,7 @@ class Clip:
             )
         for i, d in enumerate(self.durations):
             positive(d, owner, f"durations[{i}]")
-        if self.loop not in LOOP_MODES:
-            raise ValidationError(
-                f"{owner}.loop must be one of {', '.join(LOOP_MODES)}, got {self.loop!r}"
-            )
+        object.__setattr__(self, "loop", enum_value(Loop, self.loop, owner, "loop"))
         positive(self.speed, owner, "speed")
         boolean(self.flip_x, owner, "flip_x")
         boolean(self.flip_y, owner, "flip_y")
@@ -191,7 +201,7 @@ class Clip:
         spacing: int = 0,
         duration: float | Sequence[float] | None = None,
         fps: float | None = None,
-        loop: str = "loop",
+        loop: Loop | str = Loop.LOOP,
         speed: float = 1.0,
         flip_x: bool = False,
         flip_y: bool = False,
@@ -228,7 +238,7 @@ class Clip:
         *,
         duration: float | Sequence[float] | None = None,
         fps: float | None = None,
-        loop: str = "loop",
+        loop: Loop | str = Loop.LOOP,
         speed: float = 1.0,
         flip_x: bool = False,
         flip_y: bool = False,
@@ -269,15 +279,16 @@ class Clip:
         refs: list[FrameRef],
         duration: Any,
         fps: Any,
-        loop: str,
+        loop: Loop | str,
         speed: float,
         flip_x: bool,
         flip_y: bool,
         events: Mapping[int, str] | None,
     ) -> Clip:
         durs = _durations(len(refs), duration, fps, "Clip")
+        mode = enum_value(Loop, loop, "Clip", "loop")
         return cls(
-            tuple(refs), durs, loop, finite(speed, "Clip", "speed"), flip_x, flip_y,
+            tuple(refs), durs, mode, finite(speed, "Clip", "speed"), flip_x, flip_y,
             _events(events, len(refs), "Clip"),
         )  # fmt: skip
 

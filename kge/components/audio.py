@@ -5,8 +5,8 @@
   scene closes. ``positional=True`` pans it left/right and fades it with
   distance from the listener (see :mod:`kge.audio.spatial`).
 * :class:`ImpactSound` — plays when one of the entity's colliders begins a
-  contact faster than ``min_speed`` (the approach speed along the normal, as in
-  the Box2D manual's pre-solve example), louder the faster the hit.
+  contact at ``hit_threshold`` or faster (the approach speed along the normal, as
+  in the Box2D manual's pre-solve example), louder the faster the hit.
 * :class:`AudioListener` — marks the entity whose Transform is the "ears".
   Without one, the first Camera is the listener, else the world origin.
 
@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
+from kge.deprecation import renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.sound import SoundData, SoundRef
 from kge.validate import boolean, in_range, non_negative, positive
@@ -105,23 +106,26 @@ class AudioSource(Tracked):
             )
 
 
+@renamed_fields(min_speed=("hit_threshold", None, None))  # one name for one speed
 @dataclass(slots=True)
 class ImpactSound(Tracked):
     """Play ``sound`` when this entity's collider hits something hard enough.
 
     A contact qualifies when its approach speed (m/s, along the normal, at first
-    touch) is at least ``min_speed``. The volume is ``volume * min(1, speed /
-    max_speed)``: a hit at ``max_speed`` or faster plays at full ``volume``.
+    touch) is at least ``hit_threshold`` (the name ``Collider`` and ``BurstOnHit``
+    use for the same speed; ``min_speed`` before kge 2.0.0a2). The volume is
+    ``volume * min(1, speed / max_speed)``: a hit at ``max_speed`` or faster plays at
+    full ``volume``.
     ``cooldown`` (seconds of game time) keeps a rattling contact from replaying
     the sound at every bounce; 0 plays every qualifying hit.
 
-    >>> ImpactSound("thud.wav", min_speed=1.0, max_speed=8.0).gain(4.0)
+    >>> ImpactSound("thud.wav", hit_threshold=1.0, max_speed=8.0).gain(4.0)
     0.5
     """
 
     _checks: ClassVar[dict[str, Check]] = {
         "sound": sound_ref,
-        "min_speed": non_negative,
+        "hit_threshold": non_negative,
         "max_speed": positive,
         "volume": _volume,
         "pitch": _pitch,
@@ -130,7 +134,7 @@ class ImpactSound(Tracked):
     }
 
     sound: SoundRef
-    min_speed: float = 1.0
+    hit_threshold: float = 1.0
     max_speed: float = 10.0
     volume: float = 1.0
     pitch: float = 1.0
@@ -138,14 +142,15 @@ class ImpactSound(Tracked):
     cooldown: float = 0.0
 
     def __post_init__(self) -> None:
-        if self.max_speed < self.min_speed:
+        if self.max_speed < self.hit_threshold:
             raise ValidationError(
-                f"ImpactSound.max_speed ({self.max_speed}) must be >= min_speed ({self.min_speed})"
+                f"ImpactSound.max_speed ({self.max_speed}) must be >= hit_threshold "
+                f"({self.hit_threshold})"
             )
 
     def gain(self, speed: float) -> float:
-        """The volume a hit at ``speed`` plays at (0 below ``min_speed``)."""
-        if speed < self.min_speed:
+        """The volume a hit at ``speed`` plays at (0 below ``hit_threshold``)."""
+        if speed < self.hit_threshold:
             return 0.0
         return self.volume * min(1.0, speed / self.max_speed)
 

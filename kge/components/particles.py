@@ -5,7 +5,7 @@ emitter's particles in numpy arrays (see :mod:`kge.particles`) and draws them
 with one vertex list per emitter. This component only says *how* to make and
 move them, in metres, seconds and radians:
 
-* **when**: ``rate`` per second and/or ``rate_per_metre`` travelled while
+* **when**: ``rate`` per second and/or ``rate_per_meter`` travelled while
   ``emitting``; ``burst`` particles at once when the emitter starts; a
   ``duration`` after which emission stops; ``one_shot`` despawns the entity
   once it has stopped emitting and its last particle died; ``prewarm`` seconds
@@ -17,13 +17,14 @@ move them, in metres, seconds and radians:
   entity frame) with a ``spread`` cone (full angle, 0..2pi), ``inherit_velocity``
   (share of the body's velocity), ``acceleration`` (gravity, m/s^2), linear
   ``drag`` (1/s), ``spin`` range (rad/s), and ``collide`` with static colliders
-  (``"none"``, ``"bounce"`` with ``bounciness``, or ``"die"``).
-* **how they look**: ``size`` (metres), ``color`` (RGB 0-255) and ``alpha``
-  (0..1) over life, each a single value or a sequence of evenly spaced keys
-  interpolated linearly from birth to death; ``texture`` (None: a generated soft
-  dot; else an asset name or image) or ``flat`` squares; ``blend`` ``"alpha"`` or
-  ``"additive"``; ``space`` ``"world"`` (particles stay where they were born) or
-  ``"local"`` (they move with the entity); ``layer`` / ``order`` as sprites.
+  (:class:`ParticleCollision`: ``NONE``, ``BOUNCE`` with ``bounciness``, or ``DIE``).
+* **how they look**: ``size`` (metres), ``color`` (RGB 0-255) and ``opacity``
+  (0-255, as ``Sprite.opacity``) over life, each a single value or a sequence of
+  evenly spaced keys interpolated linearly from birth to death; ``texture`` (None:
+  a generated soft dot; else an asset name or image) or ``flat`` squares; ``blend``
+  (:class:`Blend`: ``ALPHA`` or ``ADDITIVE``); ``space`` (:class:`ParticleSpace`:
+  ``WORLD``, particles stay where they were born, or ``LOCAL``, they move with the
+  entity); ``layer`` / ``order`` as sprites.
 * ``max_particles`` caps the live count: further particles are dropped, the
   arrays never grow past it. ``seed`` makes the emitter deterministic (the same
   seed gives the same particles); None derives one from the entity id.
@@ -46,10 +47,12 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Any, ClassVar, cast
 
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
+from kge.deprecation import enum_value, renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import (
     Vec2,
@@ -69,9 +72,33 @@ TAU = 2.0 * math.pi
 LIMIT = 1e6
 #: the largest ``max_particles`` an emitter may ask for (arrays are allocated up to it)
 MAX_PARTICLES = 1_000_000
-BLENDS = ("alpha", "additive")
-SPACES = ("world", "local")
-COLLIDE = ("none", "bounce", "die")
+
+
+class Blend(StrEnum):
+    """How particles are drawn over what is behind them."""
+
+    ALPHA = "alpha"  #: ordinary transparency
+    ADDITIVE = "additive"  #: colours add up (fire, sparks, glows)
+
+
+class ParticleSpace(StrEnum):
+    """Where particles live once born."""
+
+    WORLD = "world"  #: they stay where they were born (smoke trails)
+    LOCAL = "local"  #: they move with the emitter's entity (a jet flame)
+
+
+class ParticleCollision(StrEnum):
+    """What particles do when they reach a static collider."""
+
+    NONE = "none"  #: pass through
+    BOUNCE = "bounce"  #: bounce, keeping ``bounciness`` of their speed
+    DIE = "die"  #: vanish
+
+
+BLENDS = tuple(Blend)
+SPACES = tuple(ParticleSpace)
+COLLIDE = tuple(ParticleCollision)
 
 
 # -- emission shapes (immutable values) --------------------------------------------------
@@ -192,14 +219,32 @@ def _sizes(value: Any, owner: str, field: str) -> tuple[float, ...]:
     return tuple(_size(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field)))
 
 
-def _alphas(value: Any, owner: str, field: str) -> tuple[float, ...]:
-    """Alpha over life: one value or evenly spaced keys in 0..1."""
+def _opacities(value: Any, owner: str, field: str) -> tuple[float, ...]:
+    """Opacity over life: one value or evenly spaced keys in 0..255 (as Sprite.opacity)."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return (in_range(value, 0.0, 1.0, owner, field),)
+        return (in_range(value, 0.0, 255.0, owner, field),)
     return tuple(
-        in_range(v, 0.0, 1.0, owner, f"{field}[{i}]")
+        in_range(v, 0.0, 255.0, owner, f"{field}[{i}]")
         for i, v in enumerate(_keys(value, owner, field))
     )
+
+
+def _alpha_to_opacity(alpha: Any) -> Any:
+    """The deprecated ``alpha`` (0..1) as an ``opacity`` (0..255), checked as alpha was."""
+    keys = _keys_of(alpha)
+    for i, a in enumerate(keys):
+        in_range(a, 0.0, 1.0, "ParticleEmitter", f"alpha[{i}]" if len(keys) > 1 else "alpha")
+    return tuple(float(a) * 255.0 for a in keys)
+
+
+def _opacity_to_alpha(opacity: tuple[float, ...]) -> tuple[float, ...]:
+    return tuple(o / 255.0 for o in opacity)
+
+
+def _keys_of(value: Any) -> tuple[Any, ...]:
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return (value,)
+    return tuple(_keys(value, "ParticleEmitter", "alpha"))
 
 
 def _colors(value: Any, owner: str, field: str) -> tuple[RGB, ...]:
@@ -214,11 +259,11 @@ def _colors(value: Any, owner: str, field: str) -> tuple[RGB, ...]:
     return tuple(rgb(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field)))
 
 
-def _choice(options: tuple[str, ...]) -> Check:
-    def check(value: Any, owner: str, field: str) -> str:
-        if value not in options:
-            raise ValidationError(f"{owner}.{field} must be one of {options}, got {value!r}")
-        return str(value)
+def _choice(kind: type[StrEnum]) -> Check:
+    """A check turning a choice into its enum member (its string, deprecated, warns)."""
+
+    def check(value: Any, owner: str, field: str) -> StrEnum:
+        return enum_value(kind, value, owner, field)
 
     return check
 
@@ -305,6 +350,10 @@ def _rate(value: Any, owner: str, field: str) -> float:
     return v
 
 
+@renamed_fields(
+    rate_per_metre=("rate_per_meter", None, None),  # one spelling: pixels_per_meter
+    alpha=("opacity", _alpha_to_opacity, _opacity_to_alpha),  # 0-255 as Sprite.opacity
+)
 @dataclass(slots=True)
 class ParticleEmitter(Tracked):
     """Sprays particles from the entity. See the module docstring."""
@@ -314,7 +363,7 @@ class ParticleEmitter(Tracked):
 
     _checks: ClassVar[dict[str, Check]] = {
         "rate": _rate,
-        "rate_per_metre": _rate,
+        "rate_per_meter": _rate,
         "burst": _count,
         "emitting": boolean,
         "duration": _optional_duration,
@@ -332,12 +381,12 @@ class ParticleEmitter(Tracked):
         "spin": _range,
         "size": _sizes,
         "color": _colors,
-        "alpha": _alphas,
+        "opacity": _opacities,
         "texture": _texture,
         "flat": boolean,
-        "blend": _choice(BLENDS),
-        "space": _choice(SPACES),
-        "collide": _choice(COLLIDE),
+        "blend": _choice(Blend),
+        "space": _choice(ParticleSpace),
+        "collide": _choice(ParticleCollision),
         "bounciness": _unit,
         "max_particles": _max_particles,
         "seed": _seed,
@@ -347,7 +396,7 @@ class ParticleEmitter(Tracked):
     }
 
     rate: float = 0.0
-    rate_per_metre: float = 0.0
+    rate_per_meter: float = 0.0
     burst: int = 0
     emitting: bool = True
     duration: float | None = None
@@ -365,12 +414,12 @@ class ParticleEmitter(Tracked):
     spin: Range = (0.0, 0.0)
     size: Sequence[float] | float = (0.1,)
     color: Sequence[Any] = ((255, 255, 255),)
-    alpha: Sequence[float] | float = (1.0,)
+    opacity: Sequence[float] | float = (255.0,)
     texture: Any = None
     flat: bool = False
-    blend: str = "alpha"
-    space: str = "world"
-    collide: str = "none"
+    blend: Blend = Blend.ALPHA
+    space: ParticleSpace = ParticleSpace.WORLD
+    collide: ParticleCollision = ParticleCollision.NONE
     bounciness: float = 0.5
     max_particles: int = 2000
     seed: int | None = None
@@ -403,24 +452,25 @@ class ParticleBurst:
             )
 
 
+@renamed_fields(min_speed=("hit_threshold", None, None))  # one name for one speed
 @dataclass(slots=True)
 class BurstOnHit(Tracked):
     """On a collider entity: each physics ``Hit`` (or contact begin) bursts an emitter.
 
     ``count`` particles leave the contact point along the contact normal, pointing
     away from this collider. ``contacts=True`` also reacts to every
-    ``ContactBegin`` faster than ``min_speed`` (m/s), for colliders without a
-    ``hit_threshold``.
+    ``ContactBegin``. Either way only impacts at ``hit_threshold`` (m/s, the
+    approach speed) or faster burst (``min_speed`` before kge 2.0.0a2).
     """
 
     _checks: ClassVar[dict[str, Check]] = {
         "emitter": _seed,
         "count": _count,
         "contacts": boolean,
-        "min_speed": non_negative,
+        "hit_threshold": non_negative,
     }
 
     emitter: int
     count: int = 12
     contacts: bool = False
-    min_speed: float = 0.0
+    hit_threshold: float = 0.0

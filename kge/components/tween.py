@@ -9,14 +9,14 @@ first; ``repeat`` plays it again that many times (-1: forever), ``yoyo`` plays
 every other repetition backwards. ``start`` fixes the starting value; without
 it the field's value when the tween begins is used.
 
-:class:`Sequence` runs steps one after another, :class:`Parallel` together, and
+:class:`TweenSequence` runs steps one after another, :class:`Parallel` together, and
 :class:`Delay` is a pause inside a sequence. Specs are plain immutable data;
 ``world.resource(kge.Tweens).start(entity, spec)`` runs one (see
 :mod:`kge.systems.animation`) and returns a handle a coroutine can ``yield``.
 
 >>> from kge.components.transform import Transform
->>> pop = Sequence(Tween(Transform, "y", 1.0, 0.2, ease="back_out"), Delay(0.1),
-...                Tween(Transform, "y", 0.0, 0.3, ease="bounce_out"))
+>>> pop = TweenSequence(Tween(Transform, "y", 1.0, 0.2, ease="back_out"), Delay(0.1),
+...                     Tween(Transform, "y", 0.0, 0.3, ease="bounce_out"))
 >>> round(pop.total, 3)
 0.6
 >>> Tween(Transform, "x", 1.0, 0.0)
@@ -35,6 +35,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from kge.deprecation import moved
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import boolean, integer, non_negative, positive
 
@@ -100,7 +101,7 @@ class Tween:
 
 @dataclass(slots=True, frozen=True)
 class Delay:
-    """A pause of ``seconds`` inside a :class:`Sequence`."""
+    """A pause of ``seconds`` inside a :class:`TweenSequence`."""
 
     seconds: float
 
@@ -116,22 +117,27 @@ def _steps(steps: tuple[Any, ...], owner: str) -> None:
     if not steps:
         raise ValidationError(f"{owner} needs at least one step")
     for i, s in enumerate(steps):
-        if not isinstance(s, (Tween, Delay, Sequence, Parallel)):
+        if not isinstance(s, (Tween, Delay, TweenSequence, Parallel)):
             raise ComponentTypeError(
-                f"{owner} step {i} must be a Tween, Delay, Sequence or Parallel, got {s!r}"
+                f"{owner} step {i} must be a Tween, Delay, TweenSequence or Parallel, got {s!r}"
             )
 
 
-class Sequence:
-    """Steps one after another; ``repeat`` runs the whole sequence again (-1: forever)."""
+class TweenSequence:
+    """Steps one after another; ``repeat`` runs the whole sequence again (-1: forever).
+
+    (``Sequence`` before kge 2.0.0a2: that name shadowed ``typing.Sequence``.)
+    """
 
     __slots__ = ("name", "repeat", "steps")
 
     def __init__(self, *steps: Any, repeat: int = 0, name: str = "") -> None:
-        _steps(steps, "Sequence")
-        rep = integer(repeat, "Sequence", "repeat")
+        _steps(steps, "TweenSequence")
+        rep = integer(repeat, "TweenSequence", "repeat")
         if rep < -1:
-            raise ValidationError(f"Sequence.repeat must be >= 0, or -1 for forever, got {rep}")
+            raise ValidationError(
+                f"TweenSequence.repeat must be >= 0, or -1 for forever, got {rep}"
+            )
         self.steps: tuple[Any, ...] = steps
         self.repeat = rep
         self.name = name
@@ -148,7 +154,7 @@ class Sequence:
         return self.once * (self.repeat + 1)
 
     def __repr__(self) -> str:
-        return f"Sequence({', '.join(map(repr, self.steps))}, repeat={self.repeat})"
+        return f"TweenSequence({', '.join(map(repr, self.steps))}, repeat={self.repeat})"
 
 
 class Parallel:
@@ -167,3 +173,7 @@ class Parallel:
 
     def __repr__(self) -> str:
         return f"Parallel({', '.join(map(repr, self.steps))})"
+
+
+#: ``Sequence``, the old name of :class:`TweenSequence`, for one release
+__getattr__ = moved(__name__, {"Sequence": (lambda: TweenSequence, "TweenSequence")})

@@ -46,8 +46,8 @@ from kge.keys import Key, Mod, Mouse
 from kge.scene import Scene
 from kge.scenefile import SceneFileError, default_registry, load_scene_text
 from kge.scenefile.registry import COMPONENT
-from kge.schedule import Stage, System
-from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
+from kge.schedule import Stage, System, SystemSet
+from kge.ui import ButtonClicked, TextSubmitted, Theme, ValueChanged
 from kge.ui.interact import UIState, list_rows
 from kge.world import World
 
@@ -106,14 +106,13 @@ class PlayBar(Scene):
 
 class PlayBarInput(System):
     stage = Stage.UPDATE
-    order = -100
+    in_set = SystemSet.FIRST
 
     def __init__(self, editor: Editor) -> None:
         self.editor = editor
 
     def process(self, dt: float) -> None:
-        events = self.world.resource(UIEvents)
-        for ev in events.of(ButtonClicked):
+        for ev in self.world.events(ButtonClicked):
             {"Pause": self.editor.pause, "Step": self.editor.step_once,
              "Stop": self.editor.stop}.get(ev.text, lambda: None)()
         inp = self.world.resource(Input)
@@ -390,7 +389,7 @@ class EditorInput(System):
     """Turns the frame's UI events, mouse and keys into edits; refreshes the panels."""
 
     stage = Stage.UPDATE
-    order = -200
+    in_set = SystemSet.FIRST
 
     def __init__(self, editor: Editor) -> None:
         self.ed = editor
@@ -407,8 +406,7 @@ class EditorInput(System):
     # -- UI events -----------------------------------------------------------------------------
     def ui_events(self) -> None:
         ed, world = self.ed, self.world
-        events = world.resource(UIEvents)
-        for ev in events.items:
+        for ev in world.events(ButtonClicked, TextSubmitted, ValueChanged):  # in order
             if isinstance(ev, ButtonClicked):
                 if ev.entity in ed.dialog:
                     ed.dialog_button(ev.text)

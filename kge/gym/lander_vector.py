@@ -69,7 +69,7 @@ from kge.gym.lunar_lander import (
     throttles,
 )
 from kge.gym.vector import BatchVectorEnv
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin, ContactEnd
 from kge.physics.resource import Physics
 from kge.world import World
 
@@ -254,14 +254,13 @@ class LunarLanderVector(AppHolder, BatchVectorEnv):
 
     def _read_contacts(self, world: World) -> None:
         """The single env's contact listener, for every scene: ends first, then begins."""
-        events = world.resource(PhysicsEvents)
         parts = self._parts
-        for end in events.contact_end:
+        for end in world.events(ContactEnd):
             for e in (end.collider_a, end.collider_b):
                 hit = parts.get(e)
                 if hit is not None and hit[1] != HULL:
                     self.leg_contact[hit] = 0.0
-        for ev in events.contact_begin:
+        for ev in world.events(ContactBegin):
             for e in (ev.collider_a, ev.collider_b):
                 hit = parts.get(e)
                 if hit is None:

@@ -47,7 +47,7 @@ from kge.components import (
 from kge.components import drawables as draw
 from kge.components.camera import Camera
 from kge.gym.env import KgeEnv
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin, ContactEnd
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.world import World
@@ -182,12 +182,11 @@ class LunarLander(KgeEnv):
 
     def _read_contacts(self, world: World) -> None:
         """Box2D's contact listener of the original: hull contact ends the game, legs flag."""
-        events = world.resource(PhysicsEvents)
-        for end in events.contact_end:  # ends first: a contact that ends and begins again
+        for end in world.events(ContactEnd):  # ends first: a contact that ends and begins again
             for k, leg in enumerate(self.legs):  # in one step is still touching
                 if leg in (end.collider_a, end.collider_b):
                     self.leg_contact[k] = False
-        for ev in events.contact_begin:
+        for ev in world.events(ContactBegin):
             colliders = (ev.collider_a, ev.collider_b)
             if self.lander in colliders:
                 self.game_over = True

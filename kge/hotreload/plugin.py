@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from kge.hotreload.reloader import HotReload
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 
 if TYPE_CHECKING:
     from kge.host import Host
@@ -19,7 +19,7 @@ class HotReloadSystem(System):
     """First thing of every frame's update: start watching the world, apply changes."""
 
     stage = Stage.UPDATE
-    order = -1_000_000
+    in_set = SystemSet.FIRST
 
     def __init__(self, reloader: HotReload) -> None:
         self.reloader = reloader
@@ -52,7 +52,7 @@ class HotReloadPlugin(Plugin):
         world.add_system(HotReloadSystem(reloader))
         from kge.render.passes import passes_for
 
-        passes_for(world).add(_overlay(reloader), phase="after", order=1_000_000)
+        passes_for(world).add(_overlay(reloader), phase="after", name="hot_reload", after=["ui"])
 
     def cleanup(self, app: Host) -> None:
         if self.reloader is not None:

@@ -10,7 +10,7 @@ frame indexes it with ``(t * (STEPS - 1))`` rounded: one gather per attribute.
 >>> lut = size_table((1.0, 0.0))
 >>> float(lut[0]), float(lut[-1]), round(float(lut[STEPS // 2]), 2)
 (1.0, 0.0, 0.5)
->>> rgba = color_table(((255, 0, 0), (0, 0, 255)), (1.0, 0.0))
+>>> rgba = color_table(((255, 0, 0), (0, 0, 255)), (255, 0))
 >>> rgba[0].tolist(), rgba[-1].tolist()
 ([255, 0, 0, 255], [0, 0, 255, 0])
 """
@@ -39,10 +39,10 @@ def size_table(sizes: Sequence[float]) -> np.ndarray:
     return _sampled(np.asarray(sizes, float).reshape(-1, 1))[:, 0].astype(np.float32)
 
 
-def color_table(colors: Sequence[Sequence[int]], alphas: Sequence[float]) -> np.ndarray:
-    """RGBA bytes at each of :data:`STEPS` life fractions, (STEPS, 4) uint8."""
+def color_table(colors: Sequence[Sequence[int]], opacities: Sequence[float]) -> np.ndarray:
+    """RGBA bytes at each of :data:`STEPS` life fractions, (STEPS, 4) uint8 (opacity 0-255)."""
     rgb = _sampled(np.asarray(colors, float).reshape(-1, 3))
-    a = _sampled(np.asarray(alphas, float).reshape(-1, 1)) * 255.0
+    a = _sampled(np.asarray(opacities, float).reshape(-1, 1))
     return np.clip(np.rint(np.concatenate([rgb, a], axis=1)), 0, 255).astype(np.uint8)
 
 

@@ -22,12 +22,13 @@ from typing import Any
 
 import numpy as np
 
-from kge.components.particles import ParticleEmitter, span
-from kge.errors import EntityNotFoundError, ValidationError
+from kge.components.particles import ParticleCollision, ParticleEmitter, span
+from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.particles.curves import color_table, life_index, size_table
 from kge.particles.grid import StaticGrid
 from kge.particles.pool import ParticlePool
 from kge.particles.shapes import sample_shape
+from kge.snapshot import carry_running
 
 Pose = tuple[float, float, float]
 #: prewarm is simulated in steps of this many seconds
@@ -60,16 +61,16 @@ class EmitterState:
         self.pose: Pose = (0.0, 0.0, 0.0)  #: the entity pose at the last update
         self._style: tuple[Any, ...] = ()
         self.sizes = size_table((0.1,))
-        self.colors = color_table(((255, 255, 255),), (1.0,))
+        self.colors = color_table(((255, 255, 255),), (255.0,))
 
     # -- looks --------------------------------------------------------------------------------
     def refresh_style(self, em: ParticleEmitter) -> None:
         """Rebuild the over-life tables when size, colour or alpha changed."""
-        style = (em.size, em.color, em.alpha)
+        style = (em.size, em.color, em.opacity)
         if style != self._style:
             self._style = style
             self.sizes = size_table(em.size)  # type: ignore[arg-type]
-            self.colors = color_table(em.color, em.alpha)  # type: ignore[arg-type]
+            self.colors = color_table(em.color, em.opacity)  # type: ignore[arg-type]
         if em.max_particles != self.pool.max_particles:
             self.pool.set_max(em.max_particles)
 
@@ -180,7 +181,7 @@ class EmitterState:
         on = self.continuous(em)
         if on and dt > 0:
             moved = math.hypot(pose[0] - prev[0], pose[1] - prev[1])
-            self.carry += em.rate * dt + em.rate_per_metre * moved
+            self.carry += em.rate * dt + em.rate_per_meter * moved
             n = int(self.carry)
             self.carry -= n
             if n:
@@ -221,6 +222,7 @@ class EmitterState:
             self.elapsed += PREWARM_STEP
 
 
+@carry_running
 class Particles:
     """The particle system's resource: every emitter's state, and the code API.
 
@@ -241,6 +243,17 @@ class Particles:
         self.grid_dirty = True
         #: grid cell size (metres) for particle collisions
         self.cell = 0.1
+
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[int, EmitterState]:
+        """Every emitter's state (particles, emission bookkeeping, random generator)."""
+        return dict(self.states)
+
+    def import_running(self, states: dict[int, EmitterState]) -> None:
+        """Continue the emitters of a restored world from their snapshotted states."""
+        for entity, st in states.items():
+            if self.world.exists(entity) and self.world.has(entity, ParticleEmitter):
+                self.states[entity] = st
 
     def state(self, entity: int) -> EmitterState:
         em = self._emitter(entity, "state")
@@ -308,6 +321,9 @@ class Particles:
     def check(self, entity: int | None, em: ParticleEmitter) -> None:
         """Refuse settings no state could honour (called by the plugin's validator)."""
         if em.collide != "none" and em.space == "local":
+            collide = ParticleCollision(em.collide).name
             raise ValidationError(
-                f"entity {entity}, ParticleEmitter.collide={em.collide!r} needs space='world'"
+                f"{where(entity, 'ParticleEmitter', 'collide')} = ParticleCollision.{collide} "
+                "needs space=ParticleSpace.WORLD (particles that move with the emitter cannot "
+                "collide)"
             )

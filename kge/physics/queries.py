@@ -53,7 +53,8 @@ import heapq
 import math
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any, Literal
+from enum import StrEnum
+from typing import Any
 
 import pymunk
 from pymunk._chipmunk import lib
@@ -69,7 +70,15 @@ _body_position = lib.cpBodyGetPosition
 _body_angle = lib.cpBodyGetAngle
 
 Vec2 = tuple[float, float]
-RayMode = Literal["closest", "all", "any"]
+
+
+class RayMode(StrEnum):
+    """What a ray cast without a callback returns (``Physics.raycast(..., mode=)``)."""
+
+    CLOSEST = "closest"  #: the nearest hit, or None
+    ALL = "all"  #: every hit, by increasing fraction
+    ANY = "any"  #: the first hit found (cheapest; not necessarily the nearest), or None
+
 #: What every query accepts as ``filter``.
 QueryFilter = Filter | Callable[[int], bool] | None
 
@@ -353,7 +362,7 @@ def raycast(
     p1: Any,
     p2: Any,
     callback: Callable[[RayHit], float] | None = None,
-    mode: RayMode = "closest",
+    mode: RayMode | str = RayMode.CLOSEST,
     filter: QueryFilter = None,
     *,
     sensors: bool = True,

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterable
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any, Literal, overload
 
 import numpy as np
 import pymunk
@@ -26,6 +26,7 @@ from pymunk._chipmunk import lib
 
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
+from kge.deprecation import enum_value
 from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.physics import impulses as impulses_mod
 from kge.physics import states as states_mod
@@ -33,6 +34,7 @@ from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
 from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
+from kge.physics.queries import QueryFilter, QueryHit, RayHit, RayMode
 from kge.physics.settings import PhysicsSettings
 from kge.physics.tiny import TINY, flush
 from kge.physics.writeback import set_all, slot_setter
@@ -502,39 +504,85 @@ class Physics:
         self._synced()  # (skipped inside callbacks, where queries see the live step)
         return self._sim.space
 
+    @overload
     def raycast(
         self,
         p1: Vec2,
         p2: Vec2,
-        callback: Callable[..., float] | None = None,
-        mode: Literal["closest", "all", "any"] = "closest",
-        filter: Any = None,
-    ) -> Any:
-        """Cast a ray (Box2D callback protocol, or ``mode`` closest / all / any)."""
+        callback: Callable[[RayHit], float],
+        mode: RayMode | str = ...,
+        filter: QueryFilter = ...,
+    ) -> None: ...
+    @overload
+    def raycast(
+        self,
+        p1: Vec2,
+        p2: Vec2,
+        callback: None = ...,
+        mode: Literal[RayMode.CLOSEST, RayMode.ANY] = ...,
+        filter: QueryFilter = ...,
+    ) -> RayHit | None: ...
+    @overload
+    def raycast(
+        self,
+        p1: Vec2,
+        p2: Vec2,
+        callback: None = ...,
+        *,
+        mode: Literal[RayMode.ALL],
+        filter: QueryFilter = ...,
+    ) -> list[RayHit]: ...
+    @overload
+    def raycast(
+        self,
+        p1: Vec2,
+        p2: Vec2,
+        callback: Callable[[RayHit], float] | None = ...,
+        mode: RayMode | str = ...,
+        filter: QueryFilter = ...,
+    ) -> RayHit | list[RayHit] | None: ...
+    def raycast(
+        self,
+        p1: Vec2,
+        p2: Vec2,
+        callback: Callable[[RayHit], float] | None = None,
+        mode: RayMode | str = RayMode.CLOSEST,
+        filter: QueryFilter = None,
+    ) -> RayHit | list[RayHit] | None:
+        """Cast a ray from ``p1`` to ``p2`` (see :func:`kge.physics.queries.raycast`).
+
+        With ``callback``, Box2D's protocol (returns None). Without one, ``mode``
+        decides: ``RayMode.CLOSEST`` (the default) the nearest :class:`RayHit` or
+        None, ``RayMode.ALL`` every hit by fraction, ``RayMode.ANY`` any hit or None.
+        The strings ``"closest"``, ``"all"``, ``"any"`` still work for one release.
+        """
         from kge.physics import queries
 
-        return queries.raycast(self._query_space("raycast"), p1, p2, callback, mode, filter)
+        ray_mode = enum_value(RayMode, mode, "Physics.raycast", "mode")
+        space = self._query_space("raycast")
+        return queries.raycast(space, p1, p2, callback, ray_mode, filter)
 
     def query_aabb(
         self,
         lower: Vec2,
         upper: Vec2,
-        callback: Callable[..., bool] | None = None,
-        filter: Any = None,
-    ) -> Any:
-        """Colliders whose bounds overlap the box (list, or callback that may stop early)."""
+        callback: Callable[[QueryHit], Any] | None = None,
+        filter: QueryFilter = None,
+    ) -> list[QueryHit]:
+        """Colliders whose bounds overlap the box (with a callback returning False to stop
+        early, the hits reported so far)."""
         from kge.physics import queries
 
         return queries.query_aabb(self._query_space("query_aabb"), lower, upper, callback, filter)
 
-    def query_point(self, p: Vec2, filter: Any = None) -> Any:
+    def query_point(self, p: Vec2, filter: QueryFilter = None) -> list[QueryHit]:
         """Colliders containing the point ``p``."""
         from kge.physics import queries
 
         return queries.query_point(self._query_space("query_point"), p, filter)
 
-    def query_shape(self, shape: Any, transform: Any, filter: Any = None) -> Any:
-        """Colliders overlapping ``shape`` placed at ``transform``."""
+    def query_shape(self, shape: Any, transform: Any, filter: QueryFilter = None) -> list[QueryHit]:
+        """Colliders overlapping ``shape`` placed at ``transform`` (with contact points)."""
         from kge.physics import queries
 
         return queries.query_shape(self._query_space("query_shape"), shape, transform, filter)

@@ -1,7 +1,7 @@
 """Physics debug view: collider outlines, joints, AABBs, centres of mass, contacts.
 
 It draws from pure components (``Collider`` shapes, joint components,
-``RigidBody`` state) and the ``PhysicsEvents`` resource, never from pymunk,
+``RigidBody`` state) and the contact events (``world.events``), never from pymunk,
 so it shows what the game *asked for*, and works before physics runs.
 
 Retained, like Box2D's recommended renderers: each collider's outline is
@@ -24,7 +24,7 @@ from kge.components.collider import Collider
 from kge.components.debug import DebugDraw
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.transform import Transform
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin
 from kge.render import geometry
 from kge.render.groups import OVERLAY_LAYER, WORLD, Groups
 from kge.render.meshes import MeshStore
@@ -86,10 +86,7 @@ class DebugDrawer:
         keep = now - settings.contact_seconds
         if self._contacts and self._contacts[0][0] < keep:
             self._contacts = [c for c in self._contacts if c[0] >= keep]
-        ev = self.world.try_resource(PhysicsEvents)
-        if ev is None:
-            return
-        for c in ev.contact_begin:
+        for c in self.world.events(ContactBegin):  # this step's (the recorder runs last)
             for p in c.points:
                 self._contacts.append((now, tuple(p), tuple(c.normal)))
 

@@ -23,19 +23,19 @@ from kge.components.text import Text
 from kge.components.tracked import bind, unbind
 from kge.components.transform import Transform
 from kge.host import Host
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin, ContactEnd
 from kge.physics.resource import Physics
 from kge.render.debugdraw import DebugDrawer
 from kge.render.geometry import drawable_triangles
-from kge.render.groups import TEXT, WORLD, Groups, ViewState
-from kge.render.labels import LabelStore
+from kge.render.groups import WORLD, Groups, ViewState
 from kge.render.meshes import MeshStore
 from kge.render.passes import Frame, RenderPasses
 from kge.render.poses import PoseTable
-from kge.render.projection import scaled, view_matrix
+from kge.render.projection import view_matrix
 from kge.render.setup import Renderer, ensure_renderer
 from kge.render.sprites import SpriteStore
 from kge.render.stats import StatsOverlay
+from kge.render.text.store import TextStore
 from kge.render.textures import TextureCache
 
 _TRACKED: tuple[type, ...] = (Sprite, Text, *DRAWABLE_TYPES)
@@ -55,7 +55,7 @@ class WorldView:
         self.textures = TextureCache(world)
         self.sprites = SpriteStore(self.batch, self.groups, self.textures, self.poses)
         self.meshes = MeshStore(self.batch, self.poses)
-        self.labels = LabelStore(self.batch, self.groups, self.poses)
+        self.labels = TextStore(self.batch, self.groups, self.poses, self.textures)
         self.debug = DebugDrawer(world, self.batch, self.groups, self.poses)
         self.stats = StatsOverlay(self.batch, self.groups)
         self.dirty: set[int] = set()
@@ -115,7 +115,7 @@ class WorldView:
         if tx is None:
             self.labels.remove(entity)
         else:
-            self.labels.sync(entity, tx, t)
+            self.labels.sync(entity, tx, t, ppm)
         for dtype in DRAWABLE_TYPES:
             key = (dtype, entity)
             d = w.try_get(entity, dtype)
@@ -129,6 +129,7 @@ class WorldView:
         if ppm != self._ppm:
             if self._ppm is not None:  # default sprite sizes depend on pixels_per_meter
                 self.dirty.update(self.sprites.sprites)
+                self.dirty.update(self.labels.labels)
             self._ppm = ppm
         if self.dirty:
             todo = sorted(self.dirty)
@@ -147,6 +148,7 @@ class WorldView:
         r.begin_frame(self.app.background)
         cam = self.camera()
         ppm = cam.pixels_per_meter
+        self.labels.rescale(cam.zoom, 1.0)
         self.sync(ppm)
         settings = self.world.try_resource(DebugDraw)
         if settings is not None:
@@ -166,12 +168,11 @@ class WorldView:
                 center = cam.clamped(center, viewport)
         world_view = view_matrix(center, cam.scale, viewport)
         self.state.matrices[WORLD] = world_view
-        self.state.matrices[TEXT] = scaled(world_view, 1.0 / ppm)
         hw, hh = viewport[0] / (2 * cam.scale), viewport[1] / (2 * cam.scale)
         view = (center[0] - hw, center[1] - hh, center[0] + hw, center[1] + hh)
         self.culled = self.sprites.poser.write(poses, view)
         self.meshes.poser.write(poses)
-        self.labels.place(poses, ppm)
+        self.labels.poser.write(poses)
         if settings is not None:
             self.debug.update(settings, poses, self._game_time())
             self.debug.meshes.poser.write(poses)
@@ -224,13 +225,11 @@ class WorldView:
 
     def _count_contacts(self) -> None:
         """Touching collider pairs, kept from begin/end events (no per-contact query)."""
-        ev = self.world.try_resource(PhysicsEvents)
-        if ev is None:
-            return
         pairs = self._touching
-        for c in ev.contact_begin:
+        world = self.world
+        for c in world.events(ContactBegin):  # this step's (RenderStepRecorder runs last)
             pairs.add((c.collider_a, c.collider_b))
-        for c in ev.contact_end:
+        for c in world.events(ContactEnd):
             pairs.discard((c.collider_a, c.collider_b))
             pairs.discard((c.collider_b, c.collider_a))
 

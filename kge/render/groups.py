@@ -1,9 +1,9 @@
 """Draw order and coordinate spaces as pyglet groups.
 
 One :class:`SpaceGroup` per (layer, space) sets the window's view matrix for
-everything under it: ``WORLD`` uses the camera (vertex data in metres),
-``TEXT`` the camera with a 1/pixels_per_meter pre-scale (glyphs are laid out in
-font pixels), ``SCREEN`` the identity (HUD pixels). Under it, one plain
+everything under it: ``WORLD`` uses the camera (vertex data in metres, world text
+included), ``VIEW`` draws over the camera's viewport in clip coordinates (the light
+map's multiply), ``SCREEN`` the identity (HUD pixels). Under it, one plain
 ``Group`` per ``order`` value. pyglet sorts sibling groups by their ``order``,
 so the batch draws layer by layer, space by space, order by order.
 """
@@ -16,7 +16,7 @@ import pyglet
 
 from kge.render.projection import IDENTITY, Mat4Tuple
 
-WORLD, TEXT, SCREEN = 0, 1, 2
+WORLD, VIEW, SCREEN = 0, 1, 2
 #: a layer above anything a game uses, for debug draw and the stats overlay
 OVERLAY_LAYER = 1_000_000
 
@@ -26,7 +26,7 @@ class ViewState:
 
     def __init__(self, window: Any) -> None:
         self.window = window
-        self.matrices: dict[int, Mat4Tuple] = {WORLD: IDENTITY, TEXT: IDENTITY, SCREEN: IDENTITY}
+        self.matrices: dict[int, Mat4Tuple] = {WORLD: IDENTITY, VIEW: IDENTITY, SCREEN: IDENTITY}
 
 
 class SpaceGroup(pyglet.graphics.Group):

@@ -81,3 +81,59 @@ def from_array(array: Any, *, top_down: bool = True) -> PixelImage:
         arr = arr[::-1]
     h, w = arr.shape[:2]
     return PixelImage(w, h, np.ascontiguousarray(arr).tobytes())
+
+
+#: texture sampling options (see :mod:`kge.render.textures`)
+FILTERS = ("nearest", "linear")
+WRAPS = ("clamp", "repeat", "mirror")
+
+
+@dataclass(slots=True, frozen=True)
+class ImageRegion:
+    """Part of another image, usable wherever an image is: ``rect`` = (x, y, w, h) pixels
+    from the image's top-left corner (as image editors show it).
+
+    >>> ImageRegion("atlas.png", (32, 0, 16, 16))
+    ImageRegion('atlas.png', (32, 0, 16, 16))
+    >>> ImageRegion("atlas.png", (0, 0, 0, 16))
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: ImageRegion.rect must be (x >= 0, y >= 0, w > 0, h > 0) ...
+    """
+
+    image: Any
+    rect: tuple[int, int, int, int]
+
+    def __post_init__(self) -> None:
+        r = self.rect
+        if (
+            not isinstance(r, tuple) or len(r) != 4
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in r)
+            or r[0] < 0 or r[1] < 0 or r[2] <= 0 or r[3] <= 0
+        ):  # fmt: skip
+            raise ValidationError(
+                f"ImageRegion.rect must be (x >= 0, y >= 0, w > 0, h > 0) pixels, got {r!r}"
+            )
+        if isinstance(self.image, (ImageRegion, RenderTexture)):
+            raise ValidationError("ImageRegion.image must be a whole image (a name or pixels)")
+
+    def __repr__(self) -> str:
+        return f"ImageRegion({self.image!r}, {self.rect!r})"
+
+
+@dataclass(slots=True, frozen=True)
+class RenderTexture:
+    """What a camera with ``Camera(target="name")`` draws, as an image a Sprite can show.
+
+    >>> RenderTexture("minimap")
+    RenderTexture('minimap')
+    """
+
+    name: str
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name:
+            raise ValidationError(f"RenderTexture.name must be a non-empty str, got {self.name!r}")
+
+    def __repr__(self) -> str:
+        return f"RenderTexture({self.name!r})"

@@ -18,7 +18,6 @@ up (UI, emissive sprites) are drawn after the multiply, unlit.
 
 from __future__ import annotations
 
-import ctypes
 import math
 from typing import Any
 
@@ -30,6 +29,7 @@ from kge.components.lights import Light, Lighting
 from kge.components.transform import Transform
 from kge.lighting.occluders import Occluders
 from kge.lighting.shadows import quads_to_triangles, shadow_quads
+from kge.render.glutil import Stream, program
 from kge.render.groups import SCREEN, Groups
 
 _TRANSFORM = """
@@ -122,59 +122,6 @@ void main() { frag = vec4(texture(light_map, uv).rgb, 1.0); }
 _LIGHT_FLOATS = 12
 _ORDER_LAST = 1 << 30
 
-_programs: dict[str, Any] = {}
-
-
-def _program(name: str, vs: str, fs: str) -> Any:
-    prog = _programs.get(name)
-    if prog is None:
-        prog = _programs[name] = pyglet.graphics.shader.ShaderProgram(
-            pyglet.graphics.shader.Shader(vs, "vertex"),
-            pyglet.graphics.shader.Shader(fs, "fragment"),
-        )
-    return prog
-
-
-class _Stream:
-    """A vertex array and buffer of interleaved float attributes, re-filled each frame."""
-
-    def __init__(self, program: Any, layout: list[tuple[str, int]]) -> None:
-        self.vao = gl.GLuint()
-        self.vbo = gl.GLuint()
-        gl.glGenVertexArrays(1, self.vao)
-        gl.glGenBuffers(1, self.vbo)
-        gl.glBindVertexArray(self.vao)
-        gl.glBindBuffer(gl.GL_ARRAY_BUFFER, self.vbo)
-        stride = sum(n for _, n in layout) * 4
-        offset = 0
-        for name, n in layout:
-            loc = program.attributes[name]["location"]
-            gl.glEnableVertexAttribArray(loc)
-            gl.glVertexAttribPointer(loc, n, gl.GL_FLOAT, gl.GL_FALSE, stride, offset)
-            offset += n * 4
-        gl.glBindVertexArray(0)
-        self.floats = stride // 4
-
-    def upload(self, data: np.ndarray) -> None:
-        data = np.ascontiguousarray(data, np.float32)
-        gl.glBindBuffer(gl.GL_ARRAY_BUFFER, self.vbo)
-        gl.glBufferData(
-            gl.GL_ARRAY_BUFFER, data.nbytes, data.ctypes.data_as(ctypes.c_void_p),
-            gl.GL_STREAM_DRAW,
-        )  # fmt: skip
-
-    def draw(self, first: int, count: int) -> None:
-        if count <= 0:
-            return
-        gl.glBindVertexArray(self.vao)
-        gl.glDrawArrays(gl.GL_TRIANGLES, first, count)
-        gl.glBindVertexArray(0)
-
-    def delete(self) -> None:
-        gl.glDeleteBuffers(1, self.vbo)
-        gl.glDeleteVertexArrays(1, self.vao)
-
-
 class CompositeGroup(pyglet.graphics.Group):
     """Multiplies what is already drawn by the light map (blend DST_COLOR, ZERO)."""
 
@@ -252,12 +199,12 @@ class LightMap:
         self.batch = batch
         self.groups = groups
         self.occluders = occluders
-        self.light_program = _program("light", _LIGHT_VS, _LIGHT_FS)
-        self.shadow_program = _program("shadow", _SHADOW_VS, _SHADOW_FS)
-        self.composite = _program("composite", _COMPOSITE_VS, _COMPOSITE_FS)
+        self.light_program = program("kge-light", _LIGHT_VS, _LIGHT_FS)
+        self.shadow_program = program("kge-shadow", _SHADOW_VS, _SHADOW_FS)
+        self.composite = program("kge-light-composite", _COMPOSITE_VS, _COMPOSITE_FS)
         layout = [("world", 2), ("center", 2), ("color", 3), ("shape", 4), ("softness", 1)]
-        self.lights = _Stream(self.light_program, layout)
-        self.shadows = _Stream(self.shadow_program, [("world", 2)])
+        self.lights = Stream(self.light_program, layout)
+        self.shadows = Stream(self.shadow_program, [("world", 2)])
         self.size = (0, 0)
         self.texture: Any = None
         self.fbo: Any = None

@@ -9,8 +9,14 @@ resource, from its ``build(world)``, without touching GL:
   and before the batch is drawn: upload vertex data in bulk into vertex lists that
   live in ``frame.batch`` (in ``frame.groups.get(layer, WORLD)`` so they sort with
   sprites of the same layer);
-* ``phase="after"`` passes run after the batch, in ``order``: full-screen effects
-  (a light map multiplied over the scene), overlays drawn in window pixels (UI).
+* ``phase="after"`` passes run after the batch: full-screen effects (a light map
+  multiplied over the scene), overlays drawn in window pixels (UI).
+
+Within a phase, passes are ordered by name, as systems are (:mod:`kge.schedule`): a
+pass names itself (``name=``) and may say ``before=`` / ``after=`` other passes' names;
+two passes nothing orders *tie* and run in the order they were added, reported by
+:meth:`RenderPasses.ties`. The built-in order is ``animation`` -> ``tilemap`` ->
+``particles`` -> ``lighting`` before the batch, ``ui`` after it.
 
 A pass receives a :class:`Frame` and imports pyglet's GL only when it runs, so a
 headless App that never renders never loads it.
@@ -18,18 +24,22 @@ headless App that never renders never loads it.
 >>> from kge.world import World
 >>> passes = passes_for(World())
 >>> calls = []
->>> _ = passes.add(lambda frame: calls.append("ui"), phase="after", order=1000)
->>> _ = passes.add(lambda frame: calls.append("lights"), phase="after", order=100)
+>>> _ = passes.add(lambda frame: calls.append("ui"), phase="after", name="ui")
+>>> _ = passes.add(lambda frame: calls.append("fog"), phase="after", name="fog",
+...                before=["ui"])
 >>> for p in passes.after(): p(None)
 >>> calls
-['lights', 'ui']
+['fog', 'ui']
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal
+
+from kge import deprecation
+from kge.schedule import order_items
 
 if TYPE_CHECKING:
     import numpy as np
@@ -74,30 +84,94 @@ class Frame:
         )
 
 
+@dataclass(slots=True)
+class _Entry:
+    phase: Phase
+    name: str
+    before: tuple[str, ...]
+    after: tuple[str, ...]
+    legacy: int | None  #: a deprecated integer ``order``
+    fn: Pass
+
+
+#: the integers the built-in passes had before names, to place a deprecated ``order``
+_LEGACY = {"animation": -100, "tilemap": -100, "particles": 100, "lighting": 200, "ui": 1000}
+
+
 class RenderPasses:
     """The passes of one world (a resource; see the module docstring)."""
 
     def __init__(self) -> None:
-        self._passes: list[tuple[Phase, int, int, Pass]] = []
-        self._serial = 0
+        self._entries: list[_Entry] = []
+        self._sorted: dict[Phase, list[_Entry]] = {"before": [], "after": []}
+        self._ties: dict[Phase, list[tuple[str, str]]] = {"before": [], "after": []}
 
-    def add(self, fn: Pass, *, phase: Phase = "before", order: int = 0) -> Pass:
-        """Register ``fn``; within a phase lower ``order`` runs first (ties: added first)."""
+    def add(
+        self,
+        fn: Pass,
+        *,
+        phase: Phase = "before",
+        name: str | None = None,
+        before: Iterable[str] = (),
+        after: Iterable[str] = (),
+        order: int | None = None,
+    ) -> Pass:
+        """Register ``fn`` in ``phase``, placed by ``before`` / ``after`` (pass names).
+
+        ``order`` (an integer, lower first) is deprecated: name the pass instead.
+        """
         if phase not in ("before", "after"):
             raise ValueError(f"RenderPasses.add: phase must be 'before' or 'after', got {phase!r}")
-        self._serial += 1
-        self._passes.append((phase, int(order), self._serial, fn))
-        self._passes.sort(key=lambda p: (p[1], p[2]))
+        label = name if name is not None else getattr(fn, "__qualname__", repr(fn))
+        if order is not None:
+            deprecation.warn(
+                f"RenderPasses.add(order={order}): name the pass (name=) and place it "
+                "with before= / after= other passes' names"
+            )
+        entry = _Entry(phase, str(label), tuple(before), tuple(after),
+                       None if order is None else int(order), fn)  # fmt: skip
+        entries = [*self._entries, entry]
+        self._sorted[phase], self._ties[phase] = _sort(phase, entries)
+        self._entries = entries
         return fn
 
     def remove(self, fn: Pass) -> None:
-        self._passes = [p for p in self._passes if p[3] is not fn]
+        self._entries = [e for e in self._entries if e.fn is not fn]
+        for phase in ("before", "after"):
+            self._sorted[phase], self._ties[phase] = _sort(phase, self._entries)
 
     def before(self) -> list[Pass]:
-        return [p[3] for p in self._passes if p[0] == "before"]
+        return [e.fn for e in self._sorted["before"]]
 
     def after(self) -> list[Pass]:
-        return [p[3] for p in self._passes if p[0] == "after"]
+        return [e.fn for e in self._sorted["after"]]
+
+    def names(self, phase: Phase) -> list[str]:
+        """The passes of ``phase`` by name, in the order they run."""
+        return [e.name for e in self._sorted[phase]]
+
+    def ties(self) -> list[tuple[Phase, str, str]]:
+        """Pairs of passes that run one after the other with nothing ordering them."""
+        return [(phase, a, b) for phase in ("before", "after") for a, b in self._ties[phase]]
+
+
+def _sort(phase: Phase, entries: list[_Entry]) -> tuple[list[_Entry], list[tuple[str, str]]]:
+    mine = [e for e in entries if e.phase == phase]
+    index: dict[str, list[int]] = {}
+    for i, e in enumerate(mine):
+        index.setdefault(e.name, []).append(i)
+    edges = []
+    for i, e in enumerate(mine):
+        edges += [(j, i) for name in e.after for j in index.get(name, ())]
+        edges += [(i, j) for name in e.before for j in index.get(name, ())]
+        if e.legacy is not None:  # a deprecated integer: against the others' numbers
+            for j, other in enumerate(mine):
+                theirs = other.legacy if other.legacy is not None else _LEGACY.get(other.name)
+                if j != i and theirs is not None:  # equal numbers: the one added first
+                    first = theirs < e.legacy or (theirs == e.legacy and j < i)
+                    edges.append((j, i) if first else (i, j))
+    order, ties = order_items([e.name for e in mine], edges, f"{phase} render pass")
+    return [mine[i] for i in order], [(mine[a].name, mine[b].name) for a, b in ties]
 
 
 def passes_for(world: World) -> RenderPasses:

@@ -118,6 +118,24 @@ def _new_window(app: Host) -> tuple[Any, bool]:
     return create_window(size[0], size[1], caption=app.title, visible=False), True
 
 
+def gl_context() -> Any:
+    """A current GL context (fonts need one): the current window's, else a small hidden
+    window's, made once (headless: an EGL pbuffer)."""
+    from kge.platform import has_display
+
+    configure_headless(not has_display())
+    import pyglet
+
+    ctx = pyglet.gl.current_context
+    if ctx is not None:
+        return ctx
+    win = _offscreen.get((16, 16))
+    if win is None:
+        win = _offscreen[(16, 16)] = create_window(16, 16, visible=False)
+    win.switch_to()
+    return pyglet.gl.current_context
+
+
 def renderer_for(app: Host) -> Renderer | None:
     return _renderers.get(app)
 

@@ -45,7 +45,7 @@ from typing import Any
 
 import numpy as np
 
-from kge.components.animation import Clip, FrameRef
+from kge.components.animation import Clip, FrameRef, Loop
 from kge.components.sprite import Sprite
 from kge.errors import ValidationError
 from kge.render.images import PixelImage
@@ -202,7 +202,7 @@ class SpriteSheet:
         self,
         name: str | None = None,
         *,
-        loop: str | None = None,
+        loop: Loop | str | None = None,
         speed: float = 1.0,
         flip_x: bool = False,
         flip_y: bool = False,
@@ -235,7 +235,7 @@ class SpriteSheet:
         return Clip(
             tuple(f.ref for f in frames),
             tuple(f.duration for f in frames),
-            loop if loop is not None else mode,
+            loop if loop is not None else mode,  # type: ignore[arg-type]  # Clip checks it
             speed,
             flip_x,
             flip_y,

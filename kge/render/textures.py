@@ -1,20 +1,28 @@
-"""Turn ``Sprite.image`` values into pyglet textures, once per distinct image.
+"""Turn image values into pyglet textures, once per distinct image and sampling options.
 
-Accepted values: an asset name or path (looked up through the world's asset
-store, :func:`kge.assets.assets_for`, else loaded from the path), a
-:class:`kge.render.images.PixelImage`, or a pyglet image object. Equal keys
-share one texture, so all sprites of one image land in one vertex domain and
-draw in one call.
+Accepted values: an asset name or path (looked up through the world's asset store,
+:func:`kge.assets.assets_for`, else loaded from the path), a
+:class:`kge.render.images.PixelImage`, an :class:`~kge.render.images.ImageRegion`
+(part of another image), a :class:`~kge.render.images.RenderTexture` (what a camera
+draws into), or a pyglet image object. Equal keys share one texture, so all sprites
+of one image land in one vertex domain and draw in one call.
+
+Sampling belongs to the texture: ``filter`` (``"nearest"`` keeps pixel art crisp,
+``"linear"`` smooths painted art that is scaled or turned), ``mipmaps`` (smaller
+copies for art drawn much smaller than its pixels: no shimmer) and ``wrap``
+(``"clamp"``, ``"repeat"``: a tiled sky is one sprite, ``"mirror"``). The same image
+with other options is another texture.
 """
 
 from __future__ import annotations
 
 import os
 import weakref
+from collections.abc import Callable
 from typing import Any
 
 from kge.errors import ValidationError
-from kge.render.images import PixelImage
+from kge.render.images import FILTERS, WRAPS, ImageRegion, PixelImage, RenderTexture
 
 
 def _resolves_to(name: str, world: Any) -> str | None:
@@ -52,40 +60,65 @@ def _load_path(name: str, world: Any) -> Any:
 _CACHES: weakref.WeakSet[TextureCache] = weakref.WeakSet()
 
 
+def check_options(filter: str, wrap: str) -> None:
+    if filter not in FILTERS:
+        raise ValidationError(f"texture filter must be one of {FILTERS}, got {filter!r}")
+    if wrap not in WRAPS:
+        raise ValidationError(f"texture wrap must be one of {WRAPS}, got {wrap!r}")
+
+
 class TextureCache:
-    """Image value -> pyglet texture (with its pixel size)."""
+    """Image value (and sampling options) -> pyglet texture (with its pixel size)."""
 
     def __init__(self, world: Any = None) -> None:
         self.world = world
         self._cache: dict[Any, Any] = {}
+        #: ``fn(name) -> texture``: the textures cameras draw into (set by the renderer)
+        self.render_textures: Callable[[str], Any] | None = None
         _CACHES.add(self)
 
     def forget_file(self, path: str) -> list[str]:
         """Drop the textures of image names that resolve to the file ``path``; the names."""
         target = os.path.realpath(path)
         dropped = []
-        for key in [k for k in self._cache if isinstance(k, str)]:
-            if _resolves_to(key, self.world) == target:
+        for key in list(self._cache):
+            name = key if isinstance(key, str) else key[0] if isinstance(key, tuple) else None
+            if isinstance(name, str) and _resolves_to(name, self.world) == target:
                 del self._cache[key]
-                dropped.append(key)
+                dropped.append(name)
         return dropped
 
     @staticmethod
     def key(image: Any) -> Any:
-        if isinstance(image, (str, PixelImage)):
+        if isinstance(image, (str, PixelImage, ImageRegion, RenderTexture)):
             return image
         return ("object", id(image))
 
-    def texture(self, image: Any) -> Any:
+    def texture(self, image: Any, filter: str = "nearest", mipmaps: bool = False,
+                wrap: str = "clamp") -> Any:  # fmt: skip
         """The pyglet Texture for ``image`` (loaded and uploaded on first use)."""
-        k = self.key(image)
+        if isinstance(image, RenderTexture):
+            if self.render_textures is None:
+                raise ValidationError(f"{image!r}: no camera draws into it")
+            return self.render_textures(image.name)
+        if isinstance(image, ImageRegion):
+            whole = self.texture(image.image, filter, mipmaps, wrap)
+            x, y, w, h = image.rect
+            if x + w > whole.width or y + h > whole.height:
+                raise ValidationError(
+                    f"{image!r} is outside the {whole.width}x{whole.height} image"
+                )
+            return whole.get_region(x, whole.height - y - h, w, h)
+        k = (self.key(image), filter, mipmaps, wrap)
         tex = self._cache.get(k)
         if tex is None:
-            tex = self._cache[k] = self._make(image)
+            check_options(filter, wrap)
+            tex = self._cache[k] = self._make(image, filter, mipmaps, wrap)
         return tex
 
-    def _make(self, image: Any) -> Any:
+    def _make(self, image: Any, filter: str, mipmaps: bool, wrap: str) -> Any:
         import pyglet
+        from pyglet import gl
 
         if isinstance(image, PixelImage):
             img = pyglet.image.ImageData(image.width, image.height, "RGBA", image.pixels)
@@ -95,12 +128,22 @@ class TextureCache:
             img = image
         else:
             raise ValidationError(f"cannot draw {image!r}: not an asset name, PixelImage or image")
-        tex = img.get_texture()
-        # Pixel art stays crisp when scaled up; smooth filtering blurs 16 px sprites.
-        from pyglet import gl
-
+        linear = filter == "linear"
+        mag = gl.GL_LINEAR if linear else gl.GL_NEAREST
+        if mipmaps:
+            minf = gl.GL_LINEAR_MIPMAP_LINEAR if linear else gl.GL_NEAREST_MIPMAP_NEAREST
+        else:
+            minf = mag
+        data = img.get_image_data()
+        tex = pyglet.image.Texture.create(data.width, data.height, min_filter=minf, mag_filter=mag)
+        tex.blit_into(data, 0, 0, 0)
         gl.glBindTexture(tex.target, tex.id)
-        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MAG_FILTER, gl.GL_NEAREST)
+        mode = {"clamp": gl.GL_CLAMP_TO_EDGE, "repeat": gl.GL_REPEAT,
+                "mirror": gl.GL_MIRRORED_REPEAT}[wrap]  # fmt: skip
+        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_WRAP_S, mode)
+        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_WRAP_T, mode)
+        if mipmaps:
+            gl.glGenerateMipmap(tex.target)
         return tex
 
     def clear(self) -> None:

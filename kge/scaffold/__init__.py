@@ -12,11 +12,12 @@ import keyword
 import re
 from pathlib import Path
 
+from kge.errors import KgeError
 from kge.scaffold.templates import FILES
 
 
-class ScaffoldError(ValueError):
-    """The name is not usable, or the folder exists."""
+class ScaffoldError(KgeError, ValueError):
+    """``kge new``: the name cannot name a Python package, or the folder exists."""
 
 
 def package_name(name: str) -> str:

@@ -74,7 +74,7 @@ class Player(Script):
             score = self.world.resource(Score)
             score.coins += 1
             for _, (hud,) in self.world.query(Text):
-                hud.value = f"coins: {score.coins}"
+                hud.text = f"coins: {score.coins}"
 
 
 def level(world: World) -> None:

@@ -314,6 +314,8 @@ class Decoder:
                 try:
                     return kind[raw]
                 except KeyError:
+                    if issubclass(kind, str) and raw in kind._value2member_map_:
+                        return kind(raw)  # a choice that was a plain string before its enum
                     names = ", ".join(m.name for m in kind)
                     raise SceneFileError(
                         where, f"{raw!r} is not a {kind.__name__} (one of {names})"
@@ -509,10 +511,10 @@ class Encoder:
             raise SceneFileError(where, f"nested deeper than {LIMITS.max_depth} levels")
         if v is None:
             return {}
+        if isinstance(v, enum.Enum):  # first: a StrEnum member is a str too
+            return v.name
         if isinstance(v, bool | str):
             return v
-        if isinstance(v, enum.Enum):
-            return v.name
         if isinstance(v, int):
             if not -INT_RANGE <= v < INT_RANGE:
                 raise SceneFileError(where, f"integer {v} is beyond 64 bits")

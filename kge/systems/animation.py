@@ -1,15 +1,15 @@
 """Animation systems and the plugin that installs them: sprite clips, tweens, camera shake.
 
-===========================  ==============  ===========================================
-system                       stage (order)   does
-===========================  ==============  ===========================================
-``AnimationFrameStart``      INPUT (-1000)   clears this frame's ``AnimationEvents``
-``FixedTweens``              FIXED (150)     tweens of physics bodies: velocities
-``ShakeRestore``             UPDATE (0)      takes last frame's shake offset off
-``AnimationSystem``          UPDATE (200)    advances every Animator, events, hooks
-``TweenSystem``              UPDATE (210)    advances every other tween
-``ShakeApply``               LATE (300)      decays trauma, adds this frame's offset
-===========================  ==============  ===========================================
+===========================  ======================  ===================================
+system                       stage, set              does
+===========================  ======================  ===================================
+``AnimationFrameStart``      INPUT, FIRST            clears the deprecated lists
+``FixedTweens``              FIXED, PRE_PHYSICS      tweens of physics bodies: velocities
+``ShakeRestore``             UPDATE, FIRST           takes last frame's shake offset off
+``AnimationSystem``          UPDATE, ANIMATION       advances every Animator, events, hooks
+``TweenSystem``              UPDATE, ANIMATION       every other tween (after the clips)
+``ShakeApply``               LATE, CAMERA_EFFECTS    decays trauma, adds this frame's offset
+===========================  ======================  ===================================
 
 Everything runs on game time: the dt the App hands to the UPDATE stage is
 scaled by ``time_scale``, zero while paused, one fixed step on ``single_step``,
@@ -36,11 +36,19 @@ from kge.errors import MissingComponentError
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.scene import Time
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
+from kge.snapshot import carry_running
 from kge.systems.behaviour import BehaviourRunner
-from kge.world import World
+from kge.world import World, deprecate_resource, stored_resource
+
+deprecate_resource(
+    AnimationEvents,
+    "read world.events(AnimationEvent) (or AnimationFinished, TweenFinished), "
+    "or the Behaviour hooks (on_animation_event...)",
+)
 
 
+@carry_running
 class Animations:
     """Every Animator of a world as numpy rows (a resource): what the systems and the
     renderer share, and what game code can ask (``frame(entity)``, ``clip(entity)``)."""
@@ -49,6 +57,8 @@ class Animations:
         self.world = world
         self.state = ClipState(ClipTable())
         self._compacted_at = self._table_at = -1
+        #: entity -> (clip, time, finished, fresh) from a snapshot, applied at the next sync
+        self._carried: dict[int, tuple[str, float, bool, bool]] = {}
         self.dirty: set[int] = set()
         self._new: list[int] = []
         self._serials: dict[int, int] = {}
@@ -117,10 +127,40 @@ class Animations:
                 self._sync_one(entity)
             self.dirty.clear()
         self.table.ensure()  # clips first played since the last frame (play() of a new one)
+        if self._carried:
+            self._continue_carried()
         if self.state.version != self._compacted_at or self.table.version != self._table_at:
             self.state.compact()  # rows or clips came or went: drop clips nobody plays
             self.table.ensure()
             self._compacted_at, self._table_at = self.state.version, self.table.version
+
+    # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
+    def export_running(self) -> dict[int, tuple[str, float, bool, bool]]:
+        """Each animator's clip and where it is in it."""
+        self.sync()
+        state, out = self.state, {}
+        for entity, row in state.rows.items():
+            anim = self.world.try_get(entity, Animator)
+            if anim is not None:
+                out[entity] = (str(anim.current), float(state.time[row]),
+                               bool(state.finished[row]), bool(state.fresh[row]))  # fmt: skip
+        return out
+
+    def import_running(self, carried: dict[int, tuple[str, float, bool, bool]]) -> None:
+        """Animators of a restored world go on from where they were (at the next sync)."""
+        self._carried = dict(carried)
+
+    def _continue_carried(self) -> None:
+        state = self.state
+        for entity, (clip, time, finished, fresh) in sorted(self._carried.items()):
+            row = state.rows.get(entity)
+            anim = self.world.try_get(entity, Animator)
+            if row is None or anim is None or str(anim.current) != clip:
+                continue  # gone, or playing another clip since: it starts afresh
+            state.seek(row, time)
+            state.finished[row] = finished
+            state.fresh[row] = fresh
+        self._carried.clear()
 
     def _sync_one(self, entity: int) -> None:
         anim = self.world.try_get(entity, Animator)
@@ -189,7 +229,8 @@ def tweens_of(world: World) -> Tweens:
 
 
 def events_of(world: World) -> AnimationEvents:
-    found = world.try_resource(AnimationEvents)
+    """The deprecated per-frame lists (kept filled for one release)."""
+    found = stored_resource(world, AnimationEvents)
     if found is None:
         found = world.insert_resource(AnimationEvents())
     return found
@@ -202,10 +243,10 @@ def _hook(world: World, entity: int | None, name: str, event: Any) -> None:
 
 
 class AnimationFrameStart(System):
-    """Clears the per-frame animation event lists (first thing in a frame)."""
+    """Clears the deprecated ``AnimationEvents`` lists (first thing in a frame)."""
 
     stage = Stage.INPUT
-    order = -1000
+    in_set = SystemSet.FIRST
 
     def process(self, dt: float) -> None:
         events_of(self.world).clear()
@@ -215,7 +256,7 @@ class AnimationSystem(System):
     """Advances every Animator with numpy, then delivers frame and end events."""
 
     stage = Stage.UPDATE
-    order = 200
+    in_set = SystemSet.ANIMATION
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -237,6 +278,7 @@ class AnimationSystem(System):
             clip = str(anim.current) if anim is not None else ""
             ev = AnimationEvent(entity, clip, name, frame)
             self.events.frame.append(ev)
+            world.emit(ev)
             _hook(world, entity, "on_animation_event", ev)
         ended = sorted(int(state.entity[r]) for r in crossings.finished.tolist())
         for entity in ended:
@@ -245,6 +287,7 @@ class AnimationSystem(System):
                 continue
             fin = AnimationFinished(entity, str(anim.current))
             self.events.finished.append(fin)
+            world.emit(fin)
             _hook(world, entity, "on_animation_end", fin)
             anims._after_end(entity, anim)
 
@@ -254,6 +297,7 @@ def _finished(world: World, handles: list[TweenHandle]) -> None:
     for h in handles:
         ev = TweenFinished(h.entity, h, h.name)
         events.tweens.append(ev)
+        world.emit(ev)
         _hook(world, h.entity, "on_tween_end", ev)
 
 
@@ -261,7 +305,8 @@ class TweenSystem(System):
     """Advances every tween not driving a physics body (game time, once per frame)."""
 
     stage = Stage.UPDATE
-    order = 210
+    in_set = SystemSet.ANIMATION
+    after = (AnimationSystem,)
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -275,7 +320,7 @@ class FixedTweens(System):
     """Advances tweens of physics bodies' Transforms in the fixed step, before physics."""
 
     stage = Stage.FIXED
-    order = 150
+    in_set = SystemSet.PRE_PHYSICS
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -298,7 +343,7 @@ class ShakeRestore(System):
     """Takes last frame's shake offset off the camera before this frame's updates."""
 
     stage = Stage.UPDATE
-    order = 0
+    in_set = SystemSet.FIRST
     applied: tuple[Camera, tuple[float, float]] | None = None
 
     def process(self, dt: float) -> None:
@@ -313,7 +358,7 @@ class ShakeApply(System):
     """Decays trauma and adds this frame's shake offset to the active camera (LATE)."""
 
     stage = Stage.LATE
-    order = 300
+    in_set = SystemSet.CAMERA_EFFECTS
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -390,4 +435,4 @@ class AnimationPlugin(Plugin):
             TweenSystem(), ShakeApply(),
         ):  # fmt: skip
             world.add_system(system)
-        passes_for(world).add(_AtlasPass(world, anims), phase="before", order=-100)
+        passes_for(world).add(_AtlasPass(world, anims), phase="before", name="animation")

@@ -13,12 +13,12 @@ Added to a world, the system
   and re-pans positional sources from their Transform every frame;
 * stops an entity's sound when the entity is despawned or the component
   removed, and every scene sound when the world closes (``detach``);
-* once a world has an ``ImpactSound``, listens to the physics
-  ``contact_begin`` events and plays an entity's
+* once a world has an ``ImpactSound``, reads the frame's physics
+  ``ContactBegin`` events (``world.events``) and plays an entity's
   ``ImpactSound`` once per contact whose ``approach_speed`` reaches its
-  ``min_speed``, at a volume scaled by the speed.
+  ``hit_threshold``, at a volume scaled by the speed.
 
-It runs in the LATE stage after camera follow, so panning uses this frame's
+It runs in the LATE stage's ``AUDIO`` set, after camera follow, so panning uses this frame's
 camera. Importing this module does not import pyglet; the mixer does, when the
 first sound plays. Sounds started by the system itself (play-on-start,
 impacts) cannot raise to a caller, so a file that fails to *decode* there is
@@ -31,8 +31,6 @@ import warnings
 import weakref
 from typing import Any
 
-import esper
-
 from kge.assets.errors import AssetError
 from kge.assets.store import Assets, assets_for, default_assets
 from kge.audio.mixer import Mixer
@@ -42,28 +40,15 @@ from kge.components.tracked import bind, unbind
 from kge.components.transform import Transform
 from kge.errors import where
 from kge.host import Host
+from kge.physics.events import ContactBegin
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.sound import SoundData
 from kge.world import World
 
 __all__ = ["Audio", "AudioSystem", "mixer_for"]
 
 _app_mixers: weakref.WeakKeyDictionary[Any, Mixer] = weakref.WeakKeyDictionary()
-
-# esper keeps event handlers as weak references whose death callback edits the
-# *current* esper world's registry; a handler dying with its closed world then
-# raises KeyError from the garbage collector. So the handler registered with
-# esper is this immortal module function, which finds the system of the world
-# being dispatched to (World switches esper to itself before dispatching).
-_contact_systems: weakref.WeakValueDictionary[str, AudioSystem] = weakref.WeakValueDictionary()
-
-
-def _deliver_contact_begin(event: Any) -> None:
-    system = _contact_systems.get(esper.current_world)
-    if system is not None:
-        system.contact_begin(event)
-
 
 #: mixers of Apps collected without ``close()``, waiting to be closed on the main thread
 _orphans: list[Mixer] = []
@@ -115,7 +100,7 @@ class AudioSystem(System):
     """Plays the world's sounds. See the module docstring."""
 
     stage = Stage.LATE
-    order = 300
+    in_set = SystemSet.AUDIO
     _active = False  # True once attach succeeded; a refused duplicate stays inert
 
     def attach(self, world: World) -> None:
@@ -141,7 +126,6 @@ class AudioSystem(System):
         world.on_remove(AudioSource, self._removed)
         world.on_remove(ImpactSound, self._impact_removed)
         world.on_add(ImpactSound, self._impact_added)
-        self._esper_world = esper.current_world  # add_system switched esper to `world`
         self._listening = False
         self._active = True
         # adopt components spawned before the system joined (app.add_system_to_all)
@@ -169,12 +153,8 @@ class AudioSystem(System):
         self.audio.stop_source(entity)
 
     def _impact_added(self, entity: int, _: ImpactSound) -> None:
-        # Subscribe on the first ImpactSound only: a world without one then pays
-        # nothing per contact (PhysicsEventDelivery skips events nobody handles).
-        if not self._listening:
-            self._listening = True
-            _contact_systems[self._esper_world] = self
-            self.world.set_handler("contact_begin", _deliver_contact_begin)
+        # contacts are read once a world has an ImpactSound: one without pays nothing
+        self._listening = True
 
     def _impact_removed(self, entity: int, _: ImpactSound) -> None:
         self._last_impact.pop(entity, None)
@@ -190,7 +170,7 @@ class AudioSystem(System):
                 continue
             seen.append(entity)
             impact = self.world.try_get(entity, ImpactSound)
-            if impact is not None and speed >= impact.min_speed and impact.gain(speed) > 0:
+            if impact is not None and speed >= impact.hit_threshold and impact.gain(speed) > 0:
                 self._impacts.append((entity, impact, speed, point))
 
     # -- per frame ------------------------------------------------------------------------
@@ -200,6 +180,9 @@ class AudioSystem(System):
         if _orphans:
             close_orphans()
         self._clock += dt
+        if self._listening:
+            for event in self.world.events(ContactBegin):
+                self.contact_begin(event)
         if self._to_start:
             self._start_sources()
         if self._dirty:
@@ -260,9 +243,6 @@ class AudioSystem(System):
         if not self._active:
             return
         self._active = False
-        for name, system in list(_contact_systems.items()):
-            if system is self:
-                del _contact_systems[name]
         self.audio.stop_all()
         if self._owns_mixer:
             self.mixer.close()

@@ -20,7 +20,7 @@ from kge.components.behaviour import Behaviour
 from kge.coroutines import Coroutine
 from kge.input import AnyEvent, GamepadEvent, Input, KeyEvent, MouseEvent, TextEvent
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.world import World
 
 
@@ -174,7 +174,7 @@ class InputBehaviours(_BehaviourStage):
     """Deliver this frame's key and mouse events to ``on_key_*`` / ``on_mouse_*``."""
 
     stage = Stage.INPUT
-    order = 100
+    in_set = SystemSet.SCRIPTS
 
     def process(self, dt: float) -> None:
         inp = self.world.try_resource(Input)
@@ -187,7 +187,7 @@ class FixedBehaviours(_BehaviourStage):
     """``on_start`` for new scripts, then ``on_fixed_update(dt)``."""
 
     stage = Stage.FIXED
-    order = 100
+    in_set = SystemSet.SCRIPTS
 
     def process(self, dt: float) -> None:
         self.runner.start_new()
@@ -198,7 +198,7 @@ class UpdateBehaviours(_BehaviourStage):
     """``on_update(dt)``, then coroutines."""
 
     stage = Stage.UPDATE
-    order = 100
+    in_set = SystemSet.SCRIPTS
 
     def process(self, dt: float) -> None:
         self.runner.start_new()
@@ -210,7 +210,7 @@ class LateBehaviours(_BehaviourStage):
     """``on_late_update(dt)`` after every other update."""
 
     stage = Stage.LATE
-    order = 100
+    in_set = SystemSet.SCRIPTS
 
     def process(self, dt: float) -> None:
         self.runner.call("on_late_update", dt)

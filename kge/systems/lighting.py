@@ -18,7 +18,7 @@ from kge.components.rigidbody import RigidBody
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import keep_resource
 from kge.world import World
 
@@ -59,7 +59,9 @@ class LightingPlugin(Plugin):
                 lm = holder["map"] = LightMap(world, frame.batch, frame.groups, occluders)
             lm.draw(frame, lighting)
 
-        passes_for(world).add(draw, phase="before", order=200)
+        passes_for(world).add(
+            draw, phase="before", name="lighting", after=["animation", "tilemap", "particles"]
+        )
         world.add_system(_LightMapOwner(holder))
 
 
@@ -68,7 +70,7 @@ class _LightMapOwner(System):
     window's context, so they are deleted there and then, not by the garbage collector)."""
 
     stage = Stage.RENDER
-    order = 1_000_000
+    in_set = SystemSet.LAST
 
     def __init__(self, holder: dict[str, Any]) -> None:
         self.holder = holder

@@ -15,6 +15,7 @@ transition, if one is given). Assets that failed to load raise one
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Iterable
 from typing import Any
@@ -68,7 +69,6 @@ class LoadingScreen(Scene):
 
 class _Loader(System):
     stage = Stage.UPDATE
-    order = 0
 
     def __init__(self, screen: LoadingScreen, bar: int, text: int) -> None:
         self.screen, self.bar, self.text = screen, bar, text
@@ -78,7 +78,9 @@ class _Loader(System):
         screen, job = self.screen, self.screen.preload
         if job is None or self.finished:
             return
-        job.step(screen.budget, screen.items_per_frame)
+        # a count of items per frame replaces the time budget (deterministic, as documented)
+        budget = math.inf if screen.items_per_frame is not None else screen.budget
+        job.step(budget, screen.items_per_frame)
         self.world.get(self.bar, ProgressBar).value = job.progress
         self.world.get(self.text, Label).text = f"{job.loaded} / {job.queued}"
         if not job.done:

@@ -1,16 +1,17 @@
 """The particle systems and ``ParticlesPlugin``.
 
-* :class:`ParticleSystem` (UPDATE stage, order 300, after behaviours and
+* :class:`ParticleSystem` (UPDATE stage, ``EFFECTS`` set, after behaviours and
   animation): one vectorised update per emitter per frame on game time (so
-  ``App.time_scale``, pause and single-stepping apply), births, bursts,
-  one-shot clean-up, and collision with static colliders through the grid of
-  :mod:`kge.particles.grid` (rebuilt only when static geometry comes or goes:
-  dynamic bodies spawning and despawning over a large map cost nothing).
-* :class:`ParticleTriggers` (FIXED stage, order 350, after physics and contact
-  delivery): turns each fixed step's physics ``Hit`` / ``ContactBegin`` on
-  colliders with :class:`~kge.components.particles.BurstOnHit`, and
-  :class:`~kge.components.particles.ParticleBurst` events, into pending bursts,
-  so no step's events are lost when a frame runs several steps.
+  ``App.time_scale``, pause and single-stepping apply), births, bursts (the
+  frame's :class:`~kge.components.particles.ParticleBurst` events, read from
+  ``world.events``), one-shot clean-up, and collision with static colliders
+  through the grid of :mod:`kge.particles.grid` (rebuilt only when static geometry
+  comes or goes: dynamic bodies spawning and despawning over a large map cost
+  nothing).
+* :class:`ParticleTriggers` (FIXED stage, ``POST_PHYSICS`` set, after the contact
+  events): turns each fixed step's physics ``Hit`` / ``ContactBegin`` on
+  colliders with :class:`~kge.components.particles.BurstOnHit` into pending
+  bursts.
 * Drawing is a before-pass (:mod:`kge.render.passes`) that uploads each
   emitter's particles into one vertex list in the emitter's layer; it imports
   pyglet only when a frame is drawn.
@@ -34,10 +35,10 @@ from kge.components.transform import Transform
 from kge.errors import ValidationError, where
 from kge.particles.emitter import Particles
 from kge.particles.grid import StaticGrid
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin, Hit
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.world import World
 
 
@@ -95,7 +96,7 @@ class ParticleSystem(System):
     """Updates and emits every emitter's particles (UPDATE stage). See the module docstring."""
 
     stage = Stage.UPDATE
-    order = 300
+    in_set = SystemSet.EFFECTS
 
     #: entities changed since the grid was built, past which it is simply rebuilt
     MAX_PENDING = 100_000
@@ -169,7 +170,9 @@ class ParticleSystem(System):
     def process(self, dt: float) -> None:
         world = self.world
         particles = self.particles
-        take_events(world, particles)
+        for ev in world.events(ParticleBurst):  # every burst of the frame, once
+            if world.exists(ev.emitter) and world.has(ev.emitter, ParticleEmitter):
+                particles.burst(ev.emitter, ev.count, ev.position, ev.direction)
         emitters = world.query(ParticleEmitter, Transform)
         grid = None
         if any(em.collide != "none" for _, (em, _t) in emitters):
@@ -190,31 +193,19 @@ class ParticleSystem(System):
             world.despawn(e)
 
 
-def take_events(world: World, particles: Particles) -> None:
-    """Queue this step's ParticleBurst events (and consume them: each fires once)."""
-    events = world.events(ParticleBurst)
-    for ev in events:
-        if world.exists(ev.emitter) and world.has(ev.emitter, ParticleEmitter):
-            particles.burst(ev.emitter, ev.count, ev.position, ev.direction)
-    events.clear()
-
-
 class ParticleTriggers(System):
     """Physics hits and burst events of each fixed step -> pending bursts (FIXED stage)."""
 
     stage = Stage.FIXED
-    order = 350
+    in_set = SystemSet.POST_PHYSICS
 
     def process(self, dt: float) -> None:
         world = self.world
-        particles = world.resource(Particles)
-        take_events(world, particles)
-        ev = world.try_resource(PhysicsEvents)
-        if ev is None or not world.query(BurstOnHit):
+        if not world.query(BurstOnHit):
             return
-        for hit in ev.hits:
+        for hit in world.events(Hit):  # this step's, once
             self._fire(hit.collider_a, hit.collider_b, hit.point, hit.normal, hit.approach_speed)
-        for c in ev.contact_begin:
+        for c in world.events(ContactBegin):
             if c.points:
                 self._fire(c.collider_a, c.collider_b, c.points[0], c.normal, c.approach_speed,
                            contact=True)  # fmt: skip
@@ -232,7 +223,7 @@ class ParticleTriggers(System):
         particles = world.resource(Particles)
         for mine, sign in ((a, 1.0), (b, -1.0)):
             trig = world.try_get(mine, BurstOnHit)
-            if trig is None or (contact and not trig.contacts) or speed < trig.min_speed:
+            if trig is None or (contact and not trig.contacts) or speed < trig.hit_threshold:
                 continue
             if not world.exists(trig.emitter) or not world.has(trig.emitter, ParticleEmitter):
                 continue
@@ -272,4 +263,6 @@ class ParticlesPlugin(Plugin):
                 d = drawer["d"] = ParticleDrawer(world, frame.batch, frame.groups)
             d.draw(frame)
 
-        passes_for(world).add(draw, phase="before", order=100)
+        passes_for(world).add(
+            draw, phase="before", name="particles", after=["animation", "tilemap"]
+        )

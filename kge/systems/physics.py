@@ -9,9 +9,10 @@ mirrored at the next step, and validators so that a collider naming a body
 that does not exist, or a joint of a body to itself, is refused by the
 ``spawn`` / ``add`` that made it, with the world unchanged.
 
-Frame order (DESIGN.md): FIXED stage, behaviours (100) -> physics (200: sync-in,
-step, sync-out, events recorded) -> flush -> delivery (300: resource lists are
-already filled; esper events and Behaviour hooks now) -> flush.
+Frame order (:mod:`kge.schedule`): FIXED stage, ``SCRIPTS`` (behaviours) ->
+``PHYSICS`` (sync-in, step, sync-out, events recorded) -> flush ->
+``PHYSICS_EVENTS`` (the step's events reach ``world.events`` and Behaviour hooks)
+-> flush.
 """
 
 from __future__ import annotations
@@ -26,14 +27,41 @@ from kge.components.shapes import SHAPE_TYPES
 from kge.components.transform import Transform
 from kge.errors import ValidationError
 from kge.physics import joint_api
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import (
+    ContactBegin,
+    ContactEnd,
+    Hit,
+    JointBroken,
+    JointDestroyed,
+    PhysicsEvents,
+    SensorBegin,
+    SensorEnd,
+)
 from kge.physics.joint_bridge import body_fields, load_joint_modules
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.physics.simulation import Simulation
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
-from kge.world import World
+from kge.schedule import Stage, System, SystemSet
+from kge.world import World, deprecate_handler, deprecate_resource, stored_resource
+
+#: the event type of each PhysicsEvents list (``world.events(ContactBegin)``...)
+EVENT_TYPES: dict[str, type] = {
+    "contact_begin": ContactBegin,
+    "contact_end": ContactEnd,
+    "sensor_begin": SensorBegin,
+    "sensor_end": SensorEnd,
+    "hits": Hit,
+    "joint_broken": JointBroken,
+    "joint_destroyed": JointDestroyed,
+}
+deprecate_resource(
+    PhysicsEvents,
+    "read world.events(ContactBegin) (or ContactEnd, SensorBegin, SensorEnd, Hit, "
+    "JointBroken, JointDestroyed), or the Behaviour hooks (on_contact_begin...)",
+)
+for _name, _type in EVENT_TYPES.items():
+    deprecate_handler(_name, f"read world.events({_type.__name__}) or use the Behaviour hooks")
 
 
 def _where(entity: int | None, what: str) -> str:
@@ -44,7 +72,7 @@ class PhysicsSystem(System):
     """Owns the world's :class:`~kge.physics.simulation.Simulation` and steps it."""
 
     stage = Stage.FIXED
-    order = 200
+    in_set = SystemSet.PHYSICS
     sim: Simulation
     physics: Physics
     #: the last step raised (a user hook failed) before its events were delivered
@@ -54,7 +82,7 @@ class PhysicsSystem(System):
         super().attach(world)
         if not world.has_resource(PhysicsSettings):
             world.insert_resource(PhysicsSettings())
-        events = world.try_resource(PhysicsEvents)
+        events = stored_resource(world, PhysicsEvents)
         if events is None:
             events = world.insert_resource(PhysicsEvents())
         dt = 1.0 / 60.0
@@ -191,22 +219,29 @@ def _fixed_dt(world: World) -> float | None:
 
 
 class PhysicsEventDelivery(System):
-    """Deliver the step's physics events: esper events and Behaviour hooks.
+    """Deliver the step's physics events: to ``world.events`` and the Behaviour hooks.
 
-    Each contact event goes to the scripts of collider A, collider B and (if
+    Every list of the step's record goes to the world's events at once (readers
+    see them from here until the same point of the next step, see :mod:`kge.events`).
+    Then each contact event goes to the scripts of collider A, collider B and (if
     different) their body entities; a script is called at most once per event.
+    The esper events named like the lists (``world.set_handler("contact_begin",
+    fn)``) are still sent, deprecated, for one release.
     """
 
     stage = Stage.FIXED
-    order = 300
+    in_set = SystemSet.PHYSICS_EVENTS
 
     def process(self, dt: float) -> None:
         world = self.world
-        events = world.try_resource(PhysicsEvents)
+        events = stored_resource(world, PhysicsEvents)
         if events is None or not len(events):
             return
         from kge.systems.behaviour import runner
 
+        log = world.eventlog
+        for name, _ in PhysicsEvents.CHANNELS:
+            log.extend(EVENT_TYPES[name], getattr(events, name))
         run = runner(world)
         for name, hook in PhysicsEvents.CHANNELS:
             lst = getattr(events, name)
@@ -227,8 +262,8 @@ class PhysicsEventDelivery(System):
 
 class PhysicsPlugin(Plugin):
     """Box2D-style physics: :class:`PhysicsSystem` (FIXED stage) and, through it, the
-    ``Physics``, ``PhysicsSettings`` and ``PhysicsEvents`` resources and the contact
-    event delivery to behaviours."""
+    ``Physics`` and ``PhysicsSettings`` resources, and the contact and joint events
+    (``world.events(ContactBegin)``, Behaviour hooks)."""
 
     def build(self, world: World) -> None:
         world.add_system(PhysicsSystem())

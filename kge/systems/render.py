@@ -24,14 +24,15 @@ from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
+from kge.components.text import Text
 from kge.components.tracked import validate_writes
 from kge.components.transform import Transform
-from kge.errors import DisplayError, where
+from kge.errors import DisplayError, ValidationError, where
 from kge.host import Host
 from kge.input import Input
 from kge.keys import Key
 from kge.plugin import Plugin
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.world import World
 
 
@@ -39,7 +40,7 @@ class RenderSystem(System):
     """Draws the world's drawables with the active camera (RENDER stage)."""
 
     stage = Stage.RENDER
-    order = 0
+    in_set = SystemSet.DRAW
 
     def attach(self, world: Any) -> None:
         super().attach(world)
@@ -59,7 +60,7 @@ class RenderStepClock(System):
     """Starts the fixed-step timer (first in the FIXED stage)."""
 
     stage = Stage.FIXED
-    order = -1_000_000
+    in_set = SystemSet.FIRST
     started = 0.0
 
     def process(self, dt: float) -> None:
@@ -70,7 +71,7 @@ class RenderStepRecorder(System):
     """Records poses for interpolation and the step time (last in the FIXED stage)."""
 
     stage = Stage.FIXED
-    order = 1_000_000
+    in_set = SystemSet.LAST
 
     def process(self, dt: float) -> None:
         renderer = self.world.get_system(RenderSystem)
@@ -85,7 +86,7 @@ class CameraFollow(System):
     """Moves every camera with ``follow`` set towards its target (LATE stage)."""
 
     stage = Stage.LATE
-    order = 200
+    in_set = SystemSet.CAMERA
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -116,7 +117,7 @@ class DebugKeys(System):
     """
 
     stage = Stage.INPUT
-    order = 50
+    in_set = SystemSet.DEBUG
 
     def process(self, dt: float) -> None:
         keys = self.world.try_resource(Input)
@@ -210,6 +211,8 @@ class RenderPlugin(Plugin):
         world.add_system(DebugKeys())
         world.validator(Sprite, functools.partial(_check_sprite_image, world))
         validate_writes(world, Sprite)
+        world.validator(Text, functools.partial(_check_text, world))
+        validate_writes(world, Text)
 
 
 def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:
@@ -223,3 +226,30 @@ def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> Non
         from kge.assets.store import assets_for
 
         assets_for(world).resolve(image, owner=where(entity, "Sprite", "image"))
+
+
+def _check_text(world: World, entity: int | None, text: Text) -> None:
+    """Text is checked at the call, headless: its markup parses, a font file exists (it
+    is registered then), and a font family that exists nowhere gives a FontWarning."""
+    from kge.text.fonts import FONTS, is_font_file
+    from kge.text.markup import parse
+
+    owner = where(entity, "Text")
+    if text.markup:
+        try:
+            parse(text.text)
+        except ValidationError as exc:
+            raise ValidationError(f"{owner}.text: {exc}") from None
+    font = text.font
+    if font is None:
+        return
+    if is_font_file(font):
+        from kge.assets.store import assets_for
+
+        assets = assets_for(world)
+        found = assets.resolve(font, owner=where(entity, "Text", "font"))
+        assets.font(font)
+        FONTS.names[font] = found.where
+        return
+    if not FONTS.known(font):
+        FONTS.warn_missing(font, where(entity, "Text", "font"))

@@ -19,9 +19,6 @@ from kge.tilemap.errors import TilemapError
 from kge.tilemap.runtime import MapFiles, TileMaps, maps_in
 from kge.world import World
 
-#: before-pass order: maps upload their chunks before other game-layer passes
-PASS_ORDER = -100
-
 
 class TilemapPlugin(Plugin):
     """Inserts the :class:`~kge.tilemap.TileMaps` resource, the tile animation clock
@@ -45,7 +42,7 @@ class TilemapPlugin(Plugin):
             renderer(frame)
 
         draw_maps.state = state  # type: ignore[attr-defined]  # tests read the renderer
-        passes_for(world).add(draw_maps, phase="before", order=PASS_ORDER)
+        passes_for(world).add(draw_maps, phase="before", name="tilemap", after=["animation"])
 
 
 def _poses(world: World) -> Any:

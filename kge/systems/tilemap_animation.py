@@ -23,7 +23,8 @@ import numpy as np
 
 from kge.animation.clips import ClipState, ClipTable
 from kge.components.animation import Clip, FrameRef
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
+from kge.systems.animation import AnimationSystem, TweenSystem
 from kge.tilemap.model import GidTable
 from kge.tilemap.runtime import TileMap, TileMaps
 from kge.world import World
@@ -73,7 +74,9 @@ class TileAnimationSystem(System):
     """Advances the tile clips of every loaded map on the UPDATE stage's game time."""
 
     stage = Stage.UPDATE
-    order = 205  # beside the AnimationSystem (200)
+    in_set = SystemSet.ANIMATION
+    after = (AnimationSystem,)
+    before = (TweenSystem,)
 
     def attach(self, world: World) -> None:
         super().attach(world)

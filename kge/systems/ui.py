@@ -3,8 +3,9 @@
 :class:`UIInput` (INPUT stage, before behaviours' input hooks) lays the UI out for the
 current window size, turns this frame's pointer, keyboard and gamepad input into
 widget changes (:func:`kge.ui.interact.handle_input`), removes what the UI took from
-the game's view of the input, fills the per-frame :class:`~kge.ui.events.UIEvents`
-resource and calls the widget entities' Behaviour hooks (``on_click``,
+the game's view of the input, emits the UI events (``world.events(ButtonClicked)``;
+the per-frame :class:`~kge.ui.events.UIEvents` resource is kept filled, deprecated,
+for one release) and calls the widget entities' Behaviour hooks (``on_click``,
 ``on_value_changed``, ``on_text_submitted``). The drawing is a render after-pass
 (``kge/render/ui.py``), imported only when a frame is drawn.
 """
@@ -19,12 +20,18 @@ from kge.host import Host
 from kge.input import Input
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.systems.behaviour import BehaviourRunner
 from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
 from kge.ui.interact import UIState, handle_input
 from kge.ui.theme import DEFAULT_THEME, Theme
-from kge.world import World
+from kge.world import World, deprecate_resource, stored_resource
+
+deprecate_resource(
+    UIEvents,
+    "read world.events(ButtonClicked) (or ValueChanged, TextSubmitted, FocusChanged), "
+    "or the widget's Behaviour hooks (on_click...)",
+)
 
 _HOOKS: dict[type, str] = {
     ButtonClicked: "on_click",
@@ -37,12 +44,13 @@ class UIInput(System):
     """Handles the UI's input and emits its events (see the module docstring)."""
 
     stage = Stage.INPUT
-    order = 50  # before InputBehaviours (100): the game only sees what the UI left
+    in_set = SystemSet.UI  # before the SCRIPTS' input hooks: the game sees what the UI left
 
     def process(self, dt: float) -> None:
         world = self.world
-        events = world.resource(UIEvents)
-        events.clear()
+        events = stored_resource(world, UIEvents)
+        if events is not None:
+            events.clear()
         inp = world.try_resource(Input)
         if inp is None or not world.query(UINode):
             return
@@ -50,7 +58,10 @@ class UIInput(System):
         size = host.size if host is not None else (960, 540)
         theme = world.try_resource(Theme) or DEFAULT_THEME
         made = handle_input(world, inp, size, world.resource(UIState), theme)
-        events.items.extend(made)
+        if events is not None:
+            events.items.extend(made)
+        for ev in made:
+            world.emit(ev)
         runner = world.try_resource(BehaviourRunner)
         if runner is None:
             return
@@ -94,7 +105,7 @@ class UIPlugin(Plugin):
 
             draw_ui(frame, world)
 
-        passes_for(world).add(draw, phase="after", order=1000)
+        passes_for(world).add(draw, phase="after", name="ui")
 
 
 def focus(world: World, entity: int | None) -> None:

@@ -15,6 +15,7 @@ from kge import (
     Behaviour,
     Camera,
     Clip,
+    Loop,
     MissingComponentError,
     Script,
     Sprite,
@@ -140,14 +141,14 @@ def test_a_long_frame_does_not_skip_events(sheet: Any) -> None:
 
 
 def test_loop_modes(sheet: Any) -> None:
-    def run(loop: str) -> list[int]:
+    def run(loop: Loop) -> list[int]:
         clip = Clip.grid(sheet, (4, 1), duration=0.1, loop=loop)
         return _frames(_world_app(sheet, clip), 20)[1::2]  # every 0.1 s
 
-    assert run("loop") == [0, 1, 2, 3, 0, 1, 2, 3, 0, 1]
-    assert run("ping_pong") == [0, 1, 2, 3, 2, 1, 0, 1, 2, 3]
-    assert run("hold") == [0, 1, 2, 3, 3, 3, 3, 3, 3, 3]
-    assert run("once") == [0, 1, 2, 3, 0, 0, 0, 0, 0, 0]
+    assert run(Loop.LOOP) == [0, 1, 2, 3, 0, 1, 2, 3, 0, 1]
+    assert run(Loop.PING_PONG) == [0, 1, 2, 3, 2, 1, 0, 1, 2, 3]
+    assert run(Loop.HOLD) == [0, 1, 2, 3, 3, 3, 3, 3, 3, 3]
+    assert run(Loop.ONCE) == [0, 1, 2, 3, 0, 0, 0, 0, 0, 0]
 
 
 class Listener(Script):
@@ -162,10 +163,10 @@ class Listener(Script):
 
 
 def test_finished_event_hooks_queue_and_end_transition(sheet: Any) -> None:
-    attack = Clip.grid(sheet, (4, 1), frames=[2, 3], duration=0.1, loop="once",
+    attack = Clip.grid(sheet, (4, 1), frames=[2, 3], duration=0.1, loop=Loop.ONCE,
                        events={1: "hit"})
     idle = Clip.grid(sheet, (4, 1), frames=[0], duration=0.1)
-    rest = Clip.grid(sheet, (4, 1), frames=[1], duration=0.1, loop="hold")
+    rest = Clip.grid(sheet, (4, 1), frames=[1], duration=0.1, loop=Loop.HOLD)
     script = Listener()
 
     def setup(world: World) -> None:

@@ -62,4 +62,4 @@ def test_pong_score_pops_and_settles() -> None:
         app.step()
         sizes.append(app.world.get(e, Text).size)
     assert max(sizes) == pytest.approx(24.0, abs=0.5)
-    assert sizes[-1] == 15.0 and app.world.get(e, Text).value == "1"
+    assert sizes[-1] == 15.0 and app.world.get(e, Text).text == "1"

@@ -20,12 +20,12 @@ from kge import (
     Parallel,
     RigidBody,
     Script,
-    Sequence,
     Sprite,
     Transform,
     Tween,
     TweenFinished,
     Tweens,
+    TweenSequence,
     ValidationError,
     World,
     ease,
@@ -157,7 +157,7 @@ def test_sequence_parallel_and_completion_events_and_hooks() -> None:
     w.add_plugins(BehaviourPlugin(), AnimationPlugin())
     tweens = w.resource(Tweens)
     e = w.spawn(Transform(), Behaviour(Watch()))
-    seq = Sequence(
+    seq = TweenSequence(
         Tween(Transform, "x", 1.0, 0.5),
         Delay(0.25),
         Parallel(Tween(Transform, "y", 2.0, 0.5), Tween(Transform, "angle", 1.0, 0.25)),
@@ -182,7 +182,7 @@ def test_sequence_parallel_and_completion_events_and_hooks() -> None:
 def test_forever_sequence_wraps_and_cancel_stops_it() -> None:
     w, tweens = _world()
     e = w.spawn(Transform())
-    h = tweens.start(e, Sequence(Tween(Transform, "x", 1.0, 0.5), Tween(Transform, "x", 0.0, 0.5),
+    h = tweens.start(e, TweenSequence(Tween(Transform, "x", 1.0, 0.5), Tween(Transform, "x", 0.0, 0.5),
                                  repeat=-1))
     xs = []
     for _ in range(8):
@@ -256,7 +256,7 @@ def test_bad_tweens_are_refused_naming_component_and_field() -> None:
         tweens.to(e, Transform, "x", 1.0, -1.0)
     # a sequence whose second step is bad starts nothing
     with pytest.raises(ValidationError):
-        tweens.start(e, Sequence(Tween(Transform, "x", 1.0, 1.0), Tween(Transform, "q", 1.0, 1.0)))
+        tweens.start(e, TweenSequence(Tween(Transform, "x", 1.0, 1.0), Tween(Transform, "q", 1.0, 1.0)))
     assert len(tweens) == n == 0
     _run(w, 0.5)
     assert w.get(e, Transform).x == 0.0
@@ -314,3 +314,18 @@ def test_an_overshooting_tween_near_the_world_bound_never_leaves_it() -> None:
         _run(w, 0.1)
         assert w.get(e, Transform).x <= MAX_COORDINATE
     assert w.get(e, Transform).x == pytest.approx(MAX_COORDINATE)
+
+
+def test_sequence_is_the_old_name_of_tween_sequence() -> None:
+    """kge.Sequence shadowed typing.Sequence: it is TweenSequence now, the old name warns."""
+    import kge
+    import kge.components.tween as tween_module
+
+    with pytest.warns(DeprecationWarning, match=r"kge.Sequence is now kge.TweenSequence"):
+        old = kge.Sequence
+    assert old is TweenSequence and "Sequence" not in kge.__all__
+    with pytest.warns(DeprecationWarning, match="TweenSequence"):
+        assert tween_module.Sequence is TweenSequence
+    with pytest.warns(DeprecationWarning):
+        from kge import Sequence  # what 2.0.0a1 programs wrote
+    assert Sequence(Tween(Transform, "x", 1.0, 0.5)).total == 0.5

@@ -44,17 +44,17 @@ def test_impacts_fire_once_per_qualifying_hit_with_speed_scaled_volume(
     app = make_app(with_store(store))
     world = app.world
     ball = world.spawn(
-        Transform(), ImpactSound("blip.wav", min_speed=1.0, max_speed=10.0, volume=0.8)
+        Transform(), ImpactSound("blip.wav", hit_threshold=1.0, max_speed=10.0, volume=0.8)
     )
     wall = world.spawn(Transform())  # no ImpactSound: silent
-    world.dispatch("contact_begin", contact(ball, wall, 0.5))  # too slow
+    world.emit(contact(ball, wall, 0.5))  # too slow
     app.step(1)
     assert plays == []
-    world.dispatch("contact_begin", contact(ball, wall, 5.0))
+    world.emit(contact(ball, wall, 5.0))
     app.step(1)
     assert plays == [("blip.wav", pytest.approx(0.4))]
-    world.dispatch("contact_begin", contact(wall, ball, 25.0))  # B side, capped volume
-    world.dispatch("contact_begin", contact(ball, wall, 2.0))
+    world.emit(contact(wall, ball, 25.0))  # B side, capped volume
+    world.emit(contact(ball, wall, 2.0))
     app.step(1)
     assert [v for _, v in plays[1:]] == [pytest.approx(0.8), pytest.approx(0.16)]
     app.step(3)
@@ -67,13 +67,13 @@ def test_both_entities_and_compound_bodies_play_once_each(
     plays = record_plays(monkeypatch)
     app = make_app(with_store(store))
     world = app.world
-    body = world.spawn(Transform(), ImpactSound("beep.wav", min_speed=0.0))
-    part = world.spawn(ImpactSound("blip.wav", min_speed=0.0))  # a collider of `body`
-    other = world.spawn(Transform(), ImpactSound("blip.wav", min_speed=3.0))
-    world.dispatch("contact_begin", contact(part, other, 2.0, body_a=body, body_b=other))
+    body = world.spawn(Transform(), ImpactSound("beep.wav", hit_threshold=0.0))
+    part = world.spawn(ImpactSound("blip.wav", hit_threshold=0.0))  # a collider of `body`
+    other = world.spawn(Transform(), ImpactSound("blip.wav", hit_threshold=3.0))
+    world.emit(contact(part, other, 2.0, body_a=body, body_b=other))
     app.step(1)
     assert sorted(name for name, _ in plays) == ["beep.wav", "blip.wav"]  # other: too slow
-    world.dispatch("contact_begin", contact(body, other, 4.0))  # body is its own collider
+    world.emit(contact(body, other, 4.0))  # body is its own collider
     app.step(1)
     assert sorted(name for name, _ in plays[2:]) == ["beep.wav", "blip.wav"]
 
@@ -82,13 +82,13 @@ def test_cooldown_limits_replays(store: Assets, monkeypatch: pytest.MonkeyPatch)
     plays = record_plays(monkeypatch)
     app = make_app(with_store(store))
     world = app.world
-    e = world.spawn(ImpactSound("blip.wav", min_speed=0.0, cooldown=0.1))
+    e = world.spawn(ImpactSound("blip.wav", hit_threshold=0.0, cooldown=0.1))
     for _ in range(3):
-        world.dispatch("contact_begin", contact(e, 999, 5.0))
+        world.emit(contact(e, 999, 5.0))
         app.step(1)
     assert len(plays) == 1
     app.step(6)  # 0.1 s later
-    world.dispatch("contact_begin", contact(e, 999, 5.0))
+    world.emit(contact(e, 999, 5.0))
     app.step(1)
     assert len(plays) == 2
 
@@ -98,19 +98,18 @@ def test_impact_sound_with_missing_file_is_refused(store: Assets):
     with pytest.raises(AssetNotFoundError, match="ImpactSound.sound"):
         app.world.spawn(ImpactSound("clang.wav"))
     with pytest.raises(ValueError, match="max_speed"):
-        ImpactSound("blip.wav", min_speed=5.0, max_speed=2.0)
+        ImpactSound("blip.wav", hit_threshold=5.0, max_speed=2.0)
 
 
 def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.MonkeyPatch):
-    """Real physics: every contact_begin at >= min_speed plays exactly one sound."""
+    """Real physics: every contact_begin at >= hit_threshold plays exactly one sound."""
     import kge.systems.physics as physics
     from kge.components.collider import Collider
     from kge.components.rigidbody import RigidBody
     from kge.components.shapes import Box, Circle
-    from kge.physics.events import PhysicsEvents
 
     plays = record_plays(monkeypatch)
-    impact = ImpactSound("blip.wav", min_speed=1.5, max_speed=12.0, volume=1.0)
+    impact = ImpactSound("blip.wav", hit_threshold=1.5, max_speed=12.0, volume=1.0)
 
     def setup(world: World) -> None:
         world.spawn(Transform(0.0, -1.0), Collider(Box(10.0, 1.0)))
@@ -123,8 +122,8 @@ def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.
     qualifying: list[float] = []
     for _ in range(240):
         app.step(1)
-        for ev in app.world.resource(PhysicsEvents).contact_begin:
-            if ev.approach_speed >= impact.min_speed:
+        for ev in app.world.events(ContactBegin):
+            if ev.approach_speed >= impact.hit_threshold:
                 qualifying.append(ev.approach_speed)
     assert len(qualifying) >= 2  # the drop and at least one bounce
     assert len(plays) == len(qualifying)
@@ -132,3 +131,13 @@ def test_bouncing_ball_plays_once_per_bounce(store: Assets, monkeypatch: pytest.
     # free fall from 4.75 m: about sqrt(2 * 10 * 4.75) = 9.7 m/s at first touch
     assert qualifying[0] == pytest.approx(9.75, rel=0.05)
     assert plays[0][1] > plays[1][1]  # the bounce is slower, so quieter
+
+
+def test_min_speed_is_the_old_name_of_hit_threshold() -> None:
+    from kge.components.particles import BurstOnHit
+
+    with pytest.warns(DeprecationWarning, match=r"ImpactSound\(min_speed=\.\.\.\) is now hit_threshold="):
+        impact = ImpactSound("blip.wav", min_speed=2.0)  # type: ignore[call-arg]
+    assert impact.hit_threshold == 2.0
+    with pytest.warns(DeprecationWarning, match="BurstOnHit.min_speed is now"):
+        assert BurstOnHit(3, min_speed=4.0).min_speed == 4.0  # type: ignore[call-arg,attr-defined]

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import re
-import time
 import types
 
 import pytest
@@ -11,21 +10,40 @@ import pytest
 from benchmarks.rl import Exclusive, breakdown
 
 
+class FakeClock:
+    """A clock that moves only when the code under test says it worked (no sleeps, so
+    the test asserts what is counted where, whatever the machine's load)."""
+
+    def __init__(self) -> None:
+        self.now = 0.0
+
+    def __call__(self) -> float:
+        return self.now
+
+    def work(self, seconds: float) -> None:
+        self.now += seconds
+
+
 def test_a_part_is_timed_without_the_parts_it_calls() -> None:
+    clock = FakeClock()
     ns = types.SimpleNamespace()
-    ns.inner = lambda: time.sleep(0.02)
+    ns.inner = lambda: clock.work(0.02)
 
     def outer() -> None:
-        time.sleep(0.01)
+        clock.work(0.01)
+        ns.inner()
+        clock.work(0.005)
         ns.inner()
 
     ns.outer = outer
-    parts = Exclusive()
+    parts = Exclusive(clock)
     parts.wrap(ns, "outer", "outer")
     parts.wrap(ns, "inner", "inner")
     ns.outer()
-    assert parts.acc["inner"] == pytest.approx(0.02, abs=0.008)
-    assert parts.acc["outer"] == pytest.approx(0.01, abs=0.008)  # its callee's time excluded
+    assert parts.acc["inner"] == pytest.approx(0.04)  # both calls
+    assert parts.acc["outer"] == pytest.approx(0.015)  # its callee's time excluded
+    ns.inner()  # called on its own: counted once more, outer unchanged
+    assert parts.acc == pytest.approx({"inner": 0.06, "outer": 0.015})
     parts.restore()
     assert ns.outer is outer  # unwrapped
 

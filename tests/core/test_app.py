@@ -97,7 +97,6 @@ def test_replace_scene_from_a_script_takes_effect_after_the_frame() -> None:
 
 class Recorder(System):
     stage = Stage.UPDATE
-    order = 900
 
     def __init__(self, log: list[str], name: str, stage: Stage) -> None:
         self.log = log

@@ -7,7 +7,7 @@ from kge.testbed.samples.build import named
 
 
 def score(app: App, who: str) -> str:
-    return app.world.get(named(app.world, f"score-{who}")[0], Text).value
+    return app.world.get(named(app.world, f"score-{who}")[0], Text).text
 
 
 def start(seed: int = 1) -> App:
@@ -101,10 +101,9 @@ def test_where_the_ball_meets_the_paddle_aims_it() -> None:
 
 def test_esc_on_the_menu_quits() -> None:
     app = App(pong.menu, headless=True, size=pong.SIZE)
-    app._running = True
     app.input.press(Key.ESCAPE)
-    app.step()
-    assert not app._running
+    app.run(frames=100)  # headless: stops at quit
+    assert app.frame_count == 1 and not app.running
 
 
 def test_paddles_stop_when_the_match_is_over() -> None:

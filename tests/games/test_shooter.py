@@ -23,7 +23,7 @@ def start(seed: int = 3) -> App:
 
 
 def hud(app: App) -> str:
-    return app.world.get(named(app.world, "score")[0], Text).value
+    return app.world.get(named(app.world, "score")[0], Text).text
 
 
 def screen(app: App, p: tuple[float, float]) -> tuple[float, float]:

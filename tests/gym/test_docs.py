@@ -1,16 +1,20 @@
-"""docs/rl.md: the throughput table is filled in and its screenshot script draws.
+"""docs/rl.md: its throughput table (in benchmarks/results/rl.md) is filled in and
+its screenshot script draws.
 
 Its code blocks run through the shared doc runner (tests/test_docs.py)."""
 
 from pathlib import Path
 
-DOC = Path(__file__).resolve().parents[2] / "docs" / "rl.md"
+ROOT = Path(__file__).resolve().parents[2]
+DOC = ROOT / "docs" / "rl.md"
+RESULTS = ROOT / "benchmarks" / "results" / "rl.md"
 
 
 def test_the_throughput_table_is_filled_in() -> None:
-    text = DOC.read_text()
+    text = RESULTS.read_text()
     assert "THROUGHPUT_TABLE" not in text
     assert "| kge batched (make_vec) | 64 |" in text
+    assert "benchmarks/results/rl.md" in DOC.read_text()
 
 
 def test_the_screenshot_script_draws_both_envs(tmp_path: Path) -> None:

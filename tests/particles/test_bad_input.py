@@ -7,7 +7,14 @@ import math
 import pytest
 
 from kge import App, Transform, World
-from kge.components.particles import BurstOnHit, EmitCircle, ParticleBurst, ParticleEmitter
+from kge.components.particles import (
+    BurstOnHit,
+    EmitCircle,
+    ParticleBurst,
+    ParticleCollision,
+    ParticleEmitter,
+    ParticleSpace,
+)
 from kge.errors import ComponentTypeError, EntityNotFoundError, ValidationError
 from kge.particles import Particles
 from kge.systems.particles import ParticlesPlugin
@@ -20,7 +27,7 @@ NAN = float("nan")
     [
         ("rate", NAN, "rate must be finite"),
         ("rate", -1.0, "rate must be >= 0"),
-        ("rate_per_metre", math.inf, "rate_per_metre must be finite"),
+        ("rate_per_meter", math.inf, "rate_per_meter must be finite"),
         ("lifetime", -1.0, "lifetime must be > 0"),
         ("lifetime", (2.0, 1.0), "low <= high"),
         ("lifetime", (NAN, 1.0), "lifetime[0] must be finite"),
@@ -28,7 +35,7 @@ NAN = float("nan")
         ("size", (0.1, NAN), "size[1] must be finite"),
         ("color", (300, 0, 0), "color[0] must be an int in 0..255"),
         ("color", ((255, 0, 0), (0, -1, 0)), "color[1][1] must be an int in 0..255"),
-        ("alpha", 1.5, "alpha must be in [0.0, 1.0]"),
+        ("opacity", 256, "opacity must be in [0.0, 255.0]"),
         ("spread", 7.0, "spread must be in"),
         ("spread", -0.1, "spread must be in"),
         ("speed", (-1.0, 1.0), "speed must be >= 0"),
@@ -91,8 +98,8 @@ def test_unknown_texture_is_refused_at_spawn_and_the_world_is_unchanged() -> Non
 def test_local_space_collision_is_refused() -> None:
     w = World()
     w.add_plugins(ParticlesPlugin())
-    with pytest.raises(ValidationError, match="collide='bounce' needs space='world'"):
-        w.spawn(Transform(), ParticleEmitter(space="local", collide="bounce"))
+    with pytest.raises(ValidationError, match=r"collide = ParticleCollision.BOUNCE needs space=ParticleSpace.WORLD"):
+        w.spawn(Transform(), ParticleEmitter(space=ParticleSpace.LOCAL, collide=ParticleCollision.BOUNCE))
     assert len(w) == 0
 
 

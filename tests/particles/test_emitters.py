@@ -7,14 +7,16 @@ import math
 import numpy as np
 import pytest
 
-from kge import App, Behaviour, Collider, RigidBody, Script, Transform, World
+from kge import App, Behaviour, Collider, RigidBody, Script, Transform, ValidationError, World
 from kge.components.particles import (
     EmitBox,
     EmitCircle,
     EmitCollider,
     EmitLine,
     ParticleBurst,
+    ParticleCollision,
     ParticleEmitter,
+    ParticleSpace,
 )
 from kge.components.shapes import Box
 from kge.particles import Particles
@@ -61,13 +63,13 @@ def test_rate_per_second_emits_that_many() -> None:
     assert app.world.resource(Particles).count(one(app)) == 180  # 90/s for 2 s
 
 
-def test_rate_per_metre_follows_the_distance_travelled() -> None:
+def test_rate_per_meter_follows_the_distance_travelled() -> None:
     class Move(Script):
         def on_update(self, dt: float) -> None:
             self.transform.x += 0.1
 
     def setup(w: World) -> None:
-        w.spawn(Transform(), ParticleEmitter(rate_per_metre=20.0, lifetime=30.0), Behaviour(Move()))
+        w.spawn(Transform(), ParticleEmitter(rate_per_meter=20.0, lifetime=30.0), Behaviour(Move()))
 
     app = run(setup, 50)  # 5 m, the first 0.1 m before the emitter's first update
     n = app.world.resource(Particles).count(one(app))
@@ -233,7 +235,7 @@ def test_inherit_velocity_and_drag() -> None:
 
 def test_local_space_particles_move_with_the_entity() -> None:
     def setup(w: World) -> None:
-        w.spawn(Transform(), ParticleEmitter(burst=3, speed=0.0, space="local", lifetime=9.0))
+        w.spawn(Transform(), ParticleEmitter(burst=3, speed=0.0, space=ParticleSpace.LOCAL, lifetime=9.0))
 
     app = run(setup, 1)
     e = one(app)
@@ -242,8 +244,8 @@ def test_local_space_particles_move_with_the_entity() -> None:
     np.testing.assert_allclose(app.world.resource(Particles).positions(e)[:, 0], 10.0)
 
 
-@pytest.mark.parametrize("mode", ["bounce", "die"])
-def test_collision_with_static_colliders(mode: str) -> None:
+@pytest.mark.parametrize("mode", [ParticleCollision.BOUNCE, ParticleCollision.DIE])
+def test_collision_with_static_colliders(mode: ParticleCollision) -> None:
     def setup(w: World) -> None:
         w.spawn(Transform(0.0, -1.0), Collider(Box(10.0, 1.0)))  # top at y = 0
         w.spawn(Transform(0.0, 2.0), ParticleEmitter(
@@ -271,7 +273,7 @@ def test_bounce_reflects_upwards() -> None:
                 burst=1,
                 speed=5.0,
                 direction=-math.pi / 2,
-                collide="bounce",
+                collide=ParticleCollision.BOUNCE,
                 bounciness=1.0,
                 lifetime=10.0,
             ),
@@ -292,3 +294,27 @@ def test_a_plugin_on_a_bare_world() -> None:
     assert sys is not None
     sys.process(DT)
     assert w.resource(Particles).count(e) == 4
+
+
+def test_the_old_names_alpha_and_rate_per_metre_still_work_deprecated() -> None:
+    """alpha (0..1) became opacity (0-255, as Sprite.opacity); rate_per_metre became
+    rate_per_meter (one spelling, as pixels_per_meter). Both old names convert, warning."""
+    with pytest.warns(DeprecationWarning, match=r"alpha=\.\.\.\) is now opacity="):
+        em = ParticleEmitter(alpha=(1.0, 0.5, 0.0))  # type: ignore[call-arg]
+    assert em.opacity == (255.0, 127.5, 0.0)
+    with pytest.warns(DeprecationWarning, match="ParticleEmitter.alpha is now"):
+        assert em.alpha == (1.0, 0.5, 0.0)  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning):
+        em.alpha = 0.2
+    assert em.opacity == (pytest.approx(51.0),)
+    with pytest.warns(DeprecationWarning, match="rate_per_meter"):
+        assert ParticleEmitter(rate_per_metre=3.0).rate_per_meter == 3.0  # type: ignore[call-arg]
+    with pytest.warns(DeprecationWarning), pytest.raises(ValidationError, match="alpha"):
+        ParticleEmitter(alpha=1.5)  # type: ignore[call-arg]  # still checked in its own unit
+    with pytest.raises(TypeError, match="both alpha= and opacity="):
+        ParticleEmitter(alpha=1.0, opacity=255)  # type: ignore[call-arg]
+    # the same particles either way
+    with pytest.warns(DeprecationWarning):
+        old = ParticleEmitter(alpha=(0.9, 0.0), color=(255, 0, 0))  # type: ignore[call-arg]
+    new = ParticleEmitter(opacity=(229.5, 0.0), color=(255, 0, 0))
+    assert old == new

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from kge import App, Collider, RigidBody, Transform, World
-from kge.components.particles import EmitBox, ParticleEmitter
+from kge.components.particles import EmitBox, ParticleCollision, ParticleEmitter
 from kge.components.rigidbody import BodyType
 from kge.components.shapes import Box, Circle
 from kge.particles import Particles
@@ -35,7 +35,7 @@ def map_with_rain(world: World) -> None:
     for i in range(200):  # a long floor of tiles
         world.spawn(Transform(-100.0 + i + 0.5, -0.5), Collider(Box(0.5, 0.5)))
     world.spawn(Transform(0.0, 3.0), ParticleEmitter(
-        rate=200, speed=0.0, acceleration=(0.0, -10.0), collide="bounce", lifetime=2.0,
+        rate=200, speed=0.0, acceleration=(0.0, -10.0), collide=ParticleCollision.BOUNCE, lifetime=2.0,
         shape=EmitBox(20.0, 0.1)))  # fmt: skip
 
 

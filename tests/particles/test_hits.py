@@ -35,13 +35,13 @@ def test_a_ball_hitting_the_ground_sprays_sparks_upwards() -> None:
     assert np.all(v[:, 1] > 2.5), "sparks leave the ground upwards"
 
 
-def test_contacts_mode_without_hit_threshold_respects_min_speed() -> None:
+def test_contacts_mode_without_hit_threshold_respects_the_burst_threshold() -> None:
     def setup(w: World) -> None:
         sparks = w.spawn(Transform(), ParticleEmitter(lifetime=5.0))
         w.spawn(
             Transform(0.0, -1.0),
             Collider(Box(10.0, 1.0)),
-            BurstOnHit(sparks, count=4, contacts=True, min_speed=50.0),
+            BurstOnHit(sparks, count=4, contacts=True, hit_threshold=50.0),
         )
         w.spawn(Transform(0.0, 1.0), RigidBody(), Collider(Circle(0.25)))
         w.spawn(Transform(3.0, 1.0), RigidBody(velocity=(0.0, -60.0)), Collider(Circle(0.25)))

@@ -17,7 +17,7 @@ from kge.components.filter import Filter
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle, Edge
 from kge.components.transform import Transform
-from kge.physics.queries import QueryHit, RayHit
+from kge.physics.queries import QueryHit, RayHit, RayMode
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
 from kge.world import World
@@ -53,7 +53,7 @@ def test_raycast_through_the_physics_resource(app: kge.App) -> None:
     assert hit.point == pytest.approx((-0.5, 0.0), abs=1e-9)
     assert hit.normal == pytest.approx((-1.0, 0.0))
 
-    every = physics.raycast((-2, 0), (12, 0), mode="all")
+    every = physics.raycast((-2, 0), (12, 0), mode=RayMode.ALL)
     assert [h.collider for h in every] == [box0, box3, box6, circle]
     assert every[-1].body == circle
 
@@ -68,8 +68,10 @@ def test_raycast_through_the_physics_resource(app: kge.App) -> None:
     physics.raycast((-2, 0), (12, 0), skip_box0)
     assert clipped[-1].collider == box3
     assert clipped[-1].fraction == pytest.approx(0.32143, abs=1e-4)
-    assert physics.raycast((0, 0), (12, 0)).collider == box3  # starts inside box0
-    assert physics.raycast((-2, 5), (2, 5)).collider == sensor
+    inside = physics.raycast((0, 0), (12, 0))  # starts inside box0
+    assert inside is not None and inside.collider == box3
+    above = physics.raycast((-2, 5), (2, 5))
+    assert above is not None and above.collider == sensor
     with pytest.raises(kge.ValidationError):
         physics.raycast((1, 1), (1, 1))
 
@@ -114,7 +116,8 @@ def test_queries_follow_moving_bodies_and_filters() -> None:
     physics = app.world.resource(Physics)
     (mover,) = _colliders(app.world)
     hit = physics.raycast((-2, 0), (5, 0))
-    assert hit.collider == mover and hit.point[0] == pytest.approx(0.5, abs=1e-6)
+    assert hit is not None and hit.collider == mover
+    assert hit.point[0] == pytest.approx(0.5, abs=1e-6)
     assert [h.collider for h in physics.query_point((1.45, 0.0))] == [mover]
     assert physics.raycast((-2, 0), (5, 0), filter=Filter(mask_bits=0x4)) is None
     assert physics.raycast((-2, 0), (5, 0), filter=lambda c: c != mover) is None

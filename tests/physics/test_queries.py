@@ -453,7 +453,7 @@ def test_query_shape_accepts_duck_typed_shapes(
         (lambda s: raycast(s, (math.nan, 0), (1, 1)), ValidationError, "p1"),
         (lambda s: raycast(s, (0, 0), (1, math.inf)), ValidationError, "p2"),
         (lambda s: raycast(s, (0, 0), "ab"), ComponentTypeError, "p2"),
-        (lambda s: raycast(s, (0, 0), (1, 0), mode="nearest"), ValidationError, "mode"),  # type: ignore[arg-type]
+        (lambda s: raycast(s, (0, 0), (1, 0), mode="nearest"), ValidationError, "mode"),
         (lambda s: raycast(s, (0, 0), (1, 0), callback=3), ComponentTypeError, "callback"),  # type: ignore[arg-type]
         (lambda s: raycast(s, (0, 0), (1, 0), filter=0x2), ComponentTypeError, "filter"),  # type: ignore[arg-type]
         (lambda s: raycast(object(), (0, 0), (1, 0)), ComponentTypeError, "pymunk.Space"),  # type: ignore[arg-type]

@@ -39,6 +39,7 @@ from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle, Edge, Polygon
 from kge.components.transform import Transform
 from kge.errors import EntityNotFoundError
+from kge.physics.queries import RayMode
 
 from .harness import (
     PhysicsWorld,
@@ -245,7 +246,7 @@ class PhysicsMachine(RuleBasedStateMachine):
     @rule(x=coord, y=height)
     def query(self, x: float, y: float) -> None:
         physics = self.pw.physics
-        physics.raycast((x, 9.0), (x, -3.0), mode="all")
+        physics.raycast((x, 9.0), (x, -3.0), mode=RayMode.ALL)
         physics.query_aabb((x - 1.0, y - 1.0), (x + 1.0, y + 1.0))
         physics.query_point((x, y))
 

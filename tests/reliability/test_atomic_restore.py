@@ -107,7 +107,6 @@ class Score:
 
 class Counter(System):
     stage = Stage.FIXED
-    order = 500
 
     def __init__(self) -> None:
         self.runs = 0

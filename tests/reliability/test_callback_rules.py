@@ -29,11 +29,11 @@ def test_closing_the_world_inside_a_physics_callback_is_refused() -> None:
     app = App(lambda w: None, headless=True)
     world = app.world
     drop(world)
-    world.resource(Physics).on_pre_solve(lambda c: world.close())
+    closing = world.resource(Physics).on_pre_solve(lambda c: world.close())
     with pytest.raises(WorldLockedError, match=r"world\.close\(\) inside a physics callback"):
         app.step()
     assert not world.closed
-    world.resource(Physics)._sim.recorder.pre_solve.clear()
+    world.resource(Physics).remove_hook(closing)
     app.step(3)  # still running
 
 

@@ -5,7 +5,7 @@ outside the space's active arrays while a component sleeps. Three of its entry
 points, used on a body in the space next to other bodies, left that graph with
 dangling or doubly pushed entries, which crashed the interpreter steps later
 (segfaults in ``cpSpaceRemoveShape``, ``free(): invalid pointer`` or a Chipmunk
-abort inside ``cpSpaceStep``); docs/reliability.md section 2 has the story:
+abort inside ``cpSpaceStep``); benchmarks/results/reliability.md has the story:
 
 * a type change of a static body under sleeping bodies, or of a sleeping body
   (``cpBodySetType`` in place);

@@ -1,8 +1,8 @@
 """The CI-sized soak: churn a few hundred steps, with and without rendering.
 
 The long run (100,000 steps, memory figures) is ``tools/soak.py`` with no
-arguments; its results are in docs/reliability.md. Memory growth needs the
-long run to mean anything, so here only the exact checks apply: invariants
+arguments; its results are in benchmarks/results/reliability.md. Memory growth needs
+the long run to mean anything, so here only the exact checks apply: invariants
 at every sample, balanced events, nothing left in pymunk or pyglet after
 everything is despawned.
 """

@@ -6,7 +6,7 @@ import numpy as np
 
 from kge import Transform
 from kge.components.camera import Camera
-from kge.components.particles import ParticleEmitter
+from kge.components.particles import Blend, ParticleEmitter
 from kge.components.sprite import Sprite
 from kge.particles import Particles
 from kge.render.images import solid
@@ -48,11 +48,11 @@ def test_additive_particles_add_up_alpha_ones_cover(make_app) -> None:
         world.spawn(
             Transform(-2.0, 0.0),
             ParticleEmitter(
-                burst=2, speed=0.0, size=1.0, flat=True, color=(100, 0, 0), blend="additive"
+                burst=2, speed=0.0, size=1.0, flat=True, color=(100, 0, 0), blend=Blend.ADDITIVE
             ),
         )
         world.spawn(Transform(2.0, 0.0), ParticleEmitter(
-            burst=2, speed=0.0, size=1.0, flat=True, color=(100, 0, 0), alpha=0.5))  # fmt: skip
+            burst=2, speed=0.0, size=1.0, flat=True, color=(100, 0, 0), opacity=127.5))  # fmt: skip
 
     app = make_app(scene)
     app.step(1)

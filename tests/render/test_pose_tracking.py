@@ -20,7 +20,7 @@ from kge.components.sprite import Sprite
 from kge.components.tracked import bind, raw_set, unbind
 from kge.render.images import solid
 from kge.render.poses import PoseTable
-from kge.schedule import Stage, System
+from kge.schedule import Stage, System, SystemSet
 from kge.systems.render import RenderSystem
 
 from .conftest import SIZE, bbox, mask, pixels
@@ -195,7 +195,7 @@ class _TeleportAfterPhysics(System):
     """Writes ``x`` into a Transform after the physics step (like a contact handler)."""
 
     stage = Stage.FIXED
-    order = 250  # physics is 200, the pose recorder last
+    in_set = SystemSet.PHYSICS_EVENTS  # like a contact handler: after the step
 
     def __init__(self) -> None:
         self.target: tuple[int, float] | None = None

@@ -109,7 +109,7 @@ def test_screen_text_ignores_the_camera_and_updates(make_app):
     from kge.systems.render import RenderSystem
 
     label = app.world.get_system(RenderSystem).view.labels.labels[e]
-    t.value = "12345"
+    t.text = "12345"
     _, x1_long, _, _ = bbox(~mask(pixels(app), BG, tol=30))
     assert x1_long - x0 > 30
     assert (

@@ -22,7 +22,7 @@ def test_run_windowed_advances_and_draws_then_stops():
     app = App(scene, headless=True, size=SIZE)
     run_windowed(app, frames=5)
     assert app.frame_count >= 5
-    assert not app._running
+    assert not app.running
     app.close()
 
 

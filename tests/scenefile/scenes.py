@@ -120,7 +120,7 @@ def everything(world: World, art: Path) -> None:
         Sprite(str(art / "art" / "ship.png"), size=(1.0, 0.5), tint=(255, 200, 200), layer=2),
         Health(hp=5, tags=["boss"]), Behaviour(Patrol()),
         AudioSource(str(art / "sfx" / "hit.wav"), volume=0.5),
-        ImpactSound(str(art / "sfx" / "hit.wav"), min_speed=2.0))
+        ImpactSound(str(art / "sfx" / "hit.wav"), hit_threshold=2.0))
     world.spawn(Transform(0.5, 0.0), Collider(Circle(0.3, center=(0.1, 0.0)), body=hull))
     wheel = world.spawn(Transform(2.0, 4.0), RigidBody(), Collider(Circle(0.4)))
     arm = world.spawn(Transform(-2.0, 4.0), RigidBody(type=BodyType.DYNAMIC, fixed_rotation=False),

@@ -105,7 +105,7 @@ def test_the_list_opens_only_the_current_category() -> None:
     from kge.testbed import all_samples
 
     app = open_testbed("hello-world")
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     categories = sorted({s.category for s in all_samples()})
     basics = [s.name for s in all_samples() if s.category == "Basics"]
     assert len(texts) == len(categories) + len(basics)  # one line per closed category
@@ -118,12 +118,12 @@ def test_the_list_opens_only_the_current_category() -> None:
 
 def test_clicking_the_list_switches_sample_and_category() -> None:
     app = open_testbed("hello-world")
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     basics = texts.index("- Basics")  # then "> Hello World", "  Tumbler"
     app.input.click(Mouse.LEFT, at=row_at(app, basics + 2))
     app.step()
     assert app.scene.name == "Tumbler"
-    texts = [app.world.get(e, Text).value for e in named(app.world, "sample-list")]
+    texts = [app.world.get(e, Text).text for e in named(app.world, "sample-list")]
     joints = next(i for i, t in enumerate(texts) if t.startswith("+ Joints"))
     app.input.click(Mouse.LEFT, at=row_at(app, joints))
     app.step()
@@ -142,7 +142,7 @@ def test_tab_hides_the_list_and_clicks_then_reach_the_scene() -> None:
 
 def test_escape_quits() -> None:
     app = open_testbed("hello-world")
-    app._running = True
     app.input.press(Key.ESCAPE)
-    app.step()
-    assert not app._running
+    frames = app.frame_count
+    app.run(frames=100)  # headless: stops at quit
+    assert app.frame_count == frames + 1 and not app.running

@@ -39,7 +39,7 @@ def test_unknown_command_is_an_error_on_stderr(capsys: pytest.CaptureFixture[str
     assert "unknown command 'fly'" in captured.err and captured.out == ""
 
 
-@pytest.mark.parametrize("command", ["new", "demo", "testbed", "bench", "export"])
+@pytest.mark.parametrize("command", ["new", "demo", "testbed", "bench", "export", "schedule"])
 def test_each_command_has_its_own_help(command: str) -> None:
     # a subprocess: argparse's --help exits, and the bench's import is heavy
     run = subprocess.run([sys.executable, "-m", "kge", command, "--help"], cwd=ROOT,

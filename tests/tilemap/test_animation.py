@@ -106,7 +106,7 @@ def test_the_drawn_pixels_follow_the_clip(level: tuple[App, TileMap]) -> None:
 def test_map_clips_use_the_animation_systems_clip_state(level: tuple[App, TileMap]) -> None:
     """One clip-table row per animated gid, advanced by ClipState (no ticker of its own)."""
     app, tmap = level
-    (system,) = [s for s in app.world.schedule._systems if isinstance(s, TileAnimationSystem)]
+    (system,) = [s for s in app.world.schedule.systems() if isinstance(s, TileAnimationSystem)]
     app.step(1)
     (_, clips) = system.clips[id(tmap)]
     assert isinstance(clips, MapClips) and clips.gids.tolist() == [ANIM_A]

@@ -1,13 +1,16 @@
 """One real window under Xvfb, driven by xdotool: a click, typing and Enter reach the UI.
 
 Needs the Debian packages xvfb and xdotool (``tools/bootstrap.sh`` installs them); the
-test installs nothing and fails, naming them, when they are absent.
+test installs nothing and fails, naming them, when they are absent. It never sleeps:
+after each input it waits for the app to report the result (a line on its stdout),
+with a generous deadline that only a hung app reaches.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import select
 import shutil
 import subprocess
 import sys
@@ -36,6 +39,31 @@ def _xdo(display: str, *args: str) -> str:
     return out.stdout.strip()
 
 
+class Reports:
+    """The app's report lines, read straight from the pipe (no buffered reader, whose
+    buffer select() cannot see)."""
+
+    def __init__(self, app: subprocess.Popen[bytes]) -> None:
+        assert app.stdout is not None
+        self.app, self.fd = app, app.stdout.fileno()
+        self.seen: list[str] = []
+        self._partial = b""
+
+    def wait_for(self, want: str) -> None:
+        """Read until the app reports ``want`` (the condition, not a delay)."""
+        deadline = time.monotonic() + 60.0  # a hung app, not a slow machine, reaches this
+        while want not in self.seen:
+            left = deadline - time.monotonic()
+            assert left > 0, f"no {want!r} from the app in 60 s; it said {self.seen}"
+            ready, _, _ = select.select([self.fd], [], [], min(left, 1.0))
+            if not ready:
+                continue
+            chunk = os.read(self.fd, 4096)
+            assert chunk, f"the app ended ({self.app.wait()}) before {want!r}: {self.seen}"
+            *lines, self._partial = (self._partial + chunk).split(b"\n")
+            self.seen += [line.decode().strip() for line in lines]
+
+
 def test_real_window_click_typing_and_enter_under_xvfb(tmp_path: Path) -> None:
     xvfb = _need("Xvfb")
     _need("xdotool")
@@ -57,15 +85,17 @@ def test_real_window_click_typing_and_enter_under_xvfb(tmp_path: Path) -> None:
         env = {k: v for k, v in os.environ.items() if k not in ("PYGLET_HEADLESS", "KGE_HEADLESS")}
         env.update(DISPLAY=display, PYGLET_AUDIO="silent")
         app = subprocess.Popen([sys.executable, str(HERE / "xvfb" / "smoke_app.py"), str(out)],
-                               env=env)  # fmt: skip
+                               env=env, stdout=subprocess.PIPE)  # fmt: skip
+        reports = Reports(app)
         wid = _xdo(display, "search", "--sync", "--name", "kge-smoke").splitlines()[0]
-        time.sleep(0.5)  # a few frames: the layout exists
+        reports.wait_for("ready")  # the UI is laid out and drawn
         _xdo(display, "windowfocus", "--sync", wid)
         _xdo(display, "mousemove", "--window", wid, "200", "110", "click", "1")  # the field
-        time.sleep(0.3)
+        reports.wait_for("focused")
         _xdo(display, "type", "--delay", "30", "hello")
+        reports.wait_for("typed hello")
         _xdo(display, "key", "Return")
-        time.sleep(0.3)
+        reports.wait_for("submitted hello")
         _xdo(display, "mousemove", "--window", wid, "200", "190", "click", "1")  # Done
         assert app.wait(timeout=30) == 0
         got = json.loads(out.read_text())

@@ -17,7 +17,7 @@ from kge.components.drawables import Circle, Line
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box
 from kge.components.sprite import Sprite
-from kge.components.tween import EASING_NAMES, Sequence, Tween
+from kge.components.tween import EASING_NAMES, Tween, TweenSequence
 from kge.keys import Key
 from kge.systems.animation import shake
 from kge.testbed.art import as_image, coin_delays, coin_gif, walk_sheet
@@ -54,7 +54,7 @@ def walk_cycle(world: World, walkers: int = 3) -> None:
             Behaviour(_Counter()),
             Name("walker"),
         )
-        tweens.start(e, Sequence(Tween(Transform, "x", 3.0, 3.0 - 0.5 * i),
+        tweens.start(e, TweenSequence(Tween(Transform, "x", 3.0, 3.0 - 0.5 * i),
                                  Tween(Transform, "x", -3.0, 3.0 - 0.5 * i), repeat=-1))
         world.spawn(Transform(0.0, y - 0.5), Line((-3.5, 0.0), (3.5, 0.0), color=(90, 90, 110)))
     world.spawn(Behaviour(_TurnAround()))

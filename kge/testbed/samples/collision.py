@@ -6,7 +6,7 @@ from kge.components import Behaviour, Name, Script, Transform
 from kge.components.collider import Collider
 from kge.components.filter import Filter
 from kge.components.shapes import Box, Circle
-from kge.physics.events import PhysicsEvents
+from kge.physics.events import ContactBegin
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import ball, box, named, static_box
 from kge.world import World
@@ -50,7 +50,6 @@ def _balanced_events(app) -> None:  # type: ignore[no-untyped-def]
     counter = world.get(sensor, Behaviour).script
     assert counter.begins > 0, "no ball entered the sensor"
     assert counter.begins == counter.ends + len(counter.inside)
-    assert isinstance(world.resource(PhysicsEvents), PhysicsEvents)
 
 
 # Box2D's CollisionFiltering sample, reduced to one pair per rule.
@@ -98,7 +97,7 @@ class _Destroyer(Script):
         world = self.world
         physics = world.resource(Physics)
         doomed: set[int] = set()
-        for ev in world.resource(PhysicsEvents).contact_begin:
+        for ev in world.events(ContactBegin):
             a, b = ev.body_a, ev.body_b
             if a is None or b is None or a in doomed or b in doomed:
                 continue

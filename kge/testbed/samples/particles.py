@@ -8,7 +8,14 @@ import numpy as np
 
 from kge.components import Behaviour, Name, Script, Transform
 from kge.components.collider import Collider
-from kge.components.particles import BurstOnHit, EmitBox, EmitCircle, ParticleEmitter
+from kge.components.particles import (
+    Blend,
+    BurstOnHit,
+    EmitBox,
+    EmitCircle,
+    ParticleCollision,
+    ParticleEmitter,
+)
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box
 from kge.particles import Particles
@@ -28,8 +35,9 @@ def fountain(world: World, rate: float = 300.0) -> None:
     static_box(world, 0.0, -0.5, 6.0, 0.5, name="basin")
     world.spawn(Transform(0.0, 0.2), Name("fountain"), ParticleEmitter(
         rate=rate, lifetime=(2.0, 2.6), speed=(7.0, 8.5), spread=0.35, acceleration=(0.0, -9.8),
-        size=(0.12, 0.2), color=((200, 230, 255), (60, 120, 255)), alpha=(1.0, 0.9, 0.0),
-        collide="bounce", bounciness=0.3, shape=EmitCircle(0.1), max_particles=2000, seed=3,
+        size=(0.12, 0.2), color=((200, 230, 255), (60, 120, 255)), opacity=(255, 230, 0),
+        collide=ParticleCollision.BOUNCE, bounciness=0.3, shape=EmitCircle(0.1), max_particles=2000,
+        seed=3,
     ))  # fmt: skip
 
 
@@ -58,12 +66,12 @@ class _Exploder(Script):
         self.count += 1
         self.world.spawn(Transform(x, 4.0), Name("explosion"), ParticleEmitter(
             burst=250, lifetime=(0.4, 0.9), speed=(2.0, 9.0), drag=2.5, size=(0.25, 0.05),
-            color=((255, 255, 200), (255, 160, 40), (200, 40, 0)), alpha=(1.0, 0.0),
-            one_shot=True, spread=2 * math.pi, blend="additive", seed=self.count,
+            color=((255, 255, 200), (255, 160, 40), (200, 40, 0)), opacity=(255, 0),
+            one_shot=True, spread=2 * math.pi, blend=Blend.ADDITIVE, seed=self.count,
         ))  # fmt: skip
         self.world.spawn(Transform(x, 4.0), Name("smoke"), ParticleEmitter(
             burst=60, lifetime=(1.0, 1.6), speed=(0.5, 2.0), drag=1.0, size=(0.3, 1.2),
-            acceleration=(0.0, 1.0), color=((90, 90, 90), (40, 40, 40)), alpha=(0.6, 0.0),
+            acceleration=(0.0, 1.0), color=((90, 90, 90), (40, 40, 40)), opacity=(153, 0),
             one_shot=True, spread=2 * math.pi, seed=1000 + self.count,
         ))  # fmt: skip
 
@@ -91,8 +99,8 @@ def _one_shots_clean_up(app) -> None:  # type: ignore[no-untyped-def]
 def sparks_on_hits(world: World, balls: int = 12) -> None:
     sparks = world.spawn(Name("sparks"), Transform(), ParticleEmitter(
         speed=(2.0, 6.0), spread=1.6, lifetime=(0.3, 0.7), acceleration=(0.0, -9.8),
-        size=(0.08, 0.02), color=((255, 255, 180), (255, 120, 0)), blend="additive",
-        collide="bounce", bounciness=0.4, max_particles=3000, seed=5,
+        size=(0.08, 0.02), color=((255, 255, 180), (255, 120, 0)), blend=Blend.ADDITIVE,
+        collide=ParticleCollision.BOUNCE, bounciness=0.4, max_particles=3000, seed=5,
     ))  # fmt: skip
     floor = static_box(world, 0.0, -0.5, 8.0, 0.5, name="floor")
     world.add(floor, BurstOnHit(sparks, count=40))
@@ -129,9 +137,9 @@ def smoke_trail(world: World) -> None:
     world.spawn(Transform(3.0, 4.0, math.pi / 2), Name("smoker"),
                 RigidBody(type=BodyType.KINEMATIC), Collider(Box(0.3, 0.15)),
                 Behaviour(_Orbit(3.0, 6.0)), ParticleEmitter(
-        rate_per_metre=20.0, lifetime=(1.2, 1.8), speed=(0.1, 0.4), spread=2 * math.pi,
+        rate_per_meter=20.0, lifetime=(1.2, 1.8), speed=(0.1, 0.4), spread=2 * math.pi,
         acceleration=(0.0, 0.6), drag=0.8, size=(0.15, 0.7), color=((200, 200, 200), (90, 90, 90)),
-        alpha=(0.7, 0.0), offset=(-0.35, 0.0), max_particles=1500, seed=9,
+        opacity=(178, 0), offset=(-0.35, 0.0), max_particles=1500, seed=9,
     ))  # fmt: skip
 
 
@@ -153,7 +161,7 @@ def stress(world: World, count: int = 10_000) -> None:
         world.spawn(Transform(x, 6.0 if i < 3 else 9.0), Name("stress"), ParticleEmitter(
             rate=count / 4 / 2.0, lifetime=2.0, speed=(2.0, 6.0), spread=2 * math.pi,
             acceleration=(0.0, -9.8), size=0.08, color=((255, 200, 80), (80, 160, 255)),
-            collide="bounce", bounciness=0.7, shape=EmitBox(1.0, 1.0), prewarm=2.0,
+            collide=ParticleCollision.BOUNCE, bounciness=0.7, shape=EmitBox(1.0, 1.0), prewarm=2.0,
             max_particles=count // 4 + 200, seed=20 + i,
         ))  # fmt: skip
 

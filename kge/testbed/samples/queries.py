@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from typing import Any
 
 from kge.components import Behaviour, Name, Script, Transform
 from kge.components.drawables import Circle as Dot
 from kge.components.drawables import Line, Rect
 from kge.keys import Key
+from kge.physics.queries import RayMode
 from kge.physics.resource import Physics
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import ball, box, static_box
@@ -18,13 +19,13 @@ from kge.world import World
 class RaySweeper(Script):
     """Sweeps a ray around a point each step and keeps the hits for drawing and tests."""
 
-    MODES: tuple[Literal["closest", "any", "all"], ...] = ("closest", "any", "all")
+    MODES: tuple[RayMode, ...] = (RayMode.CLOSEST, RayMode.ANY, RayMode.ALL)
 
     def __init__(self, origin: tuple[float, float], length: float) -> None:
         self.origin = origin
         self.length = length
         self.angle = 0.0
-        self.mode: Literal["closest", "any", "all"] = "closest"
+        self.mode = RayMode.CLOSEST
         self.hits: list[Any] = []
         self.end = origin
         self.markers: list[int] = []
@@ -54,7 +55,7 @@ class RaySweeper(Script):
         """Show the ray (yellow up to the first hit) and a dot on every hit."""
         ray = self.get(Line)
         ray.start = self.origin
-        ray.end = self.hits[0].point if self.hits and self.mode != "all" else self.end
+        ray.end = self.hits[0].point if self.hits and self.mode is not RayMode.ALL else self.end
         for i, marker in enumerate(self.markers):
             dot = self.world.get(marker, Transform)
             if i < len(self.hits):
@@ -85,7 +86,7 @@ def _ray_hits_something(app) -> None:  # type: ignore[no-untyped-def]
     from kge.testbed.samples.build import named
 
     sweeper = app.world.get(named(app.world, "ray")[0], Behaviour).script
-    sweeper.mode = "all"
+    sweeper.mode = RayMode.ALL
     app.step()
     assert sweeper.hits, "a 12 m ray from the centre always reaches the ground or a target"
     fractions = [h.fraction for h in sweeper.hits]

@@ -24,7 +24,7 @@ from kge.keys import Key
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import box, static_box
 from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
-from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
+from kge.ui.events import ButtonClicked, TextSubmitted, ValueChanged
 from kge.ui.interact import UIState
 from kge.world import World
 
@@ -36,12 +36,12 @@ class _Status(Script):
         self.label = label
 
     def on_update(self, dt: float) -> None:
-        for ev in self.world.resource(UIEvents).items:
-            if isinstance(ev, (ButtonClicked, ValueChanged, TextSubmitted)):
-                shown = getattr(ev, "value", getattr(ev, "text", ""))
-                if isinstance(shown, float):
-                    shown = round(shown, 2)
-                self.world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
+        world = self.world
+        for ev in world.events(ButtonClicked, ValueChanged, TextSubmitted):  # in order
+            shown = getattr(ev, "value", getattr(ev, "text", ""))
+            if isinstance(shown, float):
+                shown = round(shown, 2)
+            world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
 
 
 def _root(world: World) -> int:
@@ -127,7 +127,7 @@ class _Pause(Script):
 
     def on_update(self, dt: float) -> None:
         inp = self.world.resource(Host).input
-        clicked = any(b.text == "Pause" for ev in self.world.resource(UIEvents).of(ButtonClicked)
+        clicked = any(b.text == "Pause" for ev in self.world.events(ButtonClicked)
                       for b in [self.world.get(ev.entity, Button)])  # fmt: skip
         if inp.pressed(Key.P) or inp.pressed(Key.ESCAPE) or clicked:
             self.world.resource(Host).push_scene(pause_menu, overlay=True)
@@ -151,7 +151,8 @@ class _Resume(Script):
 
     def on_update(self, dt: float) -> None:
         inp = self.world.resource(Host).input
-        if self.world.resource(UIEvents).clicked(self.button) or inp.pressed(Key.ESCAPE):
+        clicked = any(ev.entity == self.button for ev in self.world.events(ButtonClicked))
+        if clicked or inp.pressed(Key.ESCAPE):
             self.world.resource(Host).pop_scene()
 
 
@@ -195,7 +196,7 @@ class _Switch(Script):
         self.target = target
 
     def on_update(self, dt: float) -> None:
-        for ev in self.world.resource(UIEvents).of(ButtonClicked):
+        for ev in self.world.events(ButtonClicked):
             kind = self.world.get(ev.entity, Button).text
             self.world.resource(Host).replace_scene(self.target, transition=_KINDS[kind])
 
