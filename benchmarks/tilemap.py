@@ -8,6 +8,8 @@ What is timed, in one run:
   pymunk space; the map's drawing data is its numpy grid, so nothing else is
   built up front (chunk vertex lists are made when they come into view);
 * ``colliders`` / ``solid``: static collider entities beside solid tiles;
+* ``snapshot_s`` / ``snapshot_mb``: ``world.snapshot()`` of the loaded world (the map
+  goes along whole: its grids, collision outlines and collider entities);
 * ``frame_ms``: a steady ``app.render()`` of a fixed 25 x 20 m view until GL has
   finished it, median, on the N x N map and on a 100 x 100 map of the same caves,
   headless EGL: their ratio shows the frame cost does not grow with the map;
@@ -98,6 +100,9 @@ def load_once(path: Path) -> dict[str, float]:
     solid = int(np.count_nonzero(m.layer("Rock").gids))
     shapes = [world.get(e, Collider).shape for e in m.collider_entities]
     segments = sum(len(s.vertices) for s in shapes if isinstance(s, Chain))
+    t2 = time.perf_counter()
+    saved = world.snapshot()  # the map goes along whole (kge.tilemap.runtime)
+    snapshot_s = time.perf_counter() - t2
     out = {
         "load_s": load_s,
         "map_s": t1 - t0,
@@ -105,6 +110,8 @@ def load_once(path: Path) -> dict[str, float]:
         "colliders": float(len(m.collider_entities)),
         "solid": float(solid),
         "segments": float(segments),
+        "snapshot_s": snapshot_s,
+        "snapshot_mb": len(saved) / 1e6,
     }
     world.close()
     return out
@@ -266,6 +273,8 @@ def targets(r: dict[str, float]) -> list[dict[str, Any]]:
     iso = [
         row(f"tilemap {n}x{n} isometric caves: load + collision + first step",
             r.get("iso_load_s"), 3.0, "s"),
+        row(f"tilemap {n}x{n} caves: world.snapshot() (the map carried whole)",
+            r.get("snapshot_s"), 1.0, "s"),
         row(f"tilemap {n}x{n} load: isometric / orthogonal", ratio_of("iso_load_s", "load_s"),
             1.5),
         row(f"tilemap frame, fixed view: isometric {n}x{n} / 100x100",
@@ -294,7 +303,7 @@ def table(r: dict[str, float]) -> str:
     keys = ("size", "solid", "colliders", "segments", "load_s", "map_s", "step_s", "arcade_s",
             "frame_ms", "frame_ms_100", "chunks", "chunks_100", "iso_colliders", "iso_load_s",
             "iso_map_s", "iso_step_s", "iso_frame_ms", "iso_frame_ms_100", "iso_chunks",
-            "loadavg")  # fmt: skip
+            "snapshot_s", "snapshot_mb", "loadavg")  # fmt: skip
     return "  ".join(f"{k} {r[k]:.4g}" for k in keys if k in r)
 
 

@@ -14,7 +14,7 @@ animations (lists of frame names).
 
 * ``sheet.clips()``: one :class:`~kge.components.animation.Clip` per tag (or per
   packer animation), with the file's frame durations, ready for an ``Animator``;
-* ``sheet.clip("walk", loop="once")``: one of them, with other options;
+* ``sheet.clip("walk", loop=Loop.ONCE)``: one of them, with other options;
 * ``sheet.sprite("coin.png")``: a :class:`~kge.components.sprite.Sprite` of one
   frame, anchored at its pivot;
 * ``sheet.slices["hitbox"].at(frame)``: a slice's rectangle on a frame.
@@ -52,10 +52,10 @@ from kge.render.images import PixelImage
 
 #: Aseprite's tag directions -> (frames reversed?, kge loop mode)
 DIRECTIONS = {
-    "forward": (False, "loop"),
-    "reverse": (True, "loop"),
-    "pingpong": (False, "ping_pong"),
-    "pingpong_reverse": (True, "ping_pong"),
+    "forward": (False, Loop.LOOP),
+    "reverse": (True, Loop.LOOP),
+    "pingpong": (False, Loop.PING_PONG),
+    "pingpong_reverse": (True, Loop.PING_PONG),
 }
 DEFAULT_DURATION = 0.1  #: seconds per frame when the file gives none (texture packers)
 MAX_FILE_BYTES = 64 * 1024 * 1024
@@ -109,7 +109,7 @@ class SheetTag:
             return one
         out = list(one)
         for k in range(1, self.repeat):
-            if mode == "ping_pong":
+            if mode == Loop.PING_PONG:
                 nxt = one[::-1] if k % 2 else one
                 out += nxt[1:] if len(nxt) > 1 else nxt
             else:
@@ -117,9 +117,9 @@ class SheetTag:
         return out
 
     @property
-    def loop(self) -> str:
-        """kge's loop mode for this tag (``hold`` once a repeat count has played)."""
-        return "hold" if self.repeat > 0 else DIRECTIONS[self.direction][1]
+    def loop(self) -> Loop:
+        """kge's loop mode for this tag (``HOLD`` once a repeat count has played)."""
+        return Loop.HOLD if self.repeat > 0 else DIRECTIONS[self.direction][1]
 
 
 @dataclass(frozen=True, slots=True)
@@ -212,12 +212,12 @@ class SpriteSheet:
         ``name`` is None. ``loop`` overrides the tag's own mode; ``events`` count the
         clip's frames (after a tag's direction and repeats are applied)."""
         if name is None:
-            order, mode = list(range(len(self.frames))), "loop"
+            order, mode = list(range(len(self.frames))), Loop.LOOP
         elif name in self.tags:
             tag = self.tags[name]
             order, mode = tag.order(), tag.loop
         elif name in self.animations:
-            order, mode = list(self.animations[name]), "loop"
+            order, mode = list(self.animations[name]), Loop.LOOP
         else:
             known = sorted([*self.tags, *self.animations])
             raise SheetError(
@@ -235,7 +235,7 @@ class SpriteSheet:
         return Clip(
             tuple(f.ref for f in frames),
             tuple(f.duration for f in frames),
-            loop if loop is not None else mode,  # type: ignore[arg-type]  # Clip checks it
+            mode if loop is None else loop,  # type: ignore[arg-type]  # Clip checks a str
             speed,
             flip_x,
             flip_y,

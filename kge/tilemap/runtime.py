@@ -4,6 +4,15 @@ The returned :class:`TileMap` is the run-time handle: tile queries, tile edits
 (drawing and collision rebuilt locally), the map's bounds for the camera, and
 ``unload``. Every loaded map is listed in the world's :class:`TileMaps`
 resource, which the tile renderer draws from.
+
+Snapshots carry the loaded maps (:func:`kge.snapshot.carry_running`): a world
+restored by ``App.restore`` (or by ``restore_into`` into a world with a
+:class:`TileMaps` resource) has its maps as they were, tile edits included, bound
+to it, drawn and editable. A :class:`TileMap` that game code
+kept in a component (a Behaviour's attribute) is that same restored map; one kept
+elsewhere still belongs to the old world, and editing it after that world closed
+raises a :class:`TilemapError` saying where the restored one is
+(``maps_in(world).find(path)``).
 """
 
 from __future__ import annotations
@@ -17,6 +26,7 @@ import numpy as np
 
 from kge.errors import KgeError
 from kge.gcpause import without_gc
+from kge.snapshot import carry_running
 from kge.tilemap.cellcollision import CellCollision, IsoCollision
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
@@ -48,17 +58,45 @@ class MapFiles:
     roots: Callable[[], Iterable[Path]] = tuple
 
 
+@carry_running
 @dataclass(slots=True)
 class TileMaps:
     """The maps loaded into one world (a resource)."""
 
     maps: list[TileMap] = field(default_factory=list)
+    world: World | None = field(default=None, repr=False, compare=False)
+
+    def find(self, path: str | Path) -> TileMap:
+        """The loaded map read from ``path`` (a full path, or its file name)."""
+        want = Path(path)
+        for m in self.maps:
+            if m.path == want or (len(want.parts) == 1 and m.path.name == want.name):
+                return m
+        names = ", ".join(repr(m.path.name) for m in self.maps) or "none"
+        raise TilemapError(f"no loaded map {str(path)!r} (loaded: {names})")
+
+    # -- snapshots (kge.snapshot.carry_running) --------------------------------------------
+    def export_running(self) -> list[TileMap]:
+        """The loaded maps, pickled whole but for their world: data with its edits,
+        colliders, object entities and the frames animated tiles show."""
+        return [m for m in self.maps if m.loaded]
+
+    def import_running(self, data: list[TileMap]) -> None:
+        """Bind the restored maps to this resource's world (their entities are there)."""
+        if self.world is None:  # pragma: no cover - maps_in always sets it
+            raise TilemapError("TileMaps.import_running: the resource has no world")
+        for tmap in data:
+            tmap.world = self.world
+            if tmap not in self.maps:
+                self.maps.append(tmap)
 
 
 def maps_in(world: World) -> TileMaps:
     found = world.try_resource(TileMaps)
     if found is None:
-        found = world.insert_resource(TileMaps())
+        found = world.insert_resource(TileMaps(world=world))
+    elif found.world is None:
+        found.world = world
     return found
 
 
@@ -82,6 +120,21 @@ class TileMap:
         for gid, (frames, _) in data.tiles.animations.items():
             self.shown[gid] = frames[0]  # time 0: the first frame
         self.loaded = True
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickled without its world (a snapshot's maps are bound to the restored one)."""
+        state = dict(self.__dict__)
+        state["world"] = None
+        return state
+
+    def _editable(self, op: str) -> None:
+        if not self.loaded:
+            raise TilemapError(f"{self.path}: {op} on a map that was unloaded")
+        if self.world is None or self.world.closed:
+            raise TilemapError(
+                f"{self.path}: {op} on a map whose world is closed (a restore makes a new "
+                "world: edit its map, maps_in(app.world).find(path))"
+            )
 
     # -- geometry ------------------------------------------------------------------------
     @property
@@ -214,8 +267,7 @@ class TileMap:
         flip_diagonal: bool = False,
     ) -> None:
         """Put tile ``gid`` (0 clears) at (col, row): its chunk redraws, its colliders rebuild."""
-        if not self.loaded:
-            raise TilemapError(f"{self.path}: set_tile on a map that was unloaded")
+        self._editable("set_tile")
         lay = self.layer(layer)
         self._check_cell(lay, col, row, "set_tile")
         if isinstance(gid, bool) or not isinstance(gid, (int, np.integer)) or gid < 0:
@@ -250,8 +302,7 @@ class TileMap:
         """
         from kge.tilemap.wang import WangPainter, color_index
 
-        if not self.loaded:
-            raise TilemapError(f"{self.path}: set_terrain on a map that was unloaded")
+        self._editable("set_terrain")
         lay = self.layer(layer)
         self._check_cell(lay, col, row, "set_terrain")
         sets = [w for ts in self.data.tilesets for w in ts.wangsets]

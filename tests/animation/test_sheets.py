@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from kge import Animator, Sprite, Transform, load_sheet
-from kge.components.animation import Clip
+from kge.components.animation import Clip, Loop
 from kge.render.images import PixelImage
 from kge.render.sheets import SheetError, SheetTag, SpriteSheet
 from kge.testbed import png
@@ -105,16 +105,16 @@ def test_aseprite_tags_become_clips_with_the_files_durations(tmp_path: Path, for
         assert all(f.image == image and f.region is not None for f in c.frames)
         return [f.region[0] // CELL for f in c.frames]  # type: ignore[index]
 
-    assert regions(clips["walk"]) == [0, 1, 2, 3] and clips["walk"].loop == "loop"
+    assert regions(clips["walk"]) == [0, 1, 2, 3] and clips["walk"].loop == Loop.LOOP
     assert clips["walk"].durations == (0.1, 0.2, 0.3, 0.4)
-    assert regions(clips["back"]) == [3, 2, 1, 0] and clips["back"].loop == "loop"
+    assert regions(clips["back"]) == [3, 2, 1, 0] and clips["back"].loop == Loop.LOOP
     assert clips["back"].durations == (0.4, 0.3, 0.2, 0.1)
-    assert regions(clips["bounce"]) == [1, 2, 3] and clips["bounce"].loop == "ping_pong"
-    assert regions(clips["bounce_back"]) == [3, 2, 1] and clips["bounce_back"].loop == "ping_pong"
+    assert regions(clips["bounce"]) == [1, 2, 3] and clips["bounce"].loop == Loop.PING_PONG
+    assert regions(clips["bounce_back"]) == [3, 2, 1] and clips["bounce_back"].loop == Loop.PING_PONG
     # a repeat count: that many passes (each ping-pong direction is one), then hold
-    assert regions(clips["twice"]) == [2, 3, 4, 3, 2] and clips["twice"].loop == "hold"
-    assert regions(clips["thrice"]) == [0, 1, 0, 1, 0, 1] and clips["thrice"].loop == "hold"
-    assert sheet.clip("walk", loop="once").loop == "once"
+    assert regions(clips["twice"]) == [2, 3, 4, 3, 2] and clips["twice"].loop == Loop.HOLD
+    assert regions(clips["thrice"]) == [0, 1, 0, 1, 0, 1] and clips["thrice"].loop == Loop.HOLD
+    assert sheet.clip("walk", loop=Loop.ONCE).loop == Loop.ONCE
     assert sheet.clip().frames == tuple(f.ref for f in sheet.frames)  # no tag: every frame
 
 

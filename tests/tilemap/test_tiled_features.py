@@ -119,7 +119,7 @@ def test_object_layer_opacity_tint_visibility_and_offset(tmp_path: Path, apps: l
     assert (world.get(by_id[1], Transform).x, world.get(by_id[1], Transform).y) == (2.5, 5.5)
     assert world.get(by_id[2], Sprite).visible is False  # the object's own visible="0"
     assert world.get(by_id[3], Sprite).visible is False  # its layer is hidden
-    assert world.get(by_id[4], Text).value == "Hello"
+    assert world.get(by_id[4], Text).text == "Hello"
     # drawn: white tinted red at half opacity over black, moved 1 m right by the offset
     assert at(px, 2.75, 5.25) == Near((125, 0, 0))
     assert at(px, 1.75, 5.25) == (0, 0, 0)
