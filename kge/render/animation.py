@@ -111,6 +111,12 @@ class AtlasFrames:
         for ref in sources[start:]:
             try:
                 image = self._source_image(ref)
+                if max(image.width, image.height) + 2 > ATLAS_SIZE:  # the 1 px border
+                    raise ValidationError(
+                        f"{image.width}x{image.height} pixels is larger than the animation "
+                        f"atlas ({ATLAS_SIZE}x{ATLAS_SIZE}); "
+                        "split it into smaller frames or draw it as a plain Sprite"
+                    )
                 region = self.atlas.add(image, border=1)
             except pyglet.image.atlas.AllocatorException as exc:
                 raise KgeError(
