@@ -119,6 +119,9 @@ class TileMap:
         self.shown = np.arange(max(data.tiles.size, 1), dtype=np.int64)
         for gid, (frames, _) in data.tiles.animations.items():
             self.shown[gid] = frames[0]  # time 0: the first frame
+        #: the animated tiles' clock (the TileAnimationSystem's numpy clips), made and
+        #: advanced by that system; kept here so that snapshots carry it with the map
+        self.clock: Any = None
         self.loaded = True
 
     def __getstate__(self) -> dict[str, Any]:

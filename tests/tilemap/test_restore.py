@@ -16,7 +16,7 @@ from kge.render.setup import frame_pixels
 from kge.tilemap import TileMap, TilemapError, load_map
 from kge.tilemap.runtime import maps_in
 
-from .maps import COIN, COLORS, GROUND, ONE_WAY, write_level
+from .maps import ANIM_A, ANIM_B, COIN, COLORS, GROUND, ONE_WAY, write_level
 from .test_drawing import SIZE, at
 
 
@@ -128,3 +128,28 @@ def test_an_unloaded_map_is_not_restored(tmp_path: Path, apps: list[App]) -> Non
     old.unload()
     app.restore(app.world.snapshot())
     assert maps_in(app.world).maps == []
+
+
+def test_animated_tiles_go_on_from_where_they_were(tmp_path: Path, apps: list[App]) -> None:
+    """Twin runs, one restored in between, show the same frame at the same time (the
+    clip is 0.1 s + 0.1 s; a clock restarted at the restore shows the other frame)."""
+    g = np.zeros((8, 10), np.int64)
+    g[2, 3] = ANIM_A
+    path = write_level(tmp_path, g)
+
+    def frames(restore: bool) -> list[int]:
+        app = App(scene(path), headless=True, size=SIZE, background=(0, 0, 0))
+        apps.append(app)
+        shown = []
+        for k in range(4):
+            if restore and k == 1:
+                restored(app)
+            app.step(7)  # 7/60 s
+            app.render()
+            shown.append(int(maps_in(app.world).find(path).shown[ANIM_A]))
+            assert at(frame_pixels(app), 3.5, 5.5) == COLORS[shown[-1] - 1]
+        return shown
+
+    plain = frames(False)
+    assert plain == [ANIM_B, ANIM_A, ANIM_B, ANIM_A]  # t = 0.117, 0.233, 0.35, 0.467
+    assert frames(True) == plain
