@@ -162,3 +162,62 @@ def test_tile_objects_on_a_parallax_layer_follow_their_entities(
     app.render()
     px = frame_pixels(app)
     assert at(px, 6.25, 2.75) == (0, 0, 0) and at(px, 5.75, 2.25) == (0, 0, 0)
+
+
+def test_an_image_layer_repeats_along_y(tmp_path: Path, apps: list[App]) -> None:
+    layer = ('<imagelayer id="3" name="Sky" offsetx="32" repeaty="1">'
+             '<image source="sky.png" width="32" height="16"/></imagelayer>')  # fmt: skip
+    _, px = render(apps, setup_for(write(tmp_path, layer)))
+    sky = (20, 60, 250)
+    for y in (0.2, 1.5, 3.9, 6.1, 7.8):  # x from 2 to 4 m, every row of the map
+        assert at(px, 3.0, y) == sky, y
+    assert at(px, 1.5, 4.0) == (0, 0, 0) and at(px, 4.5, 4.0) == (0, 0, 0)  # not along x
+
+
+def test_tile_objects_are_drawn_flipped_and_rotated(tmp_path: Path, apps: list[App]) -> None:
+    """Tile 2 is white with a black top-left quarter. Tiled places a tile object by its
+    bottom-left corner and turns it clockwise about that corner."""
+    obj = '<object id="{id}" gid="{gid}" x="{x}" y="48" width="16" height="16"{extra}/>'
+    flip_h, flip_v = 0x80000000, 0x40000000
+    layers = (
+        '<objectgroup id="2" name="Things">'
+        + obj.format(id=1, gid=2, x=16, extra="")  # x 1..2, y 5..6 m
+        + obj.format(id=2, gid=2 | flip_h, x=48, extra="")  # x 3..4
+        + obj.format(id=3, gid=2 | flip_v, x=80, extra="")  # x 5..6
+        + obj.format(id=4, gid=2, x=112, extra=' rotation="90"')  # x 7..8, y 4..5 m
+        + "</objectgroup>"
+    )
+    _, px = render(apps, setup_for(write(tmp_path, layers)))
+    assert at(px, 1.25, 5.75) == (0, 0, 0) and at(px, 1.75, 5.75) == WHITE  # as drawn
+    assert at(px, 3.75, 5.75) == (0, 0, 0) and at(px, 3.25, 5.75) == WHITE  # mirrored
+    assert at(px, 5.25, 5.25) == (0, 0, 0) and at(px, 5.25, 5.75) == WHITE  # upside down
+    # a quarter turn clockwise: the top-left corner goes to the top right, below y 5
+    assert at(px, 7.75, 4.75) == (0, 0, 0) and at(px, 7.25, 4.75) == WHITE
+    assert at(px, 7.5, 5.5) == (0, 0, 0) and at(px, 7.25, 4.25) == WHITE
+
+
+def test_groups_nest_every_layer_kind_and_pass_their_style_down(
+    tmp_path: Path, apps: list[App]
+) -> None:
+    """A group (opacity 0.5, offset 1 m right) holding a tile layer, an object layer with
+    a tile object, an image layer and a group (tint red, offset 1 m down) with a tile layer:
+    each is drawn with the styles of all its groups combined."""
+    cells = tile_layer({(2, 2): 2}).replace('name="Ground"', 'name="Tiles"')
+    inner = tile_layer({(6, 2): 2}).replace('id="1" name="Ground"', 'id="7" name="Deep"')
+    layers = (
+        '<group id="5" name="Outer" opacity="0.5" offsetx="16">'
+        + cells
+        + '<objectgroup id="2" name="Things">'
+        '<object id="1" gid="2" x="64" y="48" width="16" height="16"/></objectgroup>'
+        '<imagelayer id="3" name="Sky" offsety="96"><image source="sky.png" width="32" '
+        'height="16"/></imagelayer>'
+        '<group id="6" name="Inner" tintcolor="#ff0000" offsety="16">' + inner + "</group>"
+        "</group>"
+    )
+    _, px = render(apps, setup_for(write(tmp_path, layers)))
+    half_white, half_red = Near((125, 125, 125)), Near((125, 0, 0))
+    assert at(px, 3.75, 5.25) == half_white and at(px, 2.75, 5.25) == (0, 0, 0)  # tile, moved
+    assert at(px, 5.75, 5.25) == half_white and at(px, 4.75, 5.25) == (0, 0, 0)  # tile object
+    assert at(px, 2.0, 1.5) == Near((10, 30, 125))  # image layer: x 1..3, y 1..2 m
+    assert at(px, 7.75, 4.25) == half_red and at(px, 7.25, 4.75) == (0, 0, 0)  # nested group
+    assert at(px, 7.75, 5.25) == (0, 0, 0)  # not at its own row
