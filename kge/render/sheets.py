@@ -37,8 +37,7 @@ from __future__ import annotations
 import io
 import json
 import os
-import stat
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -48,6 +47,7 @@ import numpy as np
 from kge.components.animation import Clip, FrameRef, Loop
 from kge.components.sprite import Sprite
 from kge.errors import ValidationError
+from kge.platform import regular_file_size
 from kge.render.images import PixelImage
 
 #: Aseprite's tag directions -> (frames reversed?, kge loop mode)
@@ -295,17 +295,12 @@ class _Source:
         else:
             path = Path(name)
             try:
-                st = path.stat()
-            except FileNotFoundError:
-                raise SheetError(f"{self.name}: {what} {name!r} not found") from None
-            except OSError as exc:
-                raise SheetError(f"{self.name}: {what} {name!r} unreadable ({exc})") from None
-            if not stat.S_ISREG(st.st_mode):
-                raise SheetError(f"{self.name}: {what} {name!r} is not a regular file")
-            if st.st_size > MAX_FILE_BYTES:
+                size = regular_file_size(path)
+            except ValueError as exc:
+                raise SheetError(f"{self.name}: {what} {name!r} {exc}") from None
+            if size > MAX_FILE_BYTES:
                 raise SheetError(
-                    f"{self.name}: {what} {name!r} is {st.st_size:,} bytes, above "
-                    f"{MAX_FILE_BYTES:,}"
+                    f"{self.name}: {what} {name!r} is {size:,} bytes, above {MAX_FILE_BYTES:,}"
                 )
             with open(path, "rb") as fh:
                 data = fh.read(MAX_FILE_BYTES + 1)
@@ -555,17 +550,22 @@ class _Parser:
         return (vals[0], 1.0 - vals[1])  # from the top-left, y down -> kge's anchor, y up
 
     # -- meta
-    def _tags(self, raw: Any, n: int) -> dict[str, SheetTag]:
+    def _named(self, raw: Any, key: str) -> Iterator[tuple[str, dict[str, Any], str]]:
+        """(where, entry, name) of each entry of the list ``meta.<key>``, all named."""
         if not isinstance(raw, list):
-            raise self.fail(f"meta.frameTags is {type(raw).__name__}, not a list")
-        out: dict[str, SheetTag] = {}
-        for i, t in enumerate(raw):
-            what = f"meta.frameTags[{i}]"
-            if not isinstance(t, dict):
-                raise self.fail(f"{what} is {type(t).__name__}, not a JSON object")
-            name = t.get("name")
+            raise self.fail(f"meta.{key} is {type(raw).__name__}, not a list")
+        for i, entry in enumerate(raw):
+            what = f"meta.{key}[{i}]"
+            if not isinstance(entry, dict):
+                raise self.fail(f"{what} is {type(entry).__name__}, not a JSON object")
+            name = entry.get("name")
             if not isinstance(name, str) or not name:
                 raise self.fail(f"{what}.name must be a non-empty string, got {name!r}")
+            yield what, entry, name
+
+    def _tags(self, raw: Any, n: int) -> dict[str, SheetTag]:
+        out: dict[str, SheetTag] = {}
+        for what, t, name in self._named(raw, "frameTags"):
             first = self._int(t.get("from"), f"{what} ({name!r}).from")
             last = self._int(t.get("to"), f"{what} ({name!r}).to")
             if last < first:
@@ -596,16 +596,8 @@ class _Parser:
         return out
 
     def _slices(self, raw: Any) -> dict[str, SheetSlice]:
-        if not isinstance(raw, list):
-            raise self.fail(f"meta.slices is {type(raw).__name__}, not a list")
         out: dict[str, SheetSlice] = {}
-        for i, s in enumerate(raw):
-            what = f"meta.slices[{i}]"
-            if not isinstance(s, dict):
-                raise self.fail(f"{what} is {type(s).__name__}, not a JSON object")
-            name = s.get("name")
-            if not isinstance(name, str) or not name:
-                raise self.fail(f"{what}.name must be a non-empty string, got {name!r}")
+        for what, s, name in self._named(raw, "slices"):
             keys_raw = s.get("keys")
             if not isinstance(keys_raw, list) or not keys_raw:
                 raise self.fail(f"{what} ({name!r}).keys must be a non-empty list")

@@ -28,11 +28,11 @@ kge.tilemap.errors.TilemapError: .../m.tmx: '/etc/hostname' is outside the folde
 from __future__ import annotations
 
 import os
-import stat
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
+from kge.platform import regular_file_size
 from kge.tilemap.errors import TilemapError
 
 
@@ -100,16 +100,12 @@ class MapReader:
     def check_file(self, owner: Path, path: Path, what: str) -> int:
         """The size of a regular file at ``path``; a clear error for anything else."""
         try:
-            st = path.stat()
-        except FileNotFoundError:
-            raise TilemapError(f"{owner}: {what} {str(path)!r} not found") from None
-        except OSError as exc:
-            raise TilemapError(f"{owner}: {what} {str(path)!r} unreadable ({exc})") from None
-        if not stat.S_ISREG(st.st_mode):
-            raise TilemapError(f"{owner}: {what} {str(path)!r} is not a regular file")
+            size = regular_file_size(path)
+        except ValueError as exc:
+            raise TilemapError(f"{owner}: {what} {str(path)!r} {exc}") from None
         self.read_count += 1
         self.limits.check(f"{owner}: the number of files read", self.read_count, "files")
-        return st.st_size
+        return size
 
     def read_bytes(self, path: Path, owner: Path | None = None, what: str = "file") -> bytes:
         owner = owner or path

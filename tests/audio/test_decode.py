@@ -79,16 +79,6 @@ BAD = [
 ]  # fmt: skip
 
 
-@pytest.mark.parametrize(("name", "data", "message"), BAD, ids=[b[0] for b in BAD])
-def test_bad_sound_files_are_refused_at_the_call(
-    store: Assets, tmp_path: Path, name: str, data: bytes, message: str
-) -> None:
-    (tmp_path / name).write_bytes(data)
-    with pytest.raises(AssetDecodeError, match=message) as info:
-        store.sound(name)
-    assert name in str(info.value)
-
-
 def test_empty_sound_data_is_refused() -> None:
     with pytest.raises(ValidationError, match="empty"):
         SoundData(b"")
@@ -117,13 +107,16 @@ BAD_IMAGES = [
 ]  # fmt: skip
 
 
-@pytest.mark.parametrize(("name", "data", "message"), BAD_IMAGES, ids=[b[0] for b in BAD_IMAGES])
-def test_bad_images_are_refused_at_the_call(
+@pytest.mark.parametrize(
+    ("name", "data", "message"), BAD + BAD_IMAGES, ids=[b[0] for b in BAD + BAD_IMAGES]
+)
+def test_bad_sound_and_image_files_are_refused_at_the_call(
     store: Assets, tmp_path: Path, name: str, data: bytes, message: str
 ) -> None:
     (tmp_path / name).write_bytes(data)
+    load = store.image if name.endswith(".png") else store.sound
     with pytest.raises(AssetDecodeError, match=message) as info:
-        store.image(name)
+        load(name)
     assert name in str(info.value)
 
 
