@@ -31,7 +31,17 @@ from kge.tilemap.cellcollision import CellCollision, IsoCollision
 from kge.tilemap.collision import DEFAULT_MATERIAL, LayerCollision, Material, Piece
 from kge.tilemap.errors import TilemapError
 from kge.tilemap.files import MapLimits
-from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, MapData, TileLayerData
+from kge.tilemap.model import (
+    FLIP_D,
+    FLIP_H,
+    FLIP_V,
+    TILED_FLIP_D,
+    TILED_FLIP_H,
+    TILED_FLIP_V,
+    TILED_ROT_HEX,
+    MapData,
+    TileLayerData,
+)
 from kge.tilemap.objects import Spawners, SpawnFn, Unknown, object_components
 from kge.tilemap.parse import read_map
 
@@ -123,6 +133,10 @@ class TileMap:
         #: advanced by that system; kept here so that snapshots carry it with the map
         self.clock: Any = None
         self.loaded = True
+        #: the load_map options that differ from their defaults (saves name them)
+        self.load_options: dict[str, Any] = {}
+        #: (layer, col, row) of every cell set since loading (saves write their tiles)
+        self.edited: set[tuple[str, int, int]] = set()
 
     def __getstate__(self) -> dict[str, Any]:
         """Pickled without its world (a snapshot's maps are bound to the restored one)."""
@@ -291,6 +305,7 @@ class TileMap:
                 lay.gids[row, col], lay.flags[row, col] = old
                 raise TilemapError(f"{self.path}: set_tile on layer {layer!r}: {exc}") from exc
         self.dirty.add((self.data.tile_layers.index(lay), row // CHUNK, col // CHUNK))
+        self.edited.add((lay.name, int(col), int(row)))
 
     def set_terrain(
         self, layer: str, col: int, row: int, color: int | str, *, wangset: str | None = None
@@ -326,6 +341,38 @@ class TileMap:
 
     def clear_tile(self, layer: str, col: int, row: int) -> None:
         self.set_tile(layer, col, row, 0)
+
+    def edits(self) -> list[tuple[str, int, int, int]]:
+        """The cells set since loading as (layer, col, row, Tiled gid with its flip bits),
+        what a save writes to rebuild the map as it is now."""
+        out = []
+        for name, col, row in sorted(self.edited):
+            lay = self.layer(name)
+            flags = int(lay.flags[row, col])
+            raw = int(lay.gids[row, col])
+            raw |= TILED_FLIP_H if flags & FLIP_H else 0
+            raw |= TILED_FLIP_V if flags & FLIP_V else 0
+            raw |= TILED_FLIP_D if flags & FLIP_D else 0
+            out.append((name, col, row, raw))
+        return out
+
+    def apply_edits(self, edits: Iterable[Any]) -> None:
+        """Set the cells of :meth:`edits` (a save's list): ``(layer, col, row, gid)`` each,
+        the gid with Tiled's flip bits."""
+        for i, edit in enumerate(edits):
+            if (not isinstance(edit, (list, tuple)) or len(edit) != 4
+                    or not isinstance(edit[0], str)
+                    or not all(isinstance(v, int) and not isinstance(v, bool) for v in edit[1:])
+                    or not 0 <= edit[3] <= 0xFFFFFFFF):  # fmt: skip
+                raise TilemapError(
+                    f"{self.path}: edit {i} must be [layer, col, row, gid], got {edit!r}"
+                )
+            name, col, row, raw = edit
+            self.set_tile(
+                name, col, row, raw & ~(TILED_FLIP_H | TILED_FLIP_V | TILED_FLIP_D | TILED_ROT_HEX),
+                flip_x=bool(raw & TILED_FLIP_H), flip_y=bool(raw & TILED_FLIP_V),
+                flip_diagonal=bool(raw & TILED_FLIP_D),
+            )  # fmt: skip
 
     def _check_cell(self, lay: TileLayerData, col: int, row: int, op: str) -> None:
         for v, n, what in ((col, self.data.cols, "col"), (row, self.data.rows, "row")):
@@ -423,6 +470,13 @@ def load_map(
         raise TilemapError(f"{data.path}: solid_layers names no tile layer: {sorted(missing)!r}")
     base: Material = (float(friction), float(restitution), *DEFAULT_MATERIAL[2:])
     tmap = TileMap(world, data, int(layer))
+    given: dict[str, Any] = {"pixels_per_meter": pixels_per_meter, "origin": tuple(origin),
+             "solid_layers": sorted(solid_names), "unknown": unknown, "layer": int(layer),
+             "friction": float(friction), "restitution": float(restitution)}  # fmt: skip
+    defaults: dict[str, Any] = {"pixels_per_meter": None, "origin": (0.0, 0.0), "solid_layers": [],
+                "unknown": "warn", "layer": 0, "friction": DEFAULT_MATERIAL[0],
+                "restitution": DEFAULT_MATERIAL[1]}  # fmt: skip
+    tmap.load_options = {k: v for k, v in given.items() if v != defaults[k]}
     pieces: list[Piece] = []
     try:
         for lay in data.tile_layers:

@@ -16,7 +16,7 @@ from kge.render.setup import frame_pixels
 from kge.tilemap import TileMap, TilemapError, load_map
 from kge.tilemap.runtime import maps_in
 
-from .maps import ANIM_A, ANIM_B, COIN, COLORS, GROUND, ONE_WAY, write_level
+from .maps import ANIM_A, ANIM_B, COIN, COLORS, DECOR, GROUND, MARK, ONE_WAY, write_level
 from .test_drawing import SIZE, at
 
 
@@ -153,3 +153,63 @@ def test_animated_tiles_go_on_from_where_they_were(tmp_path: Path, apps: list[Ap
     plain = frames(False)
     assert plain == [ANIM_B, ANIM_A, ANIM_B, ANIM_A]  # t = 0.117, 0.233, 0.35, 0.467
     assert frames(True) == plain
+
+
+def test_a_save_file_keeps_the_maps_load_options_and_its_edits(
+    tmp_path: Path, apps: list[App]
+) -> None:
+    """A map loaded in code with options and edited: the save names the options and the
+    edited cells, and the loaded save draws and collides as the saved world did."""
+    from kge import load_game, save_game
+    from kge.tilemap.model import FLIP_H
+
+    g = np.zeros((8, 10), np.int64)
+    g[7, :] = DECOR  # a floor of a tile that is solid only through solid_layers
+    path = write_level(tmp_path, g)
+
+    def setup(world: Any) -> None:
+        world.insert_resource(Camera(center=(5.0, 4.0), pixels_per_meter=20))
+        load_map(world, path, solid_layers=["Ground"], friction=0.1)
+
+    app = App(setup, headless=True, size=SIZE, background=(0, 0, 0))
+    apps.append(app)
+    (tmap,) = maps_in(app.world).maps
+    tmap.clear_tile("Ground", 4, 7)  # a hole in the floor: two outlines
+    tmap.set_tile("Ground", 2, 2, MARK, flip_x=True)  # a mirrored tile in the air
+    app.render()
+    before = frame_pixels(app).copy()
+    colliders = len(tmap.collider_entities)
+    assert colliders == 3
+    save_game(app.world, tmp_path / "save.toml")
+    text = (tmp_path / "save.toml").read_text()
+    assert 'solid_layers = ["Ground"]' in text and "friction = 0.1" in text
+    app.restore(load_game(tmp_path / "save.toml"))
+    (loaded,) = maps_in(app.world).maps
+    assert loaded.tile("Ground", 4, 7) == 0 and loaded.tile("Ground", 2, 2) == MARK
+    assert loaded.layer("Ground").flags[2, 2] == FLIP_H
+    assert len(loaded.collider_entities) == colliders
+    assert loaded.edits() == tmap.edits()  # saved again, the same cells
+    app.render()
+    assert np.array_equal(frame_pixels(app), before)
+
+
+def test_a_bad_edit_in_a_save_is_refused_naming_the_field(tmp_path: Path) -> None:
+    from kge import load_game
+    from kge.scenefile import SceneFileError
+
+    write_level(tmp_path, np.zeros((8, 10), np.int64))
+    for edit, why in ((
+        '["Ground", 99, 0, 1]', "col must be an int in"), ('["Ground", 0, 0]', "must be \\[layer"),
+        ('["Sky", 0, 0, 1]', "Sky"),
+    ):  # fmt: skip
+        (tmp_path / "save.toml").write_text(
+            'format = 1\nkind = "save"\nname = "s"\nnext_id = 1\n\n[[tilemap]]\n'
+            f'source = "level.tmx"\nedits = [{edit}]\n'
+        )
+        app = App(lambda world: None, headless=True)
+        try:
+            with pytest.raises(SceneFileError, match=f"edits.*{why}"):
+                app.restore(load_game(tmp_path / "save.toml"))
+            assert maps_in(app.world).maps == []  # the running scene is left as it was
+        finally:
+            app.close()
