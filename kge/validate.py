@@ -35,14 +35,27 @@ def _label(owner: str, field: str) -> str:
 
 
 def number(value: Any, owner: str, field: str) -> float:
-    """Return ``value`` as a float, refusing bools, strings and other non-numbers."""
+    """Return ``value`` as a float, refusing bools, strings and other non-numbers.
+
+    numpy's real scalars (``np.float32(2.5)``, ``np.int64(3)``) are numbers; its
+    ``np.bool_`` is refused like ``True``, and complex numbers of any kind (even with
+    a zero imaginary part) are not real numbers.
+
+    >>> import numpy as np
+    >>> number(np.float32(2.5), "Transform", "x")
+    2.5
+    >>> number(np.bool_(True), "Transform", "x")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ComponentTypeError: Transform.x must be a number, got bool np.True_
+    """
     if type(value) is float:
         return value
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         try:
             import numpy as np  # numpy scalars are common in game code
 
-            if isinstance(value, np.generic) and np.isreal(value):
+            if isinstance(value, (np.floating, np.integer)):
                 return float(value)
         except ImportError:  # pragma: no cover - numpy is a dependency
             pass

@@ -12,6 +12,10 @@ previous step's pose for smooth motion.
 Traceback (most recent call last):
 ...
 kge.errors.ValidationError: Transform.x must be finite, got nan
+>>> t.position = (1.0, 2.0, 3.0)
+Traceback (most recent call last):
+...
+kge.errors.ValidationError: Transform.position must be an (x, y) pair, got (1.0, 2.0, 3.0)
 """
 
 from __future__ import annotations
@@ -20,7 +24,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from kge.components.tracked import Check, Tracked, fast_init
-from kge.validate import coordinate, finite
+from kge.validate import coordinate, finite, point
 
 
 @fast_init
@@ -40,4 +44,6 @@ class Transform(Tracked):
 
     @position.setter
     def position(self, value: tuple[float, float]) -> None:
-        self.x, self.y = value
+        # both checked before either is written: a bad pair leaves the pose as it was
+        x, y = point(value, "Transform", "position")
+        self.x, self.y = x, y

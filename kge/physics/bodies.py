@@ -193,12 +193,36 @@ def take_out(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Shape]:
     return shapes
 
 
+#: the largest acceleration gravity (scaled) gives a body, m/s^2: a speed gained in one
+#: substep beyond any speed cap, and small enough that squares of speeds stay finite
+#: (a gravity scale of 1e308 made it inf, and the speed cap's inf * 0 a NaN pose)
+MAX_GRAVITY = 1e12
+
+
+def scaled_gravity(gx: float, gy: float, scale: float) -> tuple[float, float]:
+    """``scale * (gx, gy)``, shortened to at most ``MAX_GRAVITY`` (direction kept).
+
+    >>> scaled_gravity(0.0, -10.0, 2.0)
+    (0.0, -20.0)
+    >>> scaled_gravity(0.0, -1e308, 10.0)
+    (0.0, -1000000000000.0)
+    """
+    n = math.hypot(gx, gy)
+    if n == 0.0 or scale == 0.0:
+        return 0.0, 0.0
+    # compare the lengths in logarithms: n * scale itself may overflow to inf
+    if math.log(n) + math.log(abs(scale)) <= math.log(MAX_GRAVITY):
+        return gx * scale, gy * scale
+    k = math.copysign(MAX_GRAVITY, scale) / n
+    return gx * k, gy * k
+
+
 def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float) -> None:
     """velocity_func with gravity scale and Box2D damping (factors precomputed per substep)."""
     if body.body_type != DYNAMIC:
         return
     scale, lin, ang = body.kge_dynamics
-    pymunk.Body.update_velocity(body, gravity * scale, 1.0, dt)
+    pymunk.Body.update_velocity(body, scaled_gravity(gravity.x, gravity.y, scale), 1.0, dt)
     if lin != 1.0:
         body.velocity = body.velocity * lin
     if ang != 1.0:
@@ -235,7 +259,10 @@ def can_sleep(space: pymunk.Space, body: pymunk.Body) -> bool:
 
 
 def sleep_island(
-    space: pymunk.Space, body: pymunk.Body, wants_sleep: Callable[[pymunk.Body], bool]
+    space: pymunk.Space,
+    body: pymunk.Body,
+    wants_sleep: Callable[[pymunk.Body], bool],
+    looked: set[pymunk.Body] | None = None,
 ) -> list[pymunk.Body]:
     """Put ``body`` and the awake bodies connected to it to sleep, when that is safe.
 
@@ -245,12 +272,28 @@ def sleep_island(
     sleeping bodies it touches form one component (which it joins): then the
     parked arbiters and constraints are exactly those of Chipmunk's own sleeping.
     Otherwise nothing sleeps (Box2D's island solver would wake the body again at
-    the next step) and ``[]`` is returned; else the bodies put to sleep.
+    the next step) and ``[]`` is returned; else the bodies put to sleep. ``looked``,
+    when given, collects every body the search looked at (a caller trying many
+    bodies of one island need not search it again).
     """
     if not can_sleep(space, body):
         return []
     island = [body]
     seen = {body}
+    try:
+        return _sleep_island(space, body, wants_sleep, island, seen)
+    finally:
+        if looked is not None:
+            looked.update(seen)
+
+
+def _sleep_island(
+    space: pymunk.Space,
+    body: pymunk.Body,
+    wants_sleep: Callable[[pymunk.Body], bool],
+    island: list[pymunk.Body],
+    seen: set[pymunk.Body],
+) -> list[pymunk.Body]:
     sleepers: list[pymunk.Body] = []
     for member in island:  # grows while it is walked: a breadth-first search
         for other in neighbours(space, member):

@@ -8,8 +8,10 @@ scene can do (DESIGN.md "Performance traps"), so kge registers:
   kinematic pairs never touch; positive filter groups (exact Box2D rule); the
   one-way platform; the user's contact filter; restitution ``max(a, b)`` only
   above the 1 m/s threshold (Chipmunk recomputes the arbiter's restitution from
-  the shapes every step, so a value set here lasts for the impact only); and it
-  records the begin event. ``separate`` records the matching end event.
+  the shapes every step, so a value set here lasts for the impact only); Box2D's
+  time of impact for the pairs that get one (a body that arrived deeper than the
+  linear slop is moved back to it, :mod:`kge.physics.impact`); and it records the
+  begin event. ``separate`` records the matching end event.
 * ``pre_solve`` / ``post_solve`` only on :data:`HOOKED` collision type, given to
   colliders with ``contact_hooks=True``, for the user's per-step hooks.
 
@@ -35,6 +37,7 @@ from pymunk._chipmunk import lib as _lib
 
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
+from kge.physics.impact import Moves, settle, undo
 from kge.validate import boolean, finite, non_negative
 
 if TYPE_CHECKING:
@@ -164,6 +167,15 @@ class ContactRecorder:
         self.pre_solve: list[PreSolveFn] = []
         self.post_solve: list[PostSolveFn] = []
         self.substep = 0
+        #: Box2D's linear slop, where new contacts are settled (kge.physics.impact)
+        self.slop = 0.005
+        #: the current substep's length (s)
+        self.substep_dt = 1.0 / 240.0
+        #: Chipmunk bodies that get a time of impact against dynamic bodies too: bullets,
+        #: and the bodies whose velocity was set from outside the solver this step
+        self.toi: set[Any] = set()
+        #: contacts settled in this substep -> the moves, undone if a hook disables them
+        self._settled: dict[tuple[int, int], Moves] = {}
         self._pre_cache: dict[tuple[int, int], PreSolve] = {}
         self._post_acc: dict[tuple[int, int], list[Any]] = {}
         self._shape_ptrs = (_ffi.new("cpShape *[1]"), _ffi.new("cpShape *[1]"))
@@ -196,10 +208,10 @@ class ContactRecorder:
 
     def _begin(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
         s0, s1 = self._shapes(arb)
-        if (
-            _lib.cpBodyGetType(_lib.cpShapeGetBody(s0._shape)) != _CP_DYNAMIC
-            and _lib.cpBodyGetType(_lib.cpShapeGetBody(s1._shape)) != _CP_DYNAMIC
-        ):
+        b0, b1 = _lib.cpShapeGetBody(s0._shape), _lib.cpShapeGetBody(s1._shape)
+        d0 = _lib.cpBodyGetType(b0) == _CP_DYNAMIC
+        d1 = _lib.cpBodyGetType(b1) == _CP_DYNAMIC
+        if not (d0 or d1):
             arb.process_collision = False  # Box2D: static/kinematic pairs never touch
             return
         cp_arb = arb._arbiter
@@ -228,7 +240,8 @@ class ContactRecorder:
             if not ok:
                 _lib.cpArbiterSetProcessCollision(cp_arb, False)
                 return
-        self.active[(id(sa), id(sb))] = (sa, sb, sensor)
+        key = (id(sa), id(sb))
+        self.active[key] = (sa, sb, sensor)
         ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
         ka, kb = sa.kge_child, sb.kge_child
         events = self.events
@@ -236,6 +249,15 @@ class ContactRecorder:
             events.sensor_begin.append(SensorBegin(ca, cb, ba, bb, ka, kb))
             return
         speed = _approach(sa, sb, normal, points[0])
+        # Box2D's time of impact: a dynamic body against a static or kinematic one, or a
+        # pair with a bullet (here also with a body pushed from outside this step)
+        if sep < -self.slop and (
+            not (d0 and d1) or b0 in self.toi or b1 in self.toi
+        ):
+            moves = settle(cp_arb, self.slop, self.substep_dt)
+            if moves:
+                self._settled[key] = moves
+                normal, points, sep = _geometry(arb, flip)
         ea, eb = sa.kge_material[1], sb.kge_material[1]
         e = ea if ea > eb else eb
         if e > 0.0 and speed > self.velocity_threshold:
@@ -318,6 +340,9 @@ class ContactRecorder:
             self._pre_cache[key] = contact
         if not contact.enabled:
             arb.process_collision = False
+            moves = self._settled.pop(key, None)
+            if moves:  # Box2D drops a time of impact whose contact a hook disables
+                undo(moves)
             return
         arb.process_collision = True
         arb.friction = contact.friction
@@ -353,6 +378,12 @@ class ContactRecorder:
     def begin_step(self) -> None:
         self._pre_cache.clear()
         self._post_acc.clear()
+
+    def begin_substep(self, i: int, h: float) -> None:
+        self.substep = i
+        self.substep_dt = h
+        if self._settled:
+            self._settled.clear()
 
     def deliver_post_solve(self) -> None:
         """Call the post-solve hooks once per hooked contact with the step's impulses."""

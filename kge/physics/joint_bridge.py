@@ -26,11 +26,19 @@ import itertools
 from typing import TYPE_CHECKING, Any
 
 import pymunk
+from pymunk._chipmunk import lib as _lib
 
 from kge.components.tracked import Tracked, bind, unbind
 from kge.physics import joint_api
 from kge.physics.drain import Drain
 from kge.physics.events import JointBroken, JointDestroyed
+
+_DYNAMIC = _lib.CP_BODY_TYPE_DYNAMIC
+
+
+def _awake(h: joint_api.JointHandle) -> bool:
+    """:meth:`JointBridge.asleep` when no body sleeps."""
+    return False
 
 if TYPE_CHECKING:
     from kge.physics.joints.revolute import Revolute
@@ -134,6 +142,9 @@ class JointBridge:
         self._others: list[tuple[int, joint_api.JointHandle]] = []
         self._batch_live = False
         self._others_epoch = -1
+        #: bumped whenever the set of bodies held by per-joint handles may change
+        #: (kge.physics.rest watches them: their passes restart Chipmunk's sleep timer)
+        self.restless_epoch = 0
 
     # -- JointContext ----------------------------------------------------------------
     @property
@@ -254,6 +265,7 @@ class JointBridge:
         by every query instead; every query re-checks the live handle anyway.
         """
         self._rank[entity] = next(self._ranks)
+        self.restless_epoch += 1
         if not h.fixed_ends:
             self._loose.add(entity)
             return
@@ -266,6 +278,7 @@ class JointBridge:
             self._dependents.setdefault(d, set()).add(entity)
 
     def _unindex(self, entity: int) -> None:
+        self.restless_epoch += 1
         self._rank.pop(entity, None)
         self._loose.discard(entity)
         ends, deps = self._indexed.pop(entity, ((), ()))
@@ -378,6 +391,36 @@ class JointBridge:
         self._checked = [(e, h) for e, h in self.ordered() if e not in unbreakable]
         self._others = [(e, h) for e, h in self.ordered() if e not in self._batched]
         self._batch_epoch = self.types_epoch
+        self.restless_epoch += 1
+
+    def restless_bodies(self) -> list[int]:
+        """The body entities of the joints solved one by one (not in the pivot batch):
+        their Python passes write to the bodies every step (kge.physics.rest)."""
+        batched = self._batched
+        return [
+            b for e, h in self.handles.items() if e not in batched for b in (h.body_a, h.body_b)
+        ]
+
+    def _some_asleep(self) -> bool:
+        """Might any body be asleep? (No: no joint needs looking at; one numpy call.)"""
+        poses = self.sim.poses
+        return bool(poses.asleep.any()) or self.sim.poses_stale
+
+    def asleep(self, h: joint_api.JointHandle) -> bool:
+        """Are the dynamic bodies of ``h`` (at least one) all asleep? Box2D does not
+        solve a sleeping island, and a pass that wrote to its bodies would wake them."""
+        bodies = self.sim.bodies
+        found = False
+        for e in (h.body_a, h.body_b):
+            rec = bodies.get(e)
+            if rec is None:
+                continue
+            cb = rec.body._body
+            if _lib.cpBodyGetType(cb) == _DYNAMIC:
+                if not _lib.cpBodyIsSleeping(cb):
+                    return False
+                found = True
+        return found
 
     def _pivot_tolerance(self) -> float:
         """Pivot gaps the position pass leaves alone, m (see ``Revolute.project``)."""
@@ -390,13 +433,16 @@ class JointBridge:
     def before_step(self, dt: float, raw: Any = None) -> None:
         """``raw``: sync-out's bulk read when nothing touched a body since (or None)."""
         ordered = self.ordered()
+        asleep = self.asleep if self._some_asleep() else _awake
         if self._batch_epoch != self.types_epoch:
             for _, h in ordered:
-                h.before_step(dt)
+                if not asleep(h):
+                    h.before_step(dt)
             self._rebuild_batch()
         else:
             for _, h in self._others:
-                h.before_step(dt)
+                if not asleep(h):
+                    h.before_step(dt)
             if (
                 self._batched or len(self._others) >= self.batch_from
             ) and self.sim.mass_epoch != self._others_epoch:
@@ -449,10 +495,11 @@ class JointBridge:
             others = self._box2d_positions(loop, dt, unsettled)
             jolted += [h for _, h in loop + unsettled if h.jolted]
         else:
+            asleep = self.asleep if self._some_asleep() else _awake
             for e, h in loop:
                 comp = self.components.get(e)
-                if comp is None:
-                    continue
+                if comp is None or asleep(h):
+                    continue  # a sleeping joint keeps what it last read
                 h.read_back(comp, dt)
                 if h.jolted:
                     jolted.append(h)
@@ -495,7 +542,7 @@ class JointBridge:
         rest: list[tuple[joint_api.JointHandle, Any]] = []
         for e, h in handles:
             comp = self.components.get(e)
-            if comp is None:
+            if comp is None or self.asleep(h):
                 continue
             if isinstance(h, composite) and h.active and h.suspended is None:
                 live.append((h, comp))

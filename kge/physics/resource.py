@@ -267,6 +267,9 @@ class Physics:
         cbs = [r.body._body for r in recs]  # Chipmunk's setters mapped over the bodies
         set_all(_set_velocity, cbs, zip(vx, vy, strict=True))
         set_all(_set_angular_velocity, cbs, w)
+        push = sim.contact_first.push
+        for rec in recs:
+            push(rec.entity, rec.body)
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)
@@ -300,6 +303,7 @@ class Physics:
         vx, vy, w = flush(vx), flush(vy), flush(w)  # see kge.physics.tiny
         _set_velocity(cb, (vx, vy))
         _set_angular_velocity(cb, w)
+        self._sim.contact_first.push(entity, self._sim.bodies[entity].body)
         rb = self._world.try_get(entity, RigidBody)
         if rb is not None:
             raw_set(rb, "velocity", (vx, vy))
@@ -317,6 +321,7 @@ class Physics:
         if self._force_target(entity, "apply_angular_impulse", wake) is None:
             return
         body.angular_velocity = flush(w)
+        self._sim.contact_first.push(entity, body)
         self._velocity_changed(entity, body)
 
     def _velocity_changed(self, entity: int, body: pymunk.Body) -> None:

@@ -47,10 +47,12 @@ from kge.physics.bodies import (
     wake_neighbours,
 )
 from kge.physics.callback_errors import CallbackErrors
+from kge.physics.contact_first import ContactFirst
 from kge.physics.contacts import HOOKED, ContactRecorder
 from kge.physics.events import PhysicsEvents
 from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
+from kge.physics.rest import RestClock
 from kge.physics.settings import PhysicsSettings
 from kge.physics.shapes import (
     apply_material,
@@ -121,6 +123,16 @@ class Simulation:
         self.forces: dict[int, list[float]] = {}
         self.ccd = _make_ccd(self.space, self.errors)
         self.ccd_dirty: set[int] = set()
+        #: bodies whose velocity came from outside the solver: their first move of the
+        #: next step respects their contacts first (kge.physics.contact_first)
+        self.contact_first = ContactFirst()
+        #: the Chipmunk bodies of bullets (a time of impact against dynamic bodies too)
+        self.bullets: set[Any] = set()
+        #: Box2D's sleep clock for jointed islands (kge.physics.rest)
+        self.rest = RestClock()
+        #: bodies that kept a jointed island awake: their clock is watched too
+        self._rest_blockers: set[int] = set()
+        self._rest_epoch = 0
         self._speed_cap = SpeedCap()
         #: every tracked body was asleep after the last step (and none is kinematic)
         self.all_asleep = False
@@ -240,6 +252,7 @@ class Simulation:
         space.sleep_time_threshold = s.time_to_sleep if s.sleep else math.inf
         space.idle_speed_threshold = s.sleep_speed
         self.recorder.velocity_threshold = s.velocity_threshold
+        self.recorder.slop = s.collision_slop
         if self.ccd is not None:
             self.ccd.max_translation = s.max_translation
             self.ccd.max_rotation = s.max_rotation
@@ -315,6 +328,11 @@ class Simulation:
                     self.pending.add(e)
                 else:
                     self.pending.discard(e)
+                rec = self.bodies.get(e)
+                if rec is not None and rec.implicit:
+                    # its collider may have moved onto a body meanwhile (a field write
+                    # this sync-in applies too late for a collider rebuilt here)
+                    self._restructure_body(e)
         if self.pending:
             self._attach_pending()
         if self.rb_dirty:
@@ -425,6 +443,7 @@ class Simulation:
             rec.in_space = False
         del self.bodies[rec.entity]
         self.no_sleep.discard(rec.entity)
+        self.bullets.discard(rec.body._body)
         self._restale(rec.entity)
 
     def _remove_shapes(self, crec: ColliderRecord) -> None:
@@ -496,7 +515,15 @@ class Simulation:
     def _apply_collider(self, e: int) -> None:
         crec = self.colliders.get(e)
         col = self.world.try_get(e, Collider)
-        if crec is None or col is None:
+        if col is None:
+            return
+        if crec is None:
+            # waiting to be (re)built this sync-in (a new skin rebuilds every collider):
+            # its shapes follow ``col.body`` when they are attached, but an implicit
+            # static body of this entity must still go (moved onto a body) or come
+            rec = self.bodies.get(e)
+            if rec is None or rec.implicit:
+                self._restructure_body(e)  # (nothing to do when it already fits)
             return
         owner = e if col.body is None else col.body
         if owner != crec.owner or crec.geometry is not col.shape:
@@ -600,16 +627,25 @@ class Simulation:
             # __setattr__ of its own (a re-laid scene writes three bodies' velocities)
             cp = body._body
             v = _cp.cpBodyGetVelocity(cp)
+            pushed = False
             if (v.x, v.y) != (vx, vy):
                 _cp.cpBodySetVelocity(cp, (vx, vy))
+                pushed = True
             if _cp.cpBodyGetAngularVelocity(cp) != w:
                 _cp.cpBodySetAngularVelocity(cp, w)
+                pushed = True
+            if pushed and ptype == DYNAMIC:
+                self.contact_first.push(e, body)
             i = self.poses.slot.get(e)
             if i is not None and not self.poses_stale:
                 # sync-out writes what changed since this: the component now holds it
                 self.poses.state[i, 3:6] = (vx, vy, w)
         configure_dynamics(body, rb, self.dt, self.substeps)
         vars(body)["kge_bullet"] = rb.bullet  # (pymunk's __setattr__ adds nothing here)
+        if rb.bullet and ptype == DYNAMIC:
+            self.bullets.add(body._body)
+        else:
+            self.bullets.discard(body._body)
         # a velocity write (a player controller's, every frame) leaves the mass data
         # and continuous collision as they were: rebuilt only when what they are
         # made of changed
@@ -818,8 +854,17 @@ class Simulation:
         # nothing touched a body since the last sync-out: its bulk read is current; or
         # only bulk impulses did, and they kept theirs current
         last = self.poses.raw if idle and unchanged else (fresh if unchanged else None)
-        self.joints.before_step(self.dt, last)
+        first = self.contact_first
+        # velocities set from outside meet their contacts first (Box2D's order)
+        if first.pushed and first.solve(self.space, h):
+            last = None
         rec = self.recorder
+        toi = rec.toi
+        toi.clear()
+        toi.update(first.current)
+        if self.bullets:
+            toi.update(self.bullets)
+        self.joints.before_step(self.dt, last)
         if self.ccd is not None and not quiet:
             self.ccd.before_step(self.dt, n, last)
         forces = self.forces
@@ -832,7 +877,7 @@ class Simulation:
         drain = self.joints.drain
         drained = drain.start(self.space)  # joints starting from zero impulse
         for i in range(n):
-            rec.substep = i
+            rec.begin_substep(i, h)
             if cap is not None and i:
                 cap.before_substep(self.space, known, vmax, wmax)
             if forces:
@@ -843,6 +888,7 @@ class Simulation:
                 drained = []
         forces.clear()
         rec.substep = 0
+        first.end_step()
         self.steps += 1
         self.out_read = None
         self.joints.after_step(self.dt)
@@ -873,6 +919,63 @@ class Simulation:
 
     # -- sync-out -------------------------------------------------------------------------
     def sync_out(self, raw: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+        """Read every moving body once and write the ones that changed to their
+        components (:meth:`_write_out`); then Box2D's sleep rule for jointed islands."""
+        self._write_out(raw)
+        if self.joints.handles:
+            self._rest_check()
+
+    def _rest_check(self) -> None:
+        """Put to sleep the jointed islands whose bodies all rested for time_to_sleep
+        (kge.physics.rest: the joints' passes restart Chipmunk's own timer)."""
+        s = self.settings
+        if not s.sleep or self.poses_stale:
+            return
+        blockers = self._rest_blockers
+        joints = self.joints
+
+        def watched() -> list[int]:
+            return [*joints.restless_bodies(), *blockers]
+
+        poses = self.poses
+        due = self.rest.tick(poses, self.dt, s.sleep_speed, s.time_to_sleep, watched,
+                             joints.restless_epoch + self._rest_epoch)
+        if not due:
+            return
+        looked: set[pymunk.Body] = set()  # searched already this step
+        threshold = s.time_to_sleep - 1e-9
+        blocker: list[pymunk.Body] = []
+
+        def rested(body: pymunk.Body) -> bool:
+            e = getattr(body, "kge_entity", None)
+            i = None if e is None else poses.slot.get(e)
+            ok = (
+                i is not None and e not in self.no_sleep and poses.bodies[i] is body
+                and bool(poses.rest[i] >= threshold)
+            )
+            if not ok:
+                blocker.append(body)
+            return ok
+
+        for i in due:
+            body = poses.bodies[i]
+            e = int(poses.entities[i])
+            blockers.discard(e)
+            if body in looked or e in self.no_sleep or not body.kge_awake:
+                continue
+            blocker.clear()
+            island = sleep_island(self.space, body, rested, looked)
+            for member in island:
+                self._mark_asleep(member.kge_entity)
+            if not island:
+                # wait for what kept it awake to rest as long (its clock is watched)
+                for other in blocker:
+                    other_e = getattr(other, "kge_entity", None)
+                    if other_e is not None and other_e not in blockers:
+                        blockers.add(other_e)
+                        self._rest_epoch += 1
+
+    def _write_out(self, raw: tuple[np.ndarray, np.ndarray] | None = None) -> None:
         """Read every moving body once and write the ones that changed to their components.
 
         ``raw``: a bulk read of the whole space that is still current (the joints'

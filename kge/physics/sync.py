@@ -120,6 +120,10 @@ class PoseTable:
         self.prev = np.empty((0, 3))  # pose one step earlier
         self.asleep = np.empty(0, dtype=bool)
         self.dynamic = np.empty(0, dtype=bool)  # kinematic bodies never sleep in pymunk
+        #: seconds each body has been below Box2D's sleep tolerances (kge.physics.rest)
+        self.rest = np.empty(0)
+        #: bumped whenever slots move, come or go
+        self.epoch = 0
         self.slot: dict[int, int] = {}
         self.bodies: list[pymunk.Body] = []
         self._reader = BodyReader(FIELDS)
@@ -155,6 +159,7 @@ class PoseTable:
         self._mapping = None
         self._sorted = None
         self.raw = None
+        self.epoch += 1
         wanted = {e for e, _ in items}
         n = len(self.ids)
         gone = sorted(slot[e] for e in set(changed) if e in slot and e not in wanted)
@@ -166,7 +171,7 @@ class PoseTable:
         for i in gone:
             del slot[int(ents[i])]
         if holes:
-            for arr in (ids, ents, self.state, self.prev, self.asleep, self.dynamic):
+            for arr in (ids, ents, self.state, self.prev, self.asleep, self.dynamic, self.rest):
                 arr[holes] = arr[movers]
             for h, m in zip(holes, movers, strict=True):
                 bodies[h] = bodies[m]
@@ -176,6 +181,7 @@ class PoseTable:
             self.ids, self.entities = ids[:kept], ents[:kept]
             self.state, self.prev = self.state[:kept], self.prev[:kept]
             self.asleep, self.dynamic = self.asleep[:kept], self.dynamic[:kept]
+            self.rest = self.rest[:kept]
         placed: list[int] = []
         fresh: list[tuple[int, pymunk.Body]] = []
         for e, body in items:
@@ -217,6 +223,7 @@ class PoseTable:
         self.state = np.concatenate([self.state, state])
         self.prev = np.concatenate([self.prev, state[:, :3]])
         self.asleep = np.concatenate([self.asleep, np.array(asleep, dtype=bool)])
+        self.rest = np.concatenate([self.rest, np.zeros(m)])
         self.dynamic = np.concatenate(
             [self.dynamic, np.array([b.body_type == _DYNAMIC for b in new], dtype=bool)]
         )

@@ -218,6 +218,17 @@ def _fixed_dt(world: World) -> float | None:
     return None if t is None else t.fixed_dt
 
 
+#: event list -> (which begin/end pair it belongs to, True for the begin side); hits
+#: are begins without an end
+_PAIRED = {
+    "contact_begin": ("contact", True),
+    "contact_end": ("contact", False),
+    "sensor_begin": ("sensor", True),
+    "sensor_end": ("sensor", False),
+    "hits": (None, True),
+}
+
+
 class PhysicsEventDelivery(System):
     """Deliver the step's physics events: to ``world.events`` and the Behaviour hooks.
 
@@ -227,10 +238,24 @@ class PhysicsEventDelivery(System):
     different) their body entities; a script is called at most once per event.
     The esper events named like the lists (``world.set_handler("contact_begin",
     fn)``) are still sent, deprecated, for one release.
+
+    A begin (contact, sensor, hit) that names an entity despawned earlier in the
+    same delivery (by a hook or handler reacting to an earlier event) is not sent
+    to handlers and hooks: that contact is gone with the entity, as Box2D destroys
+    a body's contacts. Its end, which the despawn brings at the next step, is held
+    back from them too, so they still see every end after its begin. The step's
+    record (``world.events``, the ``PhysicsEvents`` lists) keeps everything.
     """
 
     stage = Stage.FIXED
     in_set = SystemSet.PHYSICS_EVENTS
+
+    #: (pair kind, collider_a, collider_b, child_a, child_b) of begins not delivered
+    _withheld: set[tuple[str, int, int, int, int]]
+
+    def attach(self, world: World) -> None:
+        super().attach(world)
+        self._withheld = set()
 
     def process(self, dt: float) -> None:
         world = self.world
@@ -243,11 +268,28 @@ class PhysicsEventDelivery(System):
         for name, _ in PhysicsEvents.CHANNELS:
             log.extend(EVENT_TYPES[name], getattr(events, name))
         run = runner(world)
+        exists = world.exists
+        withheld = self._withheld
         for name, hook in PhysicsEvents.CHANNELS:
             lst = getattr(events, name)
             if not lst:
                 continue
+            pair, begin = _PAIRED.get(name, (None, False))
             for ev in list(lst):
+                if pair is not None or begin:
+                    key = (pair or "", ev.collider_a, ev.collider_b, ev.child_a, ev.child_b)
+                    if begin:
+                        if not (
+                            exists(ev.collider_a) and exists(ev.collider_b)
+                            and (ev.body_a is None or exists(ev.body_a))
+                            and (ev.body_b is None or exists(ev.body_b))
+                        ):
+                            if pair is not None:
+                                withheld.add(key)
+                            continue
+                    elif withheld and key in withheld:
+                        withheld.discard(key)
+                        continue
                 world.dispatch(name, ev)
                 # no script anywhere (an env's scenes): no hook to look for; asked per
                 # event, as a handler may have added a Behaviour meanwhile

@@ -25,26 +25,36 @@ def gym(installed: ModuleType) -> ModuleType:
 
 @pytest.mark.parametrize("continuous", [False, True])
 def test_lunar_lander_heuristic_lands(gym: ModuleType, continuous: bool) -> None:
+    """The heuristic lands (score >= 200, no crash, the episode ended by the lander
+    falling asleep) on at least 9 of seeds 0-9, as on pybox2d 2.3.10 (9 of 10
+    discrete, 10 of 10 continuous; 46 and 50 of seeds 0-49, kge 45 and 49).
+
+    Which seeds land is chaotic: a landing leg touching down 4 mm higher (kge
+    settles new contacts at the linear slop, as Box2D's time of impact does, where
+    it used to sink first) turns discrete seed 0 from a landing into a slide off
+    the pad, and pybox2d itself misses discrete seed 8. So the test counts.
+    """
     from gymnasium.envs.box2d import lunar_lander
 
     import kge.box2d
 
     assert lunar_lander.Box2D is kge.box2d
     env = gym.make("LunarLander-v3", continuous=continuous)
-    for seed in (0, 1, 2):
+    landed = []
+    for seed in range(10):
         s, _ = env.reset(seed=seed)
-        total, steps = 0.0, 0
+        total = 0.0
         while True:
             s, r, term, trunc, _ = env.step(lunar_lander.heuristic(env.unwrapped, s))
             total += float(r)
-            steps += 1
             if term or trunc:
                 break
-        assert term and not trunc, f"seed {seed}: hit the time limit (never slept)"
-        assert not env.unwrapped.lander.awake, f"seed {seed}"
-        assert not env.unwrapped.game_over, f"seed {seed}: crashed"
-        assert total >= 200.0, f"seed {seed}: {total:.1f}"
+        game = env.unwrapped
+        asleep = not game.lander.awake  # the episode ended the Box2D way
+        if term and not trunc and asleep and not game.game_over and total >= 200.0:
+            landed.append(seed)
     env.close()
+    assert len(landed) >= 9, f"landed on seeds {landed}"
 
 
 def test_bipedal_walker_steps(gym: ModuleType) -> None:

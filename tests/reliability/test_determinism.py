@@ -22,8 +22,10 @@ from kge.testbed.samples.determinism import falling_hinges_hash
 
 ROOT = Path(__file__).resolve().parents[2]
 STEPS = 500
-#: pose hash after 500 steps on x86_64 Linux, CPython 3.11, pymunk 7.3.1
-PINNED = "121507b7926cbfadaaa04deed85b5318c3cb4c89b9b6c158fd81e3ce61a3afa1"
+#: pose hash after 500 steps on x86_64 Linux, CPython 3.11, pymunk 7.3.1 (re-pinned when
+#: new contacts started settling at the linear slop and jointed islands sleeping by
+#: Box2D's clock changed the heap)
+PINNED = "0ec1bfa782297d2d4e022fe81f92df32981406ceda2e65d6a945131ad5d97cbd"
 SUPPORTED = (
     platform.machine() == "x86_64"
     and sys.platform.startswith("linux")

@@ -41,7 +41,7 @@ from kge.physics.joints.positions import (
     project_gap,
     project_limit,
 )
-from kge.physics.joints.rows import Row, hinge_rows, motor_and_limits
+from kge.physics.joints.rows import Row, hinge_rows, motor_and_limits, motor_speed
 
 _get_angle = lib.cpBodyGetAngle
 _get_angular_velocity = lib.cpBodyGetAngularVelocity
@@ -88,7 +88,7 @@ class Revolute(Composite):
             if self.motor is None:
                 self.motor = pymunk.SimpleMotor(self.a, self.b, 0.0)
                 self.add(self.motor, enabled=False)
-            self.motor.rate = -j.motor_speed  # Chipmunk drives w_b - w_a to -rate
+            self.motor.rate = -motor_speed(j.motor_speed)  # Chipmunk drives w_b - w_a to -rate
             self.motor.max_force = j.max_motor_torque
         if self.motor is not None:
             self.enable(self.motor, iterated)

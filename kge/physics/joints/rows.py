@@ -20,6 +20,20 @@ from kge.physics.joints.mechanics import cog_world, cross, inv_mass
 Row = tuple[pymunk.Body, float, float, float]
 #: Box2D's Baumgarte factor, used by the custom position corrections
 BAUMGARTE = 0.2
+#: the fastest a motor drives its joint (m/s or rad/s): far beyond any body's speed
+#: cap (PhysicsSettings allows at most 1e3 m or rad per step, 6e4 per second at 60 Hz),
+#: so it changes no reachable speed, and it keeps a motor asked for 1e308 with 1e308
+#: of force from products that overflow to inf and turn the bodies' poses into NaN
+MOTOR_SPEED_BOUND = 1e6
+
+
+def motor_speed(speed: float) -> float:
+    """``speed`` within ``±MOTOR_SPEED_BOUND``.
+
+    >>> motor_speed(1e308), motor_speed(-3.0)
+    (1000000.0, -3.0)
+    """
+    return min(max(speed, -MOTOR_SPEED_BOUND), MOTOR_SPEED_BOUND)
 
 
 def correction(error: float, max_correction: float, factor: float = BAUMGARTE) -> float:
@@ -150,7 +164,8 @@ def motor_and_limits(
     passes = MOTOR_LIMIT_PASSES if motor is not None and limited else 1
     for _ in range(passes):
         if motor is not None:
-            m_acc += VelocityStep.solve(space, rows, motor[0], h, -cap - m_acc, cap - m_acc)
+            target = motor_speed(motor[0])
+            m_acc += VelocityStep.solve(space, rows, target, h, -cap - m_acc, cap - m_acc)
         if lower is not None:
             c = value - lower
             target = -c / h if c >= 0 else -correction(c, max_correction) / h

@@ -26,6 +26,7 @@ from kge.physics.joints.base import PROJECTED_ERROR_BIAS, Composite
 from kge.physics.joints.line import Line
 from kge.physics.joints.mechanics import point_mass
 from kge.physics.joints.positions import MAX_CORRECTION
+from kge.physics.joints.rows import motor_speed
 
 #: how far up the axis the spring hangs from, m
 SPRING_ARM = 100.0
@@ -62,7 +63,7 @@ class Wheel(Composite):
         self.enable(self.spring, self.freq > 0)
         if self.freq > 0:
             self.tune()
-        self.motor.rate = -j.motor_speed
+        self.motor.rate = -motor_speed(j.motor_speed)
         self.motor.max_force = j.max_motor_torque
         self.enable(self.motor, j.enable_motor)
 
