@@ -4,10 +4,13 @@
   events, update pass), built from a testbed sample.
 * :class:`PymunkRunner`: raw pymunk with kge's exact space settings (substeps,
   iterations, slop, polygon skin, sleeping, sqrt friction). It is the floor:
-  kge can only add cost on top of it.
+  kge can only add cost on top of it. With ``read=True`` ("pymunk+read") it also
+  reads every body's pose out each frame in bulk (``pymunk.batch`` into numpy), the
+  least a game on raw pymunk pays to draw its bodies.
 * :class:`Box2DRunner`: pybox2d 2.3.10 at 8 velocity / 3 position iterations,
-  plus the minimal property-sync loop an ECS engine on pybox2d needs (copy every
-  awake body's pose into plain Python objects each frame), which is what KGE 1.0
+  its ``world.Step`` alone ("box2d"); with ``sync=True`` ("box2d+sync") plus the
+  minimal property-sync loop an ECS engine on pybox2d runs (copy every awake body's
+  pose into plain Python objects each frame, through SWIG), which is what KGE 1.0
   did. Optional: skipped with a message when ``Box2D`` is not installed.
 
 The raw runners build from a :class:`~benchmarks.mirror.SceneSpec` (what the
@@ -24,7 +27,9 @@ import functools
 import math
 from typing import Any
 
+import numpy as np
 import pymunk
+import pymunk.batch
 
 from benchmarks.mirror import BodySpec, SceneSpec, ShapeSpec, describe
 from kge.app import App
@@ -74,8 +79,13 @@ def spec_of(s: Sample, **kwargs: Any) -> SceneSpec:
 
 
 class PymunkRunner:
-    def __init__(self, spec: SceneSpec, events: bool = False) -> None:
+    def __init__(self, spec: SceneSpec, events: bool = False, read: bool = False) -> None:
         st = spec.settings
+        self.read = read
+        self.poses_out = np.zeros((0, 3))
+        self._fields = (pymunk.batch.BodyFields.BODY_ID | pymunk.batch.BodyFields.POSITION
+                        | pymunk.batch.BodyFields.ANGLE)
+        self._buffer = pymunk.batch.Buffer()
         self.substeps = st.substeps
         self.skin = st.polygon_radius
         space = pymunk.Space()
@@ -151,6 +161,10 @@ class PymunkRunner:
         h = DT / self.substeps
         for _ in range(self.substeps):
             self.space.step(h)
+        if self.read:  # one bulk read of every body's id and pose, as numpy columns
+            self._buffer.clear()
+            pymunk.batch.get_space_bodies(self.space, self._fields, self._buffer)
+            self.poses_out = np.frombuffer(self._buffer.float_buf()).reshape(-1, 3)
 
     def poses(self) -> dict[int, Pose]:
         return {
@@ -190,10 +204,11 @@ def box2d_available() -> str | None:
 
 
 class Box2DRunner:
-    def __init__(self, spec: SceneSpec, events: bool = False) -> None:
+    def __init__(self, spec: SceneSpec, events: bool = False, sync: bool = False) -> None:
         import Box2D as b2
 
         self.b2 = b2
+        self.sync = sync
         listener = None
         self.begins = 0
         self.ends = 0
@@ -257,6 +272,8 @@ class Box2DRunner:
 
     def step(self) -> None:
         self.world.Step(DT, 8, 3)
+        if not self.sync:
+            return
         bodies = self.bodies
         for e, pose in self.mirror.items():
             body = bodies[e]

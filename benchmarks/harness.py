@@ -3,8 +3,10 @@
 The rules that make the ratios trustworthy:
 
 * every engine of a (scene, size) pair is built once and then run in
-  *interleaved* blocks (kge, pymunk, box2d, kge, pymunk, ...), so a burst of
-  background load hits all of them alike;
+  *interleaved* blocks, so a burst of background load hits all of them alike; the
+  order of the engines is shuffled for the builds and for every block (seeded, so a
+  run can be repeated), so no engine always runs first after a collection or last
+  in a block;
 * each frame is timed on its own and the report gives the median and the p95
   over all blocks, never a mean that one hiccup can skew;
 * ratios (kge / raw pymunk, kge / pybox2d) are computed from medians measured in
@@ -17,6 +19,7 @@ size to prove the suite still works.
 from __future__ import annotations
 
 import gc
+import random
 import statistics
 import time
 from collections.abc import Callable, Iterable
@@ -85,11 +88,13 @@ def _nothing() -> None:
 
 
 def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
-            progress: Callable[[str], None] = lambda s: None) -> list[Result]:
-    """Time ``engines`` on ``scene`` at ``size`` in interleaved blocks."""
+            progress: Callable[[str], None] = lambda s: None, seed: int = 0) -> list[Result]:
+    """Time ``engines`` on ``scene`` at ``size`` in interleaved blocks, in shuffled order."""
     runners: dict[str, Runner] = {}
     samples: dict[str, list[float]] = {}
-    names = [e for e in engines if e in scene.engines]
+    listed = [e for e in engines if e in scene.engines]
+    rng = random.Random(f"{seed}:{scene.name}:{size}")
+    names = rng.sample(listed, len(listed))
     for name in names:
         progress(f"{scene.name}[{size}] building {name}")
         runner = scene.engines[name](size)
@@ -104,7 +109,7 @@ def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
     gc.disable()  # a collection inside one engine's block would be charged to it alone
     try:
         for b in range(blocks):
-            for name in names:
+            for name in rng.sample(names, len(names)):
                 progress(f"{scene.name}[{size}] block {b + 1}/{blocks} {name}")
                 runner = runners[name]
                 prepare = getattr(runner, "prepare", None) or _nothing
@@ -119,7 +124,7 @@ def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
         if gc_was_enabled:
             gc.enable()
     results = []
-    for name in names:
+    for name in listed:
         runner = runners[name]
         times = samples[name]
         results.append(Result(scene.name, size, name, statistics.median(times),
@@ -129,27 +134,43 @@ def measure(scene: Scene, size: int, engines: Iterable[str], blocks: int = 5,
 
 
 def largest_fitting(points: list[tuple[int, float]], budget: float = FRAME_BUDGET_MS) -> float:
-    """The size whose frame time reaches ``budget``, interpolated (or extrapolated) log-log.
+    """The size whose frame time reaches ``budget``, interpolated log-log between the two
+    measured sizes around it; never extrapolated.
 
-    ``points`` are (size, median ms). Frame time grows roughly as a power of the
-    size, so a straight line in log-log space between the two nearest points is a
-    fair estimate; the report marks extrapolated values.
+    ``points`` are (size, median ms). Frame time grows roughly as a power of the size,
+    so a straight line in log-log space between the two nearest points is a fair
+    estimate inside the measured range. Outside it there is no figure: ``inf`` when
+    even the largest size fits the budget, ``0.0`` when even the smallest does not
+    (the report prints "> N" and "< N").
+
+    >>> round(largest_fitting([(100, 4.0), (1000, 40.0)]))
+    417
+    >>> largest_fitting([(100, 4.0), (1000, 8.0)]), largest_fitting([(100, 20.0)])
+    (inf, 0.0)
     """
     import math
 
     pts = sorted((n, ms) for n, ms in points if n > 0 and ms > 0)
     if not pts:
         return float("nan")
-    if len(pts) == 1:
-        n, ms = pts[0]
-        return n * budget / ms  # assume linear scaling
-    bracket = next(((a, b) for a, b in pairwise(pts) if a[1] <= budget <= b[1]), None)
-    if bracket is None:  # extrapolate from the nearest end
-        bracket = (pts[-2], pts[-1]) if pts[-1][1] < budget else (pts[0], pts[1])
-    (n0, m0), (n1, m1) = bracket
-    if m1 == m0:
-        return float(n1)
+    if pts[-1][1] <= budget:
+        return float("inf")
+    if pts[0][1] > budget:
+        return 0.0
+    (n0, m0), (n1, m1) = next((a, b) for a, b in pairwise(pts) if a[1] <= budget < b[1])
     slope = (math.log(m1) - math.log(m0)) / (math.log(n1) - math.log(n0))
-    if slope <= 0:
-        return float("inf") if m1 < budget else float(n0)
     return math.exp(math.log(n0) + (math.log(budget) - math.log(m0)) / slope)
+
+
+def fitting_label(value: float, sizes: Iterable[int]) -> str:
+    """How the report prints :func:`largest_fitting`: a size, or a bound of the range.
+
+    >>> fitting_label(416.7, [100, 1000]), fitting_label(float("inf"), [100, 1000])
+    ('417', '> 1,000')
+    """
+    ordered = sorted(sizes)
+    if value == float("inf"):
+        return f"> {ordered[-1]:,}"
+    if value == 0.0:
+        return f"< {ordered[0]:,}"
+    return "-" if value != value else f"{value:,.0f}"

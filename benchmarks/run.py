@@ -22,10 +22,14 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from benchmarks.harness import FRAME_BUDGET_MS, Result, largest_fitting, measure
+from benchmarks.harness import FRAME_BUDGET_MS, Result, fitting_label, largest_fitting, measure
 from benchmarks.scenes import scenes, skipped_engines
 
-ENGINES = ("kge", "pymunk", "box2d")
+#: kge and its peers, each peer bare and with what a game on it adds every frame:
+#: raw pymunk, + a bulk pose read-out; pybox2d's step alone, + KGE 1.0's pose-copy loop
+ENGINES = ("kge", "pymunk", "pymunk+read", "box2d", "box2d+sync")
+#: the ratio columns: kge against each peer, from medians of the same run
+PEERS = ENGINES[1:]
 RENDER_SIZES = (1000, 5000, 10000)
 Progress = Callable[[str], None]
 
@@ -65,24 +69,29 @@ def _fmt_q(q: dict[str, float]) -> str:
     return ", ".join(f"{k}={v:g}" for k, v in q.items())
 
 
+def _ratio_cells(results: list[Result], scene: str, size: int) -> list[str]:
+    return [("-" if (v := ratio(results, scene, size, "kge", p)) is None else f"{v:.2f}")
+            for p in PEERS]
+
+
 def table(results: list[Result]) -> str:
+    """The terminal table: one row per engine; the kge row carries kge / each peer."""
     lines = [
-        f"{'scene':<15}{'size':>7}  {'engine':<7}{'median ms':>10}{'p95 ms':>9}"
-        f"{'kge/pymunk':>11}{'kge/box2d':>10}  quality"
+        f"{'scene':<15}{'size':>7}  {'engine':<12}{'median ms':>10}{'p95 ms':>9}"
+        + "".join(f"{'kge/' + p:>17}" for p in PEERS) + "  quality"
     ]
     for r in results:
-        rp = ratio(results, r.scene, r.size, "kge", "pymunk") if r.engine == "kge" else None
-        rb = ratio(results, r.scene, r.size, "kge", "box2d") if r.engine == "kge" else None
+        cells = _ratio_cells(results, r.scene, r.size) if r.engine == "kge" else [""] * len(PEERS)
         lines.append(
-            f"{r.scene:<15}{r.size:>7}  {r.engine:<7}{r.median_ms:>10.3f}{r.p95_ms:>9.3f}"
-            f"{'' if rp is None else f'{rp:.2f}':>11}{'' if rb is None else f'{rb:.2f}':>10}"
-            f"  {_fmt_q(r.quality)}"
+            f"{r.scene:<15}{r.size:>7}  {r.engine:<12}{r.median_ms:>10.3f}{r.p95_ms:>9.3f}"
+            + "".join(f"{c:>17}" for c in cells) + f"  {_fmt_q(r.quality)}"
         )
     return "\n".join(lines)
 
 
 def fits(results: list[Result]) -> dict[str, dict[str, float]]:
-    """Largest size per scene and engine that fits a 16.7 ms frame (interpolated)."""
+    """Largest size per scene and engine that fits a 16.7 ms frame (interpolated between
+    measured sizes; ``inf`` / ``0.0`` when outside them, see :func:`largest_fitting`)."""
     out: dict[str, dict[str, float]] = {}
     for name in sorted({r.scene for r in results}):
         for engine in ENGINES:
@@ -184,7 +193,7 @@ def chart(results: list[Result], path: Path, stamp: str) -> None:
         for g, (scene, size) in enumerate(groups):
             ms = _median(results, scene, size, engine)
             if ms is not None:
-                xs.append(g + (i - 1) * width)
+                xs.append(g + (i - (len(ENGINES) - 1) / 2) * width)
                 ys.append(ms)
         if xs:
             ax.bar(xs, ys, width, label=engine)
@@ -283,9 +292,9 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
            "Versions: " + ", ".join(f"{k} {v}" for k, v in report["versions"].items()) + ".", ""]
     if chart_link:
         out += [f"![kge vs raw pymunk vs pybox2d]({chart_link})", ""]
-    out += ["| scene | size | kge ms (p95) | pymunk ms | pybox2d ms | kge/pymunk | kge/pybox2d "
-            "| quality (kge; pymunk; pybox2d) |",
-            "|---|---:|---:|---:|---:|---:|---:|---|"]
+    out += ["| scene | size | kge ms (p95) | " + " | ".join(f"{p} ms" for p in PEERS) + " | "
+            + " | ".join(f"kge/{p}" for p in PEERS) + " | quality (" + "; ".join(ENGINES)
+            + ") |", "|---|---:|" + "---:|" * (1 + 2 * len(PEERS)) + "---|"]
     for scene, size in dict.fromkeys((r.scene, r.size) for r in res):
         by = {r.engine: r for r in res if (r.scene, r.size) == (scene, size)}
         k = by.get("kge")
@@ -294,18 +303,16 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
             r = by.get(e)
             return "-" if r is None else f"{r.median_ms:.2f}"
 
-        rp, rb = ratio(res, scene, size, "kge", "pymunk"), ratio(res, scene, size, "kge", "box2d")
         q = "; ".join(_fmt_q(by[e].quality) for e in ENGINES if e in by)
         out.append(f"| {scene} | {size} | {'-' if k is None else f'{k.median_ms:.2f} '}"
-                   f"({'-' if k is None else f'{k.p95_ms:.2f}'}) | {ms('pymunk')} | {ms('box2d')}"
-                   f" | {'-' if rp is None else f'{rp:.2f}'} | {'-' if rb is None else f'{rb:.2f}'}"
-                   f" | {q} |")
-    out += ["", "Largest size fitting a 16.7 ms frame (log-log interpolation between sizes, "
-            "extrapolated beyond the largest):", "",
-            "| scene | kge | pymunk | pybox2d |", "|---|---:|---:|---:|"]
+                   f"({'-' if k is None else f'{k.p95_ms:.2f}'}) | "
+                   + " | ".join(ms(p) for p in PEERS) + " | "
+                   + " | ".join(_ratio_cells(res, scene, size)) + f" | {q} |")
+    out += ["", "Largest size fitting a 16.7 ms frame (log-log interpolation between the "
+            "measured sizes; \"> N\" fits at every size measured, \"< N\" at none):", "",
+            "| scene | " + " | ".join(ENGINES) + " |", "|---|" + "---:|" * len(ENGINES)]
     for name, per in report["largest_fitting"].items():
-        out.append(f"| {name} | " + " | ".join(f"{per.get(e, float('nan')):,.0f}"
-                                               for e in ENGINES) + " |")
+        out.append(f"| {name} | " + " | ".join(per.get(e, "-") for e in ENGINES) + " |")
     if report.get("render"):
         out += ["", "Render sync, µs per sprite (median; `kge_sync` = pose blend + bulk "
                 "vertex write, per frame; `record` = history roll + physics adoption, per "
@@ -373,6 +380,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="smallest sizes, few frames")
     parser.add_argument("--scene", action="append", help="only these scenes")
     parser.add_argument("--blocks", type=int, default=5, help="interleaved blocks per engine")
+    parser.add_argument("--seed", type=int, default=0,
+                        help="seed of the shuffled engine order (the report records it)")
     parser.add_argument("--out", default="out", help="folder for bench.json/.png/.md")
     parser.add_argument("--no-chart", action="store_true")
     parser.add_argument("--no-render", action="store_true", help="skip the render sync section")
@@ -396,12 +405,15 @@ def main(argv: list[str] | None = None) -> int:
     for scene in chosen:
         for size in scene.sizes:
             results += measure(scene, size, ENGINES, blocks=2 if args.quick else args.blocks,
-                               progress=progress)
+                               progress=progress, seed=args.seed)
     print(table(results))
     fitting = fits(results)
-    print("\nlargest size fitting a 16.7 ms frame (log-log interpolation):")
-    for name, per in fitting.items():
-        print(f"  {name:<15} " + "  ".join(f"{e} {n:g}" for e, n in per.items()))
+    sizes = {s.name: s.sizes for s in chosen}
+    labels = {name: {e: fitting_label(n, sizes[name]) for e, n in per.items()}
+              for name, per in fitting.items()}
+    print("\nlargest size fitting a 16.7 ms frame (interpolated between measured sizes):")
+    for name, per in labels.items():
+        print(f"  {name:<15} " + "  ".join(f"{e} {n}" for e, n in per.items()))
     skipped = skipped_engines()
     render: dict[int, dict[str, float]] = {}
     if not args.no_render and not args.scene:
@@ -508,7 +520,8 @@ def main(argv: list[str] | None = None) -> int:
         "seconds": round(seconds, 1),
         "quick": args.quick,
         "results": [r.as_dict() for r in results],
-        "largest_fitting": fitting,
+        "largest_fitting": labels,
+        "order_seed": args.seed,
         "render": {str(n): r for n, r in render.items()},
         "animation": {str(n): r for n, r in animation.items()},
         "breakdown": rows,

@@ -12,6 +12,7 @@ sample's script on the raw engines with the helpers the sample itself uses.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections import deque
 from collections.abc import Callable
@@ -56,9 +57,14 @@ class _Measured:
 
 
 def _raw_engines() -> dict[str, RawFactory]:
-    engines: dict[str, RawFactory] = {"pymunk": PymunkRunner}
+    """Each peer twice: bare, and with what a game on it must add every frame."""
+    engines: dict[str, RawFactory] = {
+        "pymunk": PymunkRunner,
+        "pymunk+read": functools.partial(PymunkRunner, read=True),
+    }
     if box2d_available() is None:
         engines["box2d"] = Box2DRunner
+        engines["box2d+sync"] = functools.partial(Box2DRunner, sync=True)
     return engines
 
 

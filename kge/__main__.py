@@ -16,23 +16,56 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 
-DEMO_HELP = """usage: kge demo [testbed options]
+DEMO_HELP = """usage: kge demo [--testbed] [testbed options]
 
-The demo: with a display, the testbed window (every sample, by category); without
-one, a headless showcase that runs every sample for a few simulated seconds, prints a
-line per sample and writes a contact sheet (out/testbed-contact-sheet.png).
+The demo. First Lantern Woods, kge's showcase game (examples/lantern.py, in a source
+checkout): with a display, its window (the testbed opens when you close it); without
+one, it plays itself for ten seconds, prints what it did and saves its last frame
+(out/lantern.png). Then the testbed: with a display, its window (every sample, by
+category); without one, every sample runs for a few simulated seconds, a line per
+sample, and a contact sheet (out/testbed-contact-sheet.png).
 
-Any other option is the testbed's (see `kge testbed --help`), e.g.
+  kge demo --testbed              the testbed only
+Any other option is the testbed's (see `kge testbed --help`) and skips the game, e.g.
   kge demo --sample pyramid       open (or run headless) one sample
   kge demo --showcase --seconds 1 the headless showcase, one second per sample
 """
 
 
+def _showcase_game() -> int:
+    """Lantern Woods: a window, or ten seconds of self-play headless (a line and a frame)."""
+    from kge.app import has_display
+
+    sys.path.insert(0, str(ROOT / "examples"))
+    import lantern
+
+    if has_display():
+        print("kge demo: Lantern Woods, kge's showcase game (close it for the testbed)")
+        app = lantern.make_app()
+        app.run()
+        app.close()
+        return 0
+    app = lantern.make_app(headless=True)
+    run = lantern.play(app, seconds=10.0)
+    out = Path("out") / "lantern.png"
+    app.screenshot(str(out))
+    p = run.last
+    jars = f"{p.jars}/{p.total} jars, {p.time:.1f} s" if p is not None else "not started"
+    print(f"kge demo: Lantern Woods played itself for 10 s ({jars}); last frame {out}")
+    app.close()
+    return 0
+
+
 def _demo(args: list[str]) -> int:
-    """The main job a user runs: the testbed (a window, or the headless showcase)."""
+    """The main job a user runs: the showcase game, then the testbed (a window, or the
+    headless showcase)."""
     if args[:1] in (["-h"], ["--help"]):
         print(DEMO_HELP, end="")
         return 0
+    if args == ["--testbed"]:
+        args = []
+    elif not args and (ROOT / "examples" / "lantern.py").exists():
+        _showcase_game()
     try:
         from kge.testbed.cli import main as testbed_main
     except ImportError:  # a trimmed install without the testbed: the hello-world example

@@ -17,6 +17,9 @@ Animation (sheets, one row of frames each): ``hero_walk.png`` (8 frames of
 32x32, a walk cycle), ``explosion_sheet.png`` (8 frames of 32x32),
 ``thruster.png`` (4 frames of 16x16); ``coin.gif`` (a spinning coin, 8 frames
 with their own delays).
+Lantern Woods (the showcase game, ``examples/lantern.py``): ``lantern_*.png``,
+``lantern_*.wav`` and the Tiled level ``lantern_woods.tmx``, from
+``tools/lantern_art.py``.
 """
 
 from __future__ import annotations
@@ -35,7 +38,9 @@ if str(ROOT) not in sys.path:  # run from a checkout without installing kge
     sys.path.insert(0, str(ROOT))
 
 from kge.sound import SoundData, melody, mix, silence, tone  # noqa: E402
+from kge.testbed import png  # noqa: E402
 from kge.testbed.art import SHEETS, coin_gif  # noqa: E402
+from tools import lantern_art  # noqa: E402
 
 RGBA = tuple[int, int, int, int]
 Pixel = Callable[[float, float], RGBA]
@@ -201,8 +206,14 @@ def main(argv: list[str] | None = None) -> int:
     total = 0
     files: dict[str, bytes] = dict(images())
     files.update({name: snd.to_wav() for name, snd in sounds().items()})
+    files.update({name: snd.to_wav() for name, snd in lantern_art.sounds().items()})
     for name, data in sorted(files.items()):
         (out / name).write_bytes(data)
+    for name, arr in lantern_art.images().items():  # Lantern Woods: numpy art, fast writer
+        png.write(out / name, arr)
+        files[name] = (out / name).read_bytes()
+    files["lantern_woods.tmx"] = lantern_art.write_level(out).read_bytes()
+    for name, data in sorted(files.items()):
         total += len(data)
         print(f"{name:18s} {len(data):7d} bytes")
     print(f"{len(files)} files, {total / 1024:.0f} KiB in {out}")

@@ -17,7 +17,9 @@ from benchmarks.engines import PymunkRunner, box2d_available, spec_of
 from benchmarks.scenes import RawChurn, joint_quality, scenes
 from kge.testbed.registry import get_sample
 
-ENGINES = {"kge", "pymunk"} | ({"box2d"} if box2d_available() is None else set())
+ENGINES = {"kge", "pymunk", "pymunk+read"} | (
+    {"box2d", "box2d+sync"} if box2d_available() is None else set()
+)
 
 
 @pytest.fixture(scope="module")
@@ -42,7 +44,7 @@ def test_every_scene_runs_on_every_engine(report: dict) -> None:
     assert set(seen) == names
     for scene, engines in seen.items():
         # Gymnasium scenes (unit "steps") have no raw-pymunk version: kge.box2d vs pybox2d
-        expected = ENGINES if table[scene].unit != "steps" else ENGINES - {"pymunk"}
+        expected = ENGINES if table[scene].unit != "steps" else ENGINES & {"kge", "box2d"}
         assert engines == expected, f"{scene} ran on {engines}"
 
 
@@ -123,3 +125,75 @@ def test_gymnasium_lander_throughput_is_reported(report: dict) -> None:
     assert "Gymnasium LunarLander, env steps per second" in report["_md"]
     assert "floor: raw pymunk, no kge" in report["_md"] and "load average" in report["_md"]
     assert any(t["target"].startswith("LunarLander steps/s") for t in report["targets"])
+
+
+def test_the_report_has_a_ratio_column_per_peer_and_no_extrapolated_sizes(report: dict) -> None:
+    header = next(line for line in report["_md"].splitlines() if line.startswith("| scene | size"))
+    for peer in ("pymunk", "pymunk+read", "box2d", "box2d+sync"):
+        if peer in ENGINES:
+            assert f"kge/{peer}" in header
+    for per in report["largest_fitting"].values():
+        for label in per.values():  # a size between two measured ones, or a bound
+            assert label[0] in "<>-" or label.replace(",", "").isdigit(), label
+    assert report["order_seed"] == 0
+
+
+def test_pymunk_read_reads_every_body_pose_in_bulk() -> None:
+    spec = spec_of(get_sample("pyramid"), rows=5)
+    runner = PymunkRunner(spec, read=True)
+    for _ in range(3):
+        runner.step()
+    poses = runner.poses_out
+    assert poses.shape == (len(runner.space.bodies), 3)
+    expected = sorted((b.position.x, b.position.y, b.angle) for b in runner.space.bodies)
+    assert sorted(map(tuple, poses.tolist())) == expected
+
+
+@pytest.mark.skipif(box2d_available() is not None, reason="pybox2d is not installed")
+def test_box2d_step_alone_copies_nothing_and_sync_copies_every_awake_pose() -> None:
+    from benchmarks.engines import Box2DRunner
+
+    spec = spec_of(get_sample("pyramid"), rows=5)
+    alone, synced = Box2DRunner(spec), Box2DRunner(spec, sync=True)
+    start = {e: list(p) for e, p in alone.mirror.items()}
+    for _ in range(30):
+        alone.step()
+        synced.step()
+    assert alone.mirror == start
+    for e, pose in synced.mirror.items():
+        body = synced.bodies[e]
+        assert pose == [body.position.x, body.position.y, body.angle]
+    assert synced.mirror != start
+
+
+def test_measure_shuffles_the_engine_order_of_every_block() -> None:
+    from benchmarks.harness import Factory, Scene, measure
+
+    calls: list[str] = []
+
+    class Fake:
+        def __init__(self, name: str) -> None:
+            self.name = name
+
+        def step(self) -> None:
+            calls.append(self.name)
+
+        def quality(self) -> dict[str, float]:
+            return {"q": 1.0}
+
+        def close(self) -> None:
+            pass
+
+    def factory(name: str) -> Factory:
+        return lambda size: Fake(name)
+
+    engines = {n: factory(n) for n in "abcd"}
+    scene = Scene("fake", (1,), engines, warmup=0, frames=40)
+    orders = set()
+    for seed in range(3):
+        calls.clear()
+        measure(scene, 1, "abcd", blocks=40, seed=seed)
+        blocks = [tuple(calls[i : i + 4]) for i in range(0, len(calls), 4)]
+        assert all(sorted(b) == list("abcd") for b in blocks)
+        orders |= set(blocks)
+    assert len(orders) > 6  # not one fixed order (24 are possible)

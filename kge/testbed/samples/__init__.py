@@ -8,6 +8,7 @@ from kge.testbed.samples import (  # noqa: F401
     collision,
     collision_module,
     determinism,
+    games,
     joints,
     large,
     lights,
