@@ -345,6 +345,14 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.particles_lights import game_lines
 
         out += game_lines(report["game"])
+    if report.get("rendering"):
+        from benchmarks.rendering import lines as rendering_lines
+
+        out += rendering_lines(report["rendering"])
+    if report.get("features"):
+        from benchmarks.features import feature_lines
+
+        out += feature_lines(report["features"])
     if report.get("breakdown"):
         from benchmarks.breakdown import PHASES
 
@@ -363,6 +371,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
 
         out += ["", "Gymnasium LunarLander, env steps per second in one process (random "
                 "actions, episodes reset as they end):", "", rl_table(report["rl"], True)]
+    if report.get("characters"):
+        from benchmarks.character import markdown_lines as character_lines
+
+        out += character_lines(report["characters"])
     if report.get("costs"):
         from benchmarks.costs import markdown as costs_markdown
 
@@ -496,6 +508,15 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
+    features: dict[str, Any] = {}
+    if not args.no_game and not args.scene:  # per-frame costs of game-layer features
+        from benchmarks.features import feature_lines, run_features
+
+        features, why = run_features(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        print("\n".join(feature_lines(features)))
     tiles: dict[str, float] = {}
     if not args.scene:
         from benchmarks import tilemap
@@ -505,9 +526,38 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ntile map:", tilemap.table(tiles))
+    drawing: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import rendering
+
+        drawing, why = rendering.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\n".join(rendering.lines(drawing)))
+    characters: dict[str, float] = {}
+    if not args.scene:  # character controllers beside the same bodies as dynamic bodies
+        from benchmarks import character
+
+        characters, why = character.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\ncharacters:", character.table(characters))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
+    if drawing:
+        goals += rendering.targets(drawing)
+    if characters:
+        goals += character.targets(characters)
+    if features:
+        from benchmarks.features import feature_targets
+
+        for f_name, f_value, f_goal, f_unit in feature_targets(features):
+            goals.append({"target": f_name, "value": f_value, "goal": f_goal, "at_most": True,
+                          "unit": f_unit,
+                          "met": None if f_value is None else f_value <= f_goal})  # fmt: skip
     print("\ntargets:")
     for t in goals:
         what, value, goal, met = _fmt_target(t)
@@ -531,6 +581,9 @@ def main(argv: list[str] | None = None) -> int:
         "costs": costs,
         "game": game,
         "tilemap": tiles,
+        "rendering": drawing,
+        "characters": characters,
+        "features": features,
         "targets": goals,
         "skipped": skipped,
     }

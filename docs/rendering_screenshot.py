@@ -1,8 +1,10 @@
-"""Make ``docs/images/rendering.png``: sprites, shapes, text and the physics debug view.
+"""Make the pictures of ``docs/rendering.md``: ``rendering.png`` (sprites, shapes, text
+and the physics debug view) and, from the testbed's rendering samples, ``text.png``,
+``materials.png`` and ``cameras.png``.
 
 Run ``python docs/rendering_screenshot.py`` (headless is fine: it renders
-offscreen through EGL). Everything on screen is built from components; no
-image file is needed, the sprite art is generated with ``kge.render.images``.
+offscreen through EGL, 8 bits per channel). Everything on screen is built from
+components; no image file is needed, the art is generated in code.
 """
 
 from __future__ import annotations
@@ -30,7 +32,14 @@ from kge.components.sprite import Sprite
 from kge.components.text import Text
 from kge.render.images import checker, from_array
 
-OUT = Path(__file__).resolve().parent / "images" / "rendering.png"
+IMAGES = Path(__file__).resolve().parent / "images"
+OUT = IMAGES / "rendering.png"
+#: the pictures of the rendering samples: (file, samples side by side)
+FEATURES = {
+    "text.png": ("text-layout", "rich-text"),
+    "materials.png": ("shader-materials", "blend-modes", "post-effects"),
+    "cameras.png": ("split-screen", "minimap-and-monitor", "camera-rotation"),
+}
 
 
 def crate_art() -> object:
@@ -107,6 +116,40 @@ def main(path: Path = OUT) -> Path:
     return path
 
 
+def sample_frame(slug: str, steps: int = 150) -> np.ndarray:
+    """A testbed sample at 960 x 540, framed as the testbed frames it, shrunk to 640 x 360."""
+    from PIL import Image
+
+    from kge.testbed import get_sample
+    from kge.testbed.showcase import frame_sample, grab
+
+    s = get_sample(slug)
+    app = App(s.setup, headless=True, size=(960, 540))
+    frame_sample(app, s)
+    app.step(steps)
+    pixels = grab(app)
+    app.close()
+    return np.asarray(Image.fromarray(pixels).resize((640, 360), Image.Resampling.LANCZOS))
+
+
+def features(folder: Path = IMAGES) -> list[Path]:
+    """The samples' pictures: each file has its samples side by side, two to a row."""
+    from kge.testbed.png import write
+
+    written = []
+    for name, slugs in FEATURES.items():
+        # the dissolve shader half way through, the others after 2.5 s of game time
+        tiles = [sample_frame(slug, 66 if slug == "shader-materials" else 150) for slug in slugs]
+        while len(tiles) % 2:
+            blank = np.zeros_like(tiles[0])
+            blank[...] = (24, 26, 33, 255)
+            tiles.append(blank)
+        rows = [np.concatenate(tiles[i : i + 2], axis=1) for i in range(0, len(tiles), 2)]
+        write(folder / name, np.concatenate(rows, axis=0))
+        written.append(folder / name)
+    return written
+
+
 if __name__ == "__main__":
-    out = main()
-    print(f"wrote {out} ({out.stat().st_size} bytes)")
+    for out in (main(), *features()):
+        print(f"wrote {out} ({out.stat().st_size} bytes)")

@@ -5,8 +5,9 @@ What it shows, all from files made by code (``tools/make_assets.py``):
 
 * a Tiled level (``assets/lantern_woods.tmx``: ground, one-way planks, decor, objects)
   with three parallax image layers (sky, hills, far trees) behind it;
-* an animated character (a fox sheet cut by tags: idle, run, jump, fall) moved by
-  velocity writes, with coyote time, a jump buffer and a variable jump height;
+* an animated character (a fox sheet cut by tags: idle, run, jump, fall), a
+  ``CharacterBody`` that collides and slides, with coyote time, a jump buffer, a
+  variable jump height and hard landings;
 * night lighting: the fox's lantern casts collider shadows, firefly jars glow;
   fireflies, landing dust and jar sparkles are particles;
 * UI menus (title over the living level, pause, settings with rebinding), fade
@@ -38,6 +39,7 @@ from kge import (
     Blend,
     Box,
     Camera,
+    CharacterBody,
     Clip,
     Collider,
     EmitBox,
@@ -49,7 +51,6 @@ from kge import (
     ParticleBurst,
     ParticleEmitter,
     Physics,
-    RigidBody,
     Script,
     SensorBegin,
     Spawn,
@@ -92,46 +93,27 @@ class Progress:
 
 # -- the fox -----------------------------------------------------------------------------
 class Fox(Script):
-    """Runs, jumps (coyote time, a jump buffer, a variable height), animates, lands in dust."""
-
-    def __init__(self) -> None:
-        self.since_ground = 1.0
-        self.since_jump_press = 1.0
-        self.airborne = False
-        self.fall_speed = 0.0
+    """Runs and jumps through its CharacterBody (which brings coyote time, the jump buffer,
+    the variable height and hard landings), animates, lands in dust."""
 
     def on_fixed_update(self, dt: float) -> None:
         actions = self.world.resource(InputMap)
-        rb, t = self.get(RigidBody), self.transform
-        vx, vy = rb.velocity
-        grounded = vy <= 0.5 and self.on_ground()
-        self.since_ground = 0.0 if grounded else self.since_ground + dt
-        self.since_jump_press = 0.0 if actions.pressed("jump") else self.since_jump_press + dt
-        if grounded and self.airborne:
-            self.land()
-        self.airborne = not grounded
-        self.fall_speed = min(vy, 0.0)
+        body = self.get(CharacterBody)
+        vx, vy = body.velocity
         target = RUN_SPEED * actions.axis("run")
-        accel = ACCEL if grounded else ACCEL / 3
+        accel = ACCEL if body.on_floor else ACCEL / 3
         vx += max(-accel * dt, min(accel * dt, target - vx))
-        if self.since_jump_press < BUFFER and self.since_ground < COYOTE:
-            vy, self.since_ground, self.since_jump_press = JUMP_SPEED, 1.0, 1.0
+        body.velocity = (vx, vy)
+        body.jump = actions.held("jump")
+        if body.jumped:
             self.world.resource(Audio).play("lantern_jump.wav", volume=0.4)
-        elif vy > JUMP_SPEED * CUT and not actions.held("jump"):
-            vy = JUMP_SPEED * CUT  # let go early: a shorter jump
-        rb.velocity = (vx, vy)
-        self.animate(vx, vy, grounded)
-        if t.y < -3.0:
+        if body.hard_landing:
+            t = self.transform
+            self.world.emit(ParticleBurst(self.entity, 14, position=(t.x, t.y - HALF[1])))
+            self.world.resource(Audio).play("lantern_land.wav", volume=0.5)
+        self.animate(vx, vy, body.on_floor)
+        if self.transform.y < -3.0:
             self.fell()
-
-    def on_ground(self) -> bool:
-        t, physics = self.transform, self.world.resource(Physics)
-        feet, keep = t.y - HALF[1], solid(self.world)
-        return any(
-            physics.raycast((t.x + dx, feet + 0.05), (t.x + dx, feet - 0.12), filter=keep)
-            is not None
-            for dx in (-HALF[0] + 0.04, 0.0, HALF[0] - 0.04)
-        )
 
     def animate(self, vx: float, vy: float, grounded: bool) -> None:
         anim, sprite = self.get(Animator), self.get(Sprite)
@@ -143,26 +125,21 @@ class Fox(Script):
             anim.play("run" if abs(vx) > 0.5 else "idle", restart=False)
             anim.speed = max(0.6, abs(vx) / RUN_SPEED * 1.4) if abs(vx) > 0.5 else 1.0
 
-    def land(self) -> None:
-        if self.fall_speed < -7.0:
-            t = self.transform
-            self.world.emit(ParticleBurst(self.entity, 14, position=(t.x, t.y - HALF[1])))
-            self.world.resource(Audio).play("lantern_land.wav", volume=0.5)
-
     def fell(self) -> None:
         progress = self.world.resource(Progress)
         progress.falls += 1
-        t, rb = self.transform, self.get(RigidBody)
+        t = self.transform
         t.x, t.y = progress.checkpoint
-        rb.velocity = (0.0, 0.0)
+        self.get(CharacterBody).velocity = (0.0, 0.0)
 
 
-def solid(world: World) -> Any:
-    """A query filter: colliders that are not sensors (jars and the shrine are)."""
+def solid(world: World, skip: int | None = None) -> Any:
+    """A query filter: colliders that are not sensors (jars and the shrine are), and not
+    ``skip`` (the fox's own)."""
 
     def keep(entity: int) -> bool:
         c = world.try_get(entity, Collider)
-        return c is not None and not c.sensor
+        return entity != skip and c is not None and not c.sensor
 
     return keep
 
@@ -170,8 +147,8 @@ def solid(world: World) -> Any:
 def fox(spawn: Spawn) -> list[Any]:
     clips = Clip.tags("lantern_fox.png", (10, 1), FOX_TAGS, fps=12)
     return [
-        RigidBody(fixed_rotation=True),
-        Collider(Box(*HALF), friction=0.0, density=1.0),
+        CharacterBody(Box(*HALF), jump_speed=JUMP_SPEED, jump_cut=CUT, coyote_time=COYOTE,
+                      jump_buffer=BUFFER, hard_landing_speed=7.0),
         Sprite("lantern_fox.png", size=(1.5, 1.5), anchor=(0.5, 0.78), layer=5),
         Animator(clips, current="idle"),
         Light(radius=8.0, color=(255, 200, 130), intensity=1.6, falloff=1.0, shadows=True,
@@ -358,7 +335,7 @@ def autopilot(app: App) -> None:
     if fox_entity is None:
         return
     t = world.get(fox_entity, Transform)
-    physics, keep = world.resource(Physics), solid(world)
+    physics, keep = world.resource(Physics), solid(world, skip=fox_entity)
     feet = t.y - HALF[1]
     pit = physics.raycast((t.x + 1.2, feet + 0.2), (t.x + 1.2, -2.0), filter=keep) is None
     wall = physics.raycast((t.x, feet + 0.2), (t.x + 1.4, feet + 0.2), filter=keep) is not None
@@ -367,11 +344,12 @@ def autopilot(app: App) -> None:
         for _, (jt, m, _s) in world.query(Transform, MapObject, Sprite) if m.cls == "Jar"
     )
     want = pit or wall or jar_above
-    rising = world.get(fox_entity, RigidBody).velocity[1] >= 2.0
-    if want and not app.input.held(Key.SPACE):
+    body = world.get(fox_entity, CharacterBody)
+    held = app.input.held(Key.SPACE)
+    if want and not held:
         app.input.press(Key.SPACE)
-    elif not want and not rising and app.input.held(Key.SPACE):
-        app.input.release(Key.SPACE)
+    elif held and body.velocity[1] < 2.0 and (body.on_floor or not want):
+        app.input.release(Key.SPACE)  # past the top of the jump, or landed: press again
     if not app.input.held(Key.RIGHT):
         app.input.press(Key.RIGHT)
 

@@ -7,7 +7,13 @@ planks one-way platforms, and the map's objects (player start, coins, door)
 entities through a spawner registry. The door replaces the scene with the next
 level (``app.replace_scene``); the score travels along as a scene argument.
 
-Keys: left/right (or A/D) run, space/up jumps. Run it:
+The art around the tiles is painted in code (``kge.testbed.paint``) and drawn with
+linear filtering: a dusk sky, hills repeated along the level (one sprite), the hero
+and glowing coins. The camera's post stack blooms the coins; a second camera draws
+a minimap of the level in the corner.
+
+Keys: left/right (or A/D) run, space/up jumps (hold for higher), down drops through a
+plank. The player is a ``CharacterBody`` (docs/character.md). Run it:
 ``python examples/platformer.py`` (headless it plays itself and prints a summary).
 """
 
@@ -23,23 +29,26 @@ import kge
 from kge import (
     App,
     Behaviour,
+    Bloom,
     Box,
     Camera,
-    Collider,
+    CharacterBody,
     Input,
     Key,
     MapObject,
-    Physics,
-    RigidBody,
     Script,
     SensorBegin,
     Spawn,
     Spawners,
+    Sprite,
     Text,
+    TextureFilter,
+    TextureWrap,
     Transform,
     World,
+    from_array,
 )
-from kge.components import drawables as draw
+from kge.testbed import paint
 from kge.testbed.samples.tilemaps import levels
 
 WIDTH, HEIGHT = 960, 600
@@ -54,25 +63,16 @@ class Score:
 
 
 class Player(Script):
-    """Runs with the arrows, jumps when something is under its feet."""
+    """Runs with the arrows; jumps while standing (higher the longer space is held);
+    down drops through the plank underfoot."""
 
     def on_fixed_update(self, dt: float) -> None:
         inp = self.world.resource(Input)
-        rb = self.get(RigidBody)
-        vx = RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D))
-        vy = rb.velocity[1]
-        if inp.any_held(Key.SPACE, Key.UP) and self.grounded() and vy <= 0.1:
-            vy = JUMP_SPEED
-        rb.velocity = (vx, vy)
-
-    def grounded(self) -> bool:
-        t = self.transform
-        physics = self.world.resource(Physics)
-        for dx in (-0.35, 0.0, 0.35):
-            hit = physics.raycast((t.x + dx, t.y - 0.45), (t.x + dx, t.y - 0.6))
-            if hit is not None:
-                return True
-        return False
+        body = self.get(CharacterBody)
+        body.velocity = (RUN_SPEED * inp.axis((Key.LEFT, Key.A), (Key.RIGHT, Key.D)),
+                         body.velocity[1])
+        body.jump = inp.any_held(Key.SPACE, Key.UP)
+        body.drop_through = inp.any_held(Key.DOWN, Key.S)
 
 
 class Referee(Script):
@@ -106,23 +106,50 @@ def _hud(world: World) -> None:
         t.text = f"level {score.level}   coins {score.coins}"
 
 
+HERO = from_array(paint.hero(64))
+COIN = from_array(paint.orb(32))
+SKY = from_array(paint.sky(256, 128))
+HILLS = from_array(paint.hills(256, 96))
+
+
 def player_start(spawn: Spawn) -> list[Any]:
     return [
-        RigidBody(fixed_rotation=True),
-        Collider(Box(0.4, 0.45), friction=0.0, density=1.0),
-        draw.Rect(0.8, 0.9, color=(220, 60, 60, 255), layer=1),
+        CharacterBody(Box(0.4, 0.45), jump_speed=JUMP_SPEED),
+        Sprite(HERO, size=(1.0, 1.0), filter=TextureFilter.LINEAR, layer=2),
         Behaviour(Player()),
     ]
 
 
-SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": lambda s: None, "Door": lambda s: None})
+def coin(spawn: Spawn) -> list[Any]:
+    """A glowing orb instead of the tile: bright enough for the camera's bloom."""
+    return [Sprite(COIN, size=(0.8, 0.8), filter=TextureFilter.LINEAR, layer=2)]
+
+
+SPAWNERS = Spawners({"PlayerStart": player_start, "Coin": coin, "Door": lambda s: None})
+
+
+def scenery(world: World, bounds: tuple[float, float, float, float]) -> None:
+    """A painted sky behind the level and hills repeated along it (one sprite)."""
+    x0, y0, x1, y1 = bounds
+    w, h = x1 - x0, y1 - y0
+    world.spawn(Transform((x0 + x1) / 2, (y0 + y1) / 2), Sprite(
+        SKY, size=(w + 20.0, h + 20.0), filter=TextureFilter.LINEAR, layer=-10))  # fmt: skip
+    world.spawn(Transform((x0 + x1) / 2, y0 + 3.0), Sprite(
+        HILLS, size=(w + 20.0, 6.0), filter=TextureFilter.LINEAR, wrap=TextureWrap.REPEAT,
+        tile=(16.0, 6.0), layer=-9))  # fmt: skip
 
 
 def level(world: World, path: Path | None = None, score: Score | None = None) -> None:
     world.insert_resource(score or Score())
     m = kge.load_map(world, path or levels()[0], spawners=SPAWNERS)
     player = next(e for e in m.objects if world.get(e, MapObject).cls == "PlayerStart")
-    world.insert_resource(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds))
+    world.spawn(Camera(pixels_per_meter=40, follow=player, bounds=m.bounds,
+                       post=(Bloom(threshold=0.75, intensity=1.3, radius=10.0),)))  # fmt: skip
+    x0, y0, x1, y1 = m.bounds
+    world.spawn(Camera(center=((x0 + x1) / 2, (y0 + y1) / 2), order=1,  # the minimap
+                       pixels_per_meter=min(220.0 / (x1 - x0), 120.0 / (y1 - y0)),
+                       viewport=(0.74, 0.76, 0.24, 0.22), background=(15, 20, 35)))  # fmt: skip
+    scenery(world, m.bounds)
     world.spawn(Behaviour(Referee()))
     hud = Text("", size=16, color=(255, 255, 255, 255), screen_space=True, anchor=(0.0, 1.0))
     hud.offset = (12.0, float(HEIGHT - 10))

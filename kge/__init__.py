@@ -16,6 +16,8 @@ from kge.animation import (
     AnimationEvent,
     AnimationEvents,
     AnimationFinished,
+    CubicBezier,
+    EaseCurve,
     TweenFinished,
     TweenHandle,
     Tweens,
@@ -54,29 +56,34 @@ from kge.components import (
 from kge.components import drawables as draw
 from kge.components.animation import Animator, Clip, FrameRef, Loop, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
+from kge.components.blend import Blend
 from kge.components.camera import Camera
+from kge.components.character import Capsule, CharacterBody, CharacterMode  # docs/character.md
 from kge.components.debug import DebugDraw
 
 # particles and lights (issue 18): components here, plugins and the resource on first use
-from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
+from kge.components.material import Material, Shader, ShaderWarning
 from kge.components.particles import (
-    Blend,
     BurstOnHit,
     EmitBox,
     EmitCircle,
     EmitCollider,
     EmitLine,
     EmitPoint,
+    ParticleAttractor,
     ParticleBurst,
     ParticleCollision,
     ParticleEmitter,
     ParticleSpace,
 )
+from kge.components.post import CRT, Bloom, ColorGrade, Vignette
+from kge.components.resolution import Resolution, ScaleMode
 from kge.components.shake import CameraShake
-from kge.components.sprite import Sprite
-from kge.components.text import Text
+from kge.components.sprite import Sprite, TextureFilter, TextureWrap
+from kge.components.text import Text, TextAlign, TextOverflow, TextStyle, VerticalAlign
 from kge.components.tilemap import MapObject, TileCollider  # tile maps (docs/tilemaps.md)
-from kge.components.tween import Delay, Parallel, Tween, TweenSequence
+from kge.components.tween import Call, Delay, Parallel, Tween, TweenSequence
 from kge.coroutines import Coroutine, Wait, WaitFrames
 from kge.errors import (
     ComponentTypeError,
@@ -129,14 +136,17 @@ from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import SnapshotError
 from kge.sound import SoundData
 from kge.systems.behaviour import BehaviourPlugin
+from kge.systems.character import CharacterPlugin
 from kge.systems.physics import PhysicsPlugin
 from kge.text.fonts import FontWarning
 from kge.tilemap import Spawn, Spawners, TileMap, TilemapError, TilemapWarning, load_map
 from kge.timestep import FixedTimestep
+from kge.timings import SystemTimings
 from kge.world import World
 
 # isort: split
 # -- UI, scenes and input actions (docs/ui-scenes-input.md) --
+from kge.action_clock import ActionPressed, ActionReleased
 from kge.actions import InputMap, UnknownActionError
 from kge.components.ui import (
     Button,
@@ -166,7 +176,14 @@ if TYPE_CHECKING:
     from kge.audio import Audio, SoundHandle
     from kge.export import ExportError
     from kge.particles import Particles
-    from kge.render.images import PixelImage, checker, from_array, solid
+    from kge.render.images import (
+        ImageRegion,
+        PixelImage,
+        RenderTexture,
+        checker,
+        from_array,
+        solid,
+    )
     from kge.render.sheets import SheetError, SpriteSheet, load_sheet
     from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
@@ -195,6 +212,8 @@ _LAZY = {
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
+    "ImageRegion": "kge.render.images",
+    "RenderTexture": "kge.render.images",
     "checker": "kge.render.images",
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
@@ -240,6 +259,7 @@ def __getattr__(name: str) -> Any:
 __version__ = "2.0.0a1"
 
 __all__ = [
+    "CRT",
     "AnimationEvent",
     "AnimationEvents",
     "AnimationFinished",
@@ -258,24 +278,34 @@ __all__ = [
     "Behaviour",
     "BehaviourPlugin",
     "Blend",
+    "Bloom",
     "BodyType",
     "Box",
     "BurstOnHit",
+    "Call",
     "Camera",
     "CameraShake",
+    "Capsule",
     "Chain",
+    "CharacterBody",
+    "CharacterMode",
+    "CharacterPlugin",
     "Circle",
     "Clip",
     "Collider",
+    "ColorGrade",
     "ComponentTypeError",
     "ContactBegin",
     "ContactEnd",
     "Coroutine",
+    "CubicBezier",
     "DebugDraw",
     "DecoderMissingError",
     "Delay",
+    "DirectionalLight",
     "DisplayError",
     "DistanceJoint",
+    "EaseCurve",
     "Edge",
     "EmitBox",
     "EmitCircle",
@@ -294,6 +324,7 @@ __all__ = [
     "GoldenMismatch",
     "Hit",
     "HookSignatureError",
+    "ImageRegion",
     "ImpactSound",
     "Input",
     "Joint",
@@ -308,6 +339,7 @@ __all__ = [
     "Loop",
     "MapObject",
     "MassData",
+    "Material",
     "MissingComponentError",
     "MissingResourceError",
     "Mod",
@@ -318,6 +350,7 @@ __all__ = [
     "Name",
     "OneWayPlatform",
     "Parallel",
+    "ParticleAttractor",
     "ParticleBurst",
     "ParticleCollision",
     "ParticleEmitter",
@@ -340,11 +373,14 @@ __all__ = [
     "RayHit",
     "RayMode",
     "RenderPlugin",
+    "RenderTexture",
+    "Resolution",
     "RestoreWarning",
     "RevoluteJoint",
     "RigidBody",
     "RopeJoint",
     "ScaffoldError",
+    "ScaleMode",
     "Scene",
     "SceneFile",
     "SceneFileError",
@@ -353,6 +389,8 @@ __all__ = [
     "Script",
     "SensorBegin",
     "SensorEnd",
+    "Shader",
+    "ShaderWarning",
     "ShadowCaster",
     "SheetError",
     "SnapshotError",
@@ -367,6 +405,11 @@ __all__ = [
     "System",
     "SystemSet",
     "Text",
+    "TextAlign",
+    "TextOverflow",
+    "TextStyle",
+    "TextureFilter",
+    "TextureWrap",
     "TileCollider",
     "TileMap",
     "TilemapError",
@@ -381,6 +424,8 @@ __all__ = [
     "TweenSequence",
     "Tweens",
     "ValidationError",
+    "VerticalAlign",
+    "Vignette",
     "Wait",
     "WaitFrames",
     "WeldJoint",
@@ -412,6 +457,8 @@ __all__ = [
 
 # UI, scenes and input actions (docs/ui-scenes-input.md)
 __all__ += [
+    "ActionPressed",
+    "ActionReleased",
     "Button",
     "ButtonClicked",
     "Crossfade",
@@ -441,3 +488,18 @@ __all__ += [
     "Wipe",
     "focus",
 ]
+
+# -- debug tools (docs/debug.md): gizmos, console, live inspector, system timings --
+if TYPE_CHECKING:
+    from kge.debug import Console, ConsoleError, DebugPlugin, Gizmos, Inspector
+
+_LAZY.update(
+    {
+        "Console": "kge.debug",
+        "ConsoleError": "kge.debug",
+        "DebugPlugin": "kge.debug",
+        "Gizmos": "kge.debug",
+        "Inspector": "kge.debug",
+    }
+)
+__all__ += ["Console", "ConsoleError", "DebugPlugin", "Gizmos", "Inspector", "SystemTimings"]

@@ -7,12 +7,15 @@ scenes, as the ``InputMap`` resource (``app.actions``).
 
 Bindings are written as short strings, so they save and load as plain data:
 
-=================  =====================================================
-``"key:SPACE"``    a key, by its :class:`kge.keys.Key` name (or a key code int)
-``"mouse:LEFT"``   a mouse button (LEFT, MIDDLE, RIGHT)
-``"pad:a"``        a gamepad button on any pad; ``"pad1:a"`` on pad 1 only
-``"pad:leftx"``    a gamepad axis (only in axes); ``"pad:lefty"`` is up-positive
-=================  =====================================================
+=====================  =====================================================
+``"key:SPACE"``        a key, by its :class:`kge.keys.Key` name (or a key code int)
+``"key:CTRL+S"``       a chord: the key while CTRL is held (CTRL, SHIFT, ALT,
+                       META, COMMAND; either side; ``"key:CTRL+SHIFT+Z"``)
+``"mouse:LEFT"``       a mouse button (LEFT, MIDDLE, RIGHT); ``"mouse:SHIFT+LEFT"``
+``"pad:a"``            a gamepad button on any pad; ``"pad1:a"`` on pad 1 only
+``"pad:lefttrigger"``  a trigger as a button: down past 0.5, up again under 0.4
+``"pad:leftx"``        a gamepad axis (only in axes); ``"pad:lefty"`` is up-positive
+=====================  =====================================================
 
 >>> from kge.input import Input
 >>> from kge.keys import Key
@@ -29,7 +32,9 @@ Bindings are written as short strings, so they save and load as plain data:
 {'jump': ['key:SPACE', 'pad:a']}
 
 Every query reads :class:`~kge.input.Input`, so action edges follow its rule: once
-per frame for update code, once per fixed step for fixed-step code.
+per frame for update code, once per fixed step for fixed-step code. What needs a
+clock (``held_for``, ``double_tapped``, ``buffered``, combos, the ``ActionPressed``
+and ``ActionReleased`` events and ``on_pressed`` hooks) is in :mod:`kge.action_clock`.
 """
 
 from __future__ import annotations
@@ -42,6 +47,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from kge.action_clock import BUFFER_WINDOW, ActionClock, Combo, Hook, check_window
 from kge.errors import KgeError, ValidationError
 from kge.input import PAD_AXES, PAD_BUTTONS, Input
 from kge.keys import Key, Mouse, key_name
@@ -58,6 +64,14 @@ class UnknownActionError(KgeError, KeyError):
 
 _KEY_CODES: dict[str, int] = {n: v for n, v in vars(Key).items() if not n.startswith("__")}
 _MOUSE_CODES: dict[str, int] = {"LEFT": Mouse.LEFT, "MIDDLE": Mouse.MIDDLE, "RIGHT": Mouse.RIGHT}
+#: chord modifiers, in the order a binding string names them: (left key, right key)
+MODIFIERS: dict[str, tuple[int, int]] = {
+    "CTRL": (Key.LCTRL, Key.RCTRL),
+    "SHIFT": (Key.LSHIFT, Key.RSHIFT),
+    "ALT": (Key.LALT, Key.RALT),
+    "META": (Key.LMETA, Key.RMETA),
+    "COMMAND": (Key.LCOMMAND, Key.RCOMMAND),
+}
 
 
 @dataclass(slots=True, frozen=True)
@@ -67,14 +81,32 @@ class Binding:
     kind: str
     code: int | str
     pad: int | None = None  #: gamepad index, None for any pad
+    mods: tuple[str, ...] = ()  #: chord modifiers held with a key or mouse button
 
     def __str__(self) -> str:
+        chord = "".join(f"{m}+" for m in self.mods)
         if self.kind == "key":
-            return f"key:{key_name(int(self.code))}"
+            return f"key:{chord}{key_name(int(self.code))}"
         if self.kind == "mouse":
             name = next(n for n, v in _MOUSE_CODES.items() if v == self.code)
-            return f"mouse:{name}"
+            return f"mouse:{chord}{name}"
         return f"pad{'' if self.pad is None else self.pad}:{self.code}"
+
+
+def _chord(value: str, kind: str, name: str) -> tuple[tuple[str, ...], str]:
+    """``"CTRL+SHIFT+S"`` -> (("CTRL", "SHIFT"), "S"); modifiers checked and ordered."""
+    *mods, last = name.split("+")
+    seen = []
+    for m in mods:
+        if m.upper() not in MODIFIERS:
+            raise ValidationError(
+                f"binding {value!r}: unknown modifier {m!r}; modifiers are "
+                f"{', '.join(MODIFIERS)} (as in 'key:CTRL+S')"
+            )
+        seen.append(m.upper())
+    if not last:
+        raise ValidationError(f"binding {value!r}: a chord ends with a {kind} ('key:CTRL+S')")
+    return tuple(m for m in MODIFIERS if m in seen), last
 
 
 def parse_binding(value: BindingLike | Binding, *, axis: bool = False) -> Binding:
@@ -94,6 +126,9 @@ def parse_binding(value: BindingLike | Binding, *, axis: bool = False) -> Bindin
         raise ValidationError(
             f"binding {value!r} must look like 'key:SPACE', 'mouse:LEFT', 'pad:a' or 'pad:leftx'"
         )
+    mods: tuple[str, ...] = ()
+    if kind in ("key", "mouse") and "+" in name:
+        mods, name = _chord(value, kind, name)
     if kind == "key":
         code = _KEY_CODES.get(name.upper() if len(name) > 1 or name.isalpha() else name)
         if code is None:
@@ -102,11 +137,11 @@ def parse_binding(value: BindingLike | Binding, *, axis: bool = False) -> Bindin
             near = difflib.get_close_matches(name.upper(), _KEY_CODES, n=1)
             hint = f" (did you mean {near[0]!r}?)" if near else ""
             raise ValidationError(f"binding {value!r}: unknown key {name!r}{hint}")
-        return Binding("key", code)
+        return Binding("key", code, mods=mods)
     if kind == "mouse":
         if name.upper() not in _MOUSE_CODES:
             raise ValidationError(f"binding {value!r}: mouse buttons are LEFT, MIDDLE, RIGHT")
-        return Binding("mouse", _MOUSE_CODES[name.upper()])
+        return Binding("mouse", _MOUSE_CODES[name.upper()], mods=mods)
     if kind.startswith("pad"):
         index = kind[3:]
         if index and not index.isdigit():
@@ -140,7 +175,8 @@ class InputMap:
         self.input = input
         self._actions: dict[str, tuple[Binding, ...]] = {}
         self._axes: dict[str, AxisBinding] = {}
-        self._vectors: dict[str, tuple[str, str]] = {}
+        self._vectors: dict[str, tuple[str, str, float | None]] = {}
+        self.clock = ActionClock()  #: holds, taps, buffers and combos (kge.action_clock)
 
     # -- binding ------------------------------------------------------------------------
     def bind(self, action: str, *bindings: BindingLike | Binding) -> None:
@@ -215,12 +251,43 @@ class InputMap:
             bool(invert),
         )
 
-    def bind_vector(self, vector: str, x_axis: str, y_axis: str) -> None:
-        """A 2D vector made of two axes (its length is capped at 1)."""
+    def bind_vector(
+        self, vector: str, x_axis: str, y_axis: str, *, dead_zone: float | None = None
+    ) -> None:
+        """A 2D vector made of two axes (its length is capped at 1).
+
+        With ``dead_zone`` the sticks' dead zone is *radial*: the stick's (x, y) is
+        zero inside a circle of that radius and rescaled outside it, so a diagonal
+        push is not cut to a cross shape as per-axis dead zones cut it; the axes'
+        own dead zones are then not used for their sticks.
+        """
         name = _name(vector, "vector")
         self._require(x_axis, self._axes, "axis")
         self._require(y_axis, self._axes, "axis")
-        self._vectors[name] = (x_axis, y_axis)
+        dz = None
+        if dead_zone is not None:
+            dz = float(dead_zone)
+            if not 0.0 <= dz < 1.0:
+                raise ValidationError(
+                    f"vector {vector!r}: dead_zone must be in [0, 1), got {dead_zone!r}"
+                )
+        self._vectors[name] = (x_axis, y_axis, dz)
+
+    def bind_combo(self, combo: str, *steps: str, within: float = 0.5) -> None:
+        """A combo: the actions ``steps`` pressed in this order, all within ``within``
+        seconds (presses of other actions in between do not break it). Read it with
+        :meth:`combo` or as an ``ActionPressed`` event named ``combo``."""
+        name = _name(combo, "combo")
+        if len(steps) < 2:
+            raise ValidationError(f"combo {combo!r}: needs two or more actions, got {steps!r}")
+        for s in steps:
+            self._require(s, self._actions, "action")
+        if name in self._actions:
+            raise ValidationError(f"combo {combo!r}: an action has that name")
+        w = check_window(within, f"combo {combo!r}: within")
+        if w <= 0:
+            raise ValidationError(f"combo {combo!r}: within must be > 0, got {within!r}")
+        self.clock.combos[name] = Combo(tuple(steps), w)
 
     # -- queries -------------------------------------------------------------------------
     def pressed(self, action: str) -> bool:
@@ -239,9 +306,7 @@ class InputMap:
     def axis(self, axis: str) -> float:
         """The axis value in [-1, 1]: buttons give ±1, sticks are rescaled past the dead zone."""
         a = self._require(axis, self._axes, "axis")
-        value = float(any(self._edge(b, "held") for b in a.positive)) - float(
-            any(self._edge(b, "held") for b in a.negative)
-        )
+        value = self._buttons_value(a)
         for s in a.sticks:
             raw = self.input.pad_axis_value(str(s.code), s.pad)
             mag = abs(raw)
@@ -250,15 +315,109 @@ class InputMap:
         value = max(-1.0, min(1.0, value))
         return -value if a.invert else value
 
+    def _buttons_value(self, a: AxisBinding) -> float:
+        return float(any(self._edge(b, "held") for b in a.positive)) - float(
+            any(self._edge(b, "held") for b in a.negative)
+        )
+
+    def _stick_raw(self, a: AxisBinding) -> float:
+        return max(-1.0, min(1.0, sum(
+            self.input.pad_axis_value(str(s.code), s.pad) for s in a.sticks
+        )))  # fmt: skip
+
     def vector(self, vector: str) -> tuple[float, float]:
         """``(axis(x), axis(y))`` with its length capped at 1 (diagonals are not faster)."""
-        xa, ya = self._require(vector, self._vectors, "vector")
-        x, y = self.axis(xa), self.axis(ya)
+        xa, ya, dz = self._require(vector, self._vectors, "vector")
+        if dz is None:
+            x, y = self.axis(xa), self.axis(ya)
+        else:
+            ax, ay = self._axes[xa], self._axes[ya]
+            sx, sy = self._stick_raw(ax), self._stick_raw(ay)
+            mag = min(math.hypot(sx, sy), 1.0)
+            scale = 0.0 if mag <= dz else (mag - dz) / (1.0 - dz) / math.hypot(sx, sy)
+            x = max(-1.0, min(1.0, self._buttons_value(ax) + sx * scale))
+            y = max(-1.0, min(1.0, self._buttons_value(ay) + sy * scale))
+            x, y = (-x if ax.invert else x), (-y if ay.invert else y)
         n = math.hypot(x, y)
         return (x / n, y / n) if n > 1.0 else (x, y)
 
+    # -- over time (kge.action_clock) ----------------------------------------------------
+    def update(self, dt: float) -> None:
+        """Advance the action clock by ``dt`` real seconds and record this frame's edges
+        (the App calls it at the start of every frame)."""
+        self.clock.update(dt, list(self._actions), self._edge_of)
+
+    def _edge_of(self, action: str, which: str) -> bool:
+        return self._any(action, which)
+
+    @property
+    def frame_events(self) -> list[Any]:
+        """This frame's ``ActionPressed`` / ``ActionReleased`` events, in order."""
+        return list(self.clock.events)
+
+    def held_for(self, action: str) -> float:
+        """How long ``action`` has been held, in real seconds (0 when it is up)."""
+        self._require(action, self._actions, "action")
+        return self.clock.held_for(action)
+
+    def double_tapped(self, action: str) -> bool:
+        """Was ``action`` pressed this frame within ``tap_window`` of its last press?"""
+        self._require(action, self._actions, "action")
+        st = self.clock.states.get(action)
+        return action in self.clock.pressed_now and st is not None and st.taps >= 2
+
+    @property
+    def tap_window(self) -> float:
+        """Seconds between two presses that make a double tap (0.3 by default)."""
+        return self.clock.tap_window
+
+    @tap_window.setter
+    def tap_window(self, value: float) -> None:
+        self.clock.tap_window = check_window(value, "InputMap.tap_window")
+
+    def buffered(self, action: str, window: float = BUFFER_WINDOW) -> bool:
+        """Was ``action`` pressed in the last ``window`` seconds and not yet consumed?
+        (Jump pressed just before landing still jumps: check it where the jump can
+        happen, then :meth:`consume` it.)"""
+        self._require(action, self._actions, "action")
+        return self.clock.buffered(action, check_window(window, "InputMap.buffered: window"))
+
+    def consume(self, action: str) -> None:
+        """Use up the buffered press of ``action``."""
+        self._require(action, self._actions, "action")
+        self.clock.consume(action)
+
+    def combo(self, combo: str) -> bool:
+        """Was the combo completed this frame?"""
+        self._require(combo, self.clock.combos, "combo")
+        return combo in self.clock.completed
+
+    def on_pressed(self, action: str, fn: Hook) -> Hook:
+        """Call ``fn(event)`` each time ``action`` (or a combo) goes down; returns ``fn``."""
+        self._hookable(action)
+        self.clock.add_hook(action, "pressed", fn)
+        return fn
+
+    def on_released(self, action: str, fn: Hook) -> Hook:
+        """Call ``fn(event)`` each time ``action`` goes up (``event.held_for`` seconds)."""
+        self._require(action, self._actions, "action")
+        self.clock.add_hook(action, "released", fn)
+        return fn
+
+    def remove_hook(self, action: str, fn: Hook) -> None:
+        for which in ("pressed", "released"):
+            self.clock.remove_hook(action, which, fn)
+
+    def _hookable(self, action: str) -> None:
+        if action not in self.clock.combos:
+            self._require(action, self._actions, "action")
+
     def _edge(self, b: Binding, which: str) -> bool:
         inp = self.input
+        if b.mods and which != "released" and not all(
+            inp.any_held(*MODIFIERS[m]) for m in b.mods
+        ):
+            return False
         if b.kind == "key":
             code = int(b.code)
             return {"held": inp.held, "pressed": inp.pressed, "released": inp.released}[which](code)
@@ -297,13 +456,25 @@ class InputMap:
                 }
                 for n, a in self._axes.items()
             },
-            "vectors": {n: list(v) for n, v in self._vectors.items()},
+            "vectors": {
+                n: [x, y] if dz is None else [x, y, dz] for n, (x, y, dz) in self._vectors.items()
+            },
+            "combos": {
+                n: {"steps": list(c.steps), "within": c.within}
+                for n, c in self.clock.combos.items()
+            },
         }
 
     def load_data(self, data: dict[str, Any]) -> None:
         """Replace every binding with ``data``; on any error the map is left unchanged."""
         if not isinstance(data, dict):
             raise ValidationError(f"InputMap data must be a dict, got {type(data).__name__}")
+        unknown = sorted(map(str, set(data) - {"actions", "axes", "vectors", "combos"}))
+        if unknown:
+            raise ValidationError(
+                f"InputMap data has unknown keys {unknown} (it takes actions, axes, vectors, "
+                "combos)"
+            )
         fresh = InputMap(self.input)
         try:
             for action, bs in dict(data.get("actions", {})).items():
@@ -317,24 +488,30 @@ class InputMap:
                     dead_zone=spec.get("dead_zone", 0.2),
                     invert=spec.get("invert", False),
                 )
-            for vec, (xa, ya) in dict(data.get("vectors", {})).items():
-                fresh.bind_vector(vec, xa, ya)
-        except (TypeError, AttributeError, ValueError) as exc:
+            for vec, spec in dict(data.get("vectors", {})).items():
+                xa, ya, *rest = spec
+                fresh.bind_vector(vec, xa, ya, dead_zone=rest[0] if rest else None)
+            for combo, spec in dict(data.get("combos", {})).items():
+                fresh.bind_combo(combo, *spec["steps"], within=spec.get("within", 0.5))
+        except (TypeError, AttributeError, ValueError, KeyError) as exc:
             if isinstance(exc, KgeError):
                 raise
             raise ValidationError(f"InputMap data is malformed: {exc}") from exc
         self._actions, self._axes, self._vectors = fresh._actions, fresh._axes, fresh._vectors
+        self.clock.combos = fresh.clock.combos
 
     def save(self, path: str | os.PathLike[str]) -> None:
         with open(path, "w", encoding="utf-8") as f:
             json.dump(self.to_data(), f, indent=2)
 
     def load(self, path: str | os.PathLike[str]) -> None:
-        with open(path, encoding="utf-8") as f:
-            try:
+        try:
+            with open(path, encoding="utf-8") as f:
                 data = json.load(f)
-            except json.JSONDecodeError as exc:
-                raise ValidationError(f"{os.fspath(path)}: not JSON ({exc})") from exc
+        except json.JSONDecodeError as exc:
+            raise ValidationError(f"{os.fspath(path)}: not JSON ({exc})") from exc
+        except (OSError, UnicodeDecodeError) as exc:
+            raise ValidationError(f"{os.fspath(path)}: cannot read the bindings ({exc})") from exc
         self.load_data(data)
 
 

@@ -40,14 +40,15 @@ from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
 from kge.actions import InputMap
-from kge.components.camera import Camera, active_camera
-from kge.errors import SceneStackError, ValidationError, WorldLockedError
+from kge.components.camera import Camera, active_camera, camera_at
+from kge.components.resolution import canvas_size
+from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
 from kge.host import Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
 from kge.plugin import Plugin, PluginError, PluginLike, resolve
 from kge.plugins import default_plugins
-from kge.scene import Scene, SceneLike, Time, as_scene
+from kge.scene import Scene, SceneLike, Time, as_scene, check_setup_args
 from kge.schedule import Stage, System
 from kge.timestep import FixedTimestep
 from kge.transitions import ActiveTransition, Transition
@@ -123,6 +124,8 @@ class App(Host):
         self._applying = False
         self._closing = False
         self._leaving = 0  #: scenes a replace being made will close once its setup ends
+        self._swap_grows = 0  #: how the pending transition's change grows the stack
+        self._autoloads: dict[type, Any] = {}  #: resources every scene world shares
         self._in_frame = False
         self._running = False
         self.frame_count = 0
@@ -160,16 +163,22 @@ class App(Host):
         return self.timestep.alpha
 
     def screen_to_world(self, point: tuple[float, float]) -> tuple[float, float]:
-        """Window pixels (origin bottom-left) to world metres through the active camera.
+        """Screen pixels (origin bottom-left; design pixels with a ``Resolution``) to world
+        metres, through the camera whose viewport is under the point.
 
-        Live: it always uses the current scene's camera and the current window size,
+        Live: it always uses the current scene's cameras and the current window size,
         so mouse positions are right after a scene change or a resize, headless too.
         """
-        return self._camera().screen_to_world(point, self.size)
+        canvas = self._canvas()
+        cam = camera_at(self.world, point, canvas) if self._stack else None
+        return (cam or _default_camera()).screen_to_world(point, canvas)
 
     def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
-        """World metres to window pixels through the active camera (the inverse)."""
-        return self._camera().world_to_screen(point, self.size)
+        """World metres to screen pixels through the active camera (the inverse)."""
+        return self._camera().world_to_screen(point, self._canvas())
+
+    def _canvas(self) -> tuple[int, int]:
+        return canvas_size(self.world if self._stack else None, self.size)
 
     def _camera(self) -> Camera:
         """The active camera of the current scene, or a default one (shared, never written)."""
@@ -201,22 +210,36 @@ class App(Host):
         return [w for _, w in self._stack]
 
     def push_scene(
-        self, scene: SceneSource, *, overlay: bool = False, run_below: bool = False, **kwargs: Any
+        self,
+        scene: SceneSource,
+        *,
+        overlay: bool = False,
+        run_below: bool = False,
+        transition: Transition | None = None,
+        **kwargs: Any,
     ) -> None:
         """Put ``scene`` on top (the one below pauses); kwargs go to its setup.
 
         ``overlay=True`` draws it over the scene below (a see-through pause menu);
         the scene below stays frozen, or keeps running (without input) when
         ``run_below=True``. Popping returns to it with its state intact.
+        ``transition`` plays over the push as it does for :meth:`replace_scene`
+        (the scene is pushed when the transition is due: a menu that fades in).
         """
         target = _as_scene(scene)
+        check_setup_args(target, kwargs)
         if run_below and not overlay:
-            raise ValueError("push_scene(run_below=True) needs overlay=True")
+            raise ValidationError("push_scene(run_below=True) needs overlay=True")
+        _check_transition(transition, "push_scene")
         keeps_running = run_below if overlay else None
-        self._schedule(+1, lambda: self._push(target, kwargs, overlay=keeps_running))
+        push = lambda: self._push(target, kwargs, overlay=keeps_running)  # noqa: E731
+        if transition is None:
+            self._schedule(+1, push)
+        else:
+            self._schedule(+1, self._transition_to(push, transition, +1))
 
-    def pop_scene(self) -> None:
-        """Close the top scene and resume the one below.
+    def pop_scene(self, *, transition: Transition | None = None) -> None:
+        """Close the top scene and resume the one below (behind ``transition`` if given).
 
         Refused with :class:`~kge.errors.SceneStackError` when it would pop the App's
         last scene (counting the changes already queued): change scene with
@@ -227,7 +250,23 @@ class App(Host):
                 "pop_scene() would leave the App with no scene: use replace_scene() to "
                 "change scene, or app.quit() to stop"
             )
-        self._schedule(-1, self._pop)
+        _check_transition(transition, "pop_scene")
+        if transition is None:
+            self._schedule(-1, self._pop)
+        else:
+            self._schedule(-1, self._transition_to(self._pop, transition, -1))
+
+    def _transition_to(self, change: Callable[[], None], transition: Transition, grows: int
+                       ) -> Callable[[], None]:
+        """An op that starts ``transition``, which makes ``change`` (a push or a pop:
+        the stack ``grows`` by one or shrinks) when it is due."""
+
+        def begin() -> None:
+            self._swap = change
+            self._swap_grows = grows  # a pop is counted by _depth_when_queued until made
+            self.transition = ActiveTransition(transition)  # the newest one wins
+
+        return begin
 
     def replace_scene(
         self, scene: SceneSource, *, transition: Transition | None = None, **kwargs: Any
@@ -242,8 +281,8 @@ class App(Host):
         scene pushed over it meanwhile (a pause menu opened during the fade).
         """
         target = _as_scene(scene)
-        if transition is not None and not isinstance(transition, Transition):
-            raise TypeError(f"transition must be a Transition (Fade(0.4)...), got {transition!r}")
+        check_setup_args(target, kwargs)
+        _check_transition(transition, "replace_scene")
         grows = 0 if self._depth_when_queued() else 1
         if transition is None:
             self._schedule(grows, lambda: self._replace(target, kwargs, None))
@@ -252,6 +291,7 @@ class App(Host):
         def begin() -> None:  # in order with the changes queued before it
             leaving = self._stack[-1][1] if self._stack else None
             self._swap = lambda: self._replace(target, kwargs, leaving)
+            self._swap_grows = 0
             self.transition = ActiveTransition(transition)  # the newest one wins
 
         self._schedule(0, begin)
@@ -259,7 +299,9 @@ class App(Host):
     def _depth_when_queued(self) -> int:
         """How many scenes the stack will hold once the queued changes are made."""
         queued = sum(grows for grows, _ in self._scene_ops)
-        return len(self._stack) - self._leaving + queued
+        # a pending pop counts now; a pending push only once made (nothing pops it before)
+        pending = min(self._swap_grows, 0) if self._swap is not None else 0
+        return len(self._stack) - self._leaving + queued + pending
 
     def _advance_transition(self, real_dt: float) -> None:
         """Play the running transition: change the scene when due, end it when done."""
@@ -270,8 +312,8 @@ class App(Host):
         swap = self._swap
         if active.swap_due and swap is not None:
             active.swapped = True
-            self._swap = None
-            self._schedule(0, swap)
+            self._swap, grows, self._swap_grows = None, self._swap_grows, 0
+            self._schedule(grows, swap)
         if active.done:
             self.transition = None
 
@@ -346,6 +388,7 @@ class App(Host):
         if overlay is not None:
             self._overlays[world] = overlay
         self.input.reset()
+        self.actions.clock.reset()
         try:
             scene.setup(world, **kwargs)
             world.flush()
@@ -402,11 +445,41 @@ class App(Host):
             raise SceneStackError("pop_scene() would leave the App with no scene")
         self._close_top()
         self.input.reset()
+        self.actions.clock.reset()
         scene, world = self._stack[-1]
         scene.on_resume(world)
 
+    # -- autoloads ------------------------------------------------------------------------
+    def autoload(self, resource: Any, *, as_type: type | None = None) -> Any:
+        """Share ``resource`` with every scene, now and later: the same object is the
+        resource of each scene world, so what it holds (a score, settings, a save slot,
+        an inventory) survives scene changes (Godot's autoloads). One of a type
+        replaces the last. Returns ``resource``.
+        """
+        key = as_type or type(resource)
+        if isinstance(resource, type):
+            raise ComponentTypeError(
+                f"App.autoload: expected an instance, got the class {resource.__name__} "
+                f"(write app.autoload({resource.__name__}(...)))"
+            )
+        if issubclass(key, _APP_OWNED) or isinstance(resource, (World, *_APP_OWNED)):
+            raise ValidationError(
+                f"App.autoload: {key.__name__} is the App's own; every scene has it already"
+            )
+        for world in self.worlds:  # checked (as_type) before anything is stored
+            world.insert_resource(resource, as_type=as_type)
+        self._autoloads[key] = resource
+        return resource
+
+    @property
+    def autoloads(self) -> dict[type, Any]:
+        """The shared resources, by type (a copy)."""
+        return dict(self._autoloads)
+
     def _make_world(self, scene: Scene) -> World:
         world = World(name=scene.name or type(scene).__name__)
+        for key, resource in self._autoloads.items():  # before plugins and setup see it
+            world.insert_resource(resource, as_type=key)
         world.insert_resource(self.input)
         world.insert_resource(self.actions)
         world.insert_resource(Time(self.fixed_dt))
@@ -445,6 +518,8 @@ class App(Host):
         def op() -> None:
             scene, old = self._stack.pop()
             carry_over(old, world)
+            for key, resource in self._autoloads.items():  # shared, never restored
+                world.insert_resource(resource, as_type=key)
             old.close()
             self._stack.append((scene, world))
 
@@ -485,7 +560,7 @@ class App(Host):
         if count < 0:
             raise ValidationError(f"App.step.n must be >= 0, got {count}")
         for _ in range(count):
-            self._frame(steps=1, game_dt=self.fixed_dt)
+            self._frame(steps=1, game_dt=self.fixed_dt, real_dt=self.fixed_dt)
             self._advance_transition(self.fixed_dt)
 
     def advance(self, frame_dt: float) -> int:
@@ -498,8 +573,9 @@ class App(Host):
         game_dt = self.timestep.frame_time(frame_dt)
         if self.paused and steps:
             game_dt = self.fixed_dt * steps  # a single step also advances update time
-        self._frame(steps, game_dt)
-        self._advance_transition(min(max(frame_dt, 0.0), self.timestep.max_frame_dt))
+        real_dt = min(max(frame_dt, 0.0), self.timestep.max_frame_dt)
+        self._frame(steps, game_dt, real_dt)
+        self._advance_transition(real_dt)
         return steps
 
     def _not_reentrant(self, op: str) -> None:
@@ -511,12 +587,13 @@ class App(Host):
                 "callback): schedule the work for the next frame instead"
             )
 
-    def _frame(self, steps: int, game_dt: float) -> None:
+    def _frame(self, steps: int, game_dt: float, real_dt: float) -> None:
         if not self._stack:
             raise RuntimeError("the App has no scene to run")
         self._in_frame = True
         try:
             self.input.refresh_world_position()
+            self.actions.update(real_dt)  # holds, taps, buffers, combos: real time
             top, *below = self._running_worlds()
             self._run_world(top, steps, game_dt, with_input=True)
             for world in below:
@@ -533,7 +610,8 @@ class App(Host):
         time = world.resource(Time)
         inp, schedule, log = self.input, world.schedule, world.eventlog
         log.begin_frame()
-        if with_input:  # input hooks and the UI
+        if with_input:  # action events and hooks, input hooks and the UI
+            self.actions.clock.deliver(world.emit)
             schedule.run(Stage.INPUT, game_dt)
         for _ in range(steps):
             if self._scene_ops:
@@ -551,6 +629,7 @@ class App(Host):
         schedule.run(Stage.UPDATE, game_dt)
         schedule.run(Stage.LATE, game_dt)
         log.end_frame()
+        schedule.end_frame()
 
     def _run_scene_ops(self) -> None:
         """Make the queued scene changes in order; one asked for while another is being
@@ -664,6 +743,17 @@ def run(
         if reloader is not None:
             reloader.cleanup(app)  # stop watching; the App stays as run() left it
     return app
+
+
+#: resources the App puts in every world itself (autoloading one is a mistake)
+_APP_OWNED: tuple[type, ...] = (Input, InputMap, Time, Host)
+
+
+def _check_transition(transition: object, where: str) -> None:
+    if transition is not None and not isinstance(transition, Transition):
+        raise ComponentTypeError(
+            f"{where}: transition must be a Transition (Fade(0.4)...), got {transition!r}"
+        )
 
 
 def _as_scene(scene: SceneSource) -> Scene:

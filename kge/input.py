@@ -42,17 +42,21 @@ from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
 from kge.keys import Mouse
-from kge.validate import finite, integer, vec2
+from kge.validate import finite, in_range, integer, non_negative, vec2
 
 Vec2 = tuple[float, float]
 
-#: gamepad buttons, with pyglet's (SDL's) names
+#: gamepad buttons, with pyglet's (SDL's) names; the triggers are buttons too, down
+#: past :data:`TRIGGER_DOWN` and up again under :data:`TRIGGER_UP` (no chatter)
 PAD_BUTTONS: frozenset[str] = frozenset(
     (
         "a", "b", "x", "y", "back", "start", "guide", "leftshoulder", "rightshoulder",
         "leftstick", "rightstick", "dpleft", "dpright", "dpup", "dpdown",
+        "lefttrigger", "righttrigger",
     )
 )  # fmt: skip
+TRIGGER_DOWN = 0.5
+TRIGGER_UP = 0.4
 #: gamepad axes: sticks in [-1, 1] (y up), triggers in [0, 1]
 PAD_AXES: frozenset[str] = frozenset(
     ("leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger")
@@ -211,11 +215,9 @@ class Gamepad:
 
     def rumble(self, weak: float = 1.0, strong: float = 1.0, duration: float = 0.3) -> None:
         """Vibrate (where the pad and pyglet's driver can): motor strengths 0..1, seconds."""
-        for name, v in (("weak", weak), ("strong", strong)):
-            if not 0.0 <= v <= 1.0:
-                raise ValidationError(f"Gamepad.rumble: {name} must be in [0, 1], got {v!r}")
-        if not duration >= 0.0:
-            raise ValidationError(f"Gamepad.rumble: duration must be >= 0, got {duration!r}")
+        weak = in_range(weak, 0.0, 1.0, "Gamepad.rumble", "weak")
+        strong = in_range(strong, 0.0, 1.0, "Gamepad.rumble", "strong")
+        duration = non_negative(duration, "Gamepad.rumble", "duration")
         self.last_rumble = (float(weak), float(strong), float(duration))
         if self.rumble_fn is not None and self.connected:
             self.rumble_fn(float(weak), float(strong), float(duration))
@@ -246,6 +248,7 @@ class Input:
     _pads: _Edges = field(default_factory=_Edges)  # codes: (pad index, button)
     _fixed: bool = False
     _muted: bool = False
+    _captured: bool = False
     modifiers: int = 0
     mouse_screen: Vec2 = (0.0, 0.0)
     mouse_world: Vec2 = (0.0, 0.0)
@@ -257,7 +260,7 @@ class Input:
 
     # -- keys --------------------------------------------------------------------------
     def held(self, key: int) -> bool:
-        return key in self._keys.down_now(self._muted)
+        return key in self._keys.down_now(self._off)
 
     def pressed(self, key: int) -> bool:
         return key in self._keys.edges(self._view)[0]
@@ -266,7 +269,7 @@ class Input:
         return key in self._keys.edges(self._view)[1]
 
     def any_held(self, *keys: int) -> bool:
-        held = self._keys.down_now(self._muted)
+        held = self._keys.down_now(self._off)
         return any(k in held for k in keys)
 
     def any_pressed(self, *keys: int) -> bool:
@@ -283,7 +286,7 @@ class Input:
 
     # -- mouse -------------------------------------------------------------------------
     def mouse_held(self, button: int = Mouse.LEFT) -> bool:
-        return button in self._buttons.down_now(self._muted)
+        return button in self._buttons.down_now(self._off)
 
     def mouse_pressed(self, button: int = Mouse.LEFT) -> bool:
         return button in self._buttons.edges(self._view)[0]
@@ -294,7 +297,7 @@ class Input:
     # -- gamepads ----------------------------------------------------------------------
     def pad_held(self, button: str, pad: int | None = None) -> bool:
         """Is ``button`` down on gamepad ``pad`` (any pad when None)?"""
-        return self._pad_in(self._pads.down_now(self._muted), button, pad)
+        return self._pad_in(self._pads.down_now(self._off), button, pad)
 
     def pad_pressed(self, button: str, pad: int | None = None) -> bool:
         return self._pad_in(self._pads.edges(self._view)[0], button, pad)
@@ -305,7 +308,7 @@ class Input:
     def pad_axis_value(self, axis: str, pad: int | None = None) -> float:
         """The raw value of ``axis`` on ``pad`` (any pad: the one pushed furthest)."""
         _check_axis(axis)
-        if self._muted:
+        if self._off:
             return 0.0
         if pad is not None:
             gp = self.gamepads.get(pad)
@@ -366,6 +369,12 @@ class Input:
         if not lo <= v <= 1.0:  # NaN fails too
             raise ValidationError(f"gamepad {index} axis {axis!r}: {value!r} not in [{lo}, 1]")
         pad.axes[_check_axis(axis)] = v
+        if axis.endswith("trigger"):  # the trigger as a button
+            held = (index, axis) in self._pads.held
+            if not held and v >= TRIGGER_DOWN:
+                self.pad_press(index, axis)
+            elif held and v < TRIGGER_UP:
+                self.pad_release(index, axis)
 
     # -- feeding (window events or tests) ----------------------------------------------
     def press(self, key: int, modifiers: int = 0) -> None:
@@ -475,7 +484,29 @@ class Input:
     @property
     def _view(self) -> bool | None:
         """Which edges queries see: fixed step (True), frame (False), none (muted)."""
-        return None if self._muted else self._fixed
+        return None if self._off else self._fixed
+
+    @property
+    def _off(self) -> bool:
+        return self._muted or self._captured
+
+    @property
+    def captured(self) -> bool:
+        """True when :meth:`capture` hid the input from the game for this frame."""
+        return self._captured
+
+    def capture(self) -> None:
+        """Hide every key, button and axis from the game until this frame ends (the
+        in-game console, a modal debug view): queries answer "nothing", edges included.
+
+        >>> from kge.keys import Key
+        >>> inp = Input(); inp.press(Key.A); inp.capture()
+        >>> inp.held(Key.A), inp.pressed(Key.A)
+        (False, False)
+        >>> inp.end_frame(); inp.held(Key.A)
+        True
+        """
+        self._captured = True
 
     @contextmanager
     def muted(self, on: bool = True) -> Iterator[None]:
@@ -502,6 +533,7 @@ class Input:
     def end_frame(self) -> None:
         """Forget this frame's edges, events, text and scroll (the App calls it)."""
         self._fixed = False
+        self._captured = False
         for edges in (self._keys, self._buttons, self._pads):
             edges.end_frame()
         self.scroll = (0.0, 0.0)
@@ -513,6 +545,7 @@ class Input:
         for edges in (self._keys, self._buttons, self._pads):
             edges.reset()
         self._fixed = False
+        self._captured = False
         self.scroll = (0.0, 0.0)
         self.text = ""
         self.events.clear()

@@ -3,6 +3,7 @@
 =====================  =================================================================
 ``BehaviourPlugin``    Behaviour scripts: input hooks, fixed/update/late hooks, coroutines
 ``PhysicsPlugin``      Box2D-style physics on pymunk, contact events, joints, queries
+``CharacterPlugin``    characters that collide and slide (``CharacterBody``), in the fixed step
 ``AudioPlugin``        sounds and music on pyglet (loaded on the first sound)
 ``RenderPlugin``       camera follow; the window and drawing on the first ``app.render()``
 ``AnimationPlugin``    sprite clips (Animator), tweens, camera shake
@@ -10,6 +11,7 @@
 ``LightingPlugin``     2D lights and a light map, shadows cast by colliders
 ``UIPlugin``           screen-space widgets, layout, focus, UI events (drawn on top)
 ``TilemapPlugin``      Tiled maps loaded with ``kge.load_map`` are drawn (chunked, culled)
+``DebugPlugin``        gizmos, the in-game console, the live inspector, system timings
 =====================  =================================================================
 
 Each plugin lives beside the systems it installs (``kge/systems/``); this module
@@ -25,9 +27,11 @@ from kge.plugin import Plugin
 
 def default_plugins() -> list[Plugin]:
     """A fresh instance of every default plugin, in build order."""
+    from kge.debug.plugin import DebugPlugin
     from kge.systems.animation import AnimationPlugin
     from kge.systems.audio import AudioPlugin
     from kge.systems.behaviour import BehaviourPlugin
+    from kge.systems.character import CharacterPlugin
     from kge.systems.lighting import LightingPlugin
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.physics import PhysicsPlugin
@@ -38,6 +42,7 @@ def default_plugins() -> list[Plugin]:
     return [
         BehaviourPlugin(),
         PhysicsPlugin(),
+        CharacterPlugin(),
         AudioPlugin(),
         RenderPlugin(),
         AnimationPlugin(),
@@ -45,4 +50,5 @@ def default_plugins() -> list[Plugin]:
         LightingPlugin(),
         UIPlugin(),
         TilemapPlugin(),
+        DebugPlugin(),
     ]

@@ -14,6 +14,7 @@ True
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Callable
 from typing import Any
 
@@ -82,7 +83,7 @@ def as_scene(scene: SceneLike) -> Scene:
         return scene
     if isinstance(scene, type) and issubclass(scene, Scene):
         return scene()
-    if callable(scene):
+    if callable(scene) and not isinstance(scene, type):  # a class is no setup function
         return FunctionScene(scene)
     hint = ""
     if scene is None:
@@ -94,3 +95,33 @@ def as_scene(scene: SceneLike) -> Scene:
         f"a scene must be a Scene, a Scene subclass or a setup(world) function, "
         f"got {scene!r}{hint}"
     )
+
+
+def check_setup_args(scene: Scene, kwargs: dict[str, Any]) -> None:
+    """Refuse ``kwargs`` the scene's setup does not take, at the call that gave them.
+
+    A scene change inside a frame is applied when the frame ends, so without this a
+    misspelt keyword would surface as a ``TypeError`` from that later frame.
+
+    >>> def level(world, number=1): ...
+    >>> check_setup_args(FunctionScene(level), {"numbr": 2})
+    Traceback (most recent call last):
+    ...
+    kge.errors.ComponentTypeError: scene level: setup(world, number=1) does not take numbr=2
+    """
+    fn: Callable[..., Any] = scene.fn if isinstance(scene, FunctionScene) else scene.setup
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):  # a builtin or C callable: nothing to check
+        return
+    params = list(sig.parameters.values())
+    if not isinstance(scene, FunctionScene) and type(scene).setup is Scene.setup:
+        return  # a scene that takes anything (the base signature)
+    try:
+        sig.bind(None, **kwargs)  # None stands for the world
+    except TypeError:
+        shown = ", ".join(str(p) for p in params)
+        given = ", ".join(f"{k}={v!r}" for k, v in kwargs.items())
+        raise ComponentTypeError(
+            f"scene {scene.name or type(scene).__name__}: setup({shown}) does not take {given}"
+        ) from None

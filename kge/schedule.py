@@ -54,7 +54,8 @@ from __future__ import annotations
 
 import heapq
 import itertools
-from collections.abc import Iterable, Sequence
+import time
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from enum import IntEnum, StrEnum
 from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
@@ -63,6 +64,7 @@ import esper
 
 from kge import deprecation
 from kge.errors import ScheduleError
+from kge.timings import SystemTimings
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -237,6 +239,8 @@ class Schedule:
         self._seq = itertools.count()
         #: the plugin being built (World.add_plugins sets it): recorded with each system
         self.building: str | None = None
+        #: per-system timings while enabled (:meth:`enable_timings`), else None: no cost
+        self.timings: SystemTimings | None = None
 
     # -- sets ----------------------------------------------------------------------------
     def sets(self, stage: Stage) -> list[str]:
@@ -344,6 +348,8 @@ class Schedule:
         self._entries.remove(entry)
         self._order[entry.stage], self._ties[entry.stage] = self._sort(entry.stage, self._entries)
         self.world.eventlog.forget(entry.system)
+        if self.timings is not None:
+            self.timings.forget(entry.system)
 
     def get(self, system_type: type[S]) -> S | None:
         for e in self._entries:
@@ -360,7 +366,37 @@ class Schedule:
     def run(self, stage: Stage, dt: float) -> None:
         """Run every system of ``stage`` in order, flushing queued changes after each."""
         world = self.world
-        world.eventlog.run(self._order[stage], stage is Stage.FIXED, world.run_deferred, dt)
+        timings = self.timings
+        if timings is None:
+            world.eventlog.run(self._order[stage], stage is Stage.FIXED, world.run_deferred, dt)
+            return
+        world.eventlog.run(
+            self._order[stage], stage is Stage.FIXED, _timed(world.run_deferred, timings,
+                                                             stage.name), dt
+        )  # fmt: skip
+
+    # -- timings ---------------------------------------------------------------------------
+    def enable_timings(self) -> SystemTimings:
+        """Time every system from now on (see :mod:`kge.timings`); returns the timings.
+
+        >>> from kge.world import World
+        >>> w = World()
+        >>> t = w.schedule.enable_timings()
+        >>> w.schedule.timings is t, w.schedule.enable_timings() is t
+        (True, True)
+        """
+        if self.timings is None:
+            self.timings = SystemTimings()
+        return self.timings
+
+    def disable_timings(self) -> None:
+        """Stop timing (the numbers are dropped; the schedule runs at full speed)."""
+        self.timings = None
+
+    def end_frame(self) -> None:
+        """The App closed a frame of this world: timings fold it into their averages."""
+        if self.timings is not None:
+            self.timings.end_frame()
 
     def systems(self, stage: Stage | None = None) -> list[System]:
         """The systems of ``stage`` in the order they run (all stages, in frame order)."""
@@ -496,6 +532,23 @@ class Schedule:
                 f"{_name(entry.system)} in {entry.stage.name}: order systems of one stage"
             )
         return [("system", id(e.system)) for e in found if e is not entry]
+
+
+def _timed(
+    run: Callable[[Callable[[float], None], float], None], timings: SystemTimings, stage: str
+) -> Callable[[Callable[[float], None], float], None]:
+    """``run`` with a perf_counter pair around each system (its flush included)."""
+    clock = time.perf_counter
+    add = timings.add
+
+    def call(process: Callable[[float], None], dt: float) -> None:
+        start = clock()
+        try:
+            run(process, dt)
+        finally:
+            add(getattr(process, "__self__", process), stage, clock() - start)
+
+    return call
 
 
 def order_items(

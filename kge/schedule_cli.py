@@ -7,6 +7,8 @@
     kge schedule --scene mygame.levels:level_one   # what a scene's setup adds, too
     kge schedule --render                          # draw one headless frame first, so
                                                    # the drawing systems join the table
+    kge schedule --scene mygame:level --timings 300  # run 300 frames headless and print
+                                                     # each system's measured cost
 
 Each line is one system: its stage, its position in the stage, its set
 (:class:`~kge.schedule.SystemSet`), its own ``before`` / ``after`` constraints and
@@ -50,15 +52,26 @@ def _plugins(spec: str | None) -> list[PluginLike] | None:
 
 
 def frame_table(
-    plugins: list[PluginLike] | None = None, scene: Any = None, render: bool = False
+    plugins: list[PluginLike] | None = None, scene: Any = None, render: bool = False,
+    timings: int = 0,
 ) -> str:
-    """The text ``kge schedule`` prints, for an App of ``plugins`` running ``scene``."""
+    """The text ``kge schedule`` prints, for an App of ``plugins`` running ``scene``
+    (with ``timings`` > 0: after running that many frames with per-system timings)."""
     app = App(scene if scene is not None else (lambda world: None), headless=True,
               plugins=plugins)  # fmt: skip
     try:
         if render:
             app.render()
         world = app.world
+        if timings > 0:
+            measured = world.schedule.enable_timings()
+            for _ in range(timings):
+                app.step(1)
+                if render:
+                    app.render()
+            return (f"plugins: {', '.join(p.name for p in world.plugins) or 'none'}\n\n"
+                    f"per-system cost over {timings} frames (ms; slowest first):\n"
+                    + measured.describe())  # fmt: skip
         names = ", ".join(p.name for p in world.plugins) or "none"
         lines = [f"plugins: {names}", "", world.schedule.describe(plugins=True), ""]
         ties = world.schedule.ties()
@@ -74,6 +87,8 @@ def frame_table(
             lines.append(
                 "render passes: before the batch: "
                 + (", ".join(passes.names("before")) or "none")
+                + "; per camera: "
+                + (", ".join(passes.names("view")) or "none")
                 + "; after it: "
                 + (", ".join(passes.names("after")) or "none")
             )
@@ -96,7 +111,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--plugins", help="comma-separated plugins (Name in kge, or module:Name)")
     parser.add_argument("--scene", help="a scene to set up first (module:name or file.py:name)")
     parser.add_argument("--render", action="store_true", help="draw one headless frame first")
+    parser.add_argument("--timings", type=int, default=0, metavar="FRAMES",
+                        help="run FRAMES frames headless and print each system's cost")
     args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
     scene = _load(args.scene, "scene") if args.scene else None
-    print(frame_table(_plugins(args.plugins), scene, args.render))
+    print(frame_table(_plugins(args.plugins), scene, args.render, args.timings))
     return 0

@@ -20,8 +20,9 @@ What is not saved, and why:
 What systems are running goes along: each system-owned resource registered with
 :func:`carry_running` exports its running state, keyed by entity ids, and the
 restored world's resource continues from it. So running tweens go on from where
-they were, live particles keep flying (and one-shot bursts do not fire again), and
-animators keep their clip time. Handles game code kept (a ``TweenHandle``) belong
+they were, live particles keep flying (and one-shot bursts do not fire again),
+animators keep their clip time, and characters go on mid-jump, in the sensors they
+were in. Handles game code kept (a ``TweenHandle``) belong
 to the old world: ask the restored world's resources for new ones.
 
 Behaviour scripts are saved when their classes are importable (module level),
@@ -45,11 +46,9 @@ Transform(x=1.0, y=2.0, angle=0.0)
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import hashlib
 import hmac
-import itertools
 import os
 import pickle
 from collections.abc import Sequence
@@ -58,6 +57,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 import esper
 
 from kge.errors import KgeError
+from kge.esper_door import entity_table, next_entity_id, set_next_entity_id
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -148,8 +148,7 @@ def _running(world: World) -> list[tuple[type, Any]]:
 
 def _next_id(world: World) -> int:
     world._use()
-    counter = esper._entity_count
-    return int(next(copy.copy(counter)))
+    return next_entity_id()
 
 
 def snapshot(world: World) -> bytes:
@@ -243,7 +242,7 @@ def _validate(world: World, entities: Any, next_id: Any) -> None:
             seen[id(comp)] = entity
             _recheck(comp, f"snapshot entity {entity}, {type(comp).__name__}")
     world._use()
-    table = esper._entities
+    table = entity_table()
     for entity in entities:
         table[entity] = {}
         world._pending[entity] = {type(c): c for c in entities[entity]}
@@ -294,13 +293,13 @@ def restore_state(
     for resource in resources:
         world.insert_resource(resource)
     world._use()
-    table = esper._entities
+    table = entity_table()
     for entity in sorted(entities):
         table[entity] = {}
         for component in entities[entity]:
             world._apply_add(entity, component)
     world._use()
-    esper._entity_count = itertools.count(start=next_id)
+    set_next_entity_id(next_id)
     esper.clear_cache()
     return world
 

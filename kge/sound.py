@@ -54,6 +54,8 @@ class SoundData:
             raise ValidationError("SoundData.samples is empty: a sound needs at least one frame")
         if len(self.samples) % (2 * self.channels):
             raise ValidationError("SoundData.samples must hold whole 16-bit frames")
+        if not self.samples:  # no player can start a sound of no frames
+            raise ValidationError("SoundData.samples is empty: a sound needs at least one frame")
 
     @property
     def frames(self) -> int:

@@ -15,8 +15,10 @@ the renderer draws it over the frame (``kge/render/transitions.py``):
 =============  ==========================================================================
 
 The picture-based ones change the scene on the frame after the request (the frame
-in between is drawn and kept as the picture). Progress is eased (smoothstep), and
-every quantity the renderer needs is a property of ``ActiveTransition`` at time t:
+in between is drawn and kept as the picture). Progress is eased (smoothstep, or
+your own curve: ``ease=`` any function of progress 0..1, such as
+``kge.CubicBezier(0.7, 0, 0.3, 1)`` or ``lambda p: p``), and every quantity the
+renderer needs is a property of ``ActiveTransition`` at time t:
 
 >>> active = ActiveTransition(Fade(0.4))
 >>> active.advance(0.1); round(active.cover, 3)          # a quarter in: half covered
@@ -34,7 +36,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from kge.errors import ValidationError
+from kge.errors import ComponentTypeError, ValidationError
 
 _DIRECTIONS = ("left", "right", "up", "down")
 
@@ -45,6 +47,8 @@ class Transition:
 
     duration: float = 0.4
     color: tuple[int, int, int] = (0, 0, 0)
+    #: the easing of progress: None (smoothstep) or a function of progress 0..1
+    ease: Any = None
 
     #: does it draw a picture of the old scene (taken on the frame before the change)?
     needs_picture: ClassVar[bool] = False
@@ -55,12 +59,38 @@ class Transition:
             raise ValidationError(
                 f"{type(self).__name__}.duration must be a positive number of seconds, got {d!r}"
             )
+        if not isinstance(self.color, (tuple, list)):
+            raise ComponentTypeError(
+                f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"
+            )
         if len(self.color) != 3 or not all(
-            isinstance(c, int) and 0 <= c <= 255 for c in self.color
+            isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in self.color
         ):
             raise ValidationError(
                 f"{type(self).__name__}.color must be three ints 0..255, got {self.color!r}"
             )
+        if self.ease is not None:
+            _check_ease(self.ease, type(self).__name__)
+
+    def curve(self, t: float) -> float:
+        """Eased progress at linear progress ``t`` (clamped to 0..1)."""
+        t = min(max(t, 0.0), 1.0)
+        if self.ease is None:
+            return t * t * (3.0 - 2.0 * t)
+        return min(max(float(self.ease(t)), 0.0), 1.0)
+
+
+def _check_ease(fn: Any, owner: str) -> None:
+    """A transition's easing must be a function giving finite numbers over 0..1."""
+    if not callable(fn):
+        raise ValidationError(f"{owner}.ease must be a function of progress, got {fn!r}")
+    try:
+        values = [float(fn(p)) for p in (0.0, 0.25, 0.5, 0.75, 1.0)]
+    except Exception as exc:  # the user's function: reported at the call
+        raise ValidationError(f"{owner}.ease failed at progress 0..1 "
+                              f"({type(exc).__name__}: {exc})") from None  # fmt: skip
+    if not all(math.isfinite(v) for v in values):
+        raise ValidationError(f"{owner}.ease gave {values}: not all finite")
 
 
 @dataclass(slots=True, frozen=True)
@@ -126,7 +156,7 @@ class ActiveTransition:
 
     @property
     def eased(self) -> float:
-        return smoothstep(self.t)
+        return self.transition.curve(self.t)
 
     @property
     def swap_due(self) -> bool:
@@ -146,7 +176,7 @@ class ActiveTransition:
         """Opacity (0..1) of the fade colour over the frame (Fade only; 0 for others)."""
         if not isinstance(self.transition, Fade):
             return 0.0
-        return smoothstep(1.0 - abs(2.0 * self.t - 1.0))
+        return self.transition.curve(1.0 - abs(2.0 * self.t - 1.0))
 
     @property
     def picture_alpha(self) -> float:

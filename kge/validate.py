@@ -23,11 +23,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import Any
+from enum import Enum
+from typing import Any, TypeVar
 
+from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
 
 Vec2 = tuple[float, float]
+E = TypeVar("E", bound=Enum)
 
 
 def _label(owner: str, field: str) -> str:
@@ -99,15 +102,21 @@ def positive(value: Any, owner: str, field: str) -> float:
     return v
 
 
-def at_most(value: float, limit: float, owner: str, field: str, unit: str) -> float:
+def at_most(value: float, limit: float, owner: str, field: str, unit: str = "") -> float:
     """``value`` (already checked finite) if it is no larger than ``limit``.
 
     Used for quantities whose products overflow float64 far beyond any game's
     range (mass times size squared): refusing them at the call beats NaN poses
     several steps later.
+
+    >>> at_most(9.0, 8.0, "Sound", "pitch", "Hz")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Sound.pitch must be <= 8 Hz, got 9.0
     """
     if value > limit:
-        raise ValidationError(f"{_label(owner, field)} must be <= {limit:g} {unit}, got {value!r}")
+        units = f" {unit}" if unit else ""
+        raise ValidationError(f"{_label(owner, field)} must be <= {limit:g}{units}, got {value!r}")
     return value
 
 
@@ -144,12 +153,77 @@ def point(value: Any, owner: str, field: str) -> Vec2:
     return (x, y)
 
 
+#: the largest drawn size (metres): the width of kge's world
+MAX_EXTENT = 2 * MAX_COORDINATE
+
+#: the largest anchor component (a fraction of the drawn size: 0.5 is the middle)
+MAX_ANCHOR = 1e3
+
+
+def within(value: Any, limit: float, owner: str, field: str, unit: str = "") -> float:
+    """A finite number within +-``limit``.
+
+    >>> within(-3.0, 1e7, "UINode", "padding", " pixels")
+    -3.0
+    """
+    v = finite(value, owner, field)
+    if abs(v) > limit:
+        raise ValidationError(
+            f"{_label(owner, field)} must be within +-{limit:g}{unit}, got {v!r}"
+        )
+    return v
+
+
+def entity_id(value: Any, owner: str, field: str) -> int:
+    """An entity id (an int >= 0); whether it exists is the world's check."""
+    n = integer(value, owner, field)
+    if n < 0:
+        raise ValidationError(f"{_label(owner, field)} must be an entity id (>= 0), got {n}")
+    return n
+
+
+def extent(value: Any, owner: str, field: str) -> float:
+    """A drawn size in metres, in (0, :data:`MAX_EXTENT`] (float32 vertices stay finite)."""
+    return at_most(positive(value, owner, field), MAX_EXTENT, owner, field, "m")
+
+
+def anchor(value: Any, owner: str, field: str) -> Vec2:
+    """An (x, y) anchor as fractions of a drawn size, each within +-:data:`MAX_ANCHOR`."""
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_ANCHOR or abs(y) > MAX_ANCHOR:
+        raise ValidationError(
+            f"{_label(owner, field)} must be fractions within +-{MAX_ANCHOR:g}, got {(x, y)!r}"
+        )
+    return (x, y)
+
+
 def frequency(value: Any, owner: str, field: str) -> float:
     """A spring frequency in [0, :data:`MAX_FREQUENCY`] Hz."""
     v = non_negative(value, owner, field)
     if v > MAX_FREQUENCY:
         raise ValidationError(f"{_label(owner, field)} must be <= {MAX_FREQUENCY:g} Hz, got {v!r}")
     return v
+
+
+def choice(kind: type[E]) -> Callable[[Any, str, str], E]:
+    """A check accepting a member of the enum ``kind`` (a mode, a blend, an alignment);
+    its string value converts, with a DeprecationWarning.
+
+    >>> from enum import StrEnum
+    >>> class Mode(StrEnum):
+    ...     A = "a"
+    >>> choice(Mode)(Mode.A, "Thing", "mode")
+    <Mode.A: 'a'>
+    >>> choice(Mode)("c", "Thing", "mode")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Thing.mode must be one of Mode.A, got 'c'
+    """
+
+    def check(value: Any, owner: str, field: str) -> E:
+        return enum_value(kind, value, owner, field)
+
+    return check
 
 
 def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:

@@ -33,7 +33,6 @@ False
 
 from __future__ import annotations
 
-import copy
 import itertools
 import weakref
 from collections import defaultdict
@@ -52,6 +51,7 @@ from kge.errors import (
     ValidationError,
     WorldLockedError,
 )
+from kge.esper_door import entity_table, next_entity_id, set_next_entity_id
 from kge.events import EventLog
 from kge.plugin import Plugin, PluginLike, resolve
 from kge.schedule import Anchor, Schedule, System, SystemSet
@@ -166,6 +166,8 @@ class World:
         self._owners: dict[int, tuple[int, Any]] = {}
         self._defer_depth = 0
         self._lock_depth = 0
+        #: the components of the spawn being validated and applied (see ``spawning``)
+        self._spawning: tuple[Any, ...] = ()
         self._closed = False
         self._plugins: list[Plugin] = []
         self.schedule = Schedule(self)
@@ -179,8 +181,7 @@ class World:
     def _db(self) -> dict[int, dict[type, Any]]:
         """esper's entity table for this world (entity -> {type: component})."""
         self._use()
-        db: dict[int, dict[type, Any]] = esper._entities
-        return db
+        return entity_table()
 
     # -- modes -------------------------------------------------------------------
     @contextmanager
@@ -251,21 +252,36 @@ class World:
         _check_groups("world.spawn()", types)
         for c in components:
             self._check_unowned(c, None, "spawn")
-        for c in components:
-            self._validate(None, c)
-        self._use()
-        entity: int = esper.create_entity()
-        for c in components:
-            self._owners[id(c)] = (entity, c)
-        if self._defer_depth:
-            pend = self._pending.setdefault(entity, {})
+        outer, self._spawning = self._spawning, components
+        try:
             for c in components:
-                pend[type(c)] = c
-                self._enqueue(entity, "add", c)
-        else:
+                self._validate(None, c)
+            self._use()
+            entity: int = esper.create_entity()
             for c in components:
-                self._apply_add(entity, c)
+                self._owners[id(c)] = (entity, c)
+            if self._defer_depth:
+                pend = self._pending.setdefault(entity, {})
+                for c in components:
+                    pend[type(c)] = c
+                    self._enqueue(entity, "add", c)
+            else:
+                for c in components:
+                    self._apply_add(entity, c)
+        finally:
+            self._spawning = outer
         return entity
+
+    @property
+    def spawning(self) -> tuple[Any, ...]:
+        """The components of the :meth:`spawn` in progress (empty outside one).
+
+        Validators run with ``entity=None`` inside ``spawn``, before the entity
+        exists; a rule about the entity's *other* components (a character
+        controller must not sit on a dynamic body) reads them here, and an
+        ``on_add`` hook run by the spawn sees which components are still to come.
+        """
+        return self._spawning
 
     def spawn_linked(
         self, count: int, build: Callable[[list[int]], Sequence[Sequence[Any]]]
@@ -286,7 +302,7 @@ class World:
         self._guard("spawn")
         count = int(count)
         self._use()
-        start = int(next(copy.copy(esper._entity_count)))
+        start = next_entity_id()
         ids = list(range(start, start + count))
         rows = [tuple(row) for row in build(ids)]
         if len(rows) != count:
@@ -325,7 +341,7 @@ class World:
                 if not self._defer_depth:
                     self._pending.pop(entity, None)
         self._use()
-        esper._entity_count = itertools.count(start=start + count)  # hooks may spawn
+        set_next_entity_id(start + count)  # hooks may spawn
         if self._defer_depth:
             # queued like spawn's: get() sees them through _pending until the flush
             for entity, row in zip(ids, rows, strict=True):
@@ -595,7 +611,8 @@ class World:
         ``entity`` is None inside ``spawn`` (the id is not allocated yet). A check
         raises to refuse the component; nothing has been changed at that point,
         which is how "bad input leaves the world unchanged" is kept for rules
-        that need the world (a joint naming a missing body, say).
+        that need the world (a joint naming a missing body, say). Validators of an
+        event type run at :meth:`emit` (with ``entity`` None).
         """
         self._validators[component_type].append(check)
 
@@ -638,7 +655,15 @@ class World:
 
     # -- events ------------------------------------------------------------------------
     def emit(self, event: Any) -> None:
-        """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`)."""
+        """Send ``event`` (any object): readers of its type see it (see :mod:`kge.events`).
+
+        Validators registered for the event's type (:meth:`validator`) run first, so
+        an event naming something that does not exist is refused here, at the call.
+        """
+        checks = self._validators.get(type(event))
+        if checks:
+            for check in checks:
+                check(None, event)
         self.eventlog.emit(event)
 
     @overload

@@ -9,6 +9,7 @@ import os
 os.environ.setdefault("PYGLET_HEADLESS", "1")
 os.environ.setdefault("PYGLET_AUDIO", "silent")
 os.environ.setdefault("KGE_HEADLESS", "1")
+os.environ.setdefault("PYGLET_DEBUG_GL", "1")  # a GL error fails the test that made it
 
 # The examples import each other (kge_required, game_menus) as `python examples/x.py`
 # would find them: from their own folder. Tests that load an example need the same.

@@ -5,7 +5,7 @@ atlas and bulk texture-coordinate writer in :mod:`kge.render.animation`.
 """
 
 from kge.animation.clips import ClipState, ClipTable
-from kge.animation.easing import EASINGS, ease
+from kge.animation.easing import EASINGS, CubicBezier, EaseCurve, ease
 from kge.animation.events import AnimationEvent, AnimationEvents, AnimationFinished, TweenFinished
 from kge.animation.gif import gif_clip
 from kge.animation.tweens import TweenHandle, Tweens, TweenTable
@@ -17,6 +17,8 @@ __all__ = [
     "AnimationFinished",
     "ClipState",
     "ClipTable",
+    "CubicBezier",
+    "EaseCurve",
     "TweenFinished",
     "TweenHandle",
     "TweenTable",

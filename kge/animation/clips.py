@@ -245,12 +245,16 @@ class ClipState:
         self.version += 1
 
     def start(self, row: int, slot: int, *, stopped: bool = False) -> None:
-        """Row ``row`` plays clip ``slot`` from its first frame (``stopped``: shows it, still)."""
+        """Row ``row`` plays clip ``slot`` from its first frame (``stopped``: shows it, still);
+        a row of negative speed plays it backwards from its end."""
         self.clip[row] = slot
         self.time[row] = 0.0
         self.finished[row] = stopped
         self.fresh[row] = not stopped
         self.shown[row] = self.table.first_frame(slot)
+        if self.speed[row] < 0 and not stopped:
+            self.table.ensure()
+            self.seek(row, float(self.table.total[slot]))
 
     def compact(self, slack: int = 32) -> bool:
         """Drop the clips no row plays once they outnumber the played ones (plus
@@ -294,19 +298,25 @@ class ClipState:
             return Crossings([], np.zeros(0, np.intp))
         clip = self.clip
         rate = np.where(self.playing & ~self.finished, self.speed * t.speed[clip], 0.0)
-        # crossings are counted in (before, after] shifted by EPS like the frame lookup;
-        # a fresh start counts from just below 0 so frame 0's events fire
-        before = np.where(self.fresh, -EPS, self.time + EPS)
         after = self.time + rate * dt
+        rev = rate < 0  # playing backwards (a negative animator speed)
+        # crossings are counted in (before, after] shifted by EPS like the frame lookup;
+        # a fresh start counts from just below 0 so frame 0's events fire; backwards,
+        # a frame start is crossed in [after, time)
+        before = np.where(self.fresh, -EPS, self.time + EPS)
         total = t.total[clip]
         mode = t.mode[clip]
         looping = mode == LOOP
-        events = self._events(before, after + EPS, total, looping) if t.has_events.any() else []
-        ended = ~looping & (after + EPS >= total) & ~self.finished
+        events: list[tuple[int, int, str, int]] = []
+        if t.has_events.any():
+            lo = np.where(rev, after - EPS, before)
+            hi = np.where(rev, self.time - EPS, after + EPS)
+            events = self._events(lo, hi, total, looping, rev)
+        ended = ~looping & ~self.finished & np.where(rev, after <= EPS, after + EPS >= total)
         finished_rows = np.flatnonzero(ended)
         # wrap loops (keeps precision over hours of play)
         laps = np.floor((after + EPS) / total)
-        wrapped = np.where(looping, np.maximum(after - laps * total, 0.0), after)
+        wrapped = np.where(looping, np.maximum(after - laps * total, 0.0), np.maximum(after, 0.0))
         self.time = wrapped
         self.finished |= ended
         local = np.where(looping, wrapped, np.minimum(wrapped, total))
@@ -318,9 +328,11 @@ class ClipState:
         return Crossings(events, finished_rows)
 
     def _events(
-        self, before: np.ndarray, after: np.ndarray, total: np.ndarray, looping: np.ndarray
+        self, before: np.ndarray, after: np.ndarray, total: np.ndarray, looping: np.ndarray,
+        backwards: np.ndarray | None = None,
     ) -> list[tuple[int, int, str, int]]:
-        """Frame events crossed in (before, after], ordered by row then time."""
+        """Frame events crossed in (before, after], ordered by row then time (latest
+        first for rows playing ``backwards``)."""
         t = self.table
         found: list[tuple[int, float, int, str, int]] = []
         with_events = t.has_events[self.clip]
@@ -338,5 +350,6 @@ class ClipState:
                 for r, c in zip(rows[hit].tolist(), count[hit].tolist(), strict=True):
                     lap = float(total[r])
                     found.extend((r, start + k * lap, slot, name, frame) for k in range(c))
-        found.sort(key=lambda item: (int(self.entity[item[0]]), item[1]))
+        sign = np.where(backwards, -1.0, 1.0) if backwards is not None else np.ones(len(before))
+        found.sort(key=lambda item: (int(self.entity[item[0]]), sign[item[0]] * item[1]))
         return [(r, slot, name, frame) for r, _, slot, name, frame in found]

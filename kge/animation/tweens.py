@@ -35,7 +35,7 @@ from kge.animation.easing import apply, easing_code
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.tracked import Tracked, raw_set
 from kge.components.transform import Transform
-from kge.components.tween import Delay, Parallel, Tween, TweenSequence
+from kge.components.tween import Call, Delay, Parallel, Tween, TweenSequence
 from kge.errors import ComponentTypeError, ValidationError, where
 from kge.snapshot import carry_running
 from kge.validate import MAX_COORDINATE, coordinate, finite
@@ -46,7 +46,8 @@ _AXES = {"x": 0, "y": 1, "angle": 2}
 
 
 class TweenHandle:
-    """A started tween: ``done``, ``cancelled``, ``cancel()``; a coroutine may ``yield`` it."""
+    """A started tween: ``done``, ``cancelled``, ``cancel()``; ``pause()``, ``resume()``
+    and ``speed`` (1: as written, 2: twice as fast); a coroutine may ``yield`` it."""
 
     __slots__ = ("_table", "cancelled", "done", "entity", "group", "name")
 
@@ -67,18 +68,50 @@ class TweenHandle:
         """True once finished or cancelled (what ``yield handle`` waits for)."""
         return self.done
 
+    def pause(self) -> None:
+        """Hold it where it is until :meth:`resume` (the game runs on)."""
+        self._table.set_paused(self, True)
+
+    def resume(self) -> None:
+        self._table.set_paused(self, False)
+
+    @property
+    def paused(self) -> bool:
+        return self._table.group_value(self, "g_paused", False)
+
+    @property
+    def speed(self) -> float:
+        """How fast its clock runs: 1 as written, 0.5 half speed (>= 0)."""
+        return self._table.group_value(self, "g_speed", 1.0)
+
+    @speed.setter
+    def speed(self, value: float) -> None:
+        self._table.set_speed(self, value)
+
     def __repr__(self) -> str:
         state = "cancelled" if self.cancelled else "done" if self.done else "running"
         return f"<TweenHandle {self.name or self.group} {state}>"
 
 
 def _field_ok(cls: type, name: str) -> bool:
+    tweenable = getattr(cls, "tweenable", None)  # fields a component names itself
+    if callable(tweenable) and tweenable(name):
+        return True
     if dataclasses.is_dataclass(cls) and any(
         f.name == name and not f.name.startswith("_") for f in dataclasses.fields(cls)
     ):
         return True
     prop = getattr(cls, name, None)
     return isinstance(prop, property) and prop.fset is not None
+
+
+#: the largest magnitude of a tween's start, current and target values: the eased
+#: value ``start + (end - start) * eased`` then stays finite for every easing (Penner's
+#: curves overshoot to at most -0.5..1.5), so no tween can write an overflow
+MAX_VALUE = 1e300
+#: the most tween channels one start may make (a TweenSequence's repeats are unrolled into
+#: channels, so ``TweenSequence(..., repeat=10**9)`` would allocate until memory runs out)
+MAX_CHANNELS = 100_000
 
 
 def _as_vector(value: Any, label: str, what: str) -> tuple[list[float], bool]:
@@ -93,27 +126,105 @@ def _as_vector(value: Any, label: str, what: str) -> tuple[list[float], bool]:
                 f"{label}: {what} {value!r} is not numeric (a tween animates numbers, "
                 "vectors and colours)"
             )
-        f = float(v)
+        try:
+            f = float(v)
+        except OverflowError:  # an int beyond float64
+            f = math.inf
         if not math.isfinite(f):
             raise ValidationError(f"{label}: {what} must be finite, got {value!r}")
+        if abs(f) > MAX_VALUE:
+            raise ValidationError(
+                f"{label}: {what} must be within +-{MAX_VALUE:g}, got {value!r}"
+            )
         out.append(f)
     ints = all(isinstance(v, (int, np.integer)) for v in items)
     return out, ints
 
 
+def _check_ends(obj: Any, field: str, entity: int | None, label: str, vector: bool,
+                ints: bool, to: list[float], start: list[float] | None) -> None:
+    """Run the field's own check on the target (and start) value, so a tween that would
+    end outside the field's range (an opacity of 300, a zoom of 0) is refused here, at
+    the start, instead of failing at a later frame."""
+    check = getattr(type(obj), "_checks", {}).get(field)
+    if check is None:
+        return
+    for what, nums in (("target value", to), ("start value", start)):
+        if nums is None:
+            continue
+        vals = [round(v) for v in nums] if ints else nums
+        value = tuple(vals) if vector else vals[0]
+        try:
+            check(value, where(entity, type(obj).__name__), field)
+        except ValidationError as err:
+            raise ValidationError(
+                f"{label}: the {what} is out of the field's range: {err}"
+            ) from None
+
+
 @dataclasses.dataclass(slots=True)
 class _Plan:
-    """One flattened Tween: where it starts in its group."""
+    """One flattened Tween (or Call): where it starts in its group."""
 
-    spec: Tween
+    spec: Tween | Call
     offset: float
 
 
+def channels(spec: Any) -> int:
+    """How many channels ``spec`` makes once flattened (its Sequences' repeats unrolled).
+
+    >>> from kge.components.transform import Transform
+    >>> step = Tween(Transform, "x", 1.0, 0.1)
+    >>> channels(TweenSequence(step, Parallel(step, step), repeat=2))
+    9
+    """
+    if isinstance(spec, Tween):
+        return 1
+    if isinstance(spec, Parallel):
+        return sum(channels(s) for s in spec.steps)
+    if isinstance(spec, TweenSequence):
+        reps = 1 if spec.repeat < 0 else spec.repeat + 1
+        return reps * sum(channels(s) for s in spec.steps)
+    return 0
+
+
+class _Pending:
+    """A Call of a running group: when it is next due (group time; inf: never again)."""
+
+    __slots__ = ("call", "due", "period")
+
+    def __init__(self, call: Call, due: float, period: float) -> None:
+        self.call, self.due, self.period = call, due, period
+
+
+class MethodTarget:
+    """What :meth:`Tweens.method` animates: ``value``, whose every write calls ``fn``."""
+
+    __slots__ = ("_value", "fn")
+
+    def __init__(self, fn: Callable[[Any], Any], value: Any) -> None:
+        self.fn = fn
+        self._value = value
+
+    @property
+    def value(self) -> Any:
+        return self._value
+
+    @value.setter
+    def value(self, v: Any) -> None:
+        self._value = v
+        self.fn(v)
+
+
 def _flatten(spec: Any, offset: float, out: list[_Plan], top: bool) -> float:
-    """Append ``spec``'s tweens with their offsets; return its length (inf: forever)."""
+    """Append ``spec``'s tweens and calls with their offsets; return its length (inf:
+    forever)."""
     if isinstance(spec, Tween):
         out.append(_Plan(spec, offset))
         return spec.total
+    if isinstance(spec, Call):
+        out.append(_Plan(spec, offset))
+        return 0.0
     if isinstance(spec, Delay):
         return spec.total
     if isinstance(spec, Parallel):
@@ -166,6 +277,10 @@ class TweenTable:
         self.g_total = np.zeros(0)  # inf for forever
         self.g_fixed = np.zeros(0, bool)
         self.g_live = np.zeros(0, bool)
+        self.g_speed = np.zeros(0)  # per-tween speed (handle.speed)
+        self.g_paused = np.zeros(0, bool)
+        self.relative = np.zeros(0, bool)  # v_end holds an offset until the start is known
+        self.calls: dict[int, list[_Pending]] = {}  # group id -> its Call steps
         self._by_target: dict[tuple[int, type], list[int]] = {}
         self._hooked: set[type] = set()
         self.stop_next: list[tuple[int, int]] = []  # (entity, axis): zero velocity next step
@@ -238,12 +353,22 @@ class TweenTable:
         Everything is checked before anything is added: a bad target, field or
         value raises and leaves the table as it was.
         """
-        plans: list[_Plan] = []
-        top_total = _flatten(spec, 0.0, plans, True)
+        n = channels(spec)
+        if n > MAX_CHANNELS:
+            raise ValidationError(
+                f"{spec!r:.80} makes {n:,} tween channels once its repeats are unrolled, "
+                f"more than {MAX_CHANNELS:,}: repeat the Tweens inside it instead"
+            )
+        found: list[_Plan] = []
+        top_total = _flatten(spec, 0.0, found, True)
         forever_seq = isinstance(spec, TweenSequence) and spec.repeat < 0
         period = spec.once if forever_seq else top_total
-        if not plans:
+        if not found:
             raise ValidationError(f"{spec!r} animates nothing (only delays)")
+        if forever_seq and not period > 0:
+            raise ValidationError(f"{spec!r} repeats forever but takes no time")
+        plans = [p for p in found if isinstance(p.spec, Tween)]
+        specs: list[Tween] = [p.spec for p in plans if isinstance(p.spec, Tween)]
         rows = [self._resolve(target, p) for p in plans]
         self._serial += 1
         gid = self._serial
@@ -258,12 +383,18 @@ class TweenTable:
         self.g_total = np.append(self.g_total, math.inf if forever_seq else top_total)
         self.g_fixed = np.append(self.g_fixed, any_fixed)
         self.g_live = np.append(self.g_live, True)
+        self.g_speed = np.append(self.g_speed, 1.0)
+        self.g_paused = np.append(self.g_paused, False)
+        loop = period if forever_seq else math.inf
+        pending = [_Pending(p.spec, p.offset, loop) for p in found if isinstance(p.spec, Call)]
+        if pending:
+            self.calls[gid] = pending
         k = len(rows)
         base = len(self.targets)
         start = np.zeros((k, WIDTH))
         end = np.zeros((k, WIDTH))
         captured = np.zeros(k, bool)
-        for i, (plan, r) in enumerate(zip(plans, rows, strict=True)):
+        for i, r in enumerate(rows):
             obj, field, width, s, e, kind, ent, axis = r
             end[i, :width] = e
             if s is not None:
@@ -273,11 +404,15 @@ class TweenTable:
             self.objs.append(obj)
             self.fields.append(field)
             if ent is not None:
-                self._by_target.setdefault((ent, plan.spec.component), []).append(base + i)
-                self._hook(plan.spec.component)
-        specs = [p.spec for p in plans]
+                self._by_target.setdefault((ent, specs[i].component), []).append(base + i)
+                self._hook(specs[i].component)
+        self.relative = np.concatenate(
+            [self.relative, [bool(s.relative) and s.start is None for s in specs]]
+        ).astype(bool)
         self.group = np.concatenate([self.group, np.full(k, gid, np.int64)])
-        self.offset = np.concatenate([self.offset, [p.offset + p.spec.delay for p in plans]])
+        self.offset = np.concatenate(
+            [self.offset, [p.offset + s.delay for p, s in zip(plans, specs, strict=True)]]
+        )
         self.duration = np.concatenate([self.duration, [float(s.duration) for s in specs]])
         self.cycles = np.concatenate(
             [self.cycles, [math.inf if s.repeat < 0 else s.repeat + 1.0 for s in specs]]
@@ -297,6 +432,7 @@ class TweenTable:
 
     def _resolve(self, target: Any, plan: _Plan) -> tuple[Any, ...]:
         spec = plan.spec
+        assert isinstance(spec, Tween)
         ctype = spec.component
         if isinstance(target, bool):
             raise ComponentTypeError(f"{spec.label}: target must be an entity id or a component")
@@ -332,8 +468,15 @@ class TweenTable:
             start, _ = _as_vector(spec.start, label, "start value")
             if len(start) != len(now):
                 raise ValidationError(f"{label}: start value {spec.start!r} has the wrong size")
-        kind, axis = (1 if ints else 0), -1
+        if spec.relative and start is not None:
+            to = [s + d for s, d in zip(start, to, strict=True)]
         vector = isinstance(getattr(obj, spec.field), (tuple, list))
+        # a relative move without a start goes by ``to`` from where the field is
+        end = to
+        if spec.relative and start is None:
+            end = [n + d for n, d in zip(now, to, strict=True)]
+        _check_ends(obj, spec.field, entity, label, vector, ints, end, start)
+        kind, axis = (1 if ints else 0), -1
         if vector:
             kind += 4
         rb = None
@@ -344,6 +487,8 @@ class TweenTable:
         elif kind == 0:
             check = getattr(ctype, "_checks", {}).get(spec.field)
             ends = [*now, *to, *(start or ())]
+            if spec.relative:
+                ends += [a + b for a, b in zip(now, to, strict=True)]
             # a coordinate between ends within a quarter of the world bound stays inside it
             # whatever the easing's overshoot (Penner's curves stay within -0.5..1.5)
             inside = check is coordinate and max(map(abs, ends)) <= MAX_COORDINATE / 4
@@ -373,7 +518,35 @@ class TweenTable:
         self.live[self.group == handle.group] = False
         self.g_live[self.g_ids == handle.group] = False
         self.handles.pop(handle.group, None)
+        self.calls.pop(handle.group, None)
         handle.done = handle.cancelled = True
+
+    # -- pause and speed per tween -------------------------------------------------------
+    def _slot(self, handle: TweenHandle) -> int | None:
+        if handle.done:
+            return None
+        found = np.flatnonzero(self.g_ids == handle.group)
+        return int(found[0]) if len(found) else None
+
+    def group_value(self, handle: TweenHandle, name: str, default: Any) -> Any:
+        slot = self._slot(handle)
+        return default if slot is None else getattr(self, name)[slot].item()
+
+    def set_paused(self, handle: TweenHandle, paused: bool) -> None:
+        slot = self._slot(handle)
+        if slot is not None:
+            self.g_paused[slot] = bool(paused)
+
+    def set_speed(self, handle: TweenHandle, value: float) -> None:
+        speed = finite(value, f"tween {handle.name or handle.group}", "speed")
+        if speed < 0:
+            raise ValidationError(
+                f"tween {handle.name or handle.group}: speed must be >= 0 (yoyo plays "
+                f"backwards), got {value!r}"
+            )
+        slot = self._slot(handle)
+        if slot is not None:
+            self.g_speed[slot] = speed
 
     def cancel_all(self, entity: int) -> int:
         """Cancel every tween started on ``entity``; returns how many."""
@@ -395,7 +568,12 @@ class TweenTable:
         if not gsel.any():
             self._maybe_compact()
             return []
-        self.g_elapsed[gsel] += dt
+        if self.g_paused.any() or (self.g_speed != 1.0).any():
+            rate = np.where(self.g_paused, 0.0, self.g_speed)
+            self.g_elapsed[gsel] += dt * rate[gsel]
+        else:
+            self.g_elapsed[gsel] += dt
+        due_calls = self._due_calls(gsel) if self.calls else []
         sel = self.live & (self.fixed == fixed)
         finished: list[TweenHandle] = []
         if sel.any():
@@ -415,7 +593,9 @@ class TweenTable:
             dur = take(self.duration)
             cyc = take(self.cycles)
             prev = take(self.prev_u)
-            due = (u >= 0) & ((prev < dur * cyc) | (u < prev))
+            with np.errstate(over="ignore"):  # 1e308 s x repeats: inf, "never ends"
+                end = dur * cyc
+            due = (u >= 0) & ((prev < end) | (u < prev))
             if whole:
                 self.prev_u = u
             else:
@@ -429,12 +609,29 @@ class TweenTable:
             gid = int(self.g_ids[gi])
             self.g_live[gi] = False
             self.live[self.group == gid] = False
+            self.calls.pop(gid, None)
             h = self.handles.pop(gid, None)
             if h is not None:
                 h.done = True
                 finished.append(h)
+        for call in due_calls:  # after the writes: a call sees the values of its moment
+            call.fn(*call.args)
         self._maybe_compact()
         return finished
+
+    def _due_calls(self, gsel: np.ndarray) -> list[Call]:
+        """The Call steps whose time the selected groups reached in this advance."""
+        out: list[Call] = []
+        for gi in np.flatnonzero(gsel).tolist():
+            pending = self.calls.get(int(self.g_ids[gi]))
+            if not pending:
+                continue
+            now = float(self.g_elapsed[gi])
+            for p in pending:
+                while p.due <= now:
+                    out.append(p.call)
+                    p.due += p.period
+        return out
 
     def _write(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray,
                dt: float) -> None:
@@ -448,8 +645,13 @@ class TweenTable:
                 obj, field, width, _, _, _ = self.targets[i]
                 value = getattr(obj, field)
                 vec = list(value) if isinstance(value, (tuple, list)) else [value]
-                self.v_start[i, :width] = vec
+                # a field holding more than MAX_VALUE now (it was written since the start)
+                # starts from MAX_VALUE: the eased values must stay finite
+                self.v_start[i, :width] = np.clip(vec, -MAX_VALUE, MAX_VALUE)
                 self.captured[i] = True
+                if self.relative[i]:  # a move by: the end is the offset from here
+                    self.v_end[i, :width] += self.v_start[i, :width]
+                    self.relative[i] = False
             self._apply(rows[fresh], u[fresh], dur[fresh], cyc[fresh], dt)
         else:
             self._apply(rows, u, dur, cyc, dt)
@@ -457,6 +659,11 @@ class TweenTable:
     def _progress(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray
                   ) -> np.ndarray:
         """Eased progress of each row at local time ``u`` (repeats and yoyo folded in)."""
+        with np.errstate(over="ignore", invalid="ignore"):  # durations of 1e-300 s
+            return self._eased(rows, u, dur, cyc)
+
+    def _eased(self, rows: np.ndarray, u: np.ndarray, dur: np.ndarray, cyc: np.ndarray
+               ) -> np.ndarray:
         k = np.floor(u / dur)
         over = k > cyc - 1
         if over.any():
@@ -559,7 +766,7 @@ class TweenTable:
         keep = np.flatnonzero(self.live)
         remap = {int(old): new for new, old in enumerate(keep.tolist())}
         for name in ("group", "offset", "duration", "cycles", "yoyo", "ease", "v_start", "v_end",
-                     "captured", "prev_u", "live", "fixed", "kind", "gslot"):
+                     "captured", "prev_u", "live", "fixed", "kind", "gslot", "relative"):
             setattr(self, name, getattr(self, name)[keep])
         kept = keep.tolist()
         self.targets = [self.targets[i] for i in kept]
@@ -573,7 +780,8 @@ class TweenTable:
         new_slot = np.full(len(self.g_live), -1, np.intp)
         new_slot[gkeep] = np.arange(len(gkeep))
         self.gslot = new_slot[self.gslot]  # live channels belong to live groups
-        for name in ("g_ids", "g_elapsed", "g_period", "g_total", "g_fixed", "g_live"):
+        for name in ("g_ids", "g_elapsed", "g_period", "g_total", "g_fixed", "g_live",
+                     "g_speed", "g_paused"):
             setattr(self, name, getattr(self, name)[gkeep])
 
 
@@ -599,6 +807,23 @@ class Tweens(TweenTable):
     ) -> TweenHandle:
         """Start ``Tween(component, field, to, duration, **options)`` on ``target``."""
         return self.start(target, Tween(component, field, to, duration, **options))
+
+    def by(
+        self, target: Any, component: type, field: str, by: Any, duration: float, **options: Any
+    ) -> TweenHandle:
+        """Move ``component.field`` *by* ``by`` from wherever it is when the tween starts."""
+        return self.start(target, Tween(component, field, by, duration, relative=True, **options))
+
+    def method(
+        self, fn: Callable[[Any], Any], start: Any, end: Any, duration: float, **options: Any
+    ) -> TweenHandle:
+        """Call ``fn(value)`` every frame with a value eased from ``start`` to ``end``
+        (a number, vector or colour): tween anything a function can set."""
+        if not callable(fn):
+            raise ValidationError(f"Tweens.method needs a function, got {fn!r}")
+        target = MethodTarget(fn, start)
+        return self.start(target, Tween(MethodTarget, "value", end, duration, start=start,
+                                        **options))  # fmt: skip
 
     def _camera_target(self) -> Any:
         from kge.components.camera import Camera

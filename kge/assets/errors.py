@@ -41,11 +41,12 @@ class AssetNotFoundError(AssetError, FileNotFoundError, ValueError):
 class AssetDecodeError(AssetError, ValueError):
     """The file exists but could not be read or decoded."""
 
-    def __init__(self, name: str, path: str, reason: str) -> None:
+    def __init__(self, name: str, path: str, reason: str, owner: str = "") -> None:
         self.name = name
         self.path = path
         self.reason = reason
-        super().__init__(f"asset {name!r} ({path}) could not be loaded: {reason}")
+        prefix = f"{owner}: " if owner else ""
+        super().__init__(f"{prefix}asset {name!r} ({path}) could not be loaded: {reason}")
 
 
 class DecoderMissingError(AssetDecodeError):

@@ -43,13 +43,14 @@ kge.assets.errors.AssetNotFoundError: asset 'sfx/miss.wav' not found. Searched, 
 from __future__ import annotations
 
 import os
+import struct
 import time
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
-from kge.assets import loaders
+from kge.assets import headers, loaders
 from kge.assets.errors import AssetDecodeError, AssetError, AssetNotFoundError
 from kge.assets.fontinfo import family_name
 from kge.assets.locate import (
@@ -210,6 +211,32 @@ class Assets:
             return found.read_bytes()
         except OSError as exc:
             raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc
+
+    def checked_image(self, name: str | os.PathLike[str], owner: str = "") -> tuple[int, int]:
+        """Find ``name`` and check it is an image kge can load, without decoding it;
+        its (width, height). Cached per file; see :mod:`kge.assets.headers`."""
+        found = self.resolve(name, owner)
+        key = ("image-header", found.where)
+        if key not in self._cache:
+            try:
+                size = headers.image_size(found.read_bytes())
+            except (OSError, ValueError) as exc:
+                raise AssetDecodeError(found.name, found.where, str(exc), owner) from None
+            self._cache[key] = size
+        return cast(tuple[int, int], self._cache[key])
+
+    def checked_sound(self, name: str | os.PathLike[str], owner: str = "") -> Found:
+        """Find ``name`` and, for a WAV, check its header describes samples kge can play
+        (other formats are checked by their decoders). Cached per file."""
+        found = self.resolve(name, owner)
+        key = ("sound-header", found.where)
+        if found.suffix in headers.WAV_SUFFIXES and key not in self._cache:
+            try:
+                with found.resource.open("rb") as f:
+                    self._cache[key] = headers.wav_info(f)
+            except (OSError, ValueError, struct.error) as exc:
+                raise AssetDecodeError(found.name, found.where, str(exc), owner) from None
+        return found
 
     def image(self, name: str | os.PathLike[str]) -> Any:
         """``name`` decoded as a ``pyglet.image.AbstractImage`` (cached)."""

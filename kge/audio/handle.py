@@ -22,7 +22,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from kge.audio.spatial import pan_to_position
-from kge.validate import in_range, non_negative, positive
+from kge.components.audio import fade_seconds
+from kge.components.audio import pitch as check_pitch
+from kge.errors import ValidationError
+from kge.validate import boolean, in_range, non_negative
 
 if TYPE_CHECKING:
     from kge.audio.mixer import Mixer
@@ -43,6 +46,7 @@ class SoundHandle:
         "_paused",
         "_pitch",
         "_player",
+        "_rate",
         "_stopped",
         "_volume",
         "bus",
@@ -68,8 +72,9 @@ class SoundHandle:
         self.duration = duration  #: seconds; None for streams of unknown length
         self.bus = bus
         self._volume = in_range(volume, 0.0, 1.0, _OWNER, "volume")
-        self._pitch = positive(pitch, _OWNER, "pitch")
-        self._loop = bool(loop)
+        self._pitch = check_pitch(pitch, _OWNER, "pitch")
+        self._rate = 1.0  # the game's time scale, for sounds that follow it
+        self._loop = boolean(loop, _OWNER, "loop")
         self._gain = 1.0
         self._pan = 0.0
         self._paused = False
@@ -141,6 +146,20 @@ class SoundHandle:
             if self._player is not None:
                 self._player.play()
 
+    def seek(self, seconds: float) -> None:
+        """Jump to ``seconds`` from the start (a checkpoint's music, a scrubbed cutscene).
+
+        Refused past the end of a sound of known length, and for a negative or
+        non-finite time; a finished sound does nothing.
+        """
+        t = non_negative(seconds, _OWNER, "seek")
+        if self.duration is not None and t > self.duration:
+            raise ValidationError(
+                f"{_OWNER}.seek: {t:g} s is past the end of {self.name!r} ({self.duration:g} s)"
+            )
+        if self._player is not None and not self.finished:
+            self._player.seek(t)
+
     @property
     def volume(self) -> float:
         """The sound's own volume in [0, 1] (before attenuation and master volume)."""
@@ -159,9 +178,23 @@ class SoundHandle:
 
     @pitch.setter
     def pitch(self, value: float) -> None:
-        self._pitch = positive(value, _OWNER, "pitch")
+        self._pitch = check_pitch(value, _OWNER, "pitch")
         if self._player is not None:
-            self._player.pitch = self._pitch
+            self._player.pitch = self.rate
+
+    @property
+    def rate(self) -> float:
+        """What the player is told: ``pitch`` times the game's time scale when the sound
+        follows game time (``Audio.follow_game_time``), else ``pitch``."""
+        return self._pitch * self._rate
+
+    def set_time_scale(self, scale: float) -> None:
+        """Play at ``scale`` times its pitch (the audio system's, for game-time sounds)."""
+        scale = max(float(scale), 1e-3)  # a player cannot run at 0: the pause stops it
+        if scale != self._rate:
+            self._rate = scale
+            if self._player is not None:
+                self._player.pitch = self.rate
 
     @property
     def loop(self) -> bool:
@@ -169,7 +202,7 @@ class SoundHandle:
 
     @loop.setter
     def loop(self, value: bool) -> None:
-        self._loop = bool(value)
+        self._loop = boolean(value, _OWNER, "loop")
         if self._player is not None:
             self._player.loop = self._loop
 
@@ -209,7 +242,8 @@ class SoundHandle:
         Fades advance with the frame time the audio system is given. Returns self.
         """
         target = in_range(to, 0.0, 1.0, _OWNER, "fade.to")
-        secs = non_negative(seconds, _OWNER, "fade.seconds")
+        secs = fade_seconds(seconds, _OWNER, "fade.seconds")
+        stop = boolean(stop, _OWNER, "fade.stop")
         if secs == 0.0:
             self.volume = target
             if stop:

@@ -22,6 +22,7 @@ from collections.abc import Callable, Hashable
 from typing import Any
 
 from kge.audio.handle import SoundHandle
+from kge.errors import ValidationError
 from kge.validate import in_range
 
 Bus = str
@@ -108,9 +109,29 @@ class Mixer:
         self._master = in_range(value, 0.0, 1.0, "Audio", "master_volume")
         self._reapply()
 
+    def add_bus(self, name: Bus, volume: float = 1.0) -> None:
+        """A bus of your own ("voices", "ui"): its sounds get its volume times the master."""
+        if not isinstance(name, str) or not name.isidentifier():
+            raise ValidationError(f"Audio.add_bus: a bus name is one word, got {name!r}")
+        if name in self._bus:
+            raise ValidationError(f"Audio.add_bus: there is a bus {name!r} already")
+        self._bus[name] = in_range(volume, 0.0, 1.0, "Audio", f"{name}_volume")
+
+    @property
+    def buses(self) -> list[Bus]:
+        return list(self._bus)
+
+    def check_bus(self, bus: Bus, owner: str) -> Bus:
+        if bus not in self._bus:
+            raise ValidationError(
+                f"{owner}: unknown audio bus {bus!r}; buses are {', '.join(self._bus)} "
+                "(add one with audio.add_bus(name))"
+            )
+        return bus
+
     def set_bus_volume(self, bus: Bus, value: float) -> None:
         if bus not in self._bus:
-            raise ValueError(f"unknown audio bus {bus!r}; use one of {BUSES}")
+            raise ValueError(f"unknown audio bus {bus!r}; use one of {', '.join(self._bus)}")
         self._bus[bus] = in_range(value, 0.0, 1.0, "Audio", f"{bus}_volume")
         self._reapply()
 

@@ -22,6 +22,7 @@ stacking another. Explicit calls raise for a missing or undecodable file
 from __future__ import annotations
 
 import os
+import random
 from collections.abc import Hashable
 from typing import TYPE_CHECKING, Any
 
@@ -29,11 +30,12 @@ from kge.assets.store import assets_for
 from kge.audio.handle import SoundHandle
 from kge.audio.mixer import Mixer
 from kge.audio.spatial import pan_and_gain
-from kge.components.audio import AudioListener, AudioSource, sound_ref
+from kge.components.audio import AudioListener, AudioSource, fade_seconds, sound_ref
+from kge.components.audio import pitch as check_pitch
 from kge.components.transform import Transform
-from kge.errors import where
+from kge.errors import ValidationError, where
 from kge.sound import SoundData, SoundRef
-from kge.validate import in_range, positive, vec2
+from kge.validate import boolean, in_range, point, positive
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -52,6 +54,11 @@ class Audio:
         self.mixer = mixer
         self._handles: list[SoundHandle] = []
         self._sources: dict[int, SoundHandle] = {}
+        #: the random numbers of ``pitch_variation`` / ``volume_variation`` (seed it in tests)
+        self.rng = random.Random()
+        #: scene sounds pause with the game and play at its time scale (music does not)
+        self.follow_game_time = False
+        self._held: list[SoundHandle] = []  # paused by the game's pause, not by the game
 
     # -- volumes ----------------------------------------------------------------------
     @property
@@ -81,6 +88,20 @@ class Audio:
     def sfx_volume(self, value: float) -> None:
         self.mixer.set_bus_volume("sfx", value)
 
+    def add_bus(self, name: str, volume: float = 1.0) -> None:
+        """A bus of your own, App-wide ("voices", "ui", "ambience"): ``play(...,
+        bus=name)`` routes a sound through it; its volume times the master volume."""
+        self.mixer.add_bus(name, volume)
+
+    def set_bus_volume(self, bus: str, value: float) -> None:
+        """Set any bus's volume in [0, 1] (``sfx``, ``music`` or one of yours)."""
+        self.mixer.check_bus(bus, "audio.set_bus_volume")
+        self.mixer.set_bus_volume(bus, value)
+
+    def bus_volume(self, bus: str) -> float:
+        """A bus's own volume (without the master volume)."""
+        return self.mixer.get_bus_volume(self.mixer.check_bus(bus, "audio.bus_volume"))
+
     # -- loading ----------------------------------------------------------------------
     def _load(self, sound: SoundRef, streaming: bool, owner: str) -> tuple[Any, str, Hashable]:
         """(pyglet source or None when mute, display name, identity key)."""
@@ -89,7 +110,7 @@ class Audio:
             source = None if self.mixer.backend() is None else assets_for(self.world).sound(ref)
             return source, ref.name, ref
         store = assets_for(self.world)
-        found = store.resolve(ref, owner=owner)  # raises, naming every place searched
+        found = store.checked_sound(ref, owner=owner)  # raises, naming every place searched
         name = os.fspath(ref)
         if self.mixer.backend() is None:
             return None, name, found.where
@@ -107,26 +128,79 @@ class Audio:
         min_distance: float = 1.0,
         max_distance: float = 30.0,
         streaming: bool = False,
+        pitch_variation: float = 0.0,
+        volume_variation: float = 0.0,
+        max_voices: int | None = None,
+        bus: str = "sfx",
     ) -> SoundHandle:
         """Play ``sound`` (asset name, path or SoundData) in this scene; return its handle.
 
         ``position`` (world metres) pans and attenuates it from the listener once,
         at the start. The sound stops when it ends, when ``handle.stop()`` is
         called or when the scene closes.
+
+        ``pitch_variation=0.1`` plays it at a random pitch within ±10 % and
+        ``volume_variation=0.2`` at 80-100 % of ``volume`` (footsteps and hits that do
+        not sound like a machine gun; the numbers come from :attr:`rng`).
+        ``max_voices=3``: at most three of this sound play at once in the scene; a
+        fourth stops the oldest. ``bus`` routes it through a bus (:meth:`add_bus`).
         """
         owner = "audio.play"
         in_range(volume, 0.0, 1.0, owner, "volume")
-        positive(pitch, owner, "pitch")
+        check_pitch(pitch, owner, "pitch")
+        boolean(loop, owner, "loop")
+        boolean(streaming, owner, "streaming")
+        self.mixer.check_bus(bus, owner)
+        pv = in_range(pitch_variation, 0.0, 0.99, owner, "pitch_variation")
+        vv = in_range(volume_variation, 0.0, 1.0, owner, "volume_variation")
+        if max_voices is not None and (
+            isinstance(max_voices, bool) or not isinstance(max_voices, int) or max_voices < 1
+        ):
+            raise ValidationError(f"{owner}.max_voices must be a whole number >= 1, got "
+                                  f"{max_voices!r}")  # fmt: skip
         pan, gain = 0.0, 1.0
         if position is not None:
-            pos = vec2(position, owner, "position")
-            pan, gain = self.spatial(pos, min_distance, max_distance)
+            pos = point(position, owner, "position")
+            lo = positive(min_distance, owner, "min_distance")
+            hi = positive(max_distance, owner, "max_distance")
+            if lo >= hi:
+                raise ValidationError(
+                    f"{owner}.max_distance ({hi}) must be greater than min_distance ({lo})"
+                )
+            pan, gain = self.spatial(pos, lo, hi)
         source, name, _ = self._load(sound, streaming, owner)
+        if pv:
+            pitch = pitch * self.rng.uniform(1.0 - pv, 1.0 + pv)
+        if vv:
+            volume = volume * self.rng.uniform(1.0 - vv, 1.0)
+        if max_voices is not None:
+            same = [h for h in self._handles if h.name == name and not h.finished]
+            for old in same[: max(len(same) - max_voices + 1, 0)]:
+                old.stop()  # the oldest voices make room
         handle = self.mixer.start(
-            source, name=name, volume=volume, pitch=pitch, loop=loop, pan=pan, gain=gain
+            source, name=name, volume=volume, pitch=pitch, loop=loop, pan=pan, gain=gain,
+            bus=bus,
         )
         self._handles.append(handle)
         return handle
+
+    def follow_game(self, paused: bool, time_scale: float) -> None:
+        """Pause scene sounds while the game is paused and play them at its time scale
+        (the audio system calls it each frame when :attr:`follow_game_time` is on)."""
+        live = [h for h in self._handles if not h.finished and h.bus != "music"]
+        live += [h for h in self._sources.values() if not h.finished and h not in live]
+        if paused:
+            for h in live:
+                if h.playing:
+                    h.pause()
+                    self._held.append(h)
+            return
+        if self._held:
+            for h in self._held:
+                h.resume()
+            self._held = []
+        for h in live:
+            h.set_time_scale(time_scale)
 
     def play_music(
         self,
@@ -145,6 +219,9 @@ class Audio:
         """
         owner = "audio.play_music"
         in_range(volume, 0.0, 1.0, owner, "volume")
+        boolean(loop, owner, "loop")
+        boolean(streaming, owner, "streaming")
+        fade = fade_seconds(fade, owner, "fade")
         ref = sound_ref(sound, owner, "sound")
         if isinstance(ref, SoundData):
             key: Hashable = ref
@@ -159,7 +236,7 @@ class Audio:
         return self.mixer.play_music(key, load, name=name, volume=volume, loop=loop, fade=fade)
 
     def stop_music(self, fade: float = 0.0) -> None:
-        self.mixer.stop_music(fade)
+        self.mixer.stop_music(fade_seconds(fade, "audio.stop_music", "fade"))
 
     @property
     def music(self) -> SoundHandle | None:

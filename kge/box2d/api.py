@@ -8,6 +8,7 @@ import sys
 from typing import Any
 
 from kge.box2d.body import b2Body, b2BodyDef, b2ContactEdge, b2JointEdge
+from kge.box2d.broadphase import b2BroadPhase, b2ContactManager
 from kge.box2d.callbacks import (
     b2ContactFilter,
     b2ContactListener,
@@ -25,8 +26,18 @@ from kge.box2d.contact import (
     b2ManifoldPoint,
     b2WorldManifold,
 )
-from kge.box2d.distance import b2Distance, b2DistanceResult, b2TimeOfImpact, b2TOIOutput
+from kge.box2d.distance import (
+    b2Distance,
+    b2DistanceInput,
+    b2DistanceOutput,
+    b2DistanceProxy,
+    b2DistanceResult,
+    b2TimeOfImpact,
+    b2TOIInput,
+    b2TOIOutput,
+)
 from kge.box2d.draw import b2Color, b2Draw, b2DrawExtended
+from kge.box2d.errors import b2AssertException
 from kge.box2d.fixture import b2Filter, b2Fixture, b2FixtureDef
 from kge.box2d.joints import (
     b2DistanceJoint,
@@ -55,6 +66,9 @@ from kge.box2d.joints import (
     b2WheelJointDef,
 )
 from kge.box2d.massdata import b2MassData
+from kge.box2d.matrix import b2Mat22, b2Mat33
+from kge.box2d.products import b2Mul, b2Mul22, b2MulT
+from kge.box2d.rays import b2RayCastInput, b2RayCastOutput
 from kge.box2d.shapes import (
     b2ChainShape,
     b2CircleShape,
@@ -63,15 +77,9 @@ from kge.box2d.shapes import (
     b2PolygonShape,
     b2Shape,
 )
-from kge.box2d.transform import b2AABB, b2Mat22, b2Rot, b2Sweep, b2Transform
-from kge.box2d.vec import b2Vec2
+from kge.box2d.transform import b2AABB, b2Rot, b2Sweep, b2Transform
+from kge.box2d.vec import b2Vec2, b2Vec3
 from kge.box2d.world import b2World
-from kge.errors import KgeError
-
-
-class b2AssertException(KgeError, AssertionError):
-    """pybox2d's exception for a failed Box2D assertion (kge raises its own errors)."""
-
 
 b2Globals = sys.modules[__name__]  # pybox2d's module of globals
 

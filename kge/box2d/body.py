@@ -14,10 +14,12 @@ pybox2d's pointer comparisons do, and programs may store attributes on it.
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import TYPE_CHECKING, Any
 
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
+from kge.box2d.errors import MissingError, b2AssertException
 from kge.box2d.fixture import b2Fixture, b2FixtureDef, set_keywords
 from kge.box2d.massdata import b2MassData
 from kge.box2d.shapes import b2ChainShape, b2CircleShape, b2EdgeShape, b2LoopShape, b2PolygonShape
@@ -40,11 +42,96 @@ _FROM_KGE = {v: k for k, v in _TO_KGE.items()}
 def body_type(value: Any) -> BodyType:
     if isinstance(value, BodyType):
         return value
-    if isinstance(value, bool) or value not in _TO_KGE:
-        raise ComponentTypeError(
+    if isinstance(value, bool) or not isinstance(value, int) or value not in _TO_KGE:
+        raise b2AssertException(
             f"b2Body.type must be b2_staticBody, b2_kinematicBody or b2_dynamicBody, got {value!r}"
         )
     return _TO_KGE[value]
+
+
+class _View(b2Vec2):
+    """A b2Vec2 that stands for one of a body's vectors; in-place arithmetic writes the
+    result back once (``body.linearVelocity *= 0.99`` is one velocity write)."""
+
+    __slots__ = ("_body",)
+
+    def __init__(self, body: b2Body) -> None:
+        self._body = body
+
+    def _put(self, value: tuple[float, float]) -> None:
+        raise NotImplementedError
+
+    def __iadd__(self, other: Any) -> b2Vec2:
+        ox, oy = other
+        self._put((self.x + ox, self.y + oy))
+        return self
+
+    def __isub__(self, other: Any) -> b2Vec2:
+        ox, oy = other
+        self._put((self.x - ox, self.y - oy))
+        return self
+
+    def __imul__(self, k: float) -> b2Vec2:
+        self._put((self.x * k, self.y * k))
+        return self
+
+    def __itruediv__(self, k: float) -> b2Vec2:
+        self._put((self.x / k, self.y / k))
+        return self
+
+    def Set(self, x: float, y: float) -> None:
+        self._put((x, y))
+
+
+class PositionView(_View):
+    """``body.position``: a b2Vec2 whose ``x`` and ``y`` are the body's, now (pybox2d's
+    position aliases the body's transform). Arithmetic gives plain vectors."""
+
+    __slots__ = ()
+
+    def _put(self, value: tuple[float, float]) -> None:
+        self._body.position = value
+
+    @property
+    def x(self) -> float:
+        return self._body._tf.x
+
+    @x.setter
+    def x(self, value: float) -> None:
+        self._body.position = (value, self._body._tf.y)
+
+    @property
+    def y(self) -> float:
+        return self._body._tf.y
+
+    @y.setter
+    def y(self, value: float) -> None:
+        self._body.position = (self._body._tf.x, value)
+
+
+class VelocityView(_View):
+    """``body.linearVelocity``: a b2Vec2 whose ``x`` and ``y`` are the body's velocity, now."""
+
+    __slots__ = ()
+
+    def _put(self, value: tuple[float, float]) -> None:
+        self._body.linearVelocity = value
+
+    @property
+    def x(self) -> float:
+        return float(self._body._rb.velocity[0])
+
+    @x.setter
+    def x(self, value: float) -> None:
+        self._body.linearVelocity = (value, self._body._rb.velocity[1])
+
+    @property
+    def y(self) -> float:
+        return float(self._body._rb.velocity[1])
+
+    @y.setter
+    def y(self, value: float) -> None:
+        self._body.linearVelocity = (self._body._rb.velocity[0], value)
 
 
 class b2BodyDef:
@@ -150,8 +237,10 @@ class b2Body:
     # -- pose ---------------------------------------------------------------------------------
     @property
     def position(self) -> b2Vec2:
-        tf = self._tf
-        return b2Vec2(tf.x, tf.y)
+        """The origin's world position: a vector that stays this body's (pybox2d's alias):
+        it reads the current position after later steps, and writing ``x`` or ``y``
+        through it moves the body. ``.copy()`` gives a snapshot."""
+        return PositionView(self)
 
     @position.setter
     def position(self, value: Any) -> None:
@@ -193,8 +282,8 @@ class b2Body:
     # -- velocity and flags -----------------------------------------------------------------------
     @property
     def linearVelocity(self) -> b2Vec2:
-        vx, vy = self._rb.velocity
-        return b2Vec2(vx, vy)
+        """The centre of mass's velocity (m/s), a live vector like :attr:`position`."""
+        return VelocityView(self)
 
     @linearVelocity.setter
     def linearVelocity(self, value: Any) -> None:
@@ -283,6 +372,20 @@ class b2Body:
 
     def ResetMassData(self) -> None:
         self._rb.mass = None
+        self._mass_changed()
+
+    def _mass_changed(self) -> None:
+        """The fixtures (so the centre of mass) changed: as Box2D's ResetMassData, the
+        centre's velocity becomes that of its new point, ``v += w x (c_new - c_old)``
+        (kge's physics did that to its body already; the component catches up now, so
+        ``linearVelocity`` reads it before the next step, as in pybox2d)."""
+        rb = self._rb
+        if rb.type is not BodyType.DYNAMIC or not rb.angular_velocity or self._world._locked:
+            return
+        center = self.worldCenter
+        live = self._world._physics.velocity_at_point(self._entity, (center.x, center.y))
+        if live != tuple(rb.velocity):
+            rb.velocity = live
 
     @property
     def localCenter(self) -> b2Vec2:
@@ -358,8 +461,8 @@ class b2Body:
     # -- fixtures -------------------------------------------------------------------------------
     @property
     def fixtures(self) -> list[b2Fixture]:
-        """Newest first, as Box2D's fixture list."""
-        return self._fixtures[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._fixtures)
 
     def CreateFixture(self, defn: b2FixtureDef | None = None, **kwargs: Any) -> b2Fixture:
         if defn is None:
@@ -387,13 +490,24 @@ class b2Body:
         return self._shaped(b2EdgeShape(), kwargs, ("vertices",))
 
     def CreateChainFixture(self, **kwargs: Any) -> b2Fixture:
-        return self._shaped(b2ChainShape(), kwargs, ("vertices",))
+        """A chain fixture: ``vertices=`` closes it into a loop, ``vertices_chain=`` leaves
+        it open (pybox2d's rules)."""
+        return self._shaped(b2ChainShape(), kwargs,
+                            ("vertices", "vertices_chain", "vertices_loop"))
 
     def CreateLoopFixture(self, **kwargs: Any) -> b2Fixture:
-        return self._shaped(b2LoopShape(), kwargs, ("vertices",))
+        return self._shaped(b2LoopShape(), kwargs, ("vertices", "vertices_loop"))
 
-    def CreateEdgeChain(self, edge_list: Any) -> b2Fixture:
-        return self.CreateFixture(b2FixtureDef(shape=b2ChainShape(vertices=edge_list)))
+    def CreateEdgeChain(self, edge_list: Any) -> None:
+        """One separate edge fixture per pair of consecutive points, as pybox2d makes them
+        (not a chain: the edges do not know their neighbours); returns None, as pybox2d."""
+        if isinstance(edge_list, (str, bytes)) or not hasattr(edge_list, "__len__"):
+            raise MissingError(f"CreateEdgeChain needs a list of points, got {edge_list!r}")
+        if len(edge_list) < 2:
+            raise ValidationError(f"CreateEdgeChain: edge list length >= 2, got {len(edge_list)}")
+        pts = [as_xy(p, "CreateEdgeChain", f"edge_list[{i}]") for i, p in enumerate(edge_list)]
+        for a, b in itertools.pairwise(pts):
+            self.CreateFixture(b2FixtureDef(shape=b2EdgeShape(vertices=[a, b])))
 
     def CreateFixturesFromShapes(self, shapes: Any = None, shapeFixture: Any = None) -> None:
         template = shapeFixture if shapeFixture is not None else b2FixtureDef()
@@ -412,8 +526,8 @@ class b2Body:
     # -- joints and contacts --------------------------------------------------------------------
     @property
     def joints(self) -> list[b2JointEdge]:
-        return [b2JointEdge(j, j.bodyB if j.bodyA is self else j.bodyA)
-                for j in self._joints[::-1]]
+        """Oldest first, as pybox2d's list."""
+        return [b2JointEdge(j, j.bodyB if j.bodyA is self else j.bodyA) for j in self._joints]
 
     @property
     def contacts(self) -> list[b2ContactEdge]:

@@ -61,3 +61,8 @@ e_motorJoint = 11
 
 b2_version = (2, 3, 1)
 b2_version_string = "2.3.1 (kge.box2d)"
+
+# b2Globals' statistics of Box2D's time of impact (the most iterations one call needed):
+# pybox2d exposes them; kge's time of impact does not count its iterations, so they stay 0
+b2_toiMaxIters = 0
+b2_toiMaxRootIters = 0

@@ -15,15 +15,17 @@ Box2D's contact list also holds pairs whose bounding boxes merely overlap
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from kge import collision
+from kge.box2d.constants import b2_maxManifoldPoints
 from kge.box2d.vec import b2Vec2
 
 if TYPE_CHECKING:
     from kge.box2d.fixture import b2Fixture
 
 Vec2 = tuple[float, float]
+Poses = tuple[tuple[float, float, float], tuple[float, float, float]]
 
 
 class b2ManifoldPoint:
@@ -55,14 +57,40 @@ class b2Manifold:
     def pointCount(self) -> int:
         return len(self.points)
 
+    @property
+    def type_(self) -> int:
+        """pybox2d's name for ``type``."""
+        return self.type
+
+
+class DeferredManifold(b2Manifold):
+    """A contact's manifold at a past moment (its poses kept), computed when first read:
+    PreSolve's ``oldManifold``, which most listeners never look at."""
+
+    def __init__(self, contact: b2Contact, poses: Poses) -> None:
+        object.__setattr__(self, "_source", (contact, poses))
+
+    def __getattr__(self, name: str) -> Any:
+        if name == "_source":
+            raise AttributeError(name)
+        contact, poses = self._source
+        done = contact._manifold_at(poses)
+        self.__dict__.update(vars(done))
+        return getattr(done, name)
+
 
 class b2WorldManifold:
-    """World normal (from A to B), world points and separations."""
+    """World normal (from A to B), world points and separations.
 
-    def __init__(self, normal: b2Vec2, points: list[b2Vec2], separations: list[float]) -> None:
+    ``points`` always has ``b2_maxManifoldPoints`` (2) entries, as pybox2d's: the
+    manifold's ``pointCount`` first, then ``(0, 0)``; so do ``separations``.
+    """
+
+    def __init__(self, normal: b2Vec2, points: list[Vec2], separations: list[float]) -> None:
         self.normal = normal
-        self.points = points
-        self.separations = separations
+        pad = b2_maxManifoldPoints - len(points)
+        self.points: tuple[Vec2, ...] = (*((x, y) for x, y in points), *[(0.0, 0.0)] * pad)
+        self.separations = [*separations, *[0.0] * pad]
 
 
 class b2ContactImpulse:
@@ -127,11 +155,14 @@ class b2Contact:
     def ResetRestitution(self) -> None:
         self._restitution = None
 
-    def _collide(self) -> collision.Manifold | None:
-        """The live manifold (deepest over chain children), or None if apart now."""
-        fa, fb = self._fixtureA, self._fixtureB
-        sa, sb = fa._col.shape, fb._col.shape
-        xa, xb = fa.body._pose(), fb.body._pose()
+    def _poses(self) -> Poses:
+        return (self._fixtureA.body._pose(), self._fixtureB.body._pose())
+
+    def _collide(self, poses: Poses | None = None) -> collision.Manifold | None:
+        """The manifold at ``poses`` (default: now; the deepest over chain children), or
+        None if the shapes are apart there."""
+        sa, sb = self._fixtureA._col.shape, self._fixtureB._col.shape
+        xa, xb = poses or self._poses()
         best: collision.Manifold | None = None
         for ca in range(collision.child_count(sa)):
             for cb in range(collision.child_count(sb)):
@@ -144,15 +175,17 @@ class b2Contact:
     def worldManifold(self) -> b2WorldManifold:
         m = self._collide()
         if m is not None:
-            return b2WorldManifold(b2Vec2(*m.normal), [b2Vec2(*p) for p in m.points],
-                                   list(m.separations))
+            return b2WorldManifold(b2Vec2(*m.normal), list(m.points), list(m.separations))
         n = self._normal
-        return b2WorldManifold(b2Vec2(*n), [b2Vec2(*p) for p in self._points],
+        return b2WorldManifold(b2Vec2(*n), list(self._points),
                                [self._separation] * len(self._points))
 
     @property
     def manifold(self) -> b2Manifold:
-        m = self._collide()
+        return self._manifold_at(None)
+
+    def _manifold_at(self, poses: Poses | None) -> b2Manifold:
+        m = self._collide(poses)
         if m is not None:
             out = b2Manifold([b2ManifoldPoint(b2Vec2(*p.local_point)) for p in m.local_points],
                              b2Vec2(*m.local_normal), b2Vec2(*m.local_point))
@@ -165,6 +198,13 @@ class b2Contact:
         normal = body_a.GetLocalVector(self._normal)
         anchor = body_a.GetLocalPoint(self._points[0]) if self._points else b2Vec2(0, 0)
         return b2Manifold(pts, normal, anchor)
+
+    def _remember_manifold(self) -> b2Manifold:
+        """For PreSolve: the manifold of the previous PreSolve (its ``oldManifold``); this
+        step's is kept for the next one (the bodies' poses now), computed only if read."""
+        old = self._last_manifold
+        self._last_manifold = DeferredManifold(self, self._poses())
+        return old
 
     def __repr__(self) -> str:
         return f"b2Contact(fixtureA={self._fixtureA!r}, fixtureB={self._fixtureB!r})"

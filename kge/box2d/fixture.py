@@ -15,8 +15,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from kge.box2d.errors import KeywordError, MissingError
 from kge.box2d.massdata import b2MassData
-from kge.box2d.shapes import b2Shape, from_kge
+from kge.box2d.shapes import b2CircleShape, b2Shape, from_kge
 from kge.box2d.vec import as_xy, b2Vec2
 from kge.components.collider import Collider
 from kge.components.filter import Filter
@@ -27,12 +28,19 @@ if TYPE_CHECKING:
 
 
 def set_keywords(obj: Any, kwargs: dict[str, Any]) -> None:
-    """Apply constructor keywords as properties, refusing names the class does not have."""
+    """Apply constructor keywords as properties, refusing names the class does not have
+    (pybox2d raises AttributeError: :class:`~kge.box2d.errors.KeywordError` is one)."""
     cls = type(obj)
     for name, value in kwargs.items():
         if not hasattr(cls, name) and name not in obj.__dict__:
-            raise ComponentTypeError(f"{cls.__name__} has no property {name!r}")
+            raise KeywordError(f"{cls.__name__} has no property {name!r}")
         setattr(obj, name, value)
+
+
+def massless_density(shape: b2Shape, density: float) -> float:
+    """The collider density for ``shape``: 0 for a point (a zero-radius circle, which
+    Box2D gives no mass; kge's stand-in circle must not get any either)."""
+    return 0.0 if isinstance(shape, b2CircleShape) and shape.is_point else density
 
 
 class b2Filter:
@@ -82,12 +90,14 @@ class b2FixtureDef:
         """The Collider component (checked by kge) and the fixture's own copy of the shape."""
         shape = self.shape
         if not isinstance(shape, b2Shape):
-            raise ComponentTypeError(f"b2FixtureDef.shape must be a b2 shape, got {shape!r}")
+            raise MissingError(f"b2FixtureDef.shape: must specify the shape for the fixture "
+                               f"(a b2 shape), got {shape!r}")
         filt = self.filter
         if not isinstance(filt, b2Filter):
             raise ComponentTypeError(f"b2FixtureDef.filter must be a b2Filter, got {filt!r}")
         col = Collider(
-            shape.to_kge(), density=self.density, friction=self.friction,
+            shape.to_kge(), density=massless_density(shape, self.density),
+            friction=self.friction,
             restitution=self.restitution, filter=filt.to_kge(), sensor=self.isSensor,
             body=body_entity,
         )
@@ -98,7 +108,7 @@ class b2Fixture:
     """A shape attached to a body, with material and filter (a kge Collider entity)."""
 
     def __init__(self, body: b2Body, entity: int, col: Collider, shape: b2Shape,
-                 user_data: Any) -> None:
+                 user_data: Any, density: float) -> None:
         self._body = body
         self._entity = entity
         self._col = col
@@ -106,10 +116,15 @@ class b2Fixture:
         shape._owner = self
         self.userData = user_data
         self._destroyed = False
+        #: the density the program gave (the collider's is 0 for a point circle)
+        self._density = float(density)
 
     def _reshape(self, shape: b2Shape) -> None:
-        """The fixture's shape was edited in place: the collider takes the new geometry."""
-        self._live().shape = shape.to_kge()
+        """The fixture's shape was edited in place: the collider takes the new geometry
+        (and a circle shrunk to a point loses its mass)."""
+        col = self._live()
+        col.shape = shape.to_kge()
+        col.density = massless_density(shape, self._density)
 
     @property
     def entity(self) -> int:
@@ -133,8 +148,14 @@ class b2Fixture:
             raise ValidationError(f"b2Fixture (collider entity {self._entity}) was destroyed")
         return self._col
 
-    density = property(lambda self: self._col.density,
-                       lambda self, v: setattr(self._live(), "density", v))
+    @property
+    def density(self) -> float:
+        return self._density
+
+    @density.setter
+    def density(self, value: float) -> None:
+        self._live().density = massless_density(self._shape, value)
+        self._density = float(value)
     friction = property(lambda self: self._col.friction,
                         lambda self, v: setattr(self._live(), "friction", v))
     restitution = property(lambda self: self._col.restitution,

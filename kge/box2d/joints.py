@@ -23,6 +23,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from kge.box2d import constants as c
+from kge.box2d.errors import KeywordError, MissingError, b2AssertException
 from kge.box2d.vec import as_xy, b2Vec2
 from kge.components import joints as kj
 from kge.errors import ComponentTypeError, ValidationError
@@ -71,17 +72,35 @@ class b2JointDef:
         for name, (_, default, _conv) in self.FIELDS.items():
             value = b2Vec2(*default) if isinstance(default, tuple) else default
             object.__setattr__(self, name, value)
+        kwargs.pop("type", None)  # to_kwargs() passes it back; the class says the type
         init = {k: kwargs.pop(k) for k in self.INIT_KEYS if k in kwargs}
         for name, value in kwargs.items():
             if name not in self.FIELDS and name not in ("bodyA", "bodyB", "userData"):
-                raise ComponentTypeError(f"{type(self).__name__} has no property {name!r}")
+                raise KeywordError(f"{type(self).__name__} has no property {name!r}")
             setattr(self, name, value)
         if init:
             self._initialize(**init)
         if (self.REFERENCE_FROM_BODIES and self.bodyA is not None and self.bodyB is not None
-                and "referenceAngle" not in kwargs):
+                and "referenceAngle" not in kwargs and "referenceAngle" in self.FIELDS):
             a, b = self._bodies()
             setattr(self, "referenceAngle", b.angle - a.angle)  # noqa: B010 - a FIELDS name
+
+    @property
+    def type(self) -> int:
+        """The joint type number (``e_revoluteJoint``...)."""
+        return self.TYPE
+
+    def to_kwargs(self) -> dict[str, Any]:
+        """The definition as keywords for ``world.Create*Joint(**kwargs)`` (pybox2d's)."""
+        out: dict[str, Any] = {"bodyA": self.bodyA, "bodyB": self.bodyB,
+                               "userData": self.userData, "type": self.TYPE}
+        for name in self.FIELDS:
+            v = getattr(self, name)
+            out[name] = v.copy() if isinstance(v, b2Vec2) else v
+        return out
+
+    def ClearUserData(self) -> None:
+        self.userData = None
 
     def __setattr__(self, name: str, value: Any) -> None:
         spec = self.FIELDS.get(name)
@@ -100,8 +119,8 @@ class b2JointDef:
         a, b = self.bodyA, self.bodyB
         for name, body in (("bodyA", a), ("bodyB", b)):
             if not isinstance(body, b2Body):
-                raise ComponentTypeError(
-                    f"{type(self).__name__}.{name} must be a b2Body, got {body!r}")
+                raise MissingError(
+                    f"{type(self).__name__}: bodyA and bodyB must be set; {name} is {body!r}")
         assert a is not None and b is not None
         return a, b
 
@@ -109,7 +128,7 @@ class b2JointDef:
         """The kge joint component this definition describes (kge checks the values)."""
         a, b = self._bodies()
         if a is b:
-            raise ValidationError(
+            raise b2AssertException(
                 f"{type(self).__name__}: bodyA and bodyB are the same body (entity {a.entity}); "
                 "a joint needs two different bodies"
             )
@@ -125,16 +144,32 @@ class b2JointDef:
 class _AnchorDef(b2JointDef):
     """Defs initialised from one world anchor (revolute, weld, friction)."""
 
-    INIT_KEYS = ("anchor",)
+    INIT_KEYS: ClassVar[tuple[str, ...]] = ("anchor",)
 
     def _initialize(self, anchor: Any = None, **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor)
 
     def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
+        """Both bodies and the world ``anchor`` (and, when the joint has one, the
+        reference angle: the angle between the bodies now)."""
         self.bodyA, self.bodyB = bodyA, bodyB
         a, b = self._bodies()
         self.localAnchorA = a.GetLocalPoint(anchor)
         self.localAnchorB = b.GetLocalPoint(anchor)
+        if "referenceAngle" in self.FIELDS:
+            self.referenceAngle = b.angle - a.angle
+
+    @property
+    def anchor(self) -> b2Vec2:
+        """The world anchor (from ``bodyA``); setting it sets both local anchors."""
+        a, _ = self._bodies()
+        return a.GetWorldPoint(self.localAnchorA)
+
+    @anchor.setter
+    def anchor(self, value: Any) -> None:
+        a, b = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(value)
+        self.localAnchorB = b.GetLocalPoint(value)
 
 
 class b2RevoluteJointDef(_AnchorDef):
@@ -150,11 +185,6 @@ class b2RevoluteJointDef(_AnchorDef):
     COMPONENT = kj.RevoluteJoint
     TYPE = c.e_revoluteJoint
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any) -> None:
-        super().Initialize(bodyA, bodyB, anchor)
-        a, b = self._bodies()
-        self.referenceAngle = b.angle - a.angle
-
 
 class b2WeldJointDef(_AnchorDef):
     REFERENCE_FROM_BODIES = True
@@ -164,7 +194,6 @@ class b2WeldJointDef(_AnchorDef):
               "dampingRatio": ("damping_ratio", 0.0, float)}
     COMPONENT = kj.WeldJoint
     TYPE = c.e_weldJoint
-    Initialize = b2RevoluteJointDef.Initialize
 
 
 class b2FrictionJointDef(_AnchorDef):
@@ -175,7 +204,7 @@ class b2FrictionJointDef(_AnchorDef):
     TYPE = c.e_frictionJoint
 
 
-class _AnchorAxisDef(b2JointDef):
+class _AnchorAxisDef(_AnchorDef):
     """Defs initialised from one world anchor and one world axis (prismatic, wheel)."""
 
     INIT_KEYS = ("anchor", "axis")
@@ -183,12 +212,22 @@ class _AnchorAxisDef(b2JointDef):
     def _initialize(self, anchor: Any = None, axis: Any = (1.0, 0.0), **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchor, axis)
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
-        self.bodyA, self.bodyB = bodyA, bodyB
-        a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchor)
-        self.localAnchorB = b.GetLocalPoint(anchor)
-        self.localAxisA = a.GetLocalVector(axis)
+    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any,  # type: ignore[override]
+                   axis: Any) -> None:
+        """Both bodies, the world ``anchor`` and the world ``axis`` of translation."""
+        super().Initialize(bodyA, bodyB, anchor)
+        self.axis = axis
+
+    @property
+    def axis(self) -> b2Vec2:
+        """The world axis (from ``bodyA``); setting it sets ``localAxisA``."""
+        a, _ = self._bodies()
+        return a.GetWorldVector(self.localAxisA)
+
+    @axis.setter
+    def axis(self, value: Any) -> None:
+        a, _ = self._bodies()
+        self.localAxisA = a.GetLocalVector(value)
 
 
 class b2PrismaticJointDef(_AnchorAxisDef):
@@ -205,11 +244,6 @@ class b2PrismaticJointDef(_AnchorAxisDef):
     COMPONENT = kj.PrismaticJoint
     TYPE = c.e_prismaticJoint
 
-    def Initialize(self, bodyA: Any, bodyB: Any, anchor: Any, axis: Any) -> None:
-        super().Initialize(bodyA, bodyB, anchor, axis)
-        a, b = self._bodies()
-        self.referenceAngle = b.angle - a.angle
-
 
 class b2WheelJointDef(_AnchorAxisDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
@@ -223,14 +257,40 @@ class b2WheelJointDef(_AnchorAxisDef):
     TYPE = c.e_wheelJoint
 
 
-class b2DistanceJointDef(b2JointDef):
+class _TwoAnchorDef(b2JointDef):
+    """Defs with an anchor on each body (distance, rope, pulley): ``anchorA`` and
+    ``anchorB`` read and write them as world points."""
+
+    INIT_KEYS = ("anchorA", "anchorB")
+
+    @property
+    def anchorA(self) -> b2Vec2:
+        a, _ = self._bodies()
+        return a.GetWorldPoint(self.localAnchorA)
+
+    @anchorA.setter
+    def anchorA(self, value: Any) -> None:
+        a, _ = self._bodies()
+        self.localAnchorA = a.GetLocalPoint(value)
+
+    @property
+    def anchorB(self) -> b2Vec2:
+        _, b = self._bodies()
+        return b.GetWorldPoint(self.localAnchorB)
+
+    @anchorB.setter
+    def anchorB(self, value: Any) -> None:
+        _, b = self._bodies()
+        self.localAnchorB = b.GetLocalPoint(value)
+
+
+class b2DistanceJointDef(_TwoAnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "length": ("length", 1.0, float),
               "frequencyHz": ("frequency_hz", 0.0, float),
               "dampingRatio": ("damping_ratio", 0.0, float)}
     COMPONENT = kj.DistanceJoint
     TYPE = c.e_distanceJoint
-    INIT_KEYS = ("anchorA", "anchorB")
 
     def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
         self.Initialize(self.bodyA, self.bodyB, anchorA, anchorB)
@@ -244,24 +304,22 @@ class b2DistanceJointDef(b2JointDef):
         self.length = (pb - pa).length
 
 
-class b2RopeJointDef(b2JointDef):
+class b2RopeJointDef(_TwoAnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE,
               "localAnchorA": ("local_anchor_a", (-1.0, 0.0), _vec),
               "localAnchorB": ("local_anchor_b", (1.0, 0.0), _vec),
               "maxLength": ("max_length", 0.0, float)}
     COMPONENT = kj.RopeJoint
     TYPE = c.e_ropeJoint
-    INIT_KEYS = ("anchorA", "anchorB")
 
     def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
-        a, b = self._bodies()
         if anchorA is not None:
-            self.localAnchorA = a.GetLocalPoint(anchorA)
+            self.anchorA = anchorA
         if anchorB is not None:
-            self.localAnchorB = b.GetLocalPoint(anchorB)
+            self.anchorB = anchorB
 
 
-class b2PulleyJointDef(b2JointDef):
+class b2PulleyJointDef(_TwoAnchorDef):
     FIELDS: ClassVar[dict[str, Field]] = {**_BASE, **_ANCHORS,
               "groundAnchorA": ("ground_anchor_a", (-1.0, 1.0), _vec),
               "groundAnchorB": ("ground_anchor_b", (1.0, 1.0), _vec),
@@ -269,12 +327,9 @@ class b2PulleyJointDef(b2JointDef):
               "collideConnected": ("collide_connected", True, bool)}
     COMPONENT = kj.PulleyJoint
     TYPE = c.e_pulleyJoint
-    INIT_KEYS = ("anchorA", "anchorB")
 
     def _initialize(self, anchorA: Any = None, anchorB: Any = None, **_: Any) -> None:
-        a, b = self._bodies()
-        self.localAnchorA = a.GetLocalPoint(anchorA)
-        self.localAnchorB = b.GetLocalPoint(anchorB)
+        self.anchorA, self.anchorB = anchorA, anchorB
 
     def Initialize(self, bodyA: Any, bodyB: Any, groundAnchorA: Any, groundAnchorB: Any,
                    anchorA: Any, anchorB: Any, ratio: float) -> None:
@@ -334,6 +389,9 @@ class b2GearJointDef(b2JointDef):
                 setattr(self, k, kwargs.pop(k))
         super().__init__(**kwargs)
 
+    def to_kwargs(self) -> dict[str, Any]:
+        return {**super().to_kwargs(), "joint1": self.joint1, "joint2": self.joint2}
+
     def component(self, world: b2World) -> kj.Joint:
         j1, j2 = self.joint1, self.joint2
         for name, j in (("joint1", j1), ("joint2", j2)):
@@ -354,7 +412,7 @@ def _live_field(field: str, conv: Callable[[Any], Any]) -> property:
 
     def put(self: b2Joint, value: Any) -> None:
         self._check_live()
-        setattr(self._comp, field, conv(value))
+        self._set(field, conv(value))
 
     return property(get, put)
 
@@ -365,6 +423,11 @@ def _read(field: str) -> property:
         return b2Vec2(*v) if isinstance(v, tuple) else v
 
     return property(get)
+
+
+def _alias(name: str) -> property:
+    """Another name for the property ``name`` (pybox2d's joint names differ from its defs')."""
+    return property(lambda self: getattr(self, name), lambda self, v: setattr(self, name, v))
 
 
 class b2Joint:
@@ -396,6 +459,13 @@ class b2Joint:
         if self._destroyed:
             raise ValidationError(f"{type(self).__name__} (entity {self._entity}) was destroyed")
 
+    def _set(self, field: str, value: Any) -> None:
+        """Write a component field; a value Box2D would assert on raises b2AssertException."""
+        try:
+            setattr(self._comp, field, value)
+        except ValidationError as e:
+            raise b2AssertException(str(e)) from None
+
     @property
     def entity(self) -> int:
         return self._entity
@@ -403,18 +473,32 @@ class b2Joint:
     bodyA = property(lambda self: self._bodyA)
     bodyB = property(lambda self: self._bodyB)
     type = property(lambda self: self.DEF.TYPE)
+    collideConnected = property(lambda self: bool(self._comp.collide_connected))
+
+    def getAsType(self) -> b2Joint:
+        """This joint as its own type (pybox2d's downcast: kge's joints already are)."""
+        return self
+
+    def ClearUserData(self) -> None:
+        self.userData = None
 
     @property
     def active(self) -> bool:
         return bool(self._bodyA.active and self._bodyB.active)
 
+    def GetLocalAnchorA(self) -> b2Vec2:
+        return b2Vec2(*getattr(self._comp, "local_anchor_a", (0.0, 0.0)))
+
+    def GetLocalAnchorB(self) -> b2Vec2:
+        return b2Vec2(*(getattr(self._comp, "local_anchor_b", None) or (0.0, 0.0)))
+
     @property
     def anchorA(self) -> b2Vec2:
-        return self._bodyA.GetWorldPoint(getattr(self._comp, "local_anchor_a", (0.0, 0.0)))
+        return self._bodyA.GetWorldPoint(self.GetLocalAnchorA())
 
     @property
     def anchorB(self) -> b2Vec2:
-        return self._bodyB.GetWorldPoint(getattr(self._comp, "local_anchor_b", None) or (0, 0))
+        return self._bodyB.GetWorldPoint(self.GetLocalAnchorB())
 
     def GetReactionForce(self, inv_dt: float = 0.0) -> b2Vec2:
         """The force on bodyB at the anchor over the last step (N)."""
@@ -423,29 +507,46 @@ class b2Joint:
     def GetReactionTorque(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.reaction_torque)
 
+    def ShiftOrigin(self, newOrigin: Any) -> None:
+        """Nothing to do: kge joints keep no world-space state to shift."""
+
+    def Dump(self) -> None:
+        print(repr(self))
+
     def __repr__(self) -> str:
         return f"{type(self).__name__}(entity={self._entity})"
 
 
-class _Limits:
-    """pybox2d's limit/motor aliases shared by revolute and prismatic joints."""
+class _Motor:
+    """``motorEnabled`` and ``EnableMotor`` (revolute, prismatic, wheel)."""
 
-    _LIMIT: ClassVar[tuple[str, str]]
     _comp: Any
 
-    limitEnabled = property(lambda self: self._comp.enable_limit,
-                            lambda self, v: setattr(self._comp, "enable_limit", bool(v)))
     motorEnabled = property(lambda self: self._comp.enable_motor,
                             lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
-
-    def EnableLimit(self, flag: bool) -> None:
-        self.limitEnabled = flag
 
     def EnableMotor(self, flag: bool) -> None:
         self.motorEnabled = flag
 
+
+class _Limits(_Motor):
+    """pybox2d's limit names shared by revolute and prismatic joints: ``limits``,
+    ``lowerLimit``, ``upperLimit`` (each settable), ``limitEnabled``, ``SetLimits``."""
+
+    _LIMIT: ClassVar[tuple[str, str]]
+
+    limitEnabled = property(lambda self: self._comp.enable_limit,
+                            lambda self, v: setattr(self._comp, "enable_limit", bool(v)))
+
+    def EnableLimit(self, flag: bool) -> None:
+        self.limitEnabled = flag
+
     def SetLimits(self, lower: float, upper: float) -> None:
-        self._comp.set_limits(lower, upper)
+        """Both limits at once; ``lower > upper`` is Box2D's assertion (b2AssertException)."""
+        try:
+            self._comp.set_limits(lower, upper)
+        except ValidationError as e:
+            raise b2AssertException(str(e)) from None
 
     @property
     def limits(self) -> tuple[float, float]:
@@ -456,8 +557,21 @@ class _Limits:
     def limits(self, value: Any) -> None:
         self.SetLimits(*value)
 
-    lowerLimit = property(lambda self: self.limits[0])
-    upperLimit = property(lambda self: self.limits[1])
+    @property
+    def lowerLimit(self) -> float:
+        return float(self.limits[0])
+
+    @lowerLimit.setter
+    def lowerLimit(self, value: float) -> None:
+        self.SetLimits(value, self.limits[1])
+
+    @property
+    def upperLimit(self) -> float:
+        return float(self.limits[1])
+
+    @upperLimit.setter
+    def upperLimit(self, value: float) -> None:
+        self.SetLimits(self.limits[0], value)
 
 
 class b2RevoluteJoint(_Limits, b2Joint):
@@ -470,6 +584,12 @@ class b2RevoluteJoint(_Limits, b2Joint):
     def GetMotorTorque(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.motor_torque)
 
+    def GetMaxMotorTorque(self) -> float:
+        return float(self._comp.max_motor_torque)
+
+    def GetReferenceAngle(self) -> float:
+        return float(self._comp.reference_angle or 0.0)
+
 
 class b2PrismaticJoint(_Limits, b2Joint):
     DEF = b2PrismaticJointDef
@@ -481,35 +601,63 @@ class b2PrismaticJoint(_Limits, b2Joint):
     def GetMotorForce(self, inv_dt: float = 0.0) -> float:
         return float(self._comp.motor_force)
 
+    def GetLocalAxisA(self) -> b2Vec2:
+        return b2Vec2(*self._comp.local_axis_a)
 
-class b2WheelJoint(b2Joint):
+    def GetReferenceAngle(self) -> float:
+        return float(self._comp.reference_angle or 0.0)
+
+
+class b2WheelJoint(_Motor, b2Joint):
     DEF = b2WheelJointDef
     translation = _read("translation")
     speed = _read("speed")
     motorTorque = _read("motor_torque")
-    motorEnabled = property(lambda self: self._comp.enable_motor,
-                            lambda self, v: setattr(self._comp, "enable_motor", bool(v)))
-    springFrequencyHz = property(lambda self: self._comp.frequency_hz,
-                                 lambda self, v: setattr(self._comp, "frequency_hz", v))
-    springDampingRatio = property(lambda self: self._comp.damping_ratio,
-                                  lambda self, v: setattr(self._comp, "damping_ratio", v))
+    springFrequencyHz = _alias("frequencyHz")
+    springDampingRatio = _alias("dampingRatio")
+
+    def GetMotorTorque(self, inv_dt: float = 0.0) -> float:
+        return float(self._comp.motor_torque)
+
+    def GetLocalAxisA(self) -> b2Vec2:
+        return b2Vec2(*self._comp.local_axis_a)
 
 
 class b2DistanceJoint(b2Joint):
     DEF = b2DistanceJointDef
+    frequency = _alias("frequencyHz")
 
 
 class b2RopeJoint(b2Joint):
     DEF = b2RopeJointDef
 
+    def SetMaxLength(self, length: float) -> None:
+        self.maxLength = length
+
     @property
     def limitState(self) -> int:
+        """``e_atUpperLimit`` (2) when the rope is taut, else ``e_inactiveLimit`` (0)."""
         d = (self.anchorB - self.anchorA).length
         return 2 if d >= self._comp.max_length - c.b2_linearSlop else 0
 
 
 class b2WeldJoint(b2Joint):
     DEF = b2WeldJointDef
+
+    def GetReferenceAngle(self) -> float:
+        return float(self._comp.reference_angle or 0.0)
+
+    def GetFrequency(self) -> float:
+        return float(self.frequencyHz)
+
+    def SetFrequency(self, hz: float) -> None:
+        self.frequencyHz = hz
+
+    def GetDampingRatio(self) -> float:
+        return float(self.dampingRatio)
+
+    def SetDampingRatio(self, ratio: float) -> None:
+        self.dampingRatio = ratio
 
 
 class b2FrictionJoint(b2Joint):
@@ -522,6 +670,7 @@ class b2MotorJoint(b2Joint):
 
 class b2MouseJoint(b2Joint):
     DEF = b2MouseJointDef
+    frequency = _alias("frequencyHz")
 
     @property
     def anchorA(self) -> b2Vec2:
@@ -542,6 +691,12 @@ class b2PulleyJoint(b2Joint):
     lengthA = length1
     lengthB = length2
 
+    def GetCurrentLengthA(self) -> float:
+        return (self.anchorA - self.groundAnchorA).length
+
+    def GetCurrentLengthB(self) -> float:
+        return (self.anchorB - self.groundAnchorB).length
+
 
 class b2GearJoint(b2Joint):
     DEF = b2GearJointDef
@@ -549,6 +704,12 @@ class b2GearJoint(b2Joint):
     def __init__(self, *args: Any, joint1: b2Joint, joint2: b2Joint) -> None:
         super().__init__(*args)
         self.joint1, self.joint2 = joint1, joint2
+
+    def GetJoint1(self) -> b2Joint:
+        return self.joint1
+
+    def GetJoint2(self) -> b2Joint:
+        return self.joint2
 
 
 JOINT_CLASSES: dict[type[b2JointDef], type[b2Joint]] = {

@@ -22,26 +22,43 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from kge import collision
 from kge.box2d.constants import b2_linearSlop, b2_maxPolygonVertices, b2_polygonRadius
+from kge.box2d.errors import MissingError, b2AssertException
+from kge.box2d.rays import cast
 from kge.box2d.transform import b2AABB, b2Transform
 from kge.box2d.vec import as_xy, b2Vec2
+from kge.collision.geometry import convex
 from kge.components.shapes import Chain, Circle, Edge, Polygon, Shape
 from kge.errors import ComponentTypeError, ValidationError
 
 Vec2 = tuple[float, float]
 
+#: the kge radius of a zero-radius b2CircleShape (m): far below Box2D's linear slop, so
+#: the point collides as Box2D's does, through the other shape's skin
+POINT_RADIUS = 1e-6
+
 
 def _points(value: Any, owner: str) -> list[Vec2]:
+    """The points of a ``vertices`` value; anything but pairs of numbers is a MissingError
+    (pybox2d's ValueError)."""
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
-        raise ComponentTypeError(f"{owner}.vertices must be a sequence of points, got {value!r}")
-    return [as_xy(p, owner, f"vertices[{i}]") for i, p in enumerate(value)]
+        raise MissingError(f"{owner}.vertices must be a sequence of points, got {value!r}")
+    try:
+        return [as_xy(p, owner, f"vertices[{i}]") for i, p in enumerate(value)]
+    except ComponentTypeError as e:
+        raise MissingError(str(e)) from None
 
 
 def polygon_hull(points: list[Vec2], owner: str = "b2PolygonShape") -> list[Vec2]:
     """Box2D 2.3's b2PolygonShape::Set: weld, then gift-wrap the convex hull."""
     n = len(points)
-    if not 3 <= n <= b2_maxPolygonVertices:
+    if n > b2_maxPolygonVertices:
         raise ValidationError(
+            f"{owner}.vertices must have 3..{b2_maxPolygonVertices} points, got {n}"
+        )
+    if n < 3:
+        raise b2AssertException(
             f"{owner}.vertices must have 3..{b2_maxPolygonVertices} points, got {n}"
         )
     weld = (0.5 * b2_linearSlop) ** 2
@@ -51,7 +68,7 @@ def polygon_hull(points: list[Vec2], owner: str = "b2PolygonShape") -> list[Vec2
             ps.append((x, y))
     n = len(ps)
     if n < 3:
-        raise ValidationError(f"{owner}: the points are degenerate (fewer than 3 apart)")
+        raise b2AssertException(f"{owner}: the points are degenerate (fewer than 3 apart)")
     i0 = 0
     x0 = ps[0][0]
     for i in range(1, n):
@@ -77,7 +94,7 @@ def polygon_hull(points: list[Vec2], owner: str = "b2PolygonShape") -> list[Vec2
         if ie == i0 or len(hull) > n:
             break
     if len(hull) < 3:
-        raise ValidationError(f"{owner}: the points are collinear (no area)")
+        raise b2AssertException(f"{owner}: the points are collinear (no area)")
     return [ps[i] for i in hull]
 
 
@@ -113,15 +130,32 @@ class b2Shape:
     def childCount(self) -> int:
         return 1
 
+    # Box2D's shape type numbers
+    e_circle, e_edge, e_polygon, e_chain, e_typeCount = 0, 1, 2, 3, 4
+
+    def getAsType(self) -> b2Shape:
+        """This shape as its own type (pybox2d's downcast: kge's shapes already are)."""
+        return self
+
     def getAABB(self, transform: b2Transform, childIndex: int = 0) -> b2AABB:
-        """The box around the shape placed at ``transform`` (with the skin radius)."""
-        pts = [transform * p for p in self._outline()]
+        """The box around child ``childIndex`` placed at ``transform`` (with the skin radius)."""
+        pts = [transform * p for p in self._outline(childIndex)]
         r = self.radius
         xs, ys = [p.x for p in pts], [p.y for p in pts]
         return b2AABB((min(xs) - r, min(ys) - r), (max(xs) + r, max(ys) + r))
 
-    def _outline(self) -> list[Vec2]:
+    def _outline(self, child: int = 0) -> list[Vec2]:
         raise NotImplementedError
+
+    def TestPoint(self, xf: b2Transform, p: Any) -> bool:
+        """Is the world point ``p`` inside this shape placed at ``xf``? (edges: never)"""
+        return collision.test_point(self.to_kge(), _pose(xf), as_xy(p, "TestPoint", "p"))
+
+    def RayCast(self, output: Any, input: Any, transform: b2Transform,
+                childIndex: int = 0) -> bool:
+        """Cast ``input``'s ray at child ``childIndex`` placed at ``transform``; on a hit
+        fill ``output`` (fraction, normal) and return True."""
+        return cast(self.to_kge(), _pose(transform), output, input, childIndex)
 
     def __copy__(self) -> b2Shape:
         new = type(self).__new__(type(self))
@@ -160,12 +194,19 @@ class b2CircleShape(b2Shape):
 
     p = pos
 
-    def to_kge(self) -> Shape:
-        if not self._radius > 0.0:
-            raise ValidationError(f"b2CircleShape.radius must be > 0, got {self._radius!r}")
-        return Circle(self._radius, (self._pos.x, self._pos.y))
+    @property
+    def is_point(self) -> bool:
+        """A radius of 0: Box2D's point, which touches polygons and edges by their skin."""
+        return self._radius == 0.0
 
-    def _outline(self) -> list[Vec2]:
+    def to_kge(self) -> Shape:
+        """The kge circle; a point (radius 0) becomes a circle of :data:`POINT_RADIUS`
+        (kge's circles need a size), whose fixture gets no mass, as Box2D's point has none."""
+        if not self._radius >= 0.0:
+            raise ValidationError(f"b2CircleShape.radius must be >= 0, got {self._radius!r}")
+        return Circle(self._radius or POINT_RADIUS, (self._pos.x, self._pos.y))
+
+    def _outline(self, child: int = 0) -> list[Vec2]:
         return [(self._pos.x, self._pos.y)]
 
     def __repr__(self) -> str:
@@ -249,7 +290,7 @@ class b2PolygonShape(b2Shape):
             raise ValidationError("b2PolygonShape has no vertices (give vertices= or box=)")
         return Polygon(self._vertices)
 
-    def _outline(self) -> list[Vec2]:
+    def _outline(self, child: int = 0) -> list[Vec2]:
         return self._vertices
 
     @property
@@ -265,13 +306,27 @@ class b2PolygonShape(b2Shape):
 
 
 class b2EdgeShape(b2Shape):
-    """A line segment from ``vertex1`` to ``vertex2``."""
+    """A line segment from ``vertex1`` to ``vertex2``, with optional ghost vertices.
+
+    pybox2d's ``vertices`` takes 2 to 4 points: ``[v1, v2]``, ``[v0, v1, v2]``,
+    ``[v0, v1, v2, v3]`` or ``[None, v1, v2, v3]``. The ghosts ``vertex0`` (before
+    ``vertex1``) and ``vertex3`` (after ``vertex2``) are the neighbouring edges'
+    far ends: Box2D uses them to slide shapes across the join without catching
+    on it, and so does kge (its chains do the same).
+
+    >>> e = b2EdgeShape(vertices=[None, (0, 0), (1, 0), (2, 1)])
+    >>> e.vertices, e.hasVertex0, e.hasVertex3, e.vertex3
+    ([(0.0, 0.0), (1.0, 0.0)], False, True, b2Vec2(2,1))
+    """
 
     def __init__(self, vertices: Any = None, vertex1: Any = None, vertex2: Any = None,
                  **kw: Any) -> None:
         self.radius = b2_polygonRadius
+        self.vertex0 = b2Vec2(0.0, 0.0)
         self.vertex1 = b2Vec2(0.0, 0.0)
         self.vertex2 = b2Vec2(0.0, 0.0)
+        self.vertex3 = b2Vec2(0.0, 0.0)
+        self.hasVertex0 = self.hasVertex3 = False
         if vertices is not None:
             self.vertices = vertices
         if vertex1 is not None:
@@ -286,24 +341,46 @@ class b2EdgeShape(b2Shape):
 
     @vertices.setter
     def vertices(self, value: Any) -> None:
-        pts = _points(value, "b2EdgeShape")
-        if len(pts) != 2:
-            raise ValidationError(f"b2EdgeShape.vertices must be 2 points, got {len(pts)}")
+        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
+            raise MissingError(f"b2EdgeShape.vertices must be 2 to 4 points, got {value!r}")
+        given = list(value)
+        if not 2 <= len(given) <= 4:
+            raise ValidationError(f"b2EdgeShape.vertices must be 2 to 4 points, got {len(given)}")
+        if len(given) == 2:
+            given = [None, *given, None]
+        elif len(given) == 3:
+            given = [*given, None]
+        v0, v1, v2, v3 = given
+        if v1 is None or v2 is None:
+            raise MissingError(f"b2EdgeShape.vertices: the edge's own two points are needed, "
+                               f"got {value!r}")
+        ghosts = [None if g is None else _points([g], "b2EdgeShape")[0] for g in (v0, v3)]
+        ends = _points([v1, v2], "b2EdgeShape")
         old = dict(self.__dict__)
-        self.vertex1, self.vertex2 = b2Vec2(*pts[0]), b2Vec2(*pts[1])
+        self.vertex1, self.vertex2 = b2Vec2(*ends[0]), b2Vec2(*ends[1])
+        self.hasVertex0, self.hasVertex3 = ghosts[0] is not None, ghosts[1] is not None
+        self.vertex0 = b2Vec2(*(ghosts[0] or (0.0, 0.0)))
+        self.vertex3 = b2Vec2(*(ghosts[1] or (0.0, 0.0)))
         self._commit(old)
 
     def Set(self, v1: Any, v2: Any) -> None:
         self.vertices = [v1, v2]
 
     @property
+    def vertexCount(self) -> int:
+        return 2 + self.hasVertex0 + self.hasVertex3
+
+    @property
     def all_vertices(self) -> list[Vec2]:
-        return self.vertices
+        """``vertex0`` to ``vertex3``, the ghosts included ((0, 0) where there is none)."""
+        return [self.vertex0.tuple, self.vertex1.tuple, self.vertex2.tuple, self.vertex3.tuple]
 
     def to_kge(self) -> Shape:
-        return Edge(self.vertex1.tuple, self.vertex2.tuple)
+        return Edge(self.vertex1.tuple, self.vertex2.tuple,
+                    vertex0=self.vertex0.tuple if self.hasVertex0 else None,
+                    vertex3=self.vertex3.tuple if self.hasVertex3 else None)
 
-    def _outline(self) -> list[Vec2]:
+    def _outline(self, child: int = 0) -> list[Vec2]:
         return self.vertices
 
     def __repr__(self) -> str:
@@ -311,44 +388,71 @@ class b2EdgeShape(b2Shape):
 
 
 class b2ChainShape(b2Shape):
-    """A chain of edges through ``vertices`` (open); :class:`b2LoopShape` closes it."""
+    """Connected edges through the points given, as pybox2d 2.3.10 builds them:
+    ``vertices=`` and ``vertices_loop=`` make a closed loop (its ``vertices`` read
+    back with the first point repeated at the end, as Box2D stores a loop), and
+    ``vertices_chain=`` an open chain. Either way the edges join smoothly (each one
+    knows its neighbours: Box2D's ghost vertices).
 
-    loop = False
+    >>> b2ChainShape(vertices=[(0, 0), (1, 0), (1, 1)]).childCount
+    3
+    >>> b2ChainShape(vertices_chain=[(0, 0), (1, 0), (1, 1)]).childCount
+    2
+    """
 
     def __init__(self, vertices: Any = None, vertices_chain: Any = None,
                  vertices_loop: Any = None, **kw: Any) -> None:
         self.radius = b2_polygonRadius
+        self.loop = True
         self._vertices: list[Vec2] = []
-        if vertices_loop is not None:
-            self.loop = True
-            vertices = vertices_loop
-        if vertices_chain is not None:
-            vertices = vertices_chain
         if vertices is not None:
             self.vertices = vertices
+        if vertices_loop is not None:
+            self.vertices_loop = vertices_loop
+        if vertices_chain is not None:
+            self.vertices_chain = vertices_chain
         _set_extra(self, kw)
 
-    @property
-    def vertices(self) -> list[Vec2]:
-        return list(self._vertices)
-
-    @vertices.setter
-    def vertices(self, value: Any) -> None:
+    def _set(self, value: Any, loop: bool) -> None:
         pts = _points(value, type(self).__name__)
-        need = 3 if self.loop else 2
-        if len(pts) < need:
-            raise ValidationError(
+        need = 3 if loop else 2
+        if len(pts) < need:  # pybox2d: a ValueError for a chain, Box2D's assertion for a loop
+            error = b2AssertException if loop else ValidationError
+            raise error(
                 f"{type(self).__name__}.vertices needs at least {need} points, got {len(pts)}"
             )
         old = dict(self.__dict__)
-        self._vertices = pts
+        self._vertices, self.loop = pts, loop
         self._commit(old)
 
-    vertices_chain = vertices
+    @property
+    def vertices(self) -> list[Vec2]:
+        """The points; a loop's first point comes again at the end (Box2D's storage)."""
+        return self._vertices + (self._vertices[:1] if self.loop else [])
+
+    @vertices.setter
+    def vertices(self, value: Any) -> None:
+        self._set(value, True)
+
+    @property
+    def vertices_loop(self) -> list[Vec2]:
+        return self.vertices
+
+    @vertices_loop.setter
+    def vertices_loop(self, value: Any) -> None:
+        self._set(value, True)
+
+    @property
+    def vertices_chain(self) -> list[Vec2]:
+        return self.vertices
+
+    @vertices_chain.setter
+    def vertices_chain(self, value: Any) -> None:
+        self._set(value, False)
 
     @property
     def vertexCount(self) -> int:
-        return len(self._vertices)
+        return len(self.vertices)
 
     @property
     def childCount(self) -> int:
@@ -357,23 +461,36 @@ class b2ChainShape(b2Shape):
 
     @property
     def edges(self) -> list[b2EdgeShape]:
-        vs = self._vertices + (self._vertices[:1] if self.loop else [])
-        return [b2EdgeShape(vertices=[vs[i], vs[i + 1]]) for i in range(len(vs) - 1)]
+        """Each child edge with its ghost vertices (its neighbours in the chain)."""
+        return [self.getChildEdge(i) for i in range(self.childCount)]
+
+    def getChildEdge(self, index: int) -> b2EdgeShape:
+        """Child edge ``index``, with its neighbours as ghost vertices (Box2D's GetChildEdge)."""
+        if not 0 <= index < self.childCount:
+            raise IndexError(f"{type(self).__name__} child {index} out of range "
+                             f"(0..{self.childCount - 1})")
+        piece = convex(self.to_kge(), index)
+        (v1, v2), v0, v3 = piece.vertices, piece.vertex0, piece.vertex3
+        return b2EdgeShape(vertices=[v0, v1, v2, v3])
 
     def to_kge(self) -> Shape:
         return Chain(self._vertices, loop=self.loop)
 
-    def _outline(self) -> list[Vec2]:
-        return self._vertices
+    def _outline(self, child: int = 0) -> list[Vec2]:
+        return self.getChildEdge(child).vertices
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(vertices={self._vertices!r})"
 
 
 class b2LoopShape(b2ChainShape):
-    """A closed chain (pybox2d's loop shape)."""
+    """pybox2d's loop shape: a :class:`b2ChainShape` (``vertices=`` makes a loop)."""
 
-    loop = True
+
+def _pose(xf: Any) -> tuple[float, float, float]:
+    if not isinstance(xf, b2Transform):
+        raise ComponentTypeError(f"a b2Transform is needed, got {xf!r}")
+    return (xf.position.x, xf.position.y, xf.angle)
 
 
 def _set_extra(shape: b2Shape, kw: dict[str, Any]) -> None:
@@ -394,7 +511,8 @@ def from_kge(shape: Shape) -> b2Shape:
     if isinstance(shape, Edge):
         return b2EdgeShape(vertices=[shape.v1, shape.v2])
     if isinstance(shape, Chain):
-        return (b2LoopShape if shape.loop else b2ChainShape)(vertices=list(shape.vertices))
+        key = "vertices_loop" if shape.loop else "vertices_chain"
+        return b2ChainShape(**{key: list(shape.vertices)})
     if isinstance(shape, Polygon):
         return b2PolygonShape(vertices=list(shape.vertices))
     return b2PolygonShape(vertices=list(shape.vertices()))  # Box

@@ -1,4 +1,4 @@
-"""``b2Rot``, ``b2Mat22``, ``b2Transform``, ``b2AABB`` and ``b2Sweep``: Box2D's small math types.
+"""``b2Rot``, ``b2Transform``, ``b2AABB`` and ``b2Sweep``: Box2D's small math types.
 
 ``body.transform * vertex`` is how pybox2d programs (and Gymnasium's renderers)
 turn a fixture's local vertices into world points; ``b2Transform`` does that
@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from kge.box2d.matrix import b2Mat22
 from kge.box2d.vec import as_xy, b2Vec2
 from kge.errors import ComponentTypeError
 
@@ -53,60 +54,6 @@ class b2Rot:
 
     def __repr__(self) -> str:
         return f"b2Rot(angle={self.angle:g})"
-
-
-class b2Mat22:
-    """A 2x2 matrix by columns (``col1``, ``col2``)."""
-
-    def __init__(self, col1: Any = (1.0, 0.0), col2: Any = (0.0, 1.0)) -> None:
-        self.col1 = b2Vec2(col1)
-        self.col2 = b2Vec2(col2)
-
-    @classmethod
-    def from_angle(cls, angle: float) -> b2Mat22:
-        c, s = math.cos(angle), math.sin(angle)
-        return cls((c, s), (-s, c))
-
-    x_axis = property(lambda self: self.col1.copy())
-    y_axis = property(lambda self: self.col2.copy())
-
-    @property
-    def angle(self) -> float:
-        return math.atan2(self.col1.y, self.col1.x)
-
-    def SetIdentity(self) -> None:
-        self.col1, self.col2 = b2Vec2(1, 0), b2Vec2(0, 1)
-
-    def SetZero(self) -> None:
-        self.col1, self.col2 = b2Vec2(0, 0), b2Vec2(0, 0)
-
-    @property
-    def inverse(self) -> b2Mat22:
-        a, b, c, d = self.col1.x, self.col2.x, self.col1.y, self.col2.y
-        det = a * d - b * c
-        if det != 0.0:
-            det = 1.0 / det
-        return b2Mat22((det * d, -det * c), (-det * b, det * a))
-
-    GetInverse = inverse.fget  # type: ignore[attr-defined]
-
-    def Solve(self, b: Any) -> b2Vec2:
-        """Solve ``A x = b`` (Box2D returns zero for a singular matrix... x = 0 scaled)."""
-        bx, by = as_xy(b, "b2Mat22.Solve", "b")
-        a11, a12, a21, a22 = self.col1.x, self.col2.x, self.col1.y, self.col2.y
-        det = a11 * a22 - a12 * a21
-        if det != 0.0:
-            det = 1.0 / det
-        return b2Vec2(det * (a22 * bx - a12 * by), det * (a11 * by - a21 * bx))
-
-    def __mul__(self, v: Any) -> Any:
-        if isinstance(v, b2Mat22):
-            return b2Mat22(self * v.col1, self * v.col2)
-        x, y = as_xy(v, "b2Mat22", "vector")
-        return b2Vec2(self.col1.x * x + self.col2.x * y, self.col1.y * x + self.col2.y * y)
-
-    def __repr__(self) -> str:
-        return f"b2Mat22(col1={self.col1!r}, col2={self.col2!r})"
 
 
 class b2Transform:

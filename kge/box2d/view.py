@@ -2,8 +2,9 @@
 
 A pybox2d program keeps its own ``b2World`` (a kge World of its own underneath);
 to show it in a kge App (the testbed, a game) its debug drawing is turned into
-kge drawables in the App's world: ``world.renderer = KgeDraw(app_world)`` and a
-``world.DrawDebugData()`` per frame (which calls ``StartDraw`` and ``EndDraw``).
+kge drawables in the App's world: ``world.renderer = KgeDraw(app_world)``, then per
+frame ``renderer.StartDraw()``, ``world.DrawDebugData()``, ``renderer.EndDraw()`` (as
+pybox2d's testbed frames each frame's drawing).
 Each ``Draw*`` call reuses one entity of a pool per primitive kind (a
 ``Polygon``, ``Circle`` or ``Line`` drawable with an identity ``Transform``: the
 points are world points already), and entities a frame did not use are hidden,
@@ -13,6 +14,7 @@ so a steady scene spawns nothing after its first frame. Colours are Box2D's debu
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 from kge.box2d.draw import b2Color, b2Draw
@@ -67,7 +69,7 @@ class KgeDraw(b2Draw):
         pool.append(self.target.spawn(Transform(), drawable))
         return drawable
 
-    def _polygon(self, vertices: list[Any], color: b2Color, filled: bool) -> None:
+    def _polygon(self, vertices: Sequence[Any], color: b2Color, filled: bool) -> None:
         pts = tuple(as_xy(v, "KgeDraw", "vertex") for v in vertices)
         if len(pts) < 3:
             return
@@ -76,10 +78,10 @@ class KgeDraw(b2Draw):
                                                 thickness=self.thickness, layer=self.layer))
         p.vertices, p.color, p.filled = pts, fill, filled
 
-    def DrawPolygon(self, vertices: list[Any], color: b2Color) -> None:
+    def DrawPolygon(self, vertices: Sequence[Any], color: b2Color) -> None:
         self._polygon(vertices, color, False)
 
-    def DrawSolidPolygon(self, vertices: list[Any], color: b2Color) -> None:
+    def DrawSolidPolygon(self, vertices: Sequence[Any], color: b2Color) -> None:
         self._polygon(vertices, color, True)
 
     def _circle(self, center: Any, radius: float, color: b2Color, filled: bool) -> None:

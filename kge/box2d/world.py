@@ -29,9 +29,11 @@ of them: creating or destroying anything raises
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Callable
 from typing import Any
 
 from kge.box2d.body import b2Body, b2BodyDef
+from kge.box2d.broadphase import b2ContactManager
 from kge.box2d.callbacks import (
     b2ContactFilter,
     b2ContactListener,
@@ -42,6 +44,7 @@ from kge.box2d.callbacks import (
 )
 from kge.box2d.constants import b2_dynamicBody, b2_kinematicBody, b2_staticBody
 from kge.box2d.contact import b2Contact, impulse_of
+from kge.box2d.errors import KeywordError, LockedError, MissingError
 from kge.box2d.fixture import b2Fixture, b2FixtureDef
 from kge.box2d.joints import JOINT_CLASSES, b2GearJoint, b2GearJointDef, b2Joint, b2JointDef
 from kge.box2d.joints import b2DistanceJointDef as _Distance
@@ -56,7 +59,7 @@ from kge.box2d.joints import b2WeldJointDef as _Weld
 from kge.box2d.joints import b2WheelJointDef as _Wheel
 from kge.box2d.transform import b2AABB
 from kge.box2d.vec import as_xy, b2Vec2
-from kge.errors import ComponentTypeError, ValidationError, WorldLockedError
+from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.contacts import PostSolve, PreSolve
 from kge.physics.events import PhysicsEvents
 from kge.physics.resource import Physics
@@ -112,7 +115,8 @@ class b2World:
         #: contacts a pre-solve saw before their begin was delivered (same object later)
         self._pending: dict[Pair, b2Contact] = {}
         self._locked = False
-        self._hooks = False  # pre/post-solve hooks installed
+        self._hooks = False  # colliders hooked for pre/post-solve
+        self._hooked: set[str] = set()  # which of PreSolve, PostSolve kge calls back
         self._contactListener: b2ContactListener | None = None
         self._contactFilter: b2ContactFilter | None = None
         self.destructionListener: b2DestructionListener | None = None
@@ -121,9 +125,12 @@ class b2World:
         self.continuousPhysics = True
         self.subStepping = False
         self.renderer: Any = None
+        self._steps = 0  # Steps taken (the broad phase view updates once per step)
+        self._fixture_changes = 0  # fixtures created or destroyed so far
+        self._contact_manager: b2ContactManager | None = None
         for name, value in kwargs.items():
             if not hasattr(type(self), name) and name not in self.__dict__:
-                raise ComponentTypeError(f"b2World has no property {name!r}")
+                raise KeywordError(f"b2World has no property {name!r}")
             setattr(self, name, value)
 
     # -- world settings --------------------------------------------------------------------
@@ -156,7 +163,7 @@ class b2World:
 
     def _unlocked(self, op: str) -> None:
         if self._locked:
-            raise WorldLockedError(
+            raise LockedError(
                 f"{op}: the world is locked (called from inside Step or a callback)")
 
     # -- listeners -----------------------------------------------------------------------------
@@ -170,15 +177,27 @@ class b2World:
             raise ComponentTypeError(
                 f"b2World.contactListener must be a b2ContactListener or None, got {listener!r}")
         self._contactListener = listener
-        want = listener is not None and (
-            overrides(listener, b2ContactListener, "PreSolve")
-            or overrides(listener, b2ContactListener, "PostSolve"))
-        if want and not self._hooks:
-            self._hooks = True
-            self._physics.on_pre_solve(self._pre_solve)
-            self._physics.on_post_solve(self._post_solve)
+        self._sync_hooks(listener)
+
+    def _sync_hooks(self, listener: b2ContactListener | None) -> None:
+        """Hook kge's per-contact pre/post-solve for what ``listener`` overrides, and only
+        that: a Python call per contact per step is what costs most (PreSolve and PostSolve
+        separately; colliders are hooked while either is)."""
+        wanted = {name for name in ("PreSolve", "PostSolve")
+                  if listener is not None and overrides(listener, b2ContactListener, name)}
+        hooks: dict[str, tuple[Callable[[Any], None], Callable[[Any], Any]]] = {
+            "PreSolve": (self._pre_solve, self._physics.on_pre_solve),
+            "PostSolve": (self._post_solve, self._physics.on_post_solve)}
+        for name, (fn, register) in hooks.items():
+            if name in wanted and name not in self._hooked:
+                register(fn)
+            elif name not in wanted and name in self._hooked:
+                self._physics.remove_hook(fn)
+        self._hooked = wanted
+        if bool(wanted) != self._hooks:
+            self._hooks = bool(wanted)
             for f in self._fixtures.values():
-                f._col.contact_hooks = True
+                f._col.contact_hooks = self._hooks
 
     @property
     def contactFilter(self) -> b2ContactFilter | None:
@@ -205,8 +224,8 @@ class b2World:
     # -- bodies --------------------------------------------------------------------------------
     @property
     def bodies(self) -> list[b2Body]:
-        """Newest first, as Box2D's body list."""
-        return list(self._bodies.values())[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._bodies.values())
 
     @property
     def bodyCount(self) -> int:
@@ -279,9 +298,11 @@ class b2World:
         if self._hooks:
             col.contact_hooks = True
         entity = self._kworld.spawn(col)
-        fixture = b2Fixture(body, entity, col, shape, defn.userData)
+        fixture = b2Fixture(body, entity, col, shape, defn.userData, defn.density)
         self._fixtures[entity] = fixture
         body._fixtures.append(fixture)
+        self._fixture_changes += 1
+        body._mass_changed()
         return fixture
 
     def _destroy_fixture(self, fixture: b2Fixture) -> None:
@@ -296,27 +317,36 @@ class b2World:
                 if listener is not None:
                     self._call(listener.EndContact, contact)
         fixture._destroyed = True
+        self._fixture_changes += 1
         fixture.body._fixtures.remove(fixture)
         del self._fixtures[fixture.entity]
         self._kworld.despawn(fixture.entity)
         self._kworld.flush()
+        if not fixture.body._destroyed:
+            fixture.body._mass_changed()
 
     # -- joints --------------------------------------------------------------------------------
     @property
     def joints(self) -> list[b2Joint]:
-        return list(self._joints.values())[::-1]
+        """Oldest first, as pybox2d's list."""
+        return list(self._joints.values())
 
     @property
     def jointCount(self) -> int:
         return len(self._joints)
 
     def CreateJoint(self, defn: b2JointDef | None = None, **kwargs: Any) -> b2Joint:
+        """A joint from a definition, or from keywords with ``type=`` naming the joint
+        (its class or its definition's class), as pybox2d accepts."""
         self._unlocked("CreateJoint")
         if defn is None:
             kind = kwargs.pop("type", None)
-            if not (isinstance(kind, type) and issubclass(kind, b2JointDef)):
-                raise ComponentTypeError(
-                    "CreateJoint needs a joint definition (or type=<def class>)")
+            if isinstance(kind, type) and issubclass(kind, b2Joint):
+                kind = kind.DEF
+            if not (isinstance(kind, type) and kind in JOINT_CLASSES):
+                raise MissingError(
+                    "CreateJoint needs a joint definition, or type=<joint or definition class> "
+                    f"and keywords; got type={kind!r}")
             defn = kind(**kwargs)
         elif kwargs:
             raise ComponentTypeError("CreateJoint takes a definition or keywords, not both")
@@ -343,6 +373,10 @@ class b2World:
         return joint
 
     def _create(self, cls: type[b2JointDef], kwargs: dict[str, Any]) -> b2Joint:
+        kind = kwargs.pop("type", cls.TYPE)
+        if kind not in (cls.TYPE, cls, JOINT_CLASSES[cls]):
+            raise ComponentTypeError(
+                f"Create{cls.__name__[2:-3]}: type={kind!r} names another joint")
         return self.CreateJoint(cls(**kwargs))
 
     def CreateRevoluteJoint(self, **kw: Any) -> b2Joint:
@@ -442,6 +476,7 @@ class b2World:
             self._system.process(dt)
         finally:
             self._locked = False
+            self._steps += 1
         self._deliver()
 
     def _deliver(self) -> None:
@@ -511,9 +546,7 @@ class b2World:
             return
         contact._set_geometry(pre.normal, pre.points, pre.separation)
         contact.enabled = True
-        old = contact._last_manifold
-        contact._last_manifold = contact.manifold
-        listener.PreSolve(contact, old)
+        listener.PreSolve(contact, contact._remember_manifold())
         pre.enabled = bool(contact.enabled)
         pre.tangent_speed = float(contact.tangentSpeed)
         if contact._friction is not None:
@@ -572,6 +605,29 @@ class b2World:
             return True if f is None else bool(callback.ReportFixture(f))
 
         self._physics.query_aabb(aabb.lowerBound.tuple, aabb.upperBound.tuple, report)
+
+    # -- broad phase -----------------------------------------------------------------------------
+    @property
+    def contactManager(self) -> b2ContactManager:
+        """The broad phase and contacts as pybox2d shows them (see kge.box2d.broadphase)."""
+        if self._contact_manager is None:
+            self._contact_manager = b2ContactManager(self)
+        return self._contact_manager
+
+    def GetTreeHeight(self) -> int:
+        return self.contactManager.broadPhase.treeHeight
+
+    def GetTreeBalance(self) -> int:
+        return self.contactManager.broadPhase.treeBalance
+
+    def GetTreeQuality(self) -> float:
+        return self.contactManager.broadPhase.treeQuality
+
+    def GetAllowSleeping(self) -> bool:
+        return self.allowSleeping
+
+    def SetAllowSleeping(self, flag: bool) -> None:
+        self.allowSleeping = flag
 
     # -- misc ----------------------------------------------------------------------------------
     def DrawDebugData(self) -> None:

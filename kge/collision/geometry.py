@@ -100,7 +100,8 @@ def _convex(shape: Any, child: int) -> Convex:
         return Convex("polygon", verts, _normals(verts), POLYGON_RADIUS, _centroid(shape, verts))
     if isinstance(shape, Edge):
         mid = (0.5 * (shape.v1[0] + shape.v2[0]), 0.5 * (shape.v1[1] + shape.v2[1]))
-        return Convex("edge", (shape.v1, shape.v2), (), POLYGON_RADIUS, mid)
+        return Convex("edge", (shape.v1, shape.v2), (), POLYGON_RADIUS, mid, shape.vertex0,
+                      shape.vertex3)
     return _chain_child(shape, child)
 
 

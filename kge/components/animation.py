@@ -39,16 +39,19 @@ kge.errors.ValidationError: Clip.frames[0]: frame 32 is outside the 8x4 sheet (0
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any, ClassVar
 
+from kge.components.conditions import met as condition_met
+from kge.components.conditions import parse as parse_condition
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import boolean, finite, integer, positive
+from kge.validate import at_most, boolean, finite, integer, positive
 
 
 class Loop(StrEnum):
@@ -62,6 +65,41 @@ class Loop(StrEnum):
 
 LOOP_MODES = tuple(Loop)
 Rect4 = tuple[int, int, int, int]
+#: the shortest and longest frame, seconds (fps from 1e-6 to 1e6)
+MIN_FRAME, MAX_FRAME = 1e-6, 1e6
+#: the fastest playback speed (a clip's, an animator's)
+MAX_SPEED = 1e3
+#: the most frames one clip may have, and the most cells a sheet grid may have per side
+MAX_FRAMES = 10_000
+MAX_GRID = 65_536
+
+
+def _cell_count(value: Any, owner: str, field: str) -> int:
+    v = integer(value, owner, field)
+    if not 1 <= v <= MAX_GRID:
+        raise ValidationError(f"{owner}.{field} must be in 1..{MAX_GRID}, got {v}")
+    return v
+
+
+def _pixels(value: Any, owner: str, field: str, low: int) -> int:
+    v = integer(value, owner, field)
+    if not low <= v <= 2**31 - 1:
+        raise ValidationError(f"{owner}.{field} must be an int >= {low}, got {v}")
+    return v
+
+
+def _frame_seconds(value: Any, owner: str, field: str) -> float:
+    v = positive(value, owner, field)
+    if not MIN_FRAME <= v <= MAX_FRAME:
+        raise ValidationError(
+            f"{owner}.{field} must be in [{MIN_FRAME:g}, {MAX_FRAME:g}] seconds per frame, "
+            f"got {v!r}"
+        )
+    return v
+
+
+def _clip_speed(value: Any, owner: str, field: str) -> float:
+    return at_most(positive(value, owner, field), MAX_SPEED, owner, field)
 
 
 @dataclass(slots=True, frozen=True)
@@ -81,6 +119,40 @@ class FrameRef:
     margin: int = 0
     spacing: int = 0
     gif_frame: int | None = None
+
+    def __post_init__(self) -> None:
+        owner = "FrameRef"
+        if self.image is None or isinstance(self.image, (bool, int, float, bytes)) or (
+            isinstance(self.image, str) and not self.image
+        ):
+            raise ComponentTypeError(
+                f"{owner}.image must be an asset name, a path or an image, got {self.image!r}"
+            )
+        if self.region is not None:
+            if not isinstance(self.region, (tuple, list)) or len(self.region) != 4:
+                raise ComponentTypeError(
+                    f"{owner}.region must be (x, y, w, h), got {self.region!r}"
+                )
+            x, y, w, h = (
+                _pixels(v, owner, f"region[{i}]", 1 if i >= 2 else 0)
+                for i, v in enumerate(self.region)
+            )
+            object.__setattr__(self, "region", (x, y, w, h))
+        if self.grid is not None:
+            if not isinstance(self.grid, (tuple, list)) or len(self.grid) != 2:
+                raise ComponentTypeError(f"{owner}.grid must be (columns, rows), got {self.grid!r}")
+            cols, rows = (_cell_count(v, owner, f"grid[{i}]") for i, v in enumerate(self.grid))
+            object.__setattr__(self, "grid", (cols, rows))
+            index = integer(self.index, owner, "index")
+            if not 0 <= index < cols * rows:
+                raise ValidationError(
+                    f"{owner}.index: frame {index} is outside the {cols}x{rows} sheet "
+                    f"(0..{cols * rows - 1})"
+                )
+        _pixels(self.margin, owner, "margin", 0)
+        _pixels(self.spacing, owner, "spacing", 0)
+        if self.gif_frame is not None:
+            _pixels(self.gif_frame, owner, "gif_frame", 0)
 
     def rect(self, width: int, height: int) -> Rect4:
         """The (x, y, w, h) pixel rectangle from the image's **bottom**-left (OpenGL rows).
@@ -117,14 +189,21 @@ class FrameRef:
 def _durations(n: int, duration: Any, fps: Any, owner: str) -> tuple[float, ...]:
     if n == 0:
         raise ValidationError(f"{owner}: a clip needs at least one frame (got an empty list)")
+    if n > MAX_FRAMES:
+        raise ValidationError(f"{owner}: a clip has at most {MAX_FRAMES:,} frames, got {n:,}")
     if fps is not None:
         if duration is not None:
             raise ValidationError(f"{owner}: give duration= or fps=, not both")
-        return (1.0 / positive(fps, owner, "fps"),) * n
+        f = positive(fps, owner, "fps")
+        if not 1.0 / MAX_FRAME <= f <= 1.0 / MIN_FRAME:
+            raise ValidationError(
+                f"{owner}.fps must be in [{1.0 / MAX_FRAME:g}, {1.0 / MIN_FRAME:g}], got {f!r}"
+            )
+        return (1.0 / f,) * n
     if duration is None:
         duration = 0.1
     if isinstance(duration, (int, float)) and not isinstance(duration, bool):
-        return (positive(duration, owner, "duration"),) * n
+        return (_frame_seconds(duration, owner, "duration"),) * n
     try:
         values = list(duration)
     except TypeError:
@@ -135,7 +214,7 @@ def _durations(n: int, duration: Any, fps: Any, owner: str) -> tuple[float, ...]
         raise ValidationError(
             f"{owner}.duration has {len(values)} values for {n} frames (one per frame)"
         )
-    return tuple(positive(v, owner, f"duration[{i}]") for i, v in enumerate(values))
+    return tuple(_frame_seconds(v, owner, f"duration[{i}]") for i, v in enumerate(values))
 
 
 def _events(events: Any, n: int, owner: str) -> tuple[tuple[int, str], ...]:
@@ -170,6 +249,13 @@ class Clip:
         owner = "Clip"
         if not isinstance(self.frames, tuple) or not self.frames:
             raise ValidationError(f"{owner}.frames: a clip needs at least one frame")
+        if len(self.frames) > MAX_FRAMES:
+            raise ValidationError(
+                f"{owner}.frames: a clip has at most {MAX_FRAMES:,} frames, "
+                f"got {len(self.frames):,}"
+            )
+        if not isinstance(self.durations, tuple):
+            raise ComponentTypeError(f"{owner}.durations must be a tuple of seconds per frame")
         for i, f in enumerate(self.frames):
             if not isinstance(f, FrameRef):
                 raise ComponentTypeError(f"{owner}.frames[{i}] must be a FrameRef, got {f!r}")
@@ -178,9 +264,9 @@ class Clip:
                 f"{owner}.durations has {len(self.durations)} values for {len(self.frames)} frames"
             )
         for i, d in enumerate(self.durations):
-            positive(d, owner, f"durations[{i}]")
+            _frame_seconds(d, owner, f"durations[{i}]")
         object.__setattr__(self, "loop", enum_value(Loop, self.loop, owner, "loop"))
-        positive(self.speed, owner, "speed")
+        _clip_speed(self.speed, owner, "speed")
         boolean(self.flip_x, owner, "flip_x")
         boolean(self.flip_y, owner, "flip_y")
 
@@ -219,7 +305,17 @@ class Clip:
         s = integer(spacing, owner, "spacing")
         if m < 0 or s < 0:
             raise ValidationError(f"{owner}: margin and spacing must be >= 0, got {m}, {s}")
-        picked = list(range(cols * rows)) if frames is None else list(frames)
+        if cols > MAX_GRID or rows > MAX_GRID:
+            raise ValidationError(
+                f"{owner}.grid must be at most {MAX_GRID} cells a side, got {grid!r}"
+            )
+        if frames is None and cols * rows > MAX_FRAMES:
+            raise ValidationError(
+                f"{owner}.grid {cols}x{rows} has {cols * rows:,} cells, more frames than a clip "
+                f"may have ({MAX_FRAMES:,}): pick them with frames="
+            )
+        picked = list(range(cols * rows)) if frames is None else list(itertools.islice(
+            frames, MAX_FRAMES + 1))
         refs = []
         for i, k in enumerate(picked):
             k = integer(k, owner, f"frames[{i}]")
@@ -288,19 +384,41 @@ class Clip:
         durs = _durations(len(refs), duration, fps, "Clip")
         mode = enum_value(Loop, loop, "Clip", "loop")
         return cls(
-            tuple(refs), durs, mode, finite(speed, "Clip", "speed"), flip_x, flip_y,
+            tuple(refs), durs, mode, _clip_speed(speed, "Clip", "speed"), flip_x, flip_y,
             _events(events, len(refs), "Clip"),
         )  # fmt: skip
 
 
 @dataclass(slots=True, frozen=True)
 class Transition:
-    """Switch from clip ``src`` to ``dst`` when the animator's parameter ``when`` is truthy,
-    or, with ``when=None``, when ``src`` finishes (``src="*"``: from any clip)."""
+    """Switch from clip ``src`` to ``dst`` while ``when`` holds, or, with ``when=None``,
+    when ``src`` finishes (``src="*"``: from any clip).
+
+    ``when`` is a parameter name (truthy), ``"not name"``, a comparison
+    (``"speed > 0.1"``, ``"state == jump"``) or clauses joined by ``and``; see
+    :mod:`kge.components.conditions`. It is checked when the Transition is made.
+    """
 
     src: str
     dst: str
     when: str | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("src", "dst"):
+            value = getattr(self, name)
+            if not isinstance(value, str) or not value:
+                raise ComponentTypeError(f"Transition.{name} must be a clip name, got {value!r}")
+        if self.when is not None:
+            if not isinstance(self.when, str):
+                raise ComponentTypeError(
+                    f"Transition.when must be a parameter name or None (or a condition such as "
+                    f"'speed > 0.1'), got {self.when!r}"
+                )
+            parse_condition(self.when)
+
+    def holds(self, params: Mapping[str, Any]) -> bool:
+        """Does ``when`` hold for these parameters? (False for an end transition.)"""
+        return self.when is not None and condition_met(self.when, params)
 
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
@@ -325,10 +443,20 @@ def _has(obj: object, name: str) -> bool:
 
 
 def _speed(value: Any, owner: str, field: str) -> float:
+    """Any finite speed up to MAX_SPEED either way: negative plays the clips backwards."""
     v = finite(value, owner, field)
-    if v < 0:
-        raise ValidationError(f"{owner}.{field} must be >= 0, got {v!r}")
+    at_most(abs(v), MAX_SPEED, owner, field)
     return v
+
+
+def _params(value: Any, owner: str, field: str) -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise ComponentTypeError(f"{owner}.{field} must be a dict, got {value!r}")
+    return value
+
+
+def _serial(value: Any, owner: str, field: str) -> int:
+    return integer(value, owner, field)
 
 
 @dataclass(slots=True)
@@ -338,14 +466,22 @@ class Animator(Tracked):
     ``play(name)`` starts a clip from its first frame (``restart=False`` keeps a
     clip that is already playing); ``queue(name)`` plays one after the current
     finishes; ``pause()`` / ``resume()`` freeze time; ``stop()`` shows frame 0 and
-    stops. ``speed`` multiplies every clip's own speed. ``set(param, value)``
-    feeds the transition table.
+    stops. ``speed`` multiplies every clip's own speed; a negative speed plays
+    backwards (a clip started then begins at its end; frame events fire as the
+    playhead crosses their frame going back; a ``once`` clip ends at its start).
+    ``set(param, value)`` feeds the transition table.
     """
+
+    #: new clips are checked against their images by the animation plugin
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"clips"})
 
     _checks: ClassVar[dict[str, Check]] = {
         "clips": _clips,
         "speed": _speed,
         "playing": boolean,
+        "params": _params,
+        "serial": _serial,
+        "stopped": boolean,
     }
 
     clips: dict[str, Clip]
@@ -364,6 +500,13 @@ class Animator(Tracked):
         # across two fields, so they are checked here rather than in the per-field table
         if name == "current" and value is not None and _has(self, "clips"):
             self._check_name(value, "current")
+        elif name == "transitions" and _has(self, "clips"):
+            value = self._check_transitions(value)
+        elif name == "queued" and _has(self, "clips"):
+            if not isinstance(value, list):
+                raise ComponentTypeError(f"{self._owner()}.queued must be a list of clip names")
+            for i, q in enumerate(value):
+                self._check_name(q, f"queued[{i}]")
         elif name == "clips" and _has(self, "current") and self.current is not None:
             clips = _clips(value, self._owner(), "clips")
             if self.current not in clips:
@@ -377,14 +520,28 @@ class Animator(Tracked):
         if self.current is None:
             object.__setattr__(self, "current", next(iter(self.clips)))
         self._check_name(self.current, "current")
-        trs = tuple(self.transitions)
+        object.__setattr__(self, "transitions", self._check_transitions(self.transitions))
+        if not isinstance(self.queued, list):
+            raise ComponentTypeError("Animator.queued must be a list of clip names")
+        for i, q in enumerate(self.queued):
+            self._check_name(q, f"queued[{i}]")
+
+    def _check_transitions(self, value: Any) -> tuple[Transition, ...]:
+        try:
+            trs = tuple(value)
+        except TypeError:
+            raise ComponentTypeError(
+                f"{self._owner()}.transitions must be a sequence of Transitions, got {value!r}"
+            ) from None
         for i, tr in enumerate(trs):
             if not isinstance(tr, Transition):
-                raise ComponentTypeError(f"Animator.transitions[{i}] must be a Transition")
+                raise ComponentTypeError(
+                    f"{self._owner()}.transitions[{i}] must be a Transition, got {tr!r}"
+                )
             if tr.src != "*":
                 self._check_name(tr.src, f"transitions[{i}].src")
             self._check_name(tr.dst, f"transitions[{i}].dst")
-        object.__setattr__(self, "transitions", trs)
+        return trs
 
     def _check_name(self, name: Any, what: str) -> str:
         if name not in self.clips:
@@ -427,5 +584,5 @@ class Animator(Tracked):
         self.play(str(self.current))
 
     def set(self, param: str, value: Any) -> None:
-        """Set a transition parameter (``Transition(..., when=param)`` fires while truthy)."""
+        """Set a transition parameter (read by the transitions' ``when`` conditions)."""
         self.params[param] = value

@@ -33,7 +33,7 @@ from kge.components.tracked import Check, Tracked
 from kge.deprecation import renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.sound import SoundData, SoundRef
-from kge.validate import boolean, in_range, non_negative, positive
+from kge.validate import at_most, boolean, in_range, non_negative, positive
 
 
 def sound_ref(value: Any, owner: str, field: str) -> SoundRef:
@@ -56,11 +56,23 @@ def _volume(value: Any, owner: str, field: str) -> float:
     return in_range(value, 0.0, 1.0, owner, field)
 
 
-def _pitch(value: Any, owner: str, field: str) -> float:
+#: the highest playback rate (three octaves up): the rate every player accepts
+MAX_PITCH = 8.0
+#: the longest fade, seconds
+MAX_FADE = 1e6
+
+
+def pitch(value: Any, owner: str, field: str) -> float:
+    """A playback rate in (0, :data:`MAX_PITCH`]."""
     v = positive(value, owner, field)
-    if v > 8.0:
-        raise ValidationError(f"{owner}.{field} must be in (0, 8], got {v!r}")
+    if v > MAX_PITCH:
+        raise ValidationError(f"{owner}.{field} must be in (0, {MAX_PITCH:g}], got {v!r}")
     return v
+
+
+def fade_seconds(value: Any, owner: str, field: str) -> float:
+    """A fade's length in [0, :data:`MAX_FADE`] seconds."""
+    return at_most(non_negative(value, owner, field), MAX_FADE, owner, field, "s")
 
 
 def _distance(value: Any, owner: str, field: str) -> float:
@@ -79,7 +91,7 @@ class AudioSource(Tracked):
     _checks: ClassVar[dict[str, Check]] = {
         "sound": sound_ref,
         "volume": _volume,
-        "pitch": _pitch,
+        "pitch": pitch,
         "loop": boolean,
         "play_on_start": boolean,
         "positional": boolean,
@@ -99,10 +111,20 @@ class AudioSource(Tracked):
     streaming: bool = False
 
     def __post_init__(self) -> None:
-        if self.min_distance >= self.max_distance:
+        self._check_distances(self.min_distance, self.max_distance)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name in ("min_distance", "max_distance") and hasattr(self, "max_distance"):
+            value = _distance(value, self._owner(), name)
+            lo = value if name == "min_distance" else self.min_distance
+            hi = value if name == "max_distance" else self.max_distance
+            self._check_distances(lo, hi)
+        Tracked.__setattr__(self, name, value)
+
+    def _check_distances(self, lo: float, hi: float) -> None:
+        if lo >= hi:
             raise ValidationError(
-                f"AudioSource.max_distance ({self.max_distance}) must be greater than "
-                f"min_distance ({self.min_distance})"
+                f"{self._owner()}.max_distance ({hi}) must be greater than min_distance ({lo})"
             )
 
 
@@ -128,7 +150,7 @@ class ImpactSound(Tracked):
         "hit_threshold": non_negative,
         "max_speed": positive,
         "volume": _volume,
-        "pitch": _pitch,
+        "pitch": pitch,
         "positional": boolean,
         "cooldown": non_negative,
     }
@@ -142,10 +164,20 @@ class ImpactSound(Tracked):
     cooldown: float = 0.0
 
     def __post_init__(self) -> None:
-        if self.max_speed < self.hit_threshold:
+        self._check_speeds(self.hit_threshold, self.max_speed)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name in ("hit_threshold", "max_speed") and hasattr(self, "max_speed"):
+            value = self._checks[name](value, self._owner(), name)
+            lo = value if name == "hit_threshold" else self.hit_threshold
+            hi = value if name == "max_speed" else self.max_speed
+            self._check_speeds(lo, hi)
+        Tracked.__setattr__(self, name, value)
+
+    def _check_speeds(self, lo: float, hi: float) -> None:
+        if hi < lo:
             raise ValidationError(
-                f"ImpactSound.max_speed ({self.max_speed}) must be >= hit_threshold "
-                f"({self.hit_threshold})"
+                f"{self._owner()}.max_speed ({hi}) must be >= hit_threshold ({lo})"
             )
 
     def gain(self, speed: float) -> float:

@@ -2,7 +2,8 @@
 
 Insert it as a resource (``world.insert_resource(DebugDraw())``) or toggle the
 one the renderer creates: ``world.resource(DebugDraw).enabled = True``. In a
-window, F1 toggles ``enabled`` and F2 the stats overlay.
+window, F1 toggles ``enabled``, F2 the stats overlay and F4 the per-system timings
+in it (the debug plugin's key).
 
 Colours follow the Box2D testbed, so a Box2D user reads the picture at once:
 bodies are coloured by state (static green, kinematic blue, asleep grey,
@@ -37,6 +38,7 @@ class DebugDraw(Tracked):
         "contacts": boolean,
         "contact_normals": boolean,
         "stats": boolean,
+        "timings": boolean,
         "contact_seconds": positive,
         "static_color": rgba,
         "kinematic_color": rgba,
@@ -57,6 +59,8 @@ class DebugDraw(Tracked):
     contacts: bool = True
     contact_normals: bool = True
     stats: bool = False
+    #: per-system timings in the stats overlay (F4; turns the schedule's timings on)
+    timings: bool = False
     #: how long a contact point stays drawn after its begin event (events last one step)
     contact_seconds: float = 0.25
     static_color: RGBA = (127, 230, 127, 255)

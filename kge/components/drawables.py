@@ -24,10 +24,11 @@ from collections.abc import Sequence
 from dataclasses import KW_ONLY, dataclass
 from typing import Any, ClassVar
 
+from kge.components.blend import Blend
 from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.validate import Vec2, boolean, choice, extent, integer, point
 
 _WHITE: RGBA = (255, 255, 255, 255)
 
@@ -39,7 +40,7 @@ def _int(value: Any, owner: str, field: str) -> int:
 def _points(value: Any, owner: str, field: str) -> tuple[Vec2, ...]:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
         raise ComponentTypeError(f"{owner}.{field} must be a sequence of (x, y) points")
-    pts = tuple(vec2(p, owner, f"{field}[{i}]") for i, p in enumerate(value))
+    pts = tuple(point(p, owner, f"{field}[{i}]") for i, p in enumerate(value))
     if len(pts) < 3:
         raise ValidationError(f"{owner}.{field} needs at least 3 points, got {len(pts)}")
     area2 = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1], strict=True))
@@ -60,11 +61,12 @@ def _segments(value: Any, owner: str, field: str) -> int | None:
 _COMMON: dict[str, Check] = {
     "color": rgba,
     "filled": boolean,
-    "thickness": positive,
-    "offset": vec2,
+    "thickness": extent,
+    "offset": point,
     "layer": _int,
     "order": _int,
     "visible": boolean,
+    "blend": choice(Blend),
 }
 
 
@@ -79,6 +81,8 @@ class _Drawn(Tracked):
     layer: int = 0
     order: int = 0
     visible: bool = True
+    #: how it is drawn over what is behind (:class:`~kge.components.blend.Blend`)
+    blend: Blend = Blend.ALPHA
 
 
 @dataclass(slots=True)
@@ -91,7 +95,7 @@ class _Fillable(_Drawn):
 class Rect(_Fillable):
     """An axis-aligned (in the entity frame) rectangle, ``width`` x ``height`` metres, centred."""
 
-    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "width": positive, "height": positive}
+    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "width": extent, "height": extent}
 
     width: float
     height: float
@@ -101,7 +105,7 @@ class Rect(_Fillable):
 class Circle(_Fillable):
     """A disc (or ring) of ``radius`` metres; ``segments=None`` picks a smooth count."""
 
-    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "radius": positive, "segments": _segments}
+    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "radius": extent, "segments": _segments}
 
     radius: float
     _: KW_ONLY
@@ -112,7 +116,7 @@ class Circle(_Fillable):
 class Triangle(_Fillable):
     """A triangle with corners ``a``, ``b``, ``c`` in the entity frame (any winding)."""
 
-    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "a": vec2, "b": vec2, "c": vec2}
+    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "a": point, "b": point, "c": point}
 
     a: Vec2
     b: Vec2
@@ -135,7 +139,7 @@ class Polygon(_Fillable):
 class Line(_Drawn):
     """A segment from ``start`` to ``end`` (entity frame), ``thickness`` metres wide."""
 
-    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "start": vec2, "end": vec2}
+    _checks: ClassVar[dict[str, Check]] = {**_COMMON, "start": point, "end": point}
 
     start: Vec2
     end: Vec2

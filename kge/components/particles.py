@@ -16,15 +16,19 @@ move them, in metres, seconds and radians:
 * **how they move**: ``lifetime`` and ``speed`` ranges, ``direction`` (rad, in the
   entity frame) with a ``spread`` cone (full angle, 0..2pi), ``inherit_velocity``
   (share of the body's velocity), ``acceleration`` (gravity, m/s^2), linear
-  ``drag`` (1/s), ``spin`` range (rad/s), and ``collide`` with static colliders
+  ``drag`` (1/s), ``spin`` range (rad/s); around the emitter's origin (the entity
+  plus ``offset``): ``radial_acceleration`` (m/s^2, + outward: a burst that slows,
+  - inward: a vortex), ``tangential_acceleration`` (m/s^2, + counter-clockwise: a
+  swirl) and ``orbit`` (rad/s, carries particles round it); and ``collide`` with
+  static colliders
   (:class:`ParticleCollision`: ``NONE``, ``BOUNCE`` with ``bounciness``, or ``DIE``).
 * **how they look**: ``size`` (metres), ``color`` (RGB 0-255) and ``opacity``
   (0-255, as ``Sprite.opacity``) over life, each a single value or a sequence of
   evenly spaced keys interpolated linearly from birth to death; ``texture`` (None:
   a generated soft dot; else an asset name or image) or ``flat`` squares; ``blend``
-  (:class:`Blend`: ``ALPHA`` or ``ADDITIVE``); ``space`` (:class:`ParticleSpace`:
-  ``WORLD``, particles stay where they were born, or ``LOCAL``, they move with the
-  entity); ``layer`` / ``order`` as sprites.
+  (:class:`~kge.components.blend.Blend`, as for sprites); ``space``
+  (:class:`ParticleSpace`: ``WORLD``, particles stay where they were born, or
+  ``LOCAL``, they move with the entity); ``layer`` / ``order`` as sprites.
 * ``max_particles`` caps the live count: further particles are dropped, the
   arrays never grow past it. ``seed`` makes the emitter deterministic (the same
   seed gives the same particles); None derives one from the entity id.
@@ -50,17 +54,21 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any, ClassVar, cast
 
+from kge.components.blend import Blend
 from kge.components.color import RGB, rgb
 from kge.components.tracked import Check, Tracked
-from kge.deprecation import enum_value, renamed_fields
+from kge.deprecation import renamed_fields
 from kge.errors import ComponentTypeError, ValidationError
 from kge.validate import (
     Vec2,
     boolean,
+    choice,
+    entity_id,
     finite,
     in_range,
     integer,
     non_negative,
+    point,
     positive,
     vec2,
 )
@@ -72,13 +80,6 @@ TAU = 2.0 * math.pi
 LIMIT = 1e6
 #: the largest ``max_particles`` an emitter may ask for (arrays are allocated up to it)
 MAX_PARTICLES = 1_000_000
-
-
-class Blend(StrEnum):
-    """How particles are drawn over what is behind them."""
-
-    ALPHA = "alpha"  #: ordinary transparency
-    ADDITIVE = "additive"  #: colours add up (fire, sparks, glows)
 
 
 class ParticleSpace(StrEnum):
@@ -117,7 +118,7 @@ class EmitCircle:
     edge: bool = False
 
     def __post_init__(self) -> None:
-        positive(self.radius, "EmitCircle", "radius")
+        _extent(self.radius, "EmitCircle", "radius")
         boolean(self.edge, "EmitCircle", "edge")
 
 
@@ -129,8 +130,8 @@ class EmitBox:
     height: float
 
     def __post_init__(self) -> None:
-        positive(self.width, "EmitBox", "width")
-        positive(self.height, "EmitBox", "height")
+        _extent(self.width, "EmitBox", "width")
+        _extent(self.height, "EmitBox", "height")
 
 
 @dataclass(slots=True, frozen=True)
@@ -141,8 +142,8 @@ class EmitLine:
     end: Vec2
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "start", vec2(self.start, "EmitLine", "start"))
-        object.__setattr__(self, "end", vec2(self.end, "EmitLine", "end"))
+        object.__setattr__(self, "start", _vector(self.start, "EmitLine", "start"))
+        object.__setattr__(self, "end", _vector(self.end, "EmitLine", "end"))
 
 
 @dataclass(slots=True, frozen=True)
@@ -169,6 +170,11 @@ def _limited(v: float, owner: str, field: str) -> float:
     if abs(v) > LIMIT:
         raise ValidationError(f"{owner}.{field} must be within +-{LIMIT:g}, got {v!r}")
     return v
+
+
+def _extent(value: Any, owner: str, field: str) -> float:
+    """A size of an emission shape: metres in (0, LIMIT]."""
+    return _limited(positive(value, owner, field), owner, field)
 
 
 def _range(value: Any, owner: str, field: str) -> Vec2:
@@ -259,15 +265,6 @@ def _colors(value: Any, owner: str, field: str) -> tuple[RGB, ...]:
     return tuple(rgb(v, owner, f"{field}[{i}]") for i, v in enumerate(_keys(value, owner, field)))
 
 
-def _choice(kind: type[StrEnum]) -> Check:
-    """A check turning a choice into its enum member (its string, deprecated, warns)."""
-
-    def check(value: Any, owner: str, field: str) -> StrEnum:
-        return enum_value(kind, value, owner, field)
-
-    return check
-
-
 def _shape(value: Any, owner: str, field: str) -> EmitShape:
     if not isinstance(value, EMIT_SHAPES):
         names = ", ".join(t.__name__ for t in EMIT_SHAPES)
@@ -335,6 +332,10 @@ def _vector(value: Any, owner: str, field: str) -> Vec2:
     return (_limited(x, owner, f"{field}[0]"), _limited(y, owner, f"{field}[1]"))
 
 
+def _limited_float(value: Any, owner: str, field: str) -> float:
+    return _limited(finite(value, owner, field), owner, field)
+
+
 def _drag(value: Any, owner: str, field: str) -> float:
     return _limited(non_negative(value, owner, field), owner, field)
 
@@ -378,15 +379,18 @@ class ParticleEmitter(Tracked):
         "inherit_velocity": _inherit,
         "acceleration": _vector,
         "drag": _drag,
+        "radial_acceleration": _limited_float,
+        "tangential_acceleration": _limited_float,
+        "orbit": _limited_float,
         "spin": _range,
         "size": _sizes,
         "color": _colors,
         "opacity": _opacities,
         "texture": _texture,
         "flat": boolean,
-        "blend": _choice(Blend),
-        "space": _choice(ParticleSpace),
-        "collide": _choice(ParticleCollision),
+        "blend": choice(Blend),
+        "space": choice(ParticleSpace),
+        "collide": choice(ParticleCollision),
         "bounciness": _unit,
         "max_particles": _max_particles,
         "seed": _seed,
@@ -426,6 +430,9 @@ class ParticleEmitter(Tracked):
     layer: int = 0
     order: int = 0
     visible: bool = True
+    radial_acceleration: float = 0.0  #: m/s^2 away from the origin (< 0: towards it)
+    tangential_acceleration: float = 0.0  #: m/s^2 counter-clockwise round the origin
+    orbit: float = 0.0  #: rad/s: particles are carried round the origin
 
 
 @dataclass(slots=True, frozen=True)
@@ -443,9 +450,10 @@ class ParticleBurst:
     direction: float | None = None
 
     def __post_init__(self) -> None:
+        entity_id(self.emitter, "ParticleBurst", "emitter")
         _count(self.count, "ParticleBurst", "count")
         if self.position is not None:
-            object.__setattr__(self, "position", vec2(self.position, "ParticleBurst", "position"))
+            object.__setattr__(self, "position", point(self.position, "ParticleBurst", "position"))
         if self.direction is not None:
             object.__setattr__(
                 self, "direction", finite(self.direction, "ParticleBurst", "direction")
@@ -463,8 +471,11 @@ class BurstOnHit(Tracked):
     approach speed) or faster burst (``min_speed`` before kge 2.0.0a2).
     """
 
+    #: the emitter must exist and hold a ParticleEmitter (checked by the particles plugin)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"emitter"})
+
     _checks: ClassVar[dict[str, Check]] = {
-        "emitter": _seed,
+        "emitter": entity_id,
         "count": _count,
         "contacts": boolean,
         "hit_threshold": non_negative,
@@ -474,3 +485,23 @@ class BurstOnHit(Tracked):
     count: int = 12
     contacts: bool = False
     hit_threshold: float = 0.0
+
+
+@dataclass(slots=True)
+class ParticleAttractor(Tracked):
+    """On an entity with a Transform: pulls the particles of every world-space emitter
+    within ``radius`` metres towards it (``strength`` m/s^2 at its centre, falling
+    linearly to 0 at ``radius``; a negative strength pushes them away). Emitters in
+    local space are not affected.
+    """
+
+    _checks: ClassVar[dict[str, Check]] = {
+        "strength": _limited_float,
+        "radius": positive,
+        "enabled": boolean,
+    }
+
+    strength: float = 10.0
+    radius: float = 5.0
+    enabled: bool = True
+

@@ -89,6 +89,9 @@ class RigidBody(Tracked):
         "enabled": boolean,
         "mass": _optional_mass,
     }
+    #: a type write runs the world's RigidBody validators (when a system bound them),
+    #: so a character's body refuses to become dynamic at the line that asks
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"type"})
 
     type: BodyType = BodyType.DYNAMIC
     velocity: Vec2 = (0.0, 0.0)

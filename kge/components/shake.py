@@ -25,16 +25,35 @@ from typing import Any, ClassVar
 
 from kge.components.tracked import Check, Tracked
 from kge.errors import ValidationError
-from kge.validate import Vec2, finite, integer, non_negative, positive, vec2
+from kge.validate import Vec2, at_most, finite, integer, non_negative, positive, vec2
 
 
 def _trauma(value: Any, owner: str, field: str) -> float:
     return min(max(finite(value, owner, field), 0.0), 1.0)
 
 
+#: the largest shake offset (m) and frequency (Hz)
+MAX_OFFSET = 1e6
+MAX_FREQUENCY = 1e4
+
+
 def _offset(value: Any, owner: str, field: str) -> Vec2:
     x, y = vec2(value, owner, field)
-    return (non_negative(x, owner, f"{field}[0]"), non_negative(y, owner, f"{field}[1]"))
+    out = (non_negative(x, owner, f"{field}[0]"), non_negative(y, owner, f"{field}[1]"))
+    if max(out) > MAX_OFFSET:
+        raise ValidationError(f"{owner}.{field} must be within {MAX_OFFSET:g} m, got {value!r}")
+    return out
+
+
+def _frequency(value: Any, owner: str, field: str) -> float:
+    return at_most(positive(value, owner, field), MAX_FREQUENCY, owner, field, "Hz")
+
+
+def _seed(value: Any, owner: str, field: str) -> int:
+    v = integer(value, owner, field)
+    if not 0 <= v < 2**32:
+        raise ValidationError(f"{owner}.{field} must be in 0..2**32-1, got {v}")
+    return v
 
 
 @dataclass(slots=True)
@@ -45,8 +64,8 @@ class CameraShake(Tracked):
         "trauma": _trauma,
         "decay": non_negative,
         "max_offset": _offset,
-        "frequency": positive,
-        "seed": integer,
+        "frequency": _frequency,
+        "seed": _seed,
     }
 
     trauma: float = 0.0

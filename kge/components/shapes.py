@@ -194,10 +194,18 @@ class Polygon:
 
 @dataclass(slots=True, frozen=True)
 class Edge:
-    """A line segment from ``v1`` to ``v2``, two-sided and massless (Box2D edge)."""
+    """A line segment from ``v1`` to ``v2``, two-sided and massless (Box2D edge).
+
+    ``vertex0`` and ``vertex3`` are optional *ghost vertices* (Box2D's names): the
+    far ends of the neighbouring edges before ``v1`` and after ``v2``. A shape
+    sliding along a row of edges that name their neighbours crosses the joins
+    without catching on them, as along a :class:`Chain`.
+    """
 
     v1: Vec2
     v2: Vec2
+    vertex0: Vec2 | None = None
+    vertex3: Vec2 | None = None
 
     def __post_init__(self) -> None:
         a = _point(self.v1, "Edge", "v1")
@@ -206,6 +214,10 @@ class Edge:
             raise ValidationError(f"Edge has zero length ({a!r} to {b!r})")
         _set(self, "v1", a)
         _set(self, "v2", b)
+        for name in ("vertex0", "vertex3"):
+            ghost = getattr(self, name)
+            if ghost is not None:
+                _set(self, name, _point(ghost, "Edge", name))
 
 
 @dataclass(slots=True, frozen=True)

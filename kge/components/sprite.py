@@ -15,6 +15,19 @@ sprite costs nothing to sync).
   image's top-left corner (as image editors show it), or a frame index into a
   ``grid=(columns, rows)`` counted row by row from the top-left.
 * ``layer`` then ``order`` decide drawing order: higher draws on top.
+* ``filter``: :class:`TextureFilter` ``NEAREST`` (crisp pixel art, the default) or
+  ``LINEAR`` (painted art scaled or turned); ``mipmaps=True`` adds smaller copies
+  for art drawn much smaller than its pixels.
+* ``wrap``: :class:`TextureWrap` ``REPEAT`` (or ``MIRROR``) tiles the image over
+  ``size``, one copy per ``tile`` metres (default: the image's own size): a whole
+  sky is one sprite; ``scroll`` shifts the pattern (fractions of a tile; tween it
+  for parallax).
+* ``nine_patch=(left, bottom, right, top)`` pixels of border stay their size while
+  the middle stretches to ``size`` (panels, buttons, speech bubbles).
+* ``blend``: a :class:`~kge.components.blend.Blend` (``ALPHA``, ``ADDITIVE`` for glows
+  and fire, ``MULTIPLY`` for shade, ``SCREEN`` for soft light, ``PREMULTIPLIED``).
+* ``normal_map``: an image of surface normals (same size as the sprite's pixels) that
+  lights shade it with (:mod:`kge.components.lights`).
 
 >>> s = Sprite("ship.png", size=(1.0, 0.5), layer=2)
 >>> s.anchor, s.visible
@@ -33,14 +46,50 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Any, ClassVar
 
+from kge.components.blend import Blend
 from kge.components.color import RGB, byte, rgb
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, integer, positive, vec2
+from kge.validate import Vec2, anchor, boolean, choice, extent, integer, vec2
 
 Rect4 = tuple[int, int, int, int]
+#: how a drawable's colour combines with what is under it
+
+
+class TextureFilter(StrEnum):
+    """How an image is sampled when drawn at another size or turned."""
+
+    NEAREST = "nearest"  #: crisp pixels (pixel art)
+    LINEAR = "linear"  #: smooth (painted art)
+
+
+class TextureWrap(StrEnum):
+    """What lies past an image's edge when a sprite is larger than one copy of it."""
+
+    CLAMP = "clamp"  #: one copy, stretched over the size
+    REPEAT = "repeat"  #: copies side by side
+    MIRROR = "mirror"  #: copies, every other one mirrored (no seams)
+
+
+
+def _optional_image(value: Any, owner: str, field: str) -> Any:
+    return None if value is None else _image(value, owner, field)
+
+
+def _nine_patch(value: Any, owner: str, field: str) -> Rect4 | None:
+    if value is None:
+        return None
+    if not isinstance(value, (tuple, list)) or len(value) != 4:
+        raise ComponentTypeError(
+            f"{owner}.{field} must be (left, bottom, right, top) border pixels, got {value!r}"
+        )
+    left, bottom, right, top = (integer(v, owner, f"{field}[{i}]") for i, v in enumerate(value))
+    if min(left, bottom, right, top) < 0:
+        raise ValidationError(f"{owner}.{field} borders must be >= 0 pixels, got {value!r}")
+    return (left, bottom, right, top)
 
 
 def _image(value: Any, owner: str, field: str) -> Any:
@@ -59,13 +108,10 @@ def _optional_size(value: Any, owner: str, field: str) -> Vec2 | None:
     if value is None:
         return None
     w, h = vec2(value, owner, field)
-    positive(w, owner, f"{field}[0]")
-    positive(h, owner, f"{field}[1]")
+    extent(w, owner, f"{field}[0]")
+    extent(h, owner, f"{field}[1]")
     return (w, h)
 
-
-def _anchor(value: Any, owner: str, field: str) -> Vec2:
-    return vec2(value, owner, field)
 
 
 def _region(value: Any, owner: str, field: str) -> int | Rect4 | None:
@@ -107,13 +153,13 @@ class Sprite(Tracked):
     """An image drawn at the entity's (interpolated) pose. See the module docstring."""
 
     #: an image name is looked up in the world's asset store at every write
-    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image", "normal_map"})
 
     _checks: ClassVar[dict[str, Check]] = {
         "image": _image,
         "layer": _int,
         "order": _int,
-        "anchor": _anchor,
+        "anchor": anchor,
         "tint": rgb,
         "opacity": byte,
         "visible": boolean,
@@ -122,6 +168,14 @@ class Sprite(Tracked):
         "size": _optional_size,
         "region": _region,
         "grid": _grid,
+        "filter": choice(TextureFilter),
+        "mipmaps": boolean,
+        "wrap": choice(TextureWrap),
+        "tile": _optional_size,
+        "scroll": vec2,
+        "nine_patch": _nine_patch,
+        "blend": choice(Blend),
+        "normal_map": _optional_image,
     }
 
     image: Any
@@ -136,10 +190,22 @@ class Sprite(Tracked):
     order: int = 0
     region: int | Rect4 | None = None
     grid: tuple[int, int] | None = None
+    filter: TextureFilter = TextureFilter.NEAREST
+    mipmaps: bool = False
+    wrap: TextureWrap = TextureWrap.CLAMP
+    #: metres per repeat of the image when ``wrap`` repeats (None: its own size)
+    tile: Vec2 | None = None
+    #: the repeated pattern's shift, in tiles
+    scroll: Vec2 = (0.0, 0.0)
+    nine_patch: Rect4 | None = None
+    blend: Blend = Blend.ALPHA
+    normal_map: Any = None
 
     def __post_init__(self) -> None:
         if isinstance(self.region, int) and self.grid is None:
             raise ValidationError("Sprite.region: a frame index needs grid=(columns, rows)")
+        if self.wrap != "clamp" and self.nine_patch is not None:
+            raise ValidationError("Sprite: nine_patch and a repeating wrap cannot be combined")
 
     def frame_rect(self, image_width: int, image_height: int) -> Rect4:
         """The (x, y, w, h) pixel rectangle to draw, from the image's **bottom**-left.

@@ -10,11 +10,13 @@
 
 ``anchor`` is the point of the text's *box* placed at that position, as fractions:
 (0, 0) bottom-left, (0.5, 0.5) centre, (1, 1) top-right. ``align`` is where each
-line sits inside the box (``"left"``, ``"center"``, ``"right"``, ``"justify"``).
+line sits inside the box (:class:`TextAlign`: ``LEFT``, ``CENTER``, ``RIGHT``,
+``JUSTIFY``), ``valign`` where the block of lines sits (:class:`VerticalAlign`).
 The box is ``width`` x ``height`` when given (metres for world text, pixels for
 screen text), else the size of the text. ``width`` wraps lines; ``overflow`` says
-what happens to text that does not fit ``height`` / ``max_lines``: ``"visible"``,
-``"clip"``, ``"ellipsis"`` or ``"shrink"`` (the font shrinks until it fits).
+what happens to text that does not fit ``height`` / ``max_lines``
+(:class:`TextOverflow`: ``VISIBLE``, ``CLIP``, ``ELLIPSIS`` or ``SHRINK``, the font
+shrinking until it fits).
 
 :class:`TextStyle` is the same set of looks without the placement, for UI labels and
 :func:`kge.render.text.measure`. Everything is validated at the call: a font size
@@ -40,25 +42,45 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, fields
-from typing import Any, ClassVar, Literal
+from enum import StrEnum
+from typing import Any, ClassVar
 
 from kge.components.color import RGBA, Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import Vec2, boolean, finite, integer, vec2
+from kge.validate import Vec2, anchor, boolean, choice, finite, integer, vec2
 
 #: the largest font size, points (FreeType fails on a glyph millions of pixels tall)
 MAX_FONT_SIZE = 1000.0
 #: the largest text box side, in the text's units (pixels or font pixels)
 MAX_BOX = 1e6
 
-Align = Literal["left", "center", "right", "justify"]
-VAlign = Literal["top", "center", "bottom"]
-Overflow = Literal["visible", "clip", "ellipsis", "shrink"]
 
-ALIGNS = ("left", "center", "right", "justify")
-VALIGNS = ("top", "center", "bottom")
-OVERFLOWS = ("visible", "clip", "ellipsis", "shrink")
+
+class TextAlign(StrEnum):
+    """Where each line sits inside the text's box."""
+
+    LEFT = "left"
+    CENTER = "center"
+    RIGHT = "right"
+    JUSTIFY = "justify"  #: spread to the box's width (a paragraph's last line: left)
+
+
+class VerticalAlign(StrEnum):
+    """Where the block of lines sits inside a box taller than the text."""
+
+    TOP = "top"
+    CENTER = "center"
+    BOTTOM = "bottom"
+
+
+class TextOverflow(StrEnum):
+    """What becomes of text that does not fit its box's height or ``max_lines``."""
+
+    VISIBLE = "visible"  #: drawn past the box
+    CLIP = "clip"  #: cut at the box
+    ELLIPSIS = "ellipsis"  #: the last line that fits ends with an ellipsis
+    SHRINK = "shrink"  #: the size goes down until everything fits
 #: CSS / OpenType weight names
 WEIGHTS = {
     "thin": 100, "extralight": 200, "ultralight": 200, "light": 300, "semilight": 350,
@@ -108,17 +130,6 @@ def _weight(value: Any, owner: str, field: str) -> int:
     if not 1 <= w <= 1000:
         raise ValidationError(f"{owner}.{field} must be in 1..1000, got {w}")
     return w
-
-
-def _choice(options: tuple[str, ...]) -> Check:
-    def check(value: Any, owner: str, field: str) -> str:
-        if value not in options:
-            raise ValidationError(
-                f"{owner}.{field} must be one of {', '.join(map(repr, options))}, got {value!r}"
-            )
-        return str(value)
-
-    return check
 
 
 def _box(value: Any, owner: str, field: str) -> float | None:
@@ -173,6 +184,17 @@ def _int(value: Any, owner: str, field: str) -> int:
     return integer(value, owner, field)
 
 
+#: how far (metres in the world, pixels on the screen) a text may sit from its origin
+MAX_OFFSET = 1e9
+
+
+def _offset(value: Any, owner: str, field: str) -> Vec2:
+    x, y = vec2(value, owner, field)
+    if abs(x) > MAX_OFFSET or abs(y) > MAX_OFFSET:
+        raise ValidationError(f"{owner}.{field} must be within +-{MAX_OFFSET:g}, got {(x, y)!r}")
+    return (x, y)
+
+
 def _opacity(value: Any, owner: str, field: str) -> int:
     v = integer(value, owner, field)
     if not 0 <= v <= 255:
@@ -187,14 +209,14 @@ STYLE_CHECKS: dict[str, Check] = {
     "font": _font,
     "weight": _weight,
     "italic": boolean,
-    "align": _choice(ALIGNS),
-    "valign": _choice(VALIGNS),
+    "align": choice(TextAlign),
+    "valign": choice(VerticalAlign),
     "width": _box,
     "height": _box,
     "wrap": boolean,
     "line_spacing": _spacing,
     "letter_spacing": _letter_spacing,
-    "overflow": _choice(OVERFLOWS),
+    "overflow": choice(TextOverflow),
     "max_lines": _max_lines,
     "outline": _effect_px,
     "outline_color": rgba,
@@ -227,14 +249,14 @@ class TextStyle:
     font: str | None = None
     weight: int | str = 400
     italic: bool = False
-    align: Align = "left"
-    valign: VAlign = "top"
+    align: TextAlign = TextAlign.LEFT
+    valign: VerticalAlign = VerticalAlign.TOP
     width: float | None = None
     height: float | None = None
     wrap: bool = True
     line_spacing: float = 1.0
     letter_spacing: float = 0.0
-    overflow: Overflow = "visible"
+    overflow: TextOverflow = TextOverflow.VISIBLE
     max_lines: int | None = None
     outline: float = 0.0
     outline_color: Color = _BLACK
@@ -281,9 +303,9 @@ class Text(Tracked):
         **STYLE_CHECKS,
         "text": _str,
         "bold": boolean,
-        "anchor": vec2,
+        "anchor": anchor,
         "screen_space": boolean,
-        "offset": vec2,
+        "offset": _offset,
         "layer": _int,
         "order": _int,
         "visible": boolean,
@@ -303,14 +325,14 @@ class Text(Tracked):
     font: str | None = None
     weight: int | str = 400
     italic: bool = False
-    align: Align = "left"
-    valign: VAlign = "top"
+    align: TextAlign = TextAlign.LEFT
+    valign: VerticalAlign = VerticalAlign.TOP
     width: float | None = None
     height: float | None = None
     wrap: bool = True
     line_spacing: float = 1.0
     letter_spacing: float = 0.0
-    overflow: Overflow = "visible"
+    overflow: TextOverflow = TextOverflow.VISIBLE
     max_lines: int | None = None
     outline: float = 0.0
     outline_color: Color = _BLACK

@@ -253,7 +253,7 @@ def unbind(component: Tracked, dirty: set[int] | None = None) -> None:
     raw_set(component, "_binding", None if old is None or dirty is None else old.without(dirty))
 
 
-class _NoMarks(set[int]):
+class NoMarks(set[int]):
     """A dirty set that keeps nothing: for bindings that only validate writes."""
 
     def add(self, entity: int) -> None:
@@ -264,6 +264,6 @@ def validate_writes(world: Any, component_type: type[Tracked]) -> None:
     """Check later writes of ``component_type``'s ``_world_fields`` with ``world``'s
     validators, as ``spawn`` does, for components no system binds otherwise (a sprite
     image renamed to a missing file is refused at the write, not at the next frame)."""
-    marks = _NoMarks()
+    marks = NoMarks()
     world.on_add(component_type, lambda e, c: bind(c, e, marks, world.validate))
     world.on_remove(component_type, lambda e, c: unbind(c, marks))

@@ -4,14 +4,17 @@ A :class:`Tween` names a component type and one of its numeric, vector or colour
 fields (``Transform.x``, ``Sprite.opacity``, ``Camera.center``, ``Sprite.tint``),
 the value to reach, a duration in seconds and an easing (``linear``, or
 ``quad``/``cubic``/``quart``/``quint``/``sine``/``expo``/``circ``/``back``/
-``elastic``/``bounce`` with ``_in``, ``_out`` or ``_in_out``). ``delay`` waits
+``elastic``/``bounce`` with ``_in``, ``_out`` or ``_in_out``; or your own curve:
+a function of progress, :class:`kge.animation.easing.CubicBezier` as in CSS, or
+:class:`kge.animation.easing.EaseCurve` through points). ``relative=True`` makes
+``to`` an offset from the value the tween starts from (a move *by*). ``delay`` waits
 first; ``repeat`` plays it again that many times (-1: forever), ``yoyo`` plays
 every other repetition backwards. ``start`` fixes the starting value; without
 it the field's value when the tween begins is used.
 
-:class:`TweenSequence` runs steps one after another, :class:`Parallel` together, and
-:class:`Delay` is a pause inside a sequence. Specs are plain immutable data;
-``world.resource(kge.Tweens).start(entity, spec)`` runs one (see
+:class:`TweenSequence` runs steps one after another, :class:`Parallel` together,
+:class:`Delay` is a pause inside a sequence and :class:`Call` calls a function there.
+Specs are plain immutable data; ``world.resource(kge.Tweens).start(entity, spec)`` runs one (see
 :mod:`kge.systems.animation`) and returns a handle a coroutine can ``yield``.
 
 >>> from kge.components.transform import Transform
@@ -47,12 +50,33 @@ EASING_NAMES: tuple[str, ...] = (
 )
 
 
-def _check_ease(name: Any, owner: str) -> str:
+def _check_ease(name: Any, owner: str) -> Any:
+    if callable(name):
+        return check_curve(name, owner)
     if name not in EASING_NAMES:
         raise ValidationError(
-            f"{owner}.ease: unknown easing {name!r}; choose one of: {', '.join(EASING_NAMES)}"
+            f"{owner}.ease: unknown easing {name!r}; choose one of: {', '.join(EASING_NAMES)} "
+            "(or a function of progress)"
         )
     return str(name)
+
+
+def check_curve(fn: Any, owner: str) -> Any:
+    """A custom easing must give a finite number for every progress in [0, 1]."""
+    probe = (0.0, 0.25, 0.5, 0.75, 1.0)
+    try:
+        values = [float(fn(p)) for p in probe]
+    except Exception as exc:  # the user's function: any error is reported at the call
+        raise ValidationError(
+            f"{owner}.ease: the easing function {fn!r} failed at progress 0..1 "
+            f"({type(exc).__name__}: {exc})"
+        ) from None
+    if not all(math.isfinite(v) for v in values):
+        raise ValidationError(
+            f"{owner}.ease: the easing function {fn!r} gave {values} at progress "
+            f"{list(probe)}: not all finite"
+        )
+    return fn
 
 
 @dataclass(slots=True, frozen=True)
@@ -63,12 +87,13 @@ class Tween:
     field: str
     to: Any
     duration: float
-    ease: str = "linear"
+    ease: Any = "linear"  #: a name, or a function of progress (see the module docstring)
     delay: float = 0.0
     repeat: int = 0
     yoyo: bool = False
     start: Any = None
     name: str = ""
+    relative: bool = False  #: ``to`` is added to the start value (move by, not to)
 
     def __post_init__(self) -> None:
         if not isinstance(self.component, type):
@@ -85,6 +110,7 @@ class Tween:
         if rep < -1:
             raise ValidationError(f"{owner}.repeat must be >= 0, or -1 for forever, got {rep}")
         boolean(self.yoyo, owner, "yoyo")
+        boolean(self.relative, owner, "relative")
         _check_ease(self.ease, owner)
 
     @property
@@ -113,13 +139,36 @@ class Delay:
         return float(self.seconds)
 
 
+class Call:
+    """Call ``fn(*args)`` at this point of a :class:`TweenSequence` (it takes no time).
+
+    In a repeating sequence it is called on every pass.
+    """
+
+    __slots__ = ("args", "fn")
+
+    def __init__(self, fn: Any, *args: Any) -> None:
+        if not callable(fn):
+            raise ValidationError(f"Call needs a function, got {fn!r}")
+        self.fn = fn
+        self.args = args
+
+    @property
+    def total(self) -> float:
+        return 0.0
+
+    def __repr__(self) -> str:
+        return f"Call({getattr(self.fn, '__name__', self.fn)!s})"
+
+
 def _steps(steps: tuple[Any, ...], owner: str) -> None:
     if not steps:
         raise ValidationError(f"{owner} needs at least one step")
     for i, s in enumerate(steps):
-        if not isinstance(s, (Tween, Delay, TweenSequence, Parallel)):
+        if not isinstance(s, (Tween, Delay, Call, TweenSequence, Parallel)):
             raise ComponentTypeError(
-                f"{owner} step {i} must be a Tween, Delay, TweenSequence or Parallel, got {s!r}"
+                f"{owner} step {i} must be a Tween, Delay, Call, TweenSequence or Parallel, "
+                f"got {s!r}"
             )
 
 

@@ -33,7 +33,7 @@ from typing import Any, ClassVar
 from kge.components.color import Color, rgba
 from kge.components.tracked import Check, Tracked
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import boolean, finite, integer, non_negative, vec2
+from kge.validate import boolean, finite, integer, non_negative, vec2, within
 
 Size = float | str
 
@@ -87,6 +87,33 @@ def size(value: Any, owner: str, name: str) -> Size:
     return v
 
 
+#: the largest UI distance, pixels (offsets, padding, spacing): layout boxes stay finite
+MAX_PIXELS = 1e7
+#: the largest magnitude of a slider's or bar's min, max and value: max - min stays finite
+MAX_RANGE = 1e300
+
+
+def pixels(value: Any, owner: str, name: str) -> float:
+    """A UI distance in pixels, within +-:data:`MAX_PIXELS`."""
+    return within(value, MAX_PIXELS, owner, name, " pixels")
+
+
+def _gap(value: Any, owner: str, name: str) -> float:
+    v = pixels(value, owner, name)
+    if v < 0:
+        raise ValidationError(f"{owner}.{name} must be >= 0, got {v!r}")
+    return v
+
+
+def _offset(value: Any, owner: str, name: str) -> tuple[float, float]:
+    x, y = vec2(value, owner, name)
+    return (pixels(x, owner, f"{name}[0]"), pixels(y, owner, f"{name}[1]"))
+
+
+def _ranged(value: Any, owner: str, name: str) -> float:
+    return within(value, MAX_RANGE, owner, name)
+
+
 def anchor(value: Any, owner: str, name: str) -> str:
     if value not in ANCHORS:
         raise ValidationError(f"{owner}.{name} must be one of {', '.join(ANCHORS)}, got {value!r}")
@@ -116,8 +143,8 @@ def _font_size(value: Any, owner: str, name: str) -> float | None:
     if value is None:
         return None
     v = finite(value, owner, name)
-    if v <= 0:
-        raise ValidationError(f"{owner}.{name} must be > 0, got {v}")
+    if not 0 < v <= 1000:  # FreeType refuses much larger glyphs at the first draw
+        raise ValidationError(f"{owner}.{name} must be in (0, 1000] points, got {v}")
     return v
 
 
@@ -151,15 +178,18 @@ def _strings(value: Any, owner: str, name: str) -> list[str]:
 class UINode(Tracked):
     """Where a UI element goes and how big it is (see the module docstring)."""
 
+    #: the parent must be another live UI node, not a descendant (checked by the UI plugin)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"parent"})
+
     _checks: ClassVar[dict[str, Check]] = {
         "parent": parent,
         "anchor": anchor,
-        "offset": vec2,
+        "offset": _offset,
         "width": size,
         "height": size,
         "layout": _choice(LAYOUTS),
-        "padding": non_negative,
-        "spacing": non_negative,
+        "padding": _gap,
+        "spacing": _gap,
         "align": _choice(ALIGNS),
         "justify": _choice(("start", "center", "end")),
         "columns": _columns,
@@ -205,6 +235,7 @@ class Label(Tracked):
 class UIImage(Tracked):
     """An image (asset name) stretched over the node, tinted by ``tint``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"image": image, "tint": rgba}
 
     image: Any  #: an asset name, a PixelImage or a pyglet image
@@ -219,6 +250,7 @@ class Panel(Tracked):
     edges and middle, so one small image makes a frame of any size.
     """
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {
         "color": _opt_color, "image": _opt_image, "border": non_negative, "radius": non_negative,
         "blocks": boolean,
@@ -235,6 +267,7 @@ class Panel(Tracked):
 class Button(Tracked):
     """A button with text and/or an image. Clicked: ``ButtonClicked`` and ``on_click``."""
 
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"image"})  #: looked up in the assets
     _checks: ClassVar[dict[str, Check]] = {"text": text, "image": _opt_image, "disabled": boolean}
 
     text: str = ""
@@ -276,7 +309,8 @@ class Slider(Tracked):
     continuous. Dragging, arrow keys and the d-pad change it."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "min": finite, "max": finite, "value": finite, "step": non_negative, "disabled": boolean,
+        "min": _ranged, "max": _ranged, "value": _ranged, "step": non_negative,
+        "disabled": boolean,
     }  # fmt: skip
 
     min: float = 0.0
@@ -298,7 +332,7 @@ class ProgressBar(Tracked):
     """A bar filled to ``value / max`` (health bars, loading). ``color`` None: theme accent."""
 
     _checks: ClassVar[dict[str, Check]] = {
-        "value": finite, "max": finite, "color": _opt_color, "min": finite,
+        "value": _ranged, "max": _ranged, "color": _opt_color, "min": _ranged,
     }  # fmt: skip
 
     value: float = 0.0
@@ -360,6 +394,20 @@ class TextInput(Tracked):
                     f"{self._owner()}.text has {len(value)} characters, "
                     f"more than max_length {limit}"
                 )
+        elif name == "max_length" and hasattr(self, "caret"):  # a write after __init__
+            value = integer(value, self._owner(), name)
+            if value < max(0, len(self.text)):
+                raise ValidationError(
+                    f"{self._owner()}.max_length must be >= 0 and hold the text's "
+                    f"{len(self.text)} characters, got {value}"
+                )
+        elif name in ("caret", "anchor") and hasattr(self, "caret"):
+            value = integer(value, self._owner(), name)
+            if not -1 <= value <= len(self.text):
+                raise ValidationError(
+                    f"{self._owner()}.{name} must be a character index 0..{len(self.text)} "
+                    f"(or -1), got {value}"
+                )
         Tracked.__setattr__(self, name, value)
         if name == "text" and hasattr(self, "caret"):
             Tracked.__setattr__(self, "caret", min(max(self.caret, 0), len(value)))
@@ -387,10 +435,19 @@ class Dropdown(Tracked):
     disabled: bool = False
 
     def __post_init__(self) -> None:
-        if self.options and not 0 <= self.selected < len(self.options):
+        self._check_selected(self.selected, self.options)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name == "selected" and hasattr(self, "selected"):
+            value = integer(value, self._owner(), name)
+            self._check_selected(value, self.options)
+        Tracked.__setattr__(self, name, value)
+
+    def _check_selected(self, selected: int, options: list[str]) -> None:
+        if options and not 0 <= selected < len(options):
             raise ValidationError(
-                f"{self._owner()}.selected {self.selected} is not an index of its "
-                f"{len(self.options)} options"
+                f"{self._owner()}.selected {selected} is not an index of its "
+                f"{len(options)} options"
             )
 
     @property

@@ -76,14 +76,14 @@ class Occluders:
             found = self._outlines[shape] = (edges, np.full(len(edges), closed))
         return found
 
-    def _body(self, entity: int, col: Collider) -> int:
+    def _body_of(self, entity: int, col: Collider) -> int:
         return entity if col.body is None else col.body
 
     def _static_edges(self, world: Any) -> tuple[np.ndarray, np.ndarray]:
         if self.dirty:
             parts, flags = [], []
             for e, (col,) in world.query(Collider):
-                body = self._body(e, col)
+                body = self._body_of(e, col)
                 rb = world.try_get(body, RigidBody)
                 if col.sensor or (rb is not None and rb.type is not BodyType.STATIC):
                     continue
@@ -115,7 +115,7 @@ class Occluders:
         if casters:
             local, closed_flags, owners, poses = [], [], [], []
             for e, (col,) in world.query(Collider):
-                body = self._body(e, col)
+                body = self._body_of(e, col)
                 if col.sensor or (e not in casters and body not in casters):
                     continue
                 pose = pose_of(body) if pose_of is not None else None

@@ -22,13 +22,14 @@ from typing import Any
 
 import numpy as np
 
-from kge.components.particles import ParticleCollision, ParticleEmitter, span
+from kge.components.particles import LIMIT, TAU, ParticleCollision, ParticleEmitter, span
 from kge.errors import EntityNotFoundError, ValidationError, where
 from kge.particles.curves import color_table, life_index, size_table
 from kge.particles.grid import StaticGrid
 from kge.particles.pool import ParticlePool
 from kge.particles.shapes import sample_shape
 from kge.snapshot import carry_running
+from kge.validate import at_most, positive
 
 Pose = tuple[float, float, float]
 #: prewarm is simulated in steps of this many seconds
@@ -40,6 +41,24 @@ class Burst:
     count: int
     position: tuple[float, float] | None = None  #: world metres
     direction: float | None = None  #: world radians
+
+
+def carried_velocity(velocity: tuple[float, float], share: float) -> np.ndarray:
+    """``share`` of a body's ``velocity``, no faster than :data:`~kge.components.particles.
+    LIMIT` (a body's velocity is only bounded by float64, the particle rows are float32).
+
+    >>> carried_velocity((3e307, 4e307), 100.0).tolist()
+    [600000.0, 800000.0]
+    """
+    vx, vy = velocity
+    scale = max(abs(vx), abs(vy))
+    if scale == 0.0 or share == 0.0:
+        return np.zeros(2)
+    ux, uy = vx / scale, vy / scale
+    norm = math.hypot(ux, uy)
+    speed = min(LIMIT, scale * norm * abs(share))  # an overflow to inf is capped here
+    k = math.copysign(speed / norm, share)
+    return np.array([ux * k, uy * k])
 
 
 class EmitterState:
@@ -127,6 +146,11 @@ class EmitterState:
         lo, hi = span(em.spin)
         spin = rng.uniform(lo, hi, n) if hi > lo else np.full(n, lo)
         x, y, a = pose
+        # angles are kept below 2 pi before they reach the float32 rows: a finite
+        # Transform.angle or direction of 1e300 (or their sum) would overflow there
+        a = math.remainder(a, TAU)
+        if direction is not None:
+            direction = math.remainder(direction, TAU)
         if local:
             base = em.direction if direction is None else direction - a
             pos = offsets
@@ -148,8 +172,8 @@ class EmitterState:
                 d = np.array([x - prev[0], y - prev[1]])
                 origin = np.array([x, y]) - frac[:, None] * d
             pos = origin + rotated
-            carried = np.asarray(velocity, float) * em.inherit_velocity
-        theta = base + jitter
+            carried = carried_velocity(velocity, em.inherit_velocity)
+        theta = math.remainder(base, TAU) + jitter
         vel = np.stack([np.cos(theta) * speed, np.sin(theta) * speed], axis=1) + carried
         pos = pos + vel * age[:, None]
         self.born += self.pool.add(pos, vel, life, theta, spin, age)
@@ -162,8 +186,10 @@ class EmitterState:
         velocity: tuple[float, float],
         collider: Any = None,
         grid: StaticGrid | None = None,
+        attractors: list[tuple[float, float, float, float]] | None = None,
     ) -> None:
-        """One frame of game time: move the live particles, then emit the new ones."""
+        """One frame of game time: move the live particles, then emit the new ones
+        (``attractors``: (x, y, strength, radius) pulling world-space particles)."""
         self.refresh_style(em)
         if not self.started:
             self.started = True
@@ -177,7 +203,7 @@ class EmitterState:
                 self.pending.append(Burst(em.burst))
         self.was_emitting = em.emitting
         prev = self.prev if self.prev is not None else pose
-        self._move(em, dt, grid)
+        self._move(em, dt, grid, pose, attractors if em.space == "world" else None)
         on = self.continuous(em)
         if on and dt > 0:
             moved = math.hypot(pose[0] - prev[0], pose[1] - prev[1])
@@ -198,10 +224,22 @@ class EmitterState:
             em.one_shot and not self.continuous(em) and not self.pending and self.pool.count == 0
         )
 
-    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None) -> None:
+    def _move(self, em: ParticleEmitter, dt: float, grid: StaticGrid | None,
+              pose: Pose | None = None,
+              attractors: list[tuple[float, float, float, float]] | None = None) -> None:
         use_grid = grid if em.collide != "none" and em.space == "world" else None
         bounce = em.bounciness if em.collide == "bounce" else None
-        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce)
+        around = None
+        if em.radial_acceleration or em.tangential_acceleration or em.orbit:
+            ox, oy = em.offset
+            if em.space == "local" or pose is None:
+                cx, cy = ox, oy
+            else:  # the emitter's origin in the world: the entity plus its turned offset
+                x, y, a = pose
+                c, s = math.cos(a), math.sin(a)
+                cx, cy = x + c * ox - s * oy, y + s * ox + c * oy
+            around = (cx, cy, em.radial_acceleration, em.tangential_acceleration, em.orbit)
+        self.pool.step(dt, em.acceleration, em.drag, use_grid, bounce, around, attractors)
 
     def _prewarm(
         self,
@@ -213,7 +251,7 @@ class EmitterState:
     ) -> None:
         steps = math.ceil(em.prewarm / PREWARM_STEP)
         for _ in range(steps):
-            self._move(em, PREWARM_STEP, grid)
+            self._move(em, PREWARM_STEP, grid, pose)
             if self.continuous(em):
                 self.carry += em.rate * PREWARM_STEP
                 n = int(self.carry)
@@ -241,8 +279,20 @@ class Particles:
         #: the static-collider grid, rebuilt when static colliders change
         self.grid: StaticGrid | None = None
         self.grid_dirty = True
-        #: grid cell size (metres) for particle collisions
-        self.cell = 0.1
+        self._cell = 0.1
+
+    @property
+    def cell(self) -> float:
+        """Grid cell size (metres) for particle collisions, in (0, 1e6]; a change
+        rebuilds the grid."""
+        return self._cell
+
+    @cell.setter
+    def cell(self, value: float) -> None:
+        v = at_most(positive(value, "Particles", "cell"), LIMIT, "Particles", "cell", "m")
+        if v != self._cell:
+            self._cell = v
+            self.grid_dirty = True
 
     # -- snapshots (kge.snapshot.carry_running) ------------------------------------------
     def export_running(self) -> dict[int, EmitterState]:
@@ -305,10 +355,10 @@ class Particles:
 
     def positions(self, entity: int) -> np.ndarray:
         """World positions of the emitter's live particles, (n, 2) (a copy)."""
+        em = self._emitter(entity, "positions")
         st = self.states.get(entity)
         if st is None:
             return np.zeros((0, 2), np.float32)
-        em = self._emitter(entity, "positions")
         pts = st.pool.pos[: st.pool.count].astype(float)
         if em.space == "local":
             x, y, a = st.pose

@@ -132,8 +132,15 @@ class ParticlePool:
         drag: float,
         grid: StaticGrid | None = None,
         bounce: float | None = None,
+        around: tuple[float, float, float, float, float] | None = None,
+        attractors: list[tuple[float, float, float, float]] | None = None,
     ) -> None:
         """Advance every live particle ``dt`` seconds, then drop the dead.
+
+        ``around`` = (cx, cy, radial, tangential, orbit): accelerations away from and
+        counter-clockwise round the point (cx, cy) (m/s^2), and an orbit (rad/s) that
+        turns the positions round it. ``attractors``: (x, y, strength, radius) each,
+        pulling particles within radius (strength at the centre, linear to 0).
 
         ``grid`` collides particles with static geometry: ``bounce=None`` kills
         those that enter a solid cell, a number reflects them with that
@@ -151,6 +158,10 @@ class ParticlePool:
             d[2] += F(ax * dt)
         if ay:
             d[3] += F(ay * dt)
+        if around is not None:
+            self._around(d, dt, *around)
+        for ax_, ay_, strength, radius in attractors or ():
+            self._attract(d, dt, ax_, ay_, strength, radius)
         if drag > 0.0:
             d[2:4] *= F(math.exp(-drag * dt))
         if grid is not None:
@@ -163,6 +174,8 @@ class ParticlePool:
         else:
             d[0:2] += d[2:4] * fdt
         d[6] += d[7] * fdt
+        if around is not None and around[4]:
+            self._orbit(d, dt, around[0], around[1], around[4])
         alive = d[4] < d[5]
         dead = np.flatnonzero(~alive)
         if len(dead):
@@ -171,6 +184,42 @@ class ParticlePool:
             if len(holes):
                 self.data[:, holes] = self.data[:, np.flatnonzero(alive[m:]) + m]
             self.count = m
+
+    @staticmethod
+    def _around(d: np.ndarray, dt: float, cx: float, cy: float, radial: float,
+                tangential: float, orbit: float) -> None:
+        """Radial and tangential accelerations about (cx, cy), all particles at once."""
+        if not (radial or tangential):
+            return
+        rx, ry = d[0] - F(cx), d[1] - F(cy)
+        r = np.hypot(rx, ry)
+        inv = np.divide(F(dt), r, out=np.zeros_like(r), where=r > 0)  # at the centre: none
+        ux, uy = rx * inv, ry * inv  # unit vectors times dt
+        d[2] += F(radial) * ux - F(tangential) * uy
+        d[3] += F(radial) * uy + F(tangential) * ux
+
+    @staticmethod
+    def _attract(d: np.ndarray, dt: float, x: float, y: float, strength: float,
+                 radius: float) -> None:
+        """Pull towards (x, y): strength x (1 - distance / radius) inside the radius."""
+        dx, dy = F(x) - d[0], F(y) - d[1]
+        dist = np.hypot(dx, dy)
+        near = (dist < radius) & (dist > 0)
+        if not near.any():
+            return
+        k = np.where(near, F(strength * dt) * (1 - dist / F(radius)), 0)
+        k = np.divide(k, dist, out=np.zeros_like(k), where=near)
+        d[2] += k * dx
+        d[3] += k * dy
+
+    @staticmethod
+    def _orbit(d: np.ndarray, dt: float, cx: float, cy: float, orbit: float) -> None:
+        """Turn positions (and velocities, so motion stays consistent) by orbit * dt."""
+        c, s = F(math.cos(orbit * dt)), F(math.sin(orbit * dt))
+        rx, ry = d[0] - F(cx), d[1] - F(cy)
+        d[0], d[1] = F(cx) + c * rx - s * ry, F(cy) + s * rx + c * ry
+        vx, vy = d[2].copy(), d[3].copy()
+        d[2], d[3] = c * vx - s * vy, s * vx + c * vy
 
     def clear(self) -> None:
         self.count = 0

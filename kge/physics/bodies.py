@@ -9,7 +9,9 @@ Box2D rules implemented here, each kept off the hot path when unused:
 
 * gravity scale and damping (``v *= max(0, 1 - c*dt)`` per fixed step) live in a
   ``velocity_func`` installed only on bodies that need it, guarded so that it
-  never touches a kinematic body;
+  never touches a kinematic body; it damps through Chipmunk's own damping
+  argument, not its velocity setters (each of which restarts the body's sleep
+  clock: damped bodies never slept);
 * every pymunk call that can abort the process is wrapped: :func:`sleep_island` checks
   that sleeping is enabled, the body is dynamic and in the space (it is never
   called inside a step, because sync-in runs between steps).
@@ -44,10 +46,11 @@ from collections.abc import Callable
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
 
 from kge.components.rigidbody import BodyType, RigidBody
+from kge.physics.cp import arbiter_handle, body_handle, constraint_handle, space_handle
+from kge.physics.cp import ffi as _ffi
+from kge.physics.cp import lib as _lib
 from kge.physics.mass import ZERO, MassData
 from kge.physics.tiny import flush
 
@@ -113,7 +116,7 @@ def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
         body = pymunk.Body(1.0, math.inf)
     else:
         body = pymunk.Body(body_type=PYMUNK_TYPE[kind])
-    cp = body._body
+    cp = body_handle(body)
     _lib.cpBodySetPosition(cp, (flush(x), flush(y)))
     _lib.cpBodySetAngle(cp, flush(angle))
     vars(body).update(
@@ -139,22 +142,22 @@ def set_body_type(body: pymunk.Body, body_type: int) -> None:
     """
     space = body.space
     if space is None:
-        _lib.cpBodySetType(body._body, body_type)
+        _lib.cpBodySetType(body_handle(body), body_type)
         return
     shapes = take_out(space, body)
-    _lib.cpBodySetType(body._body, body_type)
+    _lib.cpBodySetType(body_handle(body), body_type)
     space.add(body, *shapes)
 
 
 def _constraint_in(space: pymunk.Space, c: pymunk.Constraint) -> bool:
     """Is ``c`` in ``space`` (O(1); ``space.constraints`` builds a list)?"""
-    return bool(_lib.cpConstraintGetSpace(c._constraint) == space._space)
+    return bool(_lib.cpConstraintGetSpace(constraint_handle(c)) == space_handle(space))
 
 
 def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
     """Non-static bodies touching ``body`` (its arbiters) or jointed to it in ``space``."""
     found: dict[pymunk.Body, None] = {}
-    cp = body._body
+    cp = body_handle(body)
     a_p, b_p = _ffi.new("cpBody *[1]"), _ffi.new("cpBody *[1]")
     get_bodies, get_type = _lib.cpArbiterGetBodies, _lib.cpBodyGetType
     get_data, from_handle = _lib.cpBodyGetUserData, _ffi.from_handle
@@ -162,7 +165,7 @@ def neighbours(space: pymunk.Space, body: pymunk.Body) -> list[pymunk.Body]:
     def visit(arb: pymunk.Arbiter) -> None:
         # what arb.bodies gives, through Chipmunk's getters (pymunk's goes through both
         # shapes and their weak body references): the body's user data is its handle
-        get_bodies(arb._arbiter, a_p, b_p)
+        get_bodies(arbiter_handle(arb), a_p, b_p)
         a = a_p[0]
         other = b_p[0] if a == cp else a
         if get_type(other) != STATIC:
@@ -218,11 +221,29 @@ def scaled_gravity(gx: float, gy: float, scale: float) -> tuple[float, float]:
 
 
 def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float) -> None:
-    """velocity_func with gravity scale and Box2D damping (factors precomputed per substep)."""
+    """velocity_func with gravity scale and Box2D damping (factors precomputed per substep).
+
+    Box2D: ``v' = lin * (v + dt * (g + f/m))`` and ``w' = ang * (w + dt * t/I)``.
+    Chipmunk's integrator gives ``v' = d * v + dt * (g' + f/m)`` and ``w' = d * w +
+    dt * t/I`` for a damping ``d`` and gravity ``g'`` of our choosing: with ``d =
+    ang`` and ``g'`` taking up the rest of the linear result, both are Box2D's
+    when no torque acts, without a velocity setter (each one restarts the body's
+    sleep clock, so damped bodies never slept). With a torque (whose setter woke
+    the body anyway) the result is damped after the integration.
+    """
     if body.body_type != DYNAMIC:
         return
     scale, lin, ang = body.kge_dynamics
-    pymunk.Body.update_velocity(body, scaled_gravity(gravity.x, gravity.y, scale), 1.0, dt)
+    gx, gy = scaled_gravity(gravity.x, gravity.y, scale)
+    if body.torque == 0.0:
+        v, f, inv_mass = body.velocity, body.force, 1.0 / body.mass
+        g = (
+            (lin - ang) * v.x / dt + lin * gx + (lin - 1.0) * f.x * inv_mass,
+            (lin - ang) * v.y / dt + lin * gy + (lin - 1.0) * f.y * inv_mass,
+        )
+        pymunk.Body.update_velocity(body, g, ang, dt)
+        return
+    pymunk.Body.update_velocity(body, (gx, gy), 1.0, dt)
     if lin != 1.0:
         body.velocity = body.velocity * lin
     if ang != 1.0:
@@ -374,7 +395,7 @@ def set_mass(body: pymunk.Body, md: MassData) -> None:
     position and its next step redraws the origin around it, so a body spawned at
     rest with an off-centre shape jumped by its centre's offset on its first step.
     """
-    cp = body._body
+    cp = body_handle(body)
     cog = _lib.cpBodyGetCenterOfGravity(cp)
     if (
         _lib.cpBodyGetMass(cp) == md.mass

@@ -41,10 +41,11 @@ import math
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
 
-from kge.physics.bulk import ArbiterBodies
+from kge.physics.cp import arbiter_handle, body_handle
+from kge.physics.cp import ffi as _ffi
+from kge.physics.cp import lib as _lib
+from kge.physics.cp.bulk import ArbiterBodies
 
 _DYNAMIC = _lib.CP_BODY_TYPE_DYNAMIC
 _from_handle = _ffi.from_handle
@@ -180,7 +181,7 @@ class ContactFirst:
             body = pushed[e]
             if body.space is not space:
                 continue
-            cp = body._body
+            cp = body_handle(body)
             if _lib.cpBodyGetType(cp) != _DYNAMIC or _lib.cpBodyIsSleeping(cp):
                 continue
             current.add(cp)
@@ -188,7 +189,7 @@ class ContactFirst:
         if not seeds:
             return False
         if len(seeds) > FEW:
-            # many pushed bodies (a batch of landers' engines): only those with a contact
+            # many pushed bodies (a batch of thrusters): only those with a contact
             # need their contact list walked; one bulk read tells which may have one
             touching = set(self._arbiters.read(space).tolist())
             seeds = [b for b in seeds if b.id in touching]
@@ -225,7 +226,7 @@ class ContactFirst:
         a_p, b_p = self._pair
         queue: list[pymunk.Body] = []
         for body in seeds:
-            found[body._body] = _Body(body._body, True)
+            found[body_handle(body)] = _Body(body_handle(body), True)
             queue.append(body)
         expanded = 0
 
@@ -238,7 +239,7 @@ class ContactFirst:
             return rec
 
         def visit(arb: pymunk.Arbiter) -> None:
-            ca = arb._arbiter
+            ca = arbiter_handle(arb)
             if ca in seen_arbiters:
                 return
             seen_arbiters.add(ca)

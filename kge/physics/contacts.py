@@ -32,10 +32,11 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import pymunk
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
 
 from kge.physics.callback_errors import CallbackErrors
+from kge.physics.cp import arbiter_handle, shape_handle
+from kge.physics.cp import ffi as _ffi
+from kge.physics.cp import lib as _lib
 from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
 from kge.physics.impact import Moves, settle, undo
 from kge.validate import boolean, finite, non_negative
@@ -129,7 +130,7 @@ def _geometry(arb: pymunk.Arbiter, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], 
     ``contact_point_set`` builds a Vec2d per number, and this runs for every
     new contact.
     """
-    cps = _lib.cpArbiterGetContactPointSet(arb._arbiter)
+    cps = _lib.cpArbiterGetContactPointSet(arbiter_handle(arb))
     n = cps.normal
     nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
     p = cps.points[0]
@@ -145,8 +146,8 @@ def _geometry(arb: pymunk.Arbiter, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], 
 
 def _approach(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2, point: Vec2) -> float:
     """Speed at which B approaches A along the normal A->B at ``point`` (>= 0)."""
-    va = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(sa._shape), point)
-    vb = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(sb._shape), point)
+    va = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(shape_handle(sa)), point)
+    vb = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(shape_handle(sb)), point)
     rel = (vb.x - va.x) * normal[0] + (vb.y - va.y) * normal[1]
     return max(0.0, -rel)
 
@@ -193,36 +194,36 @@ class ContactRecorder:
         )
 
     # -- begin / separate (once per contact) ------------------------------------------
-    def _shapes(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape]:
+    def _arbiter_shapes(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape]:
         """``arb.shapes`` without its two allocations.
 
         The two pointer cells are reused: they are read back at once, with no
         Python call in between that could run another callback.
         """
         pa, pb = self._shape_ptrs
-        _lib.cpArbiterGetShapes(arb._arbiter, pa, pb)
+        _lib.cpArbiterGetShapes(arbiter_handle(arb), pa, pb)
         return (
             _from_handle(_lib.cpShapeGetUserData(pa[0])),
             _from_handle(_lib.cpShapeGetUserData(pb[0])),
         )
 
     def _begin(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = self._shapes(arb)
-        b0, b1 = _lib.cpShapeGetBody(s0._shape), _lib.cpShapeGetBody(s1._shape)
+        s0, s1 = self._arbiter_shapes(arb)
+        b0, b1 = _lib.cpShapeGetBody(shape_handle(s0)), _lib.cpShapeGetBody(shape_handle(s1))
         d0 = _lib.cpBodyGetType(b0) == _CP_DYNAMIC
         d1 = _lib.cpBodyGetType(b1) == _CP_DYNAMIC
         if not (d0 or d1):
             arb.process_collision = False  # Box2D: static/kinematic pairs never touch
             return
-        cp_arb = arb._arbiter
+        cp_arb = arbiter_handle(arb)
         if not _lib.cpArbiterGetProcessCollision(cp_arb):
             return
         fa, fb = s0.kge_filter, s1.kge_filter
         if (fa.group_index > 0 or fb.group_index > 0) and not fa.collides_with(fb):
             _lib.cpArbiterSetProcessCollision(cp_arb, False)
             return
-        sensor0 = _lib.cpShapeGetSensor(s0._shape)
-        sensor1 = _lib.cpShapeGetSensor(s1._shape)
+        sensor0 = _lib.cpShapeGetSensor(shape_handle(s0))
+        sensor1 = _lib.cpShapeGetSensor(shape_handle(s1))
         if sensor0 != sensor1:
             flip = not sensor0
         else:
@@ -284,7 +285,7 @@ class ContactRecorder:
         return True
 
     def _separate(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = self._shapes(arb)
+        s0, s1 = self._arbiter_shapes(arb)
         key = (id(s0), id(s1))
         rec = self.active.pop(key, None)
         if rec is None:

@@ -4,8 +4,8 @@ pymunk warm-starts every constraint with the impulse it accumulated in the
 last step, applied along the Jacobian of this one. Sometimes that impulse is
 wrong: a position pass has just moved the joint's bodies a long way (see
 ``JOLT`` in :mod:`kge.physics.joints.base`), or the game teleported them
-(``Physics.reset_joints``: a ragdoll back at a checkpoint, an RL env's lander
-back at the top). Two joints that disagree about a body's place (two hinges to
+(``Physics.reset_joints``: a ragdoll back at a checkpoint, a vehicle back
+at its start). Two joints that disagree about a body's place (two hinges to
 the ground at anchors that cannot both hold) fed each other that way: their equal
 and opposite impulses grew about 3x per step, from 0.01 to 10^17 N·s in 30 steps,
 until they no longer cancelled and threw the body 10^11 m. Box2D's position solver
@@ -33,8 +33,8 @@ from __future__ import annotations
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
+from kge.physics.cp import body_handle, constraint_handle, lib
 from kge.physics.joint_api import in_space
 
 _get_max_force = lib.cpConstraintGetMaxForce
@@ -78,7 +78,7 @@ class Drain:
         # a sleeping joint is not stepped: it waits, as its bodies' warm start does
         for c in [c for c in self.waiting if in_space(space, c) and not _asleep(c)]:
             del self.waiting[c]
-            cc = c._constraint
+            cc = constraint_handle(c)
             saved.append((cc, _get_max_force(cc)))
             _set_max_force(cc, 0.0)
         return saved
@@ -91,4 +91,4 @@ class Drain:
 
 
 def _asleep(c: pymunk.Constraint) -> bool:
-    return bool(_sleeping(c.a._body) or _sleeping(c.b._body))
+    return bool(_sleeping(body_handle(c.a)) or _sleeping(body_handle(c.b)))

@@ -28,8 +28,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
+from kge.physics.cp import ffi as _ffi
+from kge.physics.cp import lib as _lib
 
 _DYNAMIC = _lib.CP_BODY_TYPE_DYNAMIC
 _PAIR = (_ffi.new("cpBody *[1]"), _ffi.new("cpBody *[1]"))

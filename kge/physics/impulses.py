@@ -1,7 +1,7 @@
 """Many linear impulses in one call: ``Physics.apply_linear_impulses``.
 
-A controller that pushes many bodies every step (the engines of 64 Gymnasium
-landers sharing one world) paid ``apply_linear_impulse``'s per-call checks and
+A controller that pushes many bodies every step (the thrusters of 64
+vehicles sharing one world) paid ``apply_linear_impulse``'s per-call checks and
 lookups once per body. Here the rows are checked together with numpy (shape,
 finiteness), each entity is looked up once, and the new velocities are computed
 for every row before any body changes, so a bad row leaves the world as it was.
@@ -19,10 +19,11 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from pymunk._chipmunk import lib as _lib
 
 from kge.errors import ValidationError
-from kge.physics.bulk import BodyReader
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _lib
+from kge.physics.cp.bulk import BodyReader
 from kge.physics.sync import FIELDS
 
 _get_position = _lib.cpBodyGetPosition
@@ -116,7 +117,7 @@ def new_velocities(
     rows = impulses.tolist()
     at = None if points is None else points.tolist()
     for k, rec in enumerate(records):
-        cb = rec.body._body
+        cb = body_handle(rec.body)
         key = id(rec)
         pushed = out.get(key)
         if pushed is None:

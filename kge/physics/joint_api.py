@@ -22,9 +22,9 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.physics.callback_errors import CallbackErrors
+from kge.physics.cp import constraint_handle, lib, space_handle
 
 Vec2 = tuple[float, float]
 
@@ -34,7 +34,7 @@ _contains = lib.cpSpaceContainsConstraint
 def in_space(space: pymunk.Space, constraint: pymunk.Constraint) -> bool:
     """Whether ``constraint`` is in ``space``, in constant time (``c in
     space.constraints`` copies the space's whole constraint list first)."""
-    return bool(_contains(space._space, constraint._constraint))
+    return bool(_contains(space_handle(space), constraint_handle(constraint)))
 
 
 class JointContext(Protocol):

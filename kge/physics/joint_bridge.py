@@ -9,7 +9,7 @@ away (JointDestroyed). A joint's constraints are in the space only while both
 of its bodies are (a disabled body takes its joints out, as in Box2D).
 
 Revolute joints, the ones scenes have by the hundred (chains, bridges, grids,
-a batch of landers' legs), skip the per-joint path in the steady state once
+a batch of vehicles' legs), skip the per-joint path in the steady state once
 there are ``batch_from`` of them: a
 :class:`~kge.physics.joints.pivots.PivotBatch` does their position pass and
 read-back over all of them at once. A joint leaves the batch (and takes the
@@ -26,10 +26,11 @@ import itertools
 from typing import TYPE_CHECKING, Any
 
 import pymunk
-from pymunk._chipmunk import lib as _lib
 
 from kge.components.tracked import Tracked, bind, unbind
 from kge.physics import joint_api
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _lib
 from kge.physics.drain import Drain
 from kge.physics.events import JointBroken, JointDestroyed
 
@@ -97,8 +98,8 @@ class JointBridge:
     #: handle revolute joints in bulk (False: every joint on the per-joint path)
     batch_revolutes = True
     #: fewest batchable joints for the bulk path: its few hundred numpy calls per step
-    #: cost more than that many joints one by one (measured on the batched LunarLander's
-    #: motor-and-limit legs: 16 joints 98 µs per env step one by one against 105 in
+    #: cost more than that many joints one by one (measured on batched two-legged
+    #: vehicles' motor-and-limit legs: 16 joints 98 µs per env step one by one against 105 in
     #: bulk, 32 joints 78 against 72; a single env's two legs 355 against 465 µs)
     batch_from = 24
     #: most position passes per step over the per-joint path (Box2D's
@@ -415,7 +416,7 @@ class JointBridge:
             rec = bodies.get(e)
             if rec is None:
                 continue
-            cb = rec.body._body
+            cb = body_handle(rec.body)
             if _lib.cpBodyGetType(cb) == _DYNAMIC:
                 if not _lib.cpBodyIsSleeping(cb):
                     return False

@@ -57,11 +57,11 @@ from enum import StrEnum
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Box, Chain, Circle, Edge, Polygon
 from kge.errors import ComponentTypeError, ValidationError
+from kge.physics.cp import body_handle, lib, shape_handle
 from kge.validate import finite, number, vec2
 
 _poly_count = lib.cpPolyShapeGetCount
@@ -178,13 +178,13 @@ def _world_vertices(shape: pymunk.Poly) -> list[Vec2]:
     ten rays meets a few polygons each per step, and pymunk's ``get_vertices`` and
     ``local_to_world`` build two ``Vec2d`` per vertex.
     """
-    cs = shape._shape
+    cs = shape_handle(shape)
     local = [_poly_vert(cs, i) for i in range(_poly_count(cs))]
     body = shape.body
     if body is None:
         pts = [(v.x, v.y) for v in local]
     else:
-        cb = body._body
+        cb = body_handle(body)
         o, a = _body_position(cb), _body_angle(cb)
         c, s = math.cos(a), math.sin(a)
         pts = [(o.x + c * v.x - s * v.y, o.y + s * v.x + c * v.y) for v in local]

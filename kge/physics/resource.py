@@ -22,7 +22,6 @@ from typing import TYPE_CHECKING, Any, Literal, overload
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import raw_set
@@ -32,6 +31,7 @@ from kge.physics import impulses as impulses_mod
 from kge.physics import states as states_mod
 from kge.physics.bodies import DYNAMIC, BodyRecord
 from kge.physics.contacts import ContactFilterFn, PostSolveFn, PreSolveFn
+from kge.physics.cp import body_handle, lib
 from kge.physics.events import PhysicsEvents
 from kge.physics.mass import MassData
 from kge.physics.queries import QueryFilter, QueryHit, RayHit, RayMode
@@ -180,14 +180,14 @@ class Physics:
     ) -> None:
         """Change the velocity at once by ``impulse`` (N s) at world ``point`` (default centre).
 
-        Called every step by controllers (Gymnasium's LunarLander fires its engines
+        Called every step by controllers (an RL environment fires its thrusters
         this way), so it looks the body up once and reads it with Chipmunk's getters.
         """
         owner = where(entity, "Physics.apply_linear_impulse")
         jx, jy = vec2(impulse, owner, "impulse")
         at = None if point is None else vec2(point, owner, "point")  # before any change
         rec = self._record(entity, "apply_linear_impulse")
-        cb = rec.body._body
+        cb = body_handle(rec.body)
         v = impulses_mod.velocity_of(cb)
         impulses_mod.push(cb, v, jx, jy, at)
         vx, vy, w = v
@@ -218,7 +218,7 @@ class Physics:
         new = impulses_mod.new_velocities(owner, recs, ents, jj, pp)
         self._sim.touched = True
         for rec, (vx, vy, w) in new.values():  # each body once, in order of first appearance
-            cb = rec.body._body
+            cb = body_handle(rec.body)
             if not rec.in_space or _get_type(cb) != _CP_DYNAMIC:
                 continue  # static and kinematic bodies ignore impulses
             if _is_sleeping(cb):
@@ -264,7 +264,7 @@ class Physics:
         self._sim.touched = True
         v[np.abs(v) < TINY] = 0.0  # kge.physics.tiny.flush, every value at once
         vx, vy, w = v.T.tolist()
-        cbs = [r.body._body for r in recs]  # Chipmunk's setters mapped over the bodies
+        cbs = [body_handle(r.body) for r in recs]  # Chipmunk's setters mapped over the bodies
         set_all(_set_velocity, cbs, zip(vx, vy, strict=True))
         set_all(_set_angular_velocity, cbs, w)
         push = sim.contact_first.push
@@ -282,6 +282,22 @@ class Physics:
         set_all(_SET_VELOCITY, rbs, zip(vx, vy, strict=True))
         set_all(_SET_ANGULAR_VELOCITY, rbs, w)
         return True
+
+    def set_velocities(self, entities: Any, velocities: Any, angular: Any = None) -> None:
+        """Row k gives ``entities[k]`` the velocity ``velocities[k]`` (and, unless
+        ``angular`` is None, the spin ``angular[k]``): Box2D's ``SetLinearVelocity``
+        in bulk, for controllers that drive many kinematic or dynamic bodies every
+        step (:mod:`kge.physics.velocities`).
+
+        The same as writing each ``RigidBody.velocity``, capped at
+        ``settings.max_translation`` per step, waking sleepers, with one check of
+        every row before anything changes; static bodies are skipped.
+
+        >>> # physics.set_velocities([car, lift], [(4.0, 0.0), (0.0, 1.5)])
+        """
+        from kge.physics.velocities import set_velocities
+
+        set_velocities(self, entities, velocities, angular)
 
     def _records(self, entities: list[int], op: str) -> list[BodyRecord]:
         """:meth:`_record` of every entity (ints), with one sync for them all."""
@@ -388,7 +404,7 @@ class Physics:
 
         A solver warm-starts every joint with the impulse it applied in the last
         step (Box2D and pymunk alike), and teleporting the bodies keeps it: a
-        ragdoll put back at a checkpoint, or an RL env's lander put back at the top,
+        ragdoll put back at a checkpoint, or a vehicle put back at its start,
         would begin with the push its legs last gave while standing. After this
         call the joints carry nothing over (for one substep they apply no impulse
         while pymunk's accumulator drains, then solve from zero). Joints not yet
@@ -434,7 +450,7 @@ class Physics:
         fresh, safe to keep. For dynamic and kinematic bodies; others raise, naming
         the entity.
 
-        >>> # states, awake = physics.states(landers); x, vy = states[:, 0], states[:, 4]
+        >>> # states, awake = physics.states(vehicles); x, vy = states[:, 0], states[:, 4]
         """
         ents = np.asarray(entities)
         if ents.ndim != 1 or (len(ents) and ents.dtype.kind not in "iu"):

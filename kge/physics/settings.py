@@ -65,10 +65,10 @@ class PhysicsSettings:
     #: iterated hinges: the most speed, rad/s, a limit adds to push an overshooting
     #: hinge back (pymunk's bias). 0 is Box2D's rule: the limit only stops the hinge,
     #: and the position pass removes what overshoots b2_angularSlop, velocities
-    #: untouched. A push lifts whatever a motor presses onto its stop: LunarLander's
-    #: landed hull hopped on its legs for ever with 0.1 and comes to rest with 0 (at
+    #: untouched. A push lifts whatever a motor presses onto its stop: a hull landed
+    #: on two motorised legs hopped on its legs for ever with 0.1 and comes to rest with 0 (at
     #: 8 x 8 solver passes; with 0.1 it needed 8 x 40). But a push also holds a joint
-    #: the iterations leave short of converged: kge.box2d's BipedalWalker walks 6 of
+    #: the iterations leave short of converged: a motorised two-legged walker walks 6 of
     #: 10 seeds past 30 m with 0.1, and with 0 only 3, while 5 fall within 14 m; so 0.1
     #: stays the default. Read when a joint is built or changed.
     hinge_limit_push: float = 0.1

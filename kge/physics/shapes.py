@@ -29,8 +29,8 @@ import pymunk
 
 from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon, Shape
+from kge.physics.cp.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
-from kge.physics.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.tiny import flush_point, flush_points
 
 #: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
@@ -72,6 +72,8 @@ def build_shapes(
         shape = pymunk.Poly(body, flush_points(geom.vertices), radius=skin)
     else:
         shape = pymunk.Segment(body, flush_point(geom.v1), flush_point(geom.v2), skin)
+        if geom.vertex0 is not None or geom.vertex3 is not None:
+            shape.set_neighbors(*edge_neighbors(geom))
     # what apply_material does, minus the writes a fresh shape does not need
     # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
     vars(shape).update(attrs)
@@ -82,6 +84,14 @@ def build_shapes(
     if collider.sensor:
         shape.sensor = True
     return [shape]
+
+
+def edge_neighbors(edge: Edge) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Chipmunk's neighbours of a lone edge: its ghost vertices, or its own ends
+    where it has none (which Chipmunk reads as "no neighbour", as for a chain's ends)."""
+    prev = edge.vertex0 if edge.vertex0 is not None else edge.v1
+    nxt = edge.vertex3 if edge.vertex3 is not None else edge.v2
+    return flush_point(prev), flush_point(nxt)
 
 
 def _attrs(collider: Collider, collider_entity: int, body_entity: int | None) -> dict[str, object]:
@@ -131,7 +141,7 @@ def rebuild_in_place(
     would build for ``collider`` now, keeping the Python objects.
 
     Chipmunk's fields are initialised as for a new segment
-    (:func:`~kge.physics.static_bulk.reinit_segments`) and the kge_* attributes
+    (:func:`~kge.physics.cp.static_bulk.reinit_segments`) and the kge_* attributes
     written again, so nothing of the old geometry or material survives.
     """
     geom = collider.shape
@@ -140,7 +150,8 @@ def rebuild_in_place(
     if isinstance(geom, Chain):
         ends = chain_ends(geom.vertices, geom.loop)
     elif isinstance(geom, Edge):
-        ends = ([flush_point(geom.v1)], [flush_point(geom.v2)])
+        prev, nxt = edge_neighbors(geom)
+        ends = ([flush_point(geom.v1)], [flush_point(geom.v2)], [prev], [nxt])
     else:
         raise TypeError(f"rebuild_in_place: {type(geom).__name__} is not made of segments")
     segments = cast(list[pymunk.Segment], shapes)

@@ -23,7 +23,6 @@ from typing import Any
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import lib as _cp
 
 from kge.components.collider import Collider
 from kge.components.platform import OneWayPlatform
@@ -49,6 +48,9 @@ from kge.physics.bodies import (
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.contact_first import ContactFirst
 from kge.physics.contacts import HOOKED, ContactRecorder
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _cp
+from kge.physics.cp.static_bulk import add_shapes, remove_shapes
 from kge.physics.events import PhysicsEvents
 from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
@@ -62,7 +64,6 @@ from kge.physics.shapes import (
     spread,
 )
 from kge.physics.speed_cap import SpeedCap, clamp, clamp_one, maybe_over
-from kge.physics.static_bulk import add_shapes, remove_shapes
 from kge.physics.sync import PoseTable, columns_differ, rows_differ
 from kge.physics.tiny import flush
 from kge.physics.writeback import Targets, write_poses, write_velocities
@@ -364,7 +365,10 @@ class Simulation:
             self._rebuild_poses()
         for e in sorted(self.no_sleep):
             rec = self.bodies.get(e)
-            if rec is not None and rec.body.is_sleeping:
+            if rec is not None and rec.in_space:
+                # Box2D's allowSleep=False: the body's time at rest stays 0, so neither it
+                # nor its island sleeps; Chipmunk's clock restarts with each activation
+                # (waking it only once it slept let it doze off every 0.5 s)
                 rec.body.activate()
 
     @without_gc  # a tile map's 100,000s of new static shapes (see kge.gcpause)
@@ -443,7 +447,7 @@ class Simulation:
             rec.in_space = False
         del self.bodies[rec.entity]
         self.no_sleep.discard(rec.entity)
-        self.bullets.discard(rec.body._body)
+        self.bullets.discard(body_handle(rec.body))
         self._restale(rec.entity)
 
     def _remove_shapes(self, crec: ColliderRecord) -> None:
@@ -624,8 +628,8 @@ class Simulation:
                 raw_set(rb, "angular_velocity", 0.0)
             vx, vy, w = flush(vx), flush(vy), flush(w)
             # Chipmunk's setters directly: pymunk's properties go through a
-            # __setattr__ of its own (a re-laid scene writes three bodies' velocities)
-            cp = body._body
+            # __setattr__ of its own (a reset writes several bodies' velocities)
+            cp = body_handle(body)
             v = _cp.cpBodyGetVelocity(cp)
             pushed = False
             if (v.x, v.y) != (vx, vy):
@@ -643,9 +647,9 @@ class Simulation:
         configure_dynamics(body, rb, self.dt, self.substeps)
         vars(body)["kge_bullet"] = rb.bullet  # (pymunk's __setattr__ adds nothing here)
         if rb.bullet and ptype == DYNAMIC:
-            self.bullets.add(body._body)
+            self.bullets.add(body_handle(body))
         else:
-            self.bullets.discard(body._body)
+            self.bullets.discard(body_handle(body))
         # a velocity write (a player controller's, every frame) leaves the mass data
         # and continuous collision as they were: rebuilt only when what they are
         # made of changed
@@ -757,7 +761,7 @@ class Simulation:
         if rec is None or t is None:
             return
         body = rec.body
-        cp = body._body  # Chipmunk's getters and setters directly (see _apply_rigidbody)
+        cp = body_handle(body)  # Chipmunk's getters and setters directly (see _apply_rigidbody)
         p = _cp.cpBodyGetPosition(cp)
         x, y, angle = flush(t.x), flush(t.y), flush(t.angle)
         if (p.x, p.y, _cp.cpBodyGetAngle(cp)) == (x, y, angle):
@@ -982,7 +986,7 @@ class Simulation:
         after-step read, their position pass's moves patched in), instead of a new one.
 
         Its fixed cost is a few dozen numpy calls, which is what a small world (a
-        Gymnasium lander) pays per step, so the common cases take the short way:
+        few bodies) pays per step, so the common cases take the short way:
         the exact speed cap only after a cheap bound says a body may be over it,
         and when every tracked body moved (an awake world) no mask and no gather.
         """
@@ -1008,7 +1012,7 @@ class Simulation:
             state[slots] = rows
         changed = rows_differ(rows, old)
         targets = self._targets
-        if poses.full and changed.all():  # everything moved (rain, a lander): no gathers
+        if poses.full and changed.all():  # everything moved (rain, a small world): no gathers
             write_poses(targets, None, rows)
             self._write_velocities(None, rows, old)
             if poses.asleep.any():

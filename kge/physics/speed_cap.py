@@ -34,9 +34,10 @@ from collections.abc import Sequence
 import numpy as np
 import pymunk
 import pymunk.batch as pb
-from pymunk._chipmunk import lib as _lib
 
-from kge.physics.bulk import BodyReader
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _lib
+from kge.physics.cp.bulk import BodyReader
 
 _VELOCITIES = pb.BodyFields.VELOCITY | pb.BodyFields.ANGULAR_VELOCITY
 _SQRT_HALF = math.sqrt(0.5)
@@ -177,7 +178,7 @@ class SpeedCap:
         for i, k, pid in zip(over.tolist(), at.tolist(), ids.tolist(), strict=True):
             if k >= len(known_ids) or known_ids[k] != pid:
                 continue
-            cp = bodies[k]._body
+            cp = body_handle(bodies[k])
             vx, vy, w = capped[i].tolist()
             _lib.cpBodySetVelocity(cp, (vx, vy))
             _lib.cpBodySetAngularVelocity(cp, w)

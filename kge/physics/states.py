@@ -3,7 +3,7 @@
 After a step, sync-out holds every moving body's (x, y, angle, vx, vy, w) in
 one numpy table (:class:`~kge.physics.sync.PoseTable`) and writes the same
 numbers into the Transforms and RigidBodies. A controller that reads the same
-64 bodies every step (a batch of Gymnasium landers) would walk 64 components
+64 bodies every step (64 RL environments in one world) would walk 64 components
 for what the table already holds in rows: this gathers them with one numpy
 index instead.
 

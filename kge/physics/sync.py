@@ -20,9 +20,10 @@ from typing import Any
 import numpy as np
 import pymunk
 import pymunk.batch as pb
-from pymunk._chipmunk import lib as _lib
 
-from kge.physics.bulk import BodyReader
+from kge.physics.cp import body_handle
+from kge.physics.cp import lib as _lib
+from kge.physics.cp.bulk import BodyReader
 
 FIELDS = (
     pb.BodyFields.BODY_ID
@@ -208,7 +209,7 @@ class PoseTable:
         asleep = []
         lib = _lib
         for body in new:
-            cp = body._body
+            cp = body_handle(body)
             p, v = lib.cpBodyGetPosition(cp), lib.cpBodyGetVelocity(cp)
             w = lib.cpBodyGetAngularVelocity(cp)
             rows.append((p.x, p.y, lib.cpBodyGetAngle(cp), v.x, v.y, w))

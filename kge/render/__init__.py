@@ -20,6 +20,7 @@ How a frame is drawn (see :class:`kge.systems.render.RenderSystem`):
 5. one ``Batch.draw()``: layer groups draw in ``(layer, order)`` order.
 """
 
+import os as _os
 import sys as _sys
 
 
@@ -29,7 +30,16 @@ def _select_backend() -> None:
     pyglet decides between X11/Wayland and EGL when ``pyglet.window`` is first
     imported, and cannot switch afterwards; doing it here means any module of
     this package can be imported on a bare machine (CI, doctests).
+
+    pyglet checks for a GL error after *every* GL call unless told not to (a Python
+    call and a ``glGetError`` each: a few milliseconds a frame with lights and post
+    effects); kge turns that off unless ``PYGLET_DEBUG_GL=1`` asks for it (the test
+    suite does).
     """
+    if "pyglet.gl" not in _sys.modules and "PYGLET_DEBUG_GL" not in _os.environ:
+        import pyglet
+
+        pyglet.options["debug_gl"] = False
     if "pyglet.window" in _sys.modules:
         return
     from kge.platform import has_display

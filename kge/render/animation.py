@@ -1,13 +1,19 @@
-"""Animated sprites on the GPU: frames packed in one atlas, texture coordinates written in bulk.
+"""Animated sprites on the GPU: frames packed in atlases, texture coordinates written in bulk.
 
 Why: swapping a pyglet sprite's image is a Python call per sprite (pyglet's own
 animated Sprite does one per frame change, through its clock). Here every frame
-of every clip a world uses is packed once into a :class:`pyglet.image.atlas.
-TextureAtlas`, so all animated sprites of a layer share one texture and one
-vertex domain; each frame the texture coordinates of all of them are gathered
-from a (frames x 4 flips, 12) table by the numpy state's shown frame and
-written into the domain's ``tex_coords`` buffer with one assignment, the way
+of every clip a world uses is packed once into an atlas *page* (a
+:class:`pyglet.image.atlas.TextureAtlas`), so the animated sprites of a layer share
+a texture and a vertex domain; each frame the texture coordinates of all of them
+are gathered from a (frames x 4 flips, 12) table by the numpy state's shown frame
+and written into the domain's ``tex_coords`` buffer with one assignment, the way
 :mod:`kge.render.bulk` writes poses.
+
+Pages grow and split: the first is 2048 pixels square; when a frame does not fit,
+the next page is twice as big (up to the GPU's largest texture), so a 4096 x 3584
+sprite sheet animates; a frame larger than the largest texture is refused with a
+clear error. A sprite whose shown frame is on another page than its texture moves
+to that page (it is synced again; frames of one clip usually share a page).
 
 The animated sprite itself is the entity's :class:`~kge.render.sprites.SpriteStore`
 sprite: :meth:`AtlasFrames.frame_region` is the store's ``frame_source``, so the
@@ -29,6 +35,8 @@ from kge.errors import KgeError, ValidationError
 from kge.render.images import PixelImage
 
 ATLAS_SIZE = 2048
+#: the largest atlas page kge makes, pixels a side (also bounded by the GPU's limit)
+MAX_ATLAS_SIZE = 16384
 # vertex order of a pyglet sprite quad: bottom-left, bottom-right, top-right, top-left
 _FLIPS = ([0, 1, 2, 3], [1, 0, 3, 2], [3, 2, 1, 0], [2, 3, 0, 1])
 
@@ -49,20 +57,56 @@ class AtlasFrames:
         self.sync = sync
         self.state = state
         self.sprites = sprites
-        self.atlas = pyglet.image.atlas.TextureAtlas(ATLAS_SIZE, ATLAS_SIZE)
-        tex = self.atlas.texture
-        from pyglet import gl
-
-        gl.glBindTexture(tex.target, tex.id)
-        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MAG_FILTER, gl.GL_NEAREST)
-        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MIN_FILTER, gl.GL_NEAREST)
+        self.pages: list[Any] = []
+        self.atlas = self._new_page(ATLAS_SIZE)
+        #: ``fn(entities)``: sync these sprites again (their frame moved to another page)
+        self.migrate: Any = None
         self.regions: list[Any] = []
+        self.page_of: list[int] = []
         self.tc = np.zeros((0, 12), np.float32)
         self._images: dict[Any, Any] = {}
         self._key: tuple[int, int, int] | None = None
-        self._domains: list[tuple[Any, np.ndarray, np.ndarray, tuple[int, int] | None]] = []
+        self._domains: list[tuple[Any, np.ndarray, np.ndarray, tuple[int, int] | None, int,
+                                  np.ndarray]] = []
 
     # -- packing ------------------------------------------------------------------------
+    @staticmethod
+    def largest() -> int:
+        from pyglet import gl
+
+        found = gl.GLint()
+        gl.glGetIntegerv(gl.GL_MAX_TEXTURE_SIZE, found)
+        return min(int(found.value), MAX_ATLAS_SIZE)
+
+    def _new_page(self, size: int) -> Any:
+        from pyglet import gl
+
+        atlas = pyglet.image.atlas.TextureAtlas(size, size)
+        tex = atlas.texture
+        gl.glBindTexture(tex.target, tex.id)
+        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MAG_FILTER, gl.GL_NEAREST)
+        gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MIN_FILTER, gl.GL_NEAREST)
+        self.pages.append(atlas)
+        return atlas
+
+    def _place(self, image: Any) -> tuple[Any, int]:
+        """Put ``image`` in the last page, or in a new, bigger one; (region, page)."""
+        try:
+            return self.atlas.add(image, border=1), len(self.pages) - 1
+        except pyglet.image.atlas.AllocatorException:
+            pass
+        largest = self.largest()
+        need = max(image.width, image.height) + 2
+        if need > largest:
+            raise KgeError(
+                f"an animation frame of {image.width}x{image.height} pixels is larger than "
+                f"the largest texture this GPU makes ({largest}x{largest}): cut the sheet "
+                "into smaller frames"
+            )
+        size = min(largest, max(self.atlas.texture.width * 2, 1 << (need - 1).bit_length()))
+        self.atlas = self._new_page(size)
+        return self.atlas.add(image, border=1), len(self.pages) - 1
+
     def _source_image(self, ref: FrameRef) -> Any:
         """pyglet ImageData of the frame's pixels (whole images decoded once)."""
         img = ref.image
@@ -111,21 +155,11 @@ class AtlasFrames:
         for ref in sources[start:]:
             try:
                 image = self._source_image(ref)
-                if max(image.width, image.height) + 2 > ATLAS_SIZE:  # the 1 px border
-                    raise ValidationError(
-                        f"{image.width}x{image.height} pixels is larger than the animation "
-                        f"atlas ({ATLAS_SIZE}x{ATLAS_SIZE}); "
-                        "split it into smaller frames or draw it as a plain Sprite"
-                    )
-                region = self.atlas.add(image, border=1)
-            except pyglet.image.atlas.AllocatorException as exc:
-                raise KgeError(
-                    f"the animation atlas ({ATLAS_SIZE}x{ATLAS_SIZE}) is full: too many distinct "
-                    "frames in one scene"
-                ) from exc
+                region, page = self._place(image)
             except (KgeError, OSError) as exc:
                 raise ValidationError(f"animation frame {ref!r}: {exc}") from exc
             self.regions.append(region)
+            self.page_of.append(page)
             corners = np.asarray(region.tex_coords, np.float32).reshape(4, 3)
             rows.extend(corners[order].ravel() for order in _FLIPS)
         self.tc = np.concatenate([self.tc, np.array(rows, np.float32).reshape(-1, 12)])
@@ -140,32 +174,35 @@ class AtlasFrames:
         self.pack()
         src = int(self.table.frame_src[self.state.shown[row]])
         r = self.regions[src]
-        return self.atlas.texture, (r.x, r.y, r.width, r.height)
+        return self.pages[self.page_of[src]].texture, (r.x, r.y, r.width, r.height)
 
     # -- bulk write -----------------------------------------------------------------------
     def _rebuild(self) -> None:
         """Group the animated sprites by vertex domain, sorted by vertex start."""
-        by_domain: dict[int, tuple[Any, list[tuple[int, int]]]] = {}
-        atlas_id = self.atlas.texture.id
+        by_domain: dict[int, tuple[Any, int, list[tuple[int, int, int]]]] = {}
+        page_ids = {atlas.texture.id: i for i, atlas in enumerate(self.pages)}
         for entity, row in self.state.rows.items():
             ps = self.sprites.sprites.get(entity)
-            if ps is None or ps._texture.id != atlas_id:
+            page = page_ids.get(ps._texture.id) if ps is not None else None
+            if page is None:
                 continue
             vl = ps._vertex_list
-            by_domain.setdefault(id(vl.domain), (vl.domain, []))[1].append((vl.start, row))
+            entry = by_domain.setdefault(id(vl.domain), (vl.domain, page, []))
+            entry[2].append((vl.start, row, entity))
         self._domains = []
-        for domain, members in by_domain.values():
+        for domain, page, members in by_domain.values():
             members.sort()
             starts = np.array([m[0] for m in members], np.intp)
             rows = np.array([m[1] for m in members], np.intp)
+            entities = np.array([m[2] for m in members], np.intp)
             lo = int(starts[0])
             block = (lo, lo + 4 * len(starts)) if np.array_equal(
                 starts, lo + 4 * np.arange(len(starts))
             ) else None
             vidx = (starts[:, None] + np.arange(4)).ravel()
-            self._domains.append((domain, rows, vidx, block))
+            self._domains.append((domain, rows, vidx, block, page, entities))
 
-    def write(self) -> int:
+    def write(self, retry: bool = True) -> int:
         """Write every animated sprite's frame into its vertex buffer; returns sprites written."""
         self.pack()
         key = (self.state.version, self.sprites.version, self.table.version)
@@ -175,9 +212,18 @@ class AtlasFrames:
         if not self._domains:
             return 0
         table, state = self.table, self.state
-        tc_row = table.frame_src[state.shown] * 4 + table.variant[state.clip]
+        src = table.frame_src[state.shown]
+        tc_row = src * 4 + table.variant[state.clip]
+        if len(self.pages) > 1 and retry:  # a sprite showing another page's frame moves there
+            pages = np.asarray(self.page_of, np.intp)[src]
+            away = [ents[pages[rows] != page] for _, rows, _, _, page, ents in self._domains]
+            moving = np.concatenate(away) if away else np.zeros(0, np.intp)
+            if len(moving) and self.migrate is not None:
+                self.migrate([int(e) for e in moving])
+                self._key = None
+                return self.write(retry=False)
         written = 0
-        for domain, rows, vidx, block in self._domains:
+        for domain, rows, vidx, block, _, _ in self._domains:
             buf = domain.attrib_name_buffers["tex_coords"]
             arr = np.ctypeslib.as_array(buf.data).reshape(-1, 3)
             values = self.tc[tc_row[rows]].reshape(-1, 3)

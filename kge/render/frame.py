@@ -13,10 +13,14 @@ import time
 from typing import Any
 
 import pyglet
+from pyglet import gl
 
 from kge.components.camera import Camera
+from kge.components.camera import cameras as camera_list
 from kge.components.debug import DebugDraw
 from kge.components.drawables import DRAWABLE_TYPES
+from kge.components.lights import Lighting
+from kge.components.material import Material
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
 from kge.components.text import Text
@@ -25,20 +29,33 @@ from kge.components.transform import Transform
 from kge.host import Host
 from kge.physics.events import ContactBegin, ContactEnd
 from kge.physics.resource import Physics
+from kge.render.cameras import (
+    CameraPasses,
+    CameraView,
+    letterbox,
+    make_view,
+    ortho,
+    single,
+    text_scales,
+    union,
+)
+from kge.render.canvas import Canvas, IntegerCanvas, canvas_of
 from kge.render.debugdraw import DebugDrawer
 from kge.render.geometry import drawable_triangles
+from kge.render.glutil import drawing_into
 from kge.render.groups import WORLD, Groups, ViewState
 from kge.render.meshes import MeshStore
 from kge.render.passes import Frame, RenderPasses
+from kge.render.passtime import PassTimer
 from kge.render.poses import PoseTable
-from kge.render.projection import view_matrix
+from kge.render.programs import FrameUniforms
 from kge.render.setup import Renderer, ensure_renderer
 from kge.render.sprites import SpriteStore
-from kge.render.stats import StatsOverlay
+from kge.render.stats import StatsOverlay, light_note
 from kge.render.text.store import TextStore
 from kge.render.textures import TextureCache
 
-_TRACKED: tuple[type, ...] = (Sprite, Text, *DRAWABLE_TYPES)
+_TRACKED: tuple[type, ...] = (Sprite, Text, Material, *DRAWABLE_TYPES)
 
 
 class WorldView:
@@ -58,6 +75,9 @@ class WorldView:
         self.labels = TextStore(self.batch, self.groups, self.poses, self.textures)
         self.debug = DebugDrawer(world, self.batch, self.groups, self.poses)
         self.stats = StatsOverlay(self.batch, self.groups)
+        self.timer = PassTimer()  # the light pass's share, while the overlay is shown
+        self.cameras = CameraPasses(self.state, self.textures)
+        self.integer = IntegerCanvas()
         self.dirty: set[int] = set()
         self.closed = False
         self.culled = 0
@@ -106,11 +126,12 @@ class WorldView:
     def _reconcile(self, entity: int, ppm: float) -> None:
         w = self.world
         t = w.try_get(entity, Transform)
+        material = w.try_get(entity, Material)
         sp = w.try_get(entity, Sprite)
         if sp is None:
             self.sprites.remove(entity)
         else:
-            self.sprites.sync(entity, sp, t, ppm)
+            self.sprites.sync(entity, sp, t, ppm, material)
         tx = w.try_get(entity, Text)
         if tx is None:
             self.labels.remove(entity)
@@ -123,7 +144,11 @@ class WorldView:
                 self.meshes.remove(key)
             else:
                 parent = self.groups.get(d.layer, WORLD, d.order)
-                self.meshes.put(key, entity, t, drawable_triangles(d), d.color, parent)
+                prog = None
+                if material is not None:
+                    prog, parent = self.meshes.material_group(key, material, self.textures, parent)
+                self.meshes.put(key, entity, t, drawable_triangles(d), d.color, parent,
+                                blend=d.blend, program=prog)  # fmt: skip
 
     def sync(self, ppm: float) -> None:
         if ppm != self._ppm:
@@ -131,6 +156,8 @@ class WorldView:
                 self.dirty.update(self.sprites.sprites)
                 self.dirty.update(self.labels.labels)
             self._ppm = ppm
+        # sprites whose material changed since they joined a shared group: drawn alone now
+        self.dirty.update(self.sprites.shared.diverged())
         if self.dirty:
             todo = sorted(self.dirty)
             self.dirty.clear()
@@ -143,12 +170,36 @@ class WorldView:
                     raise
 
     # -- drawing --------------------------------------------------------------------------------
+    def _views(self, cams: list[tuple[int, Camera]], canvas: Canvas, poses: Any,
+               snap: bool) -> list[CameraView]:  # fmt: skip
+        views = []
+        for entity, cam in cams:
+            center = cam.center
+            if cam.follow is not None:  # follow what is drawn, not the un-blended pose
+                row = self.poses.row_of.get(cam.follow)
+                if row is not None:
+                    lag = poses[row, :2] - self.poses.last_live[row, :2]
+                    center = (center[0] + float(lag[0]), center[1] + float(lag[1]))
+            # inside the bounds as drawn: the lag, or a first frame before the camera
+            # system ran, never shows past them
+            center = cam.clamped(center, canvas.size)
+            views.append(make_view(entity, cam, center, canvas, snap))
+        return views
+
     def draw(self, alpha: float) -> None:
         r = self.renderer
-        r.begin_frame(self.app.background)
-        cam = self.camera()
-        ppm = cam.pixels_per_meter
-        self.labels.rescale(cam.zoom, 1.0)
+        window = r.window
+        window.switch_to()
+        canvas = canvas_of(self.world, window)
+        cams = camera_list(self.world)
+        if not cams:
+            cams = [(-1, self.camera())]
+        primary = next((c for _, c in cams if c.target is None), cams[0][1])
+        ppm = primary.pixels_per_meter
+        res = canvas.resolution
+        snap = res is not None and res.snap
+        self.labels.rescale(*text_scales([c for _, c in cams], canvas))
+        self.textures.render_textures = lambda name: self.cameras.target(name, cams, canvas.size)
         self.sync(ppm)
         settings = self.world.try_resource(DebugDraw)
         if settings is not None:
@@ -156,44 +207,104 @@ class WorldView:
         elif self.debug.meshes.lists:
             self.debug.clear()
         poses = self.poses.blend(alpha)
-        viewport = r.size
-        center = cam.center
-        if cam.follow is not None:  # follow what is drawn, not the un-blended pose
-            row = self.poses.row_of.get(cam.follow)
-            if row is not None:
-                lag = poses[row, :2] - self.poses.last_live[row, :2]
-                center = (center[0] + float(lag[0]), center[1] + float(lag[1]))
-                # the lag must not carry the view past the bounds: a strip of clear
-                # colour showed at a map's edge while a bounded follow camera started
-                center = cam.clamped(center, viewport)
-        world_view = view_matrix(center, cam.scale, viewport)
-        self.state.matrices[WORLD] = world_view
-        hw, hh = viewport[0] / (2 * cam.scale), viewport[1] / (2 * cam.scale)
-        view = (center[0] - hw, center[1] - hh, center[0] + hw, center[1] + hh)
-        self.culled = self.sprites.poser.write(poses, view)
+        views = self._views(cams, canvas, poses, snap)
+        seen = union(views)
+        self.culled = self.sprites.poser.write(poses, seen)
+        self.sprites.normals.poser.write(poses, seen)
         self.meshes.poser.write(poses)
         self.labels.poser.write(poses)
         if settings is not None:
             self.debug.update(settings, poses, self._game_time())
             self.debug.meshes.poser.write(poses)
         shown = settings is not None and settings.stats
+        self.timer.start(shown)
         self.stats.update(
-            shown, viewport[1], self.stat_values() if shown else {}, throttle=not self.app.headless
-        )
+            shown, canvas.size[1], self.stat_values() if shown else {},
+            throttle=not self.app.headless,
+            lines=self.timing_lines() if shown and settings is not None and settings.timings
+            else None,
+        )  # fmt: skip
+        FrameUniforms.time = self._game_time()
         passes = self.world.try_resource(RenderPasses)
-        if passes is None:
+        main = next((v for v in views if v.camera is primary), views[0])
+        base = self._frame(alpha, main, seen, poses, canvas)
+        if passes is not None:
+            for before in passes.before():
+                before(base)
+        if canvas.integer:
+            with drawing_into(self.integer.target(canvas.size)):
+                self._draw_canvas(canvas, views, cams, passes, alpha, poses, base)
+            if r.clear:
+                letterbox(canvas, self.app.background, window=True)
+            self.integer.present(canvas)
+        else:
+            self._draw_canvas(canvas, views, cams, passes, alpha, poses, base)
+        gl.glViewport(0, 0, *canvas.framebuffer)  # what screenshots and transitions expect
+        window.projection = ortho(window.width, window.height)
+        window.view = pyglet.math.Mat4()
+        self.cameras.forget({v.entity for v in views if v.camera.post})
+        self.timer.finish()
+        r.clock.frame()
+
+    def _frame(self, alpha: float, v: CameraView, view: Any, poses: Any, canvas: Canvas,
+               rect: tuple[int, int, int, int] | None = None) -> Frame:  # fmt: skip
+        cam = v.camera
+        return Frame(
+            alpha, cam, v.center, cam.scale, (round(v.size[0]), round(v.size[1])), view,
+            v.matrix, self._game_time(), self.batch, self.groups, poses, self.poses.row_of,
+            rect or canvas.rect, canvas.pixel_scale, cam.rotation,
+        )  # fmt: skip
+
+    def _draw_canvas(self, canvas: Canvas, views: list[CameraView],
+                     cams: list[tuple[int, Camera]], passes: RenderPasses | None, alpha: float,
+                     poses: Any, base: Frame) -> None:  # fmt: skip
+        window = self.renderer.window
+        if self.renderer.clear:
+            letterbox(canvas, self.app.background)
+        snap = canvas.resolution is not None and canvas.resolution.snap
+        view_passes = (list(zip(passes.names("view"), passes.view(), strict=True))
+                       if passes is not None else [])  # fmt: skip
+
+        def scene(v: CameraView, rect: tuple[int, int, int, int]) -> None:
+            self.cameras.scene_pass(window, v, rect, snap)
+            frame = self._frame(alpha, v, v.view, poses, canvas, rect)
+            for name, view_pass in view_passes:
+                self.timer.run(name, view_pass, frame)
+            self.cameras.scene_pass(window, v, rect, snap)  # a pass may have moved GL state
+            self.batch.draw()
+
+        if single(views) and not canvas.integer and canvas.resolution is None:
+            v = views[0]  # the common case: one camera over the window, one batch draw
+            self.cameras.scene_pass(window, v, canvas.rect, snap)
+            self.state.shows = None
+            frame = self._frame(alpha, v, v.view, poses, canvas)
+            for name, view_pass in view_passes:
+                self.timer.run(name, view_pass, frame)
+            self.cameras.scene_pass(window, v, canvas.rect, snap)
+            self.state.shows = None
+            gl.glDisable(gl.GL_SCISSOR_TEST)
             self.batch.draw()
         else:
-            frame = Frame(
-                alpha, cam, center, cam.scale, viewport, view, world_view, self._game_time(),
-                self.batch, self.groups, poses, self.poses.row_of,
-            )  # fmt: skip
-            for before in passes.before():
-                before(frame)
+            first = True
+            for v in views:
+                self.cameras.draw(v, canvas, first and v.camera.target is None,
+                                  self.app.background, scene, cams)  # fmt: skip
+                if v.camera.target is None:
+                    first = False
+            self.cameras.screen_pass(window, canvas)
             self.batch.draw()
-            for after in passes.after():
-                after(frame)
-        r.clock.frame()
+        self.cameras.end()
+        if passes is not None:
+            gl.glViewport(*canvas.rect)
+            window.projection = ortho(*canvas.size)
+            window.view = pyglet.math.Mat4()
+            after = Frame(
+                alpha, base.camera, base.center, base.scale, canvas.size, base.view,
+                base.world_matrix, base.time, self.batch, self.groups, poses, self.poses.row_of,
+                canvas.rect, canvas.pixel_scale, base.rotation,
+            )  # fmt: skip
+            for after_pass in passes.after():
+                after_pass(after)
 
     def _game_time(self) -> float:
         from kge.scene import Time
@@ -210,7 +321,21 @@ class WorldView:
         values["bodies"] = len(self.world.query(RigidBody))
         values["contacts"] = len(self._touching)
         values["sprites"] = f"{len(self.sprites) - self.culled}/{len(self.sprites)}"
+        lighting = self.world.try_resource(Lighting)
+        if lighting is not None and lighting.enabled and self.timer.frame_ms > 0.0:
+            values["lights"] = light_note(self.timer.ms("lighting"), self.timer.frame_ms)
         return values
+
+    def timing_lines(self, top: int = 10) -> list[str]:
+        """The slowest systems of the world, one line each (the stats overlay's table)."""
+        timings = self.world.schedule.timings
+        if timings is None:
+            return ["system timings are off (F4)"]
+        rows = timings.rows(top)
+        lines = [f"{'systems':<6} {f'{timings.frame_ms():.2f} ms/frame':<24} "
+                 f"{'avg ms':>8} {'peak ms':>8}"]  # fmt: skip
+        lines += [f"{r.stage:<6} {r.name:<24.24} {r.average:8.3f} {r.peak:8.3f}" for r in rows]
+        return lines
 
     # -- fixed-step hooks ----------------------------------------------------------------------
     def after_step(self, seconds: float) -> None:
@@ -240,4 +365,6 @@ class WorldView:
         self.labels.clear()
         self.debug.clear()
         self.stats.clear()
+        self.cameras.close()
+        self.integer.close()
         self.textures.clear()

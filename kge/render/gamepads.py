@@ -21,8 +21,9 @@ from typing import Any
 
 from kge.input import PAD_BUTTONS, Input
 
-#: pyglet sends the d-pad as a vector, not as buttons
-_BUTTONS = PAD_BUTTONS - {"dpleft", "dpright", "dpup", "dpdown"}
+#: pyglet sends the d-pad as a vector, not as buttons; the trigger buttons follow the
+#: trigger axes (Input.pad_axis), never a button event
+_BUTTONS = PAD_BUTTONS - {"dpleft", "dpright", "dpup", "dpdown", "lefttrigger", "righttrigger"}
 _DPAD = (("dpleft", 0, -1.0), ("dpright", 0, 1.0), ("dpdown", 1, -1.0), ("dpup", 1, 1.0))
 
 

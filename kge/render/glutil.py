@@ -62,7 +62,12 @@ def per_context(key: str, make: Any) -> Any:
 
 
 class Stream:
-    """A vertex array and buffer of interleaved float attributes, re-filled each frame."""
+    """A vertex array and buffer of interleaved float attributes, re-filled each frame.
+
+    Attribute locations come from ``prog``; with ``prog=None`` the layout's order is
+    the location (shaders that say ``layout(location = N)``, so several programs
+    share one vertex array).
+    """
 
     def __init__(self, prog: Any, layout: list[tuple[str, int]]) -> None:
         self.vao = gl.GLuint()
@@ -73,10 +78,15 @@ class Stream:
         gl.glBindBuffer(gl.GL_ARRAY_BUFFER, self.vbo)
         stride = sum(n for _, n in layout) * 4
         offset = 0
-        for name, n in layout:
-            loc = prog.attributes[name]["location"]
-            gl.glEnableVertexAttribArray(loc)
-            gl.glVertexAttribPointer(loc, n, gl.GL_FLOAT, gl.GL_FALSE, stride, offset)
+        for index, (name, n) in enumerate(layout):
+            if prog is None:
+                found: Any = {"location": index}
+            else:  # None: the compiler removed an unused input
+                found = prog.attributes.get(name)
+            if found is not None:
+                loc = found["location"]
+                gl.glEnableVertexAttribArray(loc)
+                gl.glVertexAttribPointer(loc, n, gl.GL_FLOAT, gl.GL_FALSE, stride, offset)
             offset += n * 4
         gl.glBindVertexArray(0)
         self.floats = stride // 4

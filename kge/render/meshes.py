@@ -1,10 +1,11 @@
-"""Flat-coloured vertex lists in pyglet's shape shader, posed in bulk.
+"""Flat-coloured vertex lists in pyglet's shape layout, posed in bulk.
 
-pyglet's shape shader takes, per vertex, a local ``position``, a
-``translation`` and a clockwise ``rotation``: exactly a mesh in its entity's
-frame plus the entity's pose. So each drawable (and each debug outline) is
-built once, in local metres, and only its pose is written each frame, by a
-:class:`~kge.render.bulk.BulkPoser`, like sprites.
+pyglet's shape layout takes, per vertex, a local ``position``, a ``translation``
+and a clockwise ``rotation``: exactly a mesh in its entity's frame plus the
+entity's pose. So each drawable (and each debug outline) is built once, in local
+metres, and only its pose is written each frame, by a
+:class:`~kge.render.bulk.BulkPoser`, like sprites. They are drawn with kge's shape
+program (:mod:`kge.render.programs`): blend modes and materials.
 """
 
 from __future__ import annotations
@@ -15,21 +16,36 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.blend import Blend
 from kge.render.bulk import BulkPoser
+from kge.render.glutil import per_context
 from kge.render.poses import PoseTable
+from kge.render.programs import (
+    MaterialGroup,
+    apply_frame_uniforms,
+    default_program,
+    material_program,
+    set_blend,
+)
 
 
 class MeshGroup(pyglet.graphics.Group):
-    """Binds the shape shader with alpha blending (one per parent group)."""
+    """Binds a shape program with a blend mode (one per parent group, program and blend)."""
 
-    def __init__(self, program: Any, parent: pyglet.graphics.Group) -> None:
+    def __init__(
+        self, program: Any, parent: pyglet.graphics.Group, blend: Blend = Blend.ALPHA
+    ) -> None:
         super().__init__(parent=parent)
         self.program = program
+        self.blend = blend
 
     def set_state(self) -> None:
         self.program.use()
-        gl.glEnable(gl.GL_BLEND)
-        gl.glBlendFunc(gl.GL_SRC_ALPHA, gl.GL_ONE_MINUS_SRC_ALPHA)
+        apply_frame_uniforms(self.program)
+        white = _white_texture()
+        gl.glActiveTexture(gl.GL_TEXTURE0)
+        gl.glBindTexture(white.target, white.id)
+        set_blend(self.blend)
 
     def unset_state(self) -> None:
         gl.glDisable(gl.GL_BLEND)
@@ -40,14 +56,20 @@ class MeshGroup(pyglet.graphics.Group):
             isinstance(other, MeshGroup)
             and other.program is self.program
             and other.parent == self.parent
+            and other.blend == self.blend
         )
 
     def __hash__(self) -> int:
-        return hash((id(self.program), self.parent))
+        return hash((id(self.program), self.parent, self.blend))
 
 
 def shape_program() -> Any:
-    return pyglet.shapes.get_default_shader()
+    return default_program("shape")
+
+
+def _white_texture() -> Any:
+    return per_context("kge-white", lambda: pyglet.image.ImageData(
+        1, 1, "RGBA", b"\xff\xff\xff\xff").get_texture())  # fmt: skip
 
 
 class MeshStore:
@@ -61,15 +83,32 @@ class MeshStore:
         self.lists: dict[Any, Any] = {}
         self._entity: dict[Any, int] = {}
         self._mesh_groups: dict[Any, MeshGroup] = {}
+        self._materials: dict[Any, MaterialGroup] = {}
 
     def __len__(self) -> int:
         return len(self.lists)
 
-    def group_for(self, parent: pyglet.graphics.Group) -> MeshGroup:
-        g = self._mesh_groups.get(parent)
+    def group_for(self, parent: pyglet.graphics.Group, blend: Blend = Blend.ALPHA,
+                  program: Any = None) -> MeshGroup:  # fmt: skip
+        prog = program or self.program
+        key = (parent, blend, id(prog))
+        g = self._mesh_groups.get(key)
         if g is None:
-            g = self._mesh_groups[parent] = MeshGroup(self.program, parent)
+            g = self._mesh_groups[key] = MeshGroup(prog, parent, blend)
         return g
+
+    def material_group(self, key: Any, material: Any, textures: Any,
+                       parent: pyglet.graphics.Group) -> tuple[Any, Any]:  # fmt: skip
+        """(program, group) of a shape drawn with ``material`` (the default when its
+        shader does not compile)."""
+        prog = material_program(material.shader, "shape")
+        if prog is None:
+            self._materials.pop(key, None)
+            return self.program, parent
+        g = self._materials.get(key)
+        if g is None or g.material is not material or g.parent is not parent:
+            g = self._materials[key] = MaterialGroup(material, prog, textures, parent)
+        return prog, g
 
     def put(
         self,
@@ -81,17 +120,20 @@ class MeshStore:
         parent: pyglet.graphics.Group,
         mode: int = gl.GL_TRIANGLES,
         posed: bool = True,
+        blend: Blend = Blend.ALPHA,
+        program: Any = None,
     ) -> Any:
         """(Re)build the vertex list of ``key`` from local ``points`` (n, 2)."""
         self.remove(key)
         n = len(points)
         if n == 0:
             return None
-        vl = self.program.vertex_list(
+        prog = program or self.program
+        vl = prog.vertex_list(
             n,
             mode,
             self.batch,
-            self.group_for(parent),
+            self.group_for(parent, blend, prog),
             position=("f", np.asarray(points, np.float32).ravel().tolist()),
             colors=("Bn", tuple(color) * n),
             translation=("f", (0.0, 0.0) * n),

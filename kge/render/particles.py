@@ -20,19 +20,31 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.blend import Blend
+from kge.components.material import Material
 from kge.components.particles import ParticleEmitter
 from kge.errors import KgeError, ValidationError
 from kge.particles.emitter import EmitterState, Particles
+from kge.render.glutil import program
 from kge.render.groups import WORLD, Groups
 from kge.render.images import PixelImage
+from kge.render.programs import (
+    DEFAULT_EFFECT,
+    MaterialGroup,
+    apply_frame_uniforms,
+    fragment_source,
+    material_program,
+    set_blend,
+)
 from kge.render.textures import TextureCache
 
 _VERTEX = """#version 150 core
 in vec4 particle;
 in vec2 corner;
 in vec4 colors;
-out vec4 vertex_colors;
-out vec2 uv;
+out vec4 v_color;
+out vec2 v_uv;
+out vec2 v_world;
 uniform WindowBlock
 {
     mat4 projection;
@@ -45,28 +57,15 @@ void main()
     vec2 p = corner * particle.z;
     vec2 w = particle.xy + vec2(c * p.x - s * p.y, s * p.x + c * p.y);
     gl_Position = window.projection * window.view * vec4(w, 0.0, 1.0);
-    vertex_colors = colors;
-    uv = corner + 0.5;
+    v_color = colors;
+    v_uv = corner + 0.5;
+    v_world = w;
 }
 """
 
-_FRAGMENT = """#version 150 core
-in vec4 vertex_colors;
-in vec2 uv;
-out vec4 final_colors;
-uniform sampler2D particle_texture;
-void main()
-{
-    final_colors = texture(particle_texture, uv) * vertex_colors;
-}
-"""
 
 _CORNERS = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]], np.float32)
 _QUAD = np.array([0, 1, 2, 0, 2, 3], np.intp)
-_BLEND = {
-    "alpha": (gl.GL_SRC_ALPHA, gl.GL_ONE_MINUS_SRC_ALPHA),
-    "additive": (gl.GL_SRC_ALPHA, gl.GL_ONE),
-}
 
 
 def soft_dot(size: int = 64) -> PixelImage:
@@ -83,17 +82,12 @@ def soft_dot(size: int = 64) -> PixelImage:
 SOFT_DOT = soft_dot()
 SQUARE = PixelImage(1, 1, b"\xff\xff\xff\xff")
 
-_program: Any = None
-
-
-def particle_program() -> Any:
-    global _program
-    if _program is None:
-        _program = pyglet.graphics.shader.ShaderProgram(
-            pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
-            pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
-        )
-    return _program
+def particle_program(material: Material | None = None) -> Any:
+    """The particle program: kge's default effect, or a material's (None when its shader
+    does not compile: the caller keeps the default)."""
+    if material is not None:
+        return material_program(material.shader, "particle", vertex=_VERTEX)
+    return program("kge-particle", _VERTEX, fragment_source(DEFAULT_EFFECT))
 
 
 _ROWS = np.zeros(0, np.intp)
@@ -110,7 +104,7 @@ def _vertex_rows(n: int) -> np.ndarray:
 class ParticleGroup(pyglet.graphics.Group):
     """Texture, blend mode and shader of particles in one layer."""
 
-    def __init__(self, texture: Any, blend: str, program: Any, parent: Any) -> None:
+    def __init__(self, texture: Any, blend: Blend, program: Any, parent: Any) -> None:
         super().__init__(order=0, parent=parent)
         self.texture = texture
         self.blend = blend
@@ -118,10 +112,10 @@ class ParticleGroup(pyglet.graphics.Group):
 
     def set_state(self) -> None:
         self.program.use()
+        apply_frame_uniforms(self.program)
         gl.glActiveTexture(gl.GL_TEXTURE0)
         gl.glBindTexture(self.texture.target, self.texture.id)
-        gl.glEnable(gl.GL_BLEND)
-        gl.glBlendFunc(*_BLEND[self.blend])
+        set_blend(self.blend)
 
     def unset_state(self) -> None:
         gl.glDisable(gl.GL_BLEND)
@@ -133,10 +127,11 @@ class ParticleGroup(pyglet.graphics.Group):
             and self.texture.id == other.texture.id
             and self.blend == other.blend
             and self.parent is other.parent
+            and self.program is other.program
         )
 
     def __hash__(self) -> int:
-        return hash((self.texture.id, self.blend, id(self.parent)))
+        return hash((self.texture.id, self.blend, id(self.parent), id(self.program)))
 
 
 def _quad_list(program: Any, batch: Any, group: Any, quads: int) -> Any:
@@ -198,17 +193,10 @@ class ParticleDrawer:
         self.program = particle_program()
         self.textures = TextureCache(world)
         self.meshes: dict[int, _EmitterMesh] = {}
-        self._smooth: set[int] = set()
 
     def _texture(self, em: ParticleEmitter) -> Any:
         image = SQUARE if em.flat else (SOFT_DOT if em.texture is None else em.texture)
-        tex = self.textures.texture(image)
-        if image is SOFT_DOT and tex.id not in self._smooth:  # a blurred dot wants LINEAR
-            gl.glBindTexture(tex.target, tex.id)
-            gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MAG_FILTER, gl.GL_LINEAR)
-            gl.glTexParameteri(tex.target, gl.GL_TEXTURE_MIN_FILTER, gl.GL_LINEAR)
-            self._smooth.add(tex.id)
-        return tex
+        return self.textures.texture(image, filter="linear" if image is SOFT_DOT else "nearest")
 
     def _mesh(self, entity: int, em: ParticleEmitter, capacity: int) -> _EmitterMesh:
         try:
@@ -217,15 +205,20 @@ class ParticleDrawer:
             raise ValidationError(
                 f"entity {entity}, ParticleEmitter.texture {em.texture!r}: {exc}"
             ) from exc
-        key = (tex.id, em.blend, em.layer, em.order)
+        material = self.world.try_get(entity, Material)
+        prog = particle_program(material) if material is not None else None
+        prog = prog or self.program
+        key = (tex.id, em.blend, em.layer, em.order, id(prog), id(material))
         mesh = self.meshes.get(entity)
         if mesh is not None and mesh.key == key and mesh.capacity >= capacity:
             return mesh
         if mesh is not None:
             mesh.vertex_list.delete()
         parent = self.groups.get(em.layer, WORLD, em.order)
-        group = ParticleGroup(tex, em.blend, self.program, parent)
-        vl = _quad_list(self.program, self.batch, group, capacity)
+        if prog is not self.program and material is not None:
+            parent = MaterialGroup(material, prog, self.textures, parent)
+        group = ParticleGroup(tex, em.blend, prog, parent)
+        vl = _quad_list(prog, self.batch, group, capacity)
         mesh = self.meshes[entity] = _EmitterMesh(vl, capacity, key)
         return mesh
 

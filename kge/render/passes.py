@@ -1,22 +1,25 @@
-"""Render passes: how a plugin draws with the world's camera, before or after the batch.
+"""Render passes: how a plugin draws with the world's cameras, before or after the batch.
 
 Every world that draws has one pyglet batch (sprites, shapes, text, debug draw) and
-one camera. A game-layer plugin that draws something of its own (particles, a
+one or more cameras. A game-layer plugin that draws something of its own (particles, a
 light map, UI, tile chunks) registers a *pass* in the world's :class:`RenderPasses`
 resource, from its ``build(world)``, without touching GL:
 
 * ``phase="before"`` passes run once the frame's camera and blended poses are known
   and before the batch is drawn: upload vertex data in bulk into vertex lists that
   live in ``frame.batch`` (in ``frame.groups.get(layer, WORLD)`` so they sort with
-  sprites of the same layer);
-* ``phase="after"`` passes run after the batch: full-screen effects (a light map
-  multiplied over the scene), overlays drawn in window pixels (UI).
+  sprites of the same layer); with several cameras, ``frame.view`` covers all views;
+* ``phase="view"`` passes run once per camera, just before that camera draws the
+  batch, with that camera's ``frame`` (the light map is rendered here);
+* ``phase="after"`` passes run after every camera and the screen-space text:
+  overlays drawn in screen pixels (UI), with the screen's projection set (design
+  pixels with a ``Resolution``).
 
 Within a phase, passes are ordered by name, as systems are (:mod:`kge.schedule`): a
 pass names itself (``name=``) and may say ``before=`` / ``after=`` other passes' names;
 two passes nothing orders *tie* and run in the order they were added, reported by
 :meth:`RenderPasses.ties`. The built-in order is ``animation`` -> ``tilemap`` ->
-``particles`` -> ``lighting`` before the batch, ``ui`` after it.
+``particles`` before the batch, ``lighting`` per view, ``ui`` after it.
 
 A pass receives a :class:`Frame` and imports pyglet's GL only when it runs, so a
 headless App that never renders never loads it.
@@ -48,7 +51,8 @@ if TYPE_CHECKING:
     from kge.world import World
 
 Pass = Callable[["Frame"], None]
-Phase = Literal["before", "after"]
+Phase = Literal["before", "view", "after"]
+PHASES: tuple[Phase, ...] = ("before", "view", "after")
 
 
 @dataclass(slots=True)
@@ -59,7 +63,7 @@ class Frame:
     camera: Camera
     center: tuple[float, float]  #: the camera centre drawn this frame (metres)
     scale: float  #: window pixels per metre (pixels_per_meter * zoom)
-    viewport: tuple[int, int]  #: window size in pixels
+    viewport: tuple[int, int]  #: the camera's viewport size in screen (design) pixels
     view: tuple[float, float, float, float]  #: visible world rect (left, bottom, right, top)
     world_matrix: Any  #: pyglet Mat4: world metres -> window pixels (the WORLD groups' view)
     time: float  #: game time of the last fixed step (seconds)
@@ -67,6 +71,12 @@ class Frame:
     groups: Any  #: :class:`kge.render.groups.Groups`: ``groups.get(layer, space, order)``
     poses: np.ndarray  #: blended (x, y, angle) rows of drawn entities
     rows: dict[int, int]  #: entity -> row of ``poses``
+    #: the camera's viewport in the framebuffer drawn into: (x, y, width, height) pixels
+    rect: tuple[int, int, int, int] = (0, 0, 0, 0)
+    #: framebuffer pixels per screen (design) pixel
+    pixel_scale: float = 1.0
+    #: the camera's rotation, radians counter-clockwise
+    rotation: float = 0.0
 
     def pose(self, entity: int) -> tuple[float, float, float] | None:
         """The blended pose of a drawn entity this frame, or None."""
@@ -77,11 +87,10 @@ class Frame:
         return (float(x), float(y), float(a))
 
     def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
-        """World metres to window pixels with this frame's camera."""
-        return (
-            (point[0] - self.center[0]) * self.scale + self.viewport[0] / 2,
-            (point[1] - self.center[1]) * self.scale + self.viewport[1] / 2,
-        )
+        """World metres to viewport pixels with this frame's camera."""
+        m = self.world_matrix
+        x, y = point
+        return (m[0] * x + m[4] * y + m[12], m[1] * x + m[5] * y + m[13])
 
 
 @dataclass(slots=True)
@@ -103,8 +112,8 @@ class RenderPasses:
 
     def __init__(self) -> None:
         self._entries: list[_Entry] = []
-        self._sorted: dict[Phase, list[_Entry]] = {"before": [], "after": []}
-        self._ties: dict[Phase, list[tuple[str, str]]] = {"before": [], "after": []}
+        self._sorted: dict[Phase, list[_Entry]] = {p: [] for p in PHASES}
+        self._ties: dict[Phase, list[tuple[str, str]]] = {p: [] for p in PHASES}
 
     def add(
         self,
@@ -120,8 +129,10 @@ class RenderPasses:
 
         ``order`` (an integer, lower first) is deprecated: name the pass instead.
         """
-        if phase not in ("before", "after"):
-            raise ValueError(f"RenderPasses.add: phase must be 'before' or 'after', got {phase!r}")
+        if phase not in PHASES:
+            raise ValueError(
+                f"RenderPasses.add: phase must be 'before', 'view' or 'after', got {phase!r}"
+            )
         label = name if name is not None else getattr(fn, "__qualname__", repr(fn))
         if order is not None:
             deprecation.warn(
@@ -137,11 +148,14 @@ class RenderPasses:
 
     def remove(self, fn: Pass) -> None:
         self._entries = [e for e in self._entries if e.fn is not fn]
-        for phase in ("before", "after"):
+        for phase in PHASES:
             self._sorted[phase], self._ties[phase] = _sort(phase, self._entries)
 
     def before(self) -> list[Pass]:
         return [e.fn for e in self._sorted["before"]]
+
+    def view(self) -> list[Pass]:
+        return [e.fn for e in self._sorted["view"]]
 
     def after(self) -> list[Pass]:
         return [e.fn for e in self._sorted["after"]]
@@ -152,7 +166,7 @@ class RenderPasses:
 
     def ties(self) -> list[tuple[Phase, str, str]]:
         """Pairs of passes that run one after the other with nothing ordering them."""
-        return [(phase, a, b) for phase in ("before", "after") for a, b in self._ties[phase]]
+        return [(phase, a, b) for phase in PHASES for a, b in self._ties[phase]]
 
 
 def _sort(phase: Phase, entries: list[_Entry]) -> tuple[list[_Entry], list[tuple[str, str]]]:

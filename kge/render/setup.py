@@ -152,7 +152,7 @@ def ensure_renderer(app: Host, window: Any = None) -> Renderer:
         window, owns = _new_window(app)
     else:
         owns = True
-    from kge.render.programs import pin_programs
+    from kge.render.program_life import pin_programs
 
     pin_programs(getattr(window, "context", None))
     r = _renderers[app] = Renderer(app, window, owns)

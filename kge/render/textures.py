@@ -56,15 +56,15 @@ def _load_path(name: str, world: Any) -> Any:
         raise ValidationError(f"image {name!r} not found") from exc
 
 
-#: every live cache, so a changed image file reaches them all (hot reload)
-_CACHES: weakref.WeakSet[TextureCache] = weakref.WeakSet()
-
-
 def check_options(filter: str, wrap: str) -> None:
     if filter not in FILTERS:
         raise ValidationError(f"texture filter must be one of {FILTERS}, got {filter!r}")
     if wrap not in WRAPS:
         raise ValidationError(f"texture wrap must be one of {WRAPS}, got {wrap!r}")
+
+
+#: every live cache, so a changed image file reaches them all (hot reload)
+_CACHES: weakref.WeakSet[TextureCache] = weakref.WeakSet()
 
 
 class TextureCache:
@@ -78,14 +78,15 @@ class TextureCache:
         _CACHES.add(self)
 
     def forget_file(self, path: str) -> list[str]:
-        """Drop the textures of image names that resolve to the file ``path``; the names."""
+        """Drop the textures of image names that resolve to the file ``path`` (with any
+        sampling options); the names."""
         target = os.path.realpath(path)
-        dropped = []
-        for key in list(self._cache):
-            name = key if isinstance(key, str) else key[0] if isinstance(key, tuple) else None
-            if isinstance(name, str) and _resolves_to(name, self.world) == target:
+        dropped: list[str] = []
+        for key in [k for k in self._cache if isinstance(k[0], str)]:
+            if _resolves_to(key[0], self.world) == target:
                 del self._cache[key]
-                dropped.append(name)
+                if key[0] not in dropped:
+                    dropped.append(key[0])
         return dropped
 
     @staticmethod

@@ -23,10 +23,12 @@ import numpy as np
 import pyglet
 from pyglet import gl
 
+from kge.components.material import Material
+from kge.render.glutil import per_context
 from kge.render.groups import WORLD
 from kge.render.images import PixelImage
 from kge.render.passes import Frame
-from kge.render.programs import per_context
+from kge.render.programs import FS_HEAD, apply_frame_uniforms, material_program, set_uniforms
 from kge.render.textures import TextureCache
 from kge.render.tileobjects import ObjectQuads, layer_objects, object_entities, place
 from kge.tilemap.model import (
@@ -73,11 +75,52 @@ void main() {
     color = texture(tile_texture, uv) * tint;
 }
 """
+# a tile layer drawn with a Material: the user's ``effect`` gets the layer's tint as its
+# colour and the clamped texture coordinate (see :mod:`kge.components.material`)
+_MATERIAL_VERTEX = """#version 150 core
+in vec2 position;
+in vec2 local;
+in vec4 rect;
+out vec4 v_color;
+out vec2 v_uv;
+out vec2 v_world;
+flat out vec4 v_rect;
+uniform WindowBlock { mat4 projection; mat4 view; } window;
+uniform vec2 shift;
+uniform vec4 tint;
+void main() {
+    v_world = position + shift;
+    v_uv = mix(rect.xy, rect.zw, local);
+    v_rect = rect;
+    v_color = tint;
+    gl_Position = window.projection * window.view * vec4(v_world, 0.0, 1.0);
+}
+"""
+_MATERIAL_HEAD = FS_HEAD + "flat in vec4 v_rect;\n"
+_MATERIAL_MAIN = """
+void main() {
+    vec2 inset = 0.5 / vec2(textureSize(kge_texture, 0));
+    vec2 lo = min(v_rect.xy, v_rect.zw) + inset;
+    vec2 hi = max(v_rect.xy, v_rect.zw) - inset;
+    kge_out = effect(v_color, kge_texture, clamp(v_uv, lo, max(lo, hi)), v_world);
+}
+"""
+
+
+def layer_program(material: Material | None) -> Any:
+    """The program a tile layer is drawn with: its material's, else kge's (also when the
+    material's shader does not compile: a ShaderWarning says why, once)."""
+    if material is not None:
+        prog = material_program(material.shader, "tile", _MATERIAL_VERTEX, _MATERIAL_HEAD,
+                                _MATERIAL_MAIN)  # fmt: skip
+        if prog is not None:
+            return prog
+    return tile_program()
 
 
 def tile_program() -> Any:
     """The tile shader program of the current GL context (one per context: its
-    uniforms change per layer, see :mod:`kge.render.programs`)."""
+    uniforms change per layer, see :mod:`kge.render.program_life`)."""
     return per_context(
         "tiles",
         lambda: pyglet.graphics.shader.ShaderProgram(
@@ -90,21 +133,28 @@ def tile_program() -> Any:
 class LayerGroup(pyglet.graphics.Group):
     """One layer's texture, tint and shift (offset + parallax), read at draw time."""
 
-    def __init__(
-        self, program: Any, texture: Any, parent: Any, order: int = 0, wrap: bool = False
-    ) -> None:
+    def __init__(self, program: Any, texture: Any, parent: Any, order: int = 0,
+                 wrap: bool = False, material: Material | None = None,
+                 textures: Any = None) -> None:  # fmt: skip
         super().__init__(order=order, parent=parent)
         self.program = program
         self.texture = texture
         self.wrap = int(wrap)
         self.shift = (0.0, 0.0)
         self.tint = (1.0, 1.0, 1.0, 1.0)
+        self.material = material if program is not tile_program() else None
+        self.textures = textures
 
     def set_state(self) -> None:
         self.program.use()
         self.program["shift"] = self.shift
         self.program["tint"] = self.tint
-        self.program["wrap"] = self.wrap
+        m = self.material
+        if m is None:
+            self.program["wrap"] = self.wrap
+        else:  # read now: a tween changes them without touching a vertex
+            apply_frame_uniforms(self.program)
+            set_uniforms(self.program, m.uniforms, self.textures, m.shader.uniforms)
         gl.glActiveTexture(gl.GL_TEXTURE0)
         gl.glBindTexture(self.texture.target, self.texture.id)
         gl.glEnable(gl.GL_BLEND)
@@ -251,6 +301,8 @@ class MapDrawing:
         self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group, view)
         self.extras: list[tuple[Any, LayerGroup, Any]] = []  # (list, group, style)
         self.animated = np.zeros(max(data.tiles.size, 1), bool)
+        self.materials: dict[int, Material | None] = {}  #: tile layer position -> drawn with
+        self._shaders: dict[int, int | None] = {}
         for g in data.tiles.animations:
             self.animated[g] = True
         self._objects_built = False
@@ -261,10 +313,28 @@ class MapDrawing:
         g = self.groups.get((li, image, sub))
         if g is None:
             parent = frame.groups.get(draw_layer, WORLD, order)
+            material = self.materials.get(li)
             g = self.groups[(li, image, sub)] = LayerGroup(
-                self.program, self.tex[image], parent, order=sub
-            )
+                layer_program(material), self.tex[image], parent, order=sub,
+                material=material, textures=self.textures,
+            )  # fmt: skip
         return g
+
+    def _materials_changed(self) -> None:
+        """A layer whose Material was set, replaced or removed is drawn again from scratch
+        (its vertex lists belong to the program they were made for)."""
+        data = self.map.data
+        for li, layer in enumerate(data.tile_layers):
+            m = self.map.materials.get(layer.name)
+            was = self.materials.get(li)
+            if m is was and (m is None or self._shaders.get(li) == hash(m.shader)):
+                continue
+            self.materials[li] = m
+            self._shaders[li] = hash(m.shader) if m is not None else None
+            for key in [k for k in self.chunks if k[0] == li]:
+                self._drop(key)
+            for gkey in [k for k in self.groups if k[0] == li]:
+                del self.groups[gkey]
 
     def draw(self, frame: Frame) -> None:
         tmap = self.map
@@ -272,6 +342,7 @@ class MapDrawing:
         for key in list(tmap.dirty):
             tmap.dirty.discard(key)
             self._drop(key)
+        self._materials_changed()
         wanted: set[tuple[int, int, int]] = set()
         for li, layer in enumerate(data.tile_layers):
             style = layer.style
@@ -413,7 +484,7 @@ class MapDrawing:
             parent_order = order + s_ if order == DEPTH_BASE else order
             g = self.group(frame, li, image, s_, draw_layer, parent_order)
             vl = _quad_list(
-                self.program, int(sel.sum()), frame.batch, g, quads[sel], local[sel], rect[sel]
+                g.program, int(sel.sum()), frame.batch, g, quads[sel], local[sel], rect[sel]
             )
             chunk.lists.append(vl)
         return chunk

@@ -19,6 +19,7 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from kge.components.resolution import Resolution
 from kge.keys import Key
 
 if TYPE_CHECKING:
@@ -36,6 +37,13 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
     window.push_handlers()  # a fresh frame: @window.event below fills it
     inp = app.input
     state = {"count": 0, "last": time.perf_counter()}
+
+    def screen(x: float, y: float) -> tuple[float, float]:
+        """Window pixels -> the game's screen pixels (design pixels with a Resolution)."""
+        res = app.world.try_resource(Resolution) if app._stack else None
+        if res is None:
+            return (x, y)
+        return res.to_design((x, y), (window.width, window.height))
 
     @window.event
     def on_draw() -> None:
@@ -71,19 +79,19 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
 
     @window.event
     def on_mouse_press(x: int, y: int, button: int, modifiers: int) -> None:
-        inp.mouse_down(button, (x, y), modifiers)
+        inp.mouse_down(button, screen(x, y), modifiers)
 
     @window.event
     def on_mouse_release(x: int, y: int, button: int, modifiers: int) -> None:
-        inp.mouse_up(button, (x, y), modifiers)
+        inp.mouse_up(button, screen(x, y), modifiers)
 
     @window.event
     def on_mouse_motion(x: int, y: int, dx: int, dy: int) -> None:
-        inp.move_mouse(x, y)
+        inp.move_mouse(*screen(x, y))
 
     @window.event
     def on_mouse_drag(x: int, y: int, dx: int, dy: int, buttons: int, modifiers: int) -> None:
-        inp.move_mouse(x, y)
+        inp.move_mouse(*screen(x, y))
 
     @window.event
     def on_mouse_scroll(x: int, y: int, scroll_x: float, scroll_y: float) -> None:

@@ -35,7 +35,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from kge import (
-    App, Audio, Behaviour, Box, Camera, Circle, Collider, Input, Key, RigidBody, Script,
+    App, Audio, Behaviour, Box, Camera, CharacterBody, Circle, Collider, Input, Key, Script,
     SensorBegin, Sprite, Text, Transform, World, solid,
 )
 from kge.sound import tone
@@ -56,15 +56,15 @@ class Player(Script):
     """Arrows or A/D walk; space jumps when standing; touching the coin takes it."""
 
     speed = 4.0  # metres per second
-    jump_speed = 6.0
 
-    def on_update(self, dt: float) -> None:
+    def on_fixed_update(self, dt: float) -> None:
+        """Each fixed step, just before the character moves (docs/character.md)."""
         keys = self.world.resource(Input)
-        body = self.world.get(self.entity, RigidBody)
+        body = self.get(CharacterBody)
         walk = keys.axis((Key.A, Key.LEFT), (Key.D, Key.RIGHT)) * self.speed
-        body.velocity = (walk, body.velocity[1])
-        if keys.pressed(Key.SPACE) and abs(body.velocity[1]) < 0.01:
-            body.velocity = (walk, self.jump_speed)
+        body.velocity = (walk, body.velocity[1])  # keep velocity[1]: gravity and jumps
+        body.jump = keys.held(Key.SPACE)  # jumps when pressed while standing
+        if body.jumped:  # the last step started a jump
             self.world.resource(Audio).play(JUMP)
 
     def on_sensor_begin(self, event: SensorBegin) -> None:
@@ -84,7 +84,7 @@ def level(world: World) -> None:
     ground = Sprite(solid(4, 4, (80, 90, 110)), size=(16, 1))
     world.spawn(Transform(0, -0.5), Collider(Box(8, 0.5)), ground)
     world.spawn(
-        Transform(-4, 1), RigidBody(fixed_rotation=True), Collider(Box(0.4, 0.4), friction=0.0),
+        Transform(-4, 1), CharacterBody(Box(0.4, 0.4), jump_speed=6.0),
         Sprite(solid(4, 4, PLAYER_COLOR), size=(0.8, 0.8)), Behaviour(Player()),
     )
     world.spawn(

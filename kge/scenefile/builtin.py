@@ -12,6 +12,7 @@ from kge.components import drawables as draw
 from kge.components.animation import Animator, Clip, FrameRef, Transition
 from kge.components.audio import AudioListener, AudioSource, ImpactSound
 from kge.components.camera import Camera
+from kge.components.character import Capsule, CharacterBody
 from kge.components.collider import Collider
 from kge.components.debug import DebugDraw
 from kge.components.filter import Filter
@@ -28,7 +29,8 @@ from kge.components.joints import (
     WeldJoint,
     WheelJoint,
 )
-from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
+from kge.components.material import Material, Shader
 from kge.components.name import Name
 from kge.components.particles import (
     BurstOnHit,
@@ -37,9 +39,12 @@ from kge.components.particles import (
     EmitCollider,
     EmitLine,
     EmitPoint,
+    ParticleAttractor,
     ParticleEmitter,
 )
 from kge.components.platform import OneWayPlatform
+from kge.components.post import CRT, Bloom, ColorGrade, Vignette
+from kge.components.resolution import Resolution
 from kge.components.rigidbody import RigidBody
 from kge.components.shake import CameraShake
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
@@ -74,6 +79,7 @@ def register_builtin(reg: TypeRegistry) -> None:
     for cls in plain:
         reg.register(cls)
     reg.register(Collider, entity_fields=("body",))
+    reg.register(CharacterBody, entity_fields=("floor_collider", "wall_collider"))
     # joints: body references, and the world points a prefab placement moves
     for joint in (RevoluteJoint, WeldJoint, FrictionJoint):
         reg.register(joint, entity_fields=_BODIES, point_fields=("anchor",))
@@ -87,7 +93,8 @@ def register_builtin(reg: TypeRegistry) -> None:
     reg.register(MotorJoint, entity_fields=_BODIES)
     reg.register(GearJoint, entity_fields=(*_BODIES, "joint_a", "joint_b"))
     # drawing
-    reg.register(Sprite, asset_fields=("image",))
+    reg.register(Sprite, asset_fields=("image", "normal_map"))
+    reg.register(Material)
     reg.register(Text)
     drawables: tuple[type, ...] = (draw.Rect, draw.Circle, draw.Triangle, draw.Polygon,
                                    draw.Line)
@@ -100,10 +107,12 @@ def register_builtin(reg: TypeRegistry) -> None:
     # audio, lights, particles
     reg.register(AudioSource, asset_fields=("sound",))
     reg.register(ImpactSound, asset_fields=("sound",))
-    reg.register(Light)
+    reg.register(Light, asset_fields=("texture",))
+    reg.register(DirectionalLight)
     reg.register(Lighting, kinds=(RESOURCE,))
     reg.register(ParticleEmitter, asset_fields=("texture",))
     reg.register(BurstOnHit, entity_fields=("emitter",))
+    reg.register(ParticleAttractor)
     # UI
     reg.register(UINode, entity_fields=("parent",))
     reg.register(UIImage, asset_fields=("image",))
@@ -120,9 +129,11 @@ def register_builtin(reg: TypeRegistry) -> None:
     # resources
     reg.register(PhysicsSettings, kinds=(RESOURCE,))
     reg.register(Theme, kinds=(RESOURCE,))
+    reg.register(Resolution, kinds=(RESOURCE,))
     # values nested in fields
-    values: tuple[type, ...] = (Box, Circle, Polygon, Edge, Chain, Filter, EmitPoint, EmitCircle,
-                                EmitBox, EmitLine, EmitCollider, Clip, Transition)
+    values: tuple[type, ...] = (Box, Circle, Polygon, Edge, Chain, Capsule, Filter, EmitPoint,
+                                EmitCircle, EmitBox, EmitLine, EmitCollider, Clip, Transition,
+                                Shader, Bloom, ColorGrade, Vignette, CRT)
     for cls in values:
         reg.register(cls, kinds=(VALUE,))
     reg.register(FrameRef, kinds=(VALUE,), asset_fields=("image",))

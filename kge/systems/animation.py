@@ -22,6 +22,7 @@ imported only when the App first renders.
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 from kge.animation.clips import ClipState, ClipTable
@@ -29,15 +30,16 @@ from kge.animation.events import AnimationEvent, AnimationEvents, AnimationFinis
 from kge.animation.shake import decayed, offset
 from kge.animation.tweens import TweenHandle, Tweens
 from kge.components.animation import Animator
-from kge.components.camera import Camera, active_camera
+from kge.components.camera import Camera, active_camera, clamp_view
 from kge.components.shake import CameraShake
-from kge.components.tracked import bind, unbind
+from kge.components.tracked import bind, unbind, validate_writes
 from kge.errors import MissingComponentError
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.scene import Time
 from kge.schedule import Stage, System, SystemSet
 from kge.snapshot import carry_running
+from kge.systems.animation_checks import check_frames
 from kge.systems.behaviour import BehaviourRunner
 from kge.world import World, deprecate_resource, stored_resource
 
@@ -190,7 +192,7 @@ class Animations:
                     tr.when is not None
                     and tr.src in ("*", anim.current)
                     and anim.current != tr.dst
-                    and anim.params.get(tr.when)
+                    and tr.holds(anim.params)
                 ):
                     anim.play(tr.dst)
                     self._sync_one(entity)
@@ -373,7 +375,8 @@ class ShakeApply(System):
         if cam is None:  # nothing to move (no camera yet): the trauma still decays
             return
         cx, cy = cam.center
-        cam.center = (cx + ox, cy + oy)
+        cam.center = (clamp_view(cx + ox), clamp_view(cy + oy))  # near the view bound
+        ox, oy = cam.center[0] - cx, cam.center[1] - cy
         restore = world.get_system(ShakeRestore)
         if restore is not None:
             restore.applied = (cam, (ox, oy))
@@ -396,6 +399,7 @@ class _AtlasPass:
         self.world = world
         self.anims = anims
         self.frames: Any = None
+        self.current: Frame | None = None
 
     def __call__(self, frame: Frame) -> None:
         from kge.systems.render import RenderSystem
@@ -413,6 +417,7 @@ class _AtlasPass:
             )
             view.sprites.frame_source = self.frames.frame_region
             self.anims.redraw = view.dirty.add
+            self.frames.migrate = self._migrate
             # sprites made before the atlas existed move onto it now
             known = [e for e in self.anims.state.rows if e in view.sprites.sprites]
             if known:
@@ -420,7 +425,19 @@ class _AtlasPass:
                 view.sync(frame.camera.pixels_per_meter)
                 frame.poses = view.poses.blend(frame.alpha)
                 view.sprites.poser.write(frame.poses, frame.view)
+        self.current = frame
         self.frames.write()
+
+    def _migrate(self, entities: list[int]) -> None:
+        """Sync these sprites now: onto the atlas page of the frame they show."""
+        from kge.systems.render import RenderSystem
+
+        rs, frame = self.world.get_system(RenderSystem), self.current
+        if rs is None or frame is None:
+            return
+        rs.view.dirty.update(entities)
+        rs.view.sync(frame.camera.pixels_per_meter)
+        rs.view.sprites.poser.write(frame.poses, frame.view)
 
 
 class AnimationPlugin(Plugin):
@@ -436,3 +453,6 @@ class AnimationPlugin(Plugin):
         ):  # fmt: skip
             world.add_system(system)
         passes_for(world).add(_AtlasPass(world, anims), phase="before", name="animation")
+        world.validator(Animator, functools.partial(check_frames, world))
+        validate_writes(world, Animator)
+        validate_writes(world, CameraShake)  # a bad write names its entity

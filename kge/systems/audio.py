@@ -36,7 +36,7 @@ from kge.assets.store import Assets, assets_for, default_assets
 from kge.audio.mixer import Mixer
 from kge.audio.resource import Audio
 from kge.components.audio import AudioSource, ImpactSound
-from kge.components.tracked import bind, unbind
+from kge.components.tracked import bind, unbind, validate_writes
 from kge.components.transform import Transform
 from kge.errors import where
 from kge.host import Host
@@ -122,6 +122,7 @@ class AudioSystem(System):
         self._clock = 0.0
         world.validator(AudioSource, self._check_sound)
         world.validator(ImpactSound, self._check_sound)
+        validate_writes(world, ImpactSound)  # a bad write names its entity
         world.on_add(AudioSource, self._added)
         world.on_remove(AudioSource, self._removed)
         world.on_remove(ImpactSound, self._impact_removed)
@@ -139,7 +140,7 @@ class AudioSystem(System):
         if isinstance(comp.sound, SoundData):
             return
         owner = where(entity, type(comp).__name__, "sound")
-        assets_for(self.world).resolve(comp.sound, owner=owner)
+        assets_for(self.world).checked_sound(comp.sound, owner=owner)
 
     def _added(self, entity: int, src: AudioSource) -> None:
         bind(src, entity, self._dirty)
@@ -190,6 +191,11 @@ class AudioSystem(System):
         if self._impacts:
             self._play_impacts()
         self.audio.update_positions()
+        if self.audio.follow_game_time:
+            host = self.world.try_resource(Host)
+            if host is not None:
+                self.audio.follow_game(bool(getattr(host, "paused", False)),
+                                       float(getattr(host, "time_scale", 1.0)))  # fmt: skip
         self.mixer.update(dt)
         self.audio.reap()
 

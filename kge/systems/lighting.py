@@ -13,8 +13,9 @@ from __future__ import annotations
 from typing import Any
 
 from kge.components.collider import Collider
-from kge.components.lights import Light, Lighting, ShadowCaster
+from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
 from kge.components.rigidbody import RigidBody
+from kge.components.tracked import validate_writes
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
@@ -34,6 +35,8 @@ class LightingPlugin(Plugin):
     """
 
     def build(self, world: World) -> None:
+        validate_writes(world, Light)  # a bad write names its entity
+        validate_writes(world, ShadowCaster)
         occluders = world.try_resource(Occluders) or world.insert_resource(Occluders())
 
         def changed(entity: int, comp: Any) -> None:
@@ -52,16 +55,19 @@ class LightingPlugin(Plugin):
                     lm.draw(frame, Lighting(enabled=False))
                 return
             from kge.render.lighting import LightMap
+            from kge.systems.render import RenderSystem
 
+            rs = world.get_system(RenderSystem)
+            view = rs.view if rs is not None else None
             if lm is None or lm.batch is not frame.batch:
                 if lm is not None:
                     lm.close()
-                lm = holder["map"] = LightMap(world, frame.batch, frame.groups, occluders)
-            lm.draw(frame, lighting)
+                textures = view.textures if view is not None else None
+                lm = holder["map"] = LightMap(world, frame.batch, frame.groups, occluders,
+                                              textures)  # fmt: skip
+            lm.draw(frame, lighting, view.sprites.normals if view is not None else None)
 
-        passes_for(world).add(
-            draw, phase="before", name="lighting", after=["animation", "tilemap", "particles"]
-        )
+        passes_for(world).add(draw, phase="view", name="lighting")
         world.add_system(_LightMapOwner(holder))
 
 
@@ -84,4 +90,4 @@ class _LightMapOwner(System):
             lm.close()
 
 
-__all__ = ["Light", "Lighting", "LightingPlugin", "ShadowCaster"]
+__all__ = ["DirectionalLight", "Light", "Lighting", "LightingPlugin", "ShadowCaster"]

@@ -19,6 +19,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from typing import Any
@@ -27,7 +28,13 @@ import numpy as np
 
 from kge.assets import assets_for
 from kge.components.collider import Collider
-from kge.components.particles import BurstOnHit, EmitCollider, ParticleBurst, ParticleEmitter
+from kge.components.particles import (
+    BurstOnHit,
+    EmitCollider,
+    ParticleAttractor,
+    ParticleBurst,
+    ParticleEmitter,
+)
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
 from kge.components.tracked import validate_writes
@@ -177,6 +184,8 @@ class ParticleSystem(System):
         grid = None
         if any(em.collide != "none" for _, (em, _t) in emitters):
             grid = self._grid()
+        attractors = [(at.x, at.y, a.strength, a.radius)
+                      for _, (a, at) in world.query(ParticleAttractor, Transform) if a.enabled]
         finished = []
         for e, (em, t) in emitters:
             st = particles.state(e)
@@ -186,7 +195,7 @@ class ParticleSystem(System):
             if isinstance(em.shape, EmitCollider):
                 col = world.try_get(e, Collider)
                 collider = col.shape if col is not None else None
-            st.advance(em, dt, (t.x, t.y, t.angle), velocity, collider, grid)
+            st.advance(em, dt, (t.x, t.y, t.angle), velocity, collider, grid, attractors)
             if st.finished:
                 finished.append(e)
         for e in finished:
@@ -232,6 +241,25 @@ class ParticleTriggers(System):
             particles.burst(trig.emitter, trig.count, point, direction)
 
 
+def _emitter_of(world: World, entity: int | None, owner: str, emitter: int) -> None:
+    """Refuse a reference to an entity that is not a live emitter."""
+    if not world.exists(emitter):
+        raise ValidationError(f"{where(entity, owner, 'emitter')}: entity {emitter} does not exist")
+    if world.try_get(emitter, ParticleEmitter) is None:
+        raise ValidationError(
+            f"{where(entity, owner, 'emitter')}: entity {emitter} has no ParticleEmitter"
+        )
+
+
+def _check_burst_on_hit(world: World, entity: int | None, trig: BurstOnHit) -> None:
+    _emitter_of(world, entity, "BurstOnHit", trig.emitter)
+
+
+def _check_burst_event(world: World, entity: int | None, event: ParticleBurst) -> None:
+    """``world.emit(ParticleBurst(...))`` naming no emitter is refused at the emit."""
+    _emitter_of(world, entity, "ParticleBurst", event.emitter)
+
+
 class ParticlesPlugin(Plugin):
     """Particles: the ``Particles`` resource, the systems, validation and the draw pass."""
 
@@ -251,6 +279,9 @@ class ParticlesPlugin(Plugin):
 
         world.validator(ParticleEmitter, check)
         validate_writes(world, ParticleEmitter)
+        world.validator(BurstOnHit, functools.partial(_check_burst_on_hit, world))
+        validate_writes(world, BurstOnHit)
+        world.validator(ParticleBurst, functools.partial(_check_burst_event, world))
         drawer: dict[str, Any] = {}
 
         def draw(frame: Any) -> None:

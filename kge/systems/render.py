@@ -22,6 +22,7 @@ from typing import Any
 
 from kge.components.camera import Camera
 from kge.components.debug import DebugDraw
+from kge.components.drawables import DRAWABLE_TYPES
 from kge.components.rigidbody import RigidBody
 from kge.components.sprite import Sprite
 from kge.components.text import Text
@@ -213,19 +214,41 @@ class RenderPlugin(Plugin):
         validate_writes(world, Sprite)
         world.validator(Text, functools.partial(_check_text, world))
         validate_writes(world, Text)
+        world.validator(Camera, functools.partial(_check_camera_follow, world))
+        validate_writes(world, Camera)
+        for drawn in DRAWABLE_TYPES:  # a bad write names its entity
+            validate_writes(world, drawn)
+
+
+def _check_camera_follow(world: World, entity: int | None, cam: Camera) -> None:
+    """A camera following an entity that does not exist (or has no Transform) is refused
+    at the call, not left watching nothing."""
+    target = cam.follow
+    if target is None:
+        return
+    if not world.exists(target):
+        raise ValidationError(
+            f"{where(entity, 'Camera', 'follow')}: entity {target} does not exist"
+        )
+    if world.try_get(target, Transform) is None:
+        raise ValidationError(
+            f"{where(entity, 'Camera', 'follow')}: entity {target} has no Transform to follow"
+        )
 
 
 def _check_sprite_image(world: World, entity: int | None, sprite: Sprite) -> None:
-    """A sprite whose image file is missing is refused at spawn, not at the first frame.
+    """A sprite whose image file is missing or cannot load (truncated, 0 x 0, too large)
+    is refused at spawn, not at the first frame.
 
-    Only the file is looked up (the asset store's search, listing every place tried);
-    decoding waits for the first draw, so a headless App never loads an image.
+    The file is looked up (the asset store's search, listing every place tried) and its
+    header checked once per file (:mod:`kge.assets.headers`); decoding waits for the
+    first draw, so a headless App never decodes an image.
     """
     image = sprite.image
     if isinstance(image, (str, os.PathLike)):
         from kge.assets.store import assets_for
 
-        assets_for(world).resolve(image, owner=where(entity, "Sprite", "image"))
+        assets_for(world).checked_image(image, owner=where(entity, "Sprite", "image"))
 
 
 def _check_text(world: World, entity: int | None, text: Text) -> None:

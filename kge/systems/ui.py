@@ -14,14 +14,25 @@ from __future__ import annotations
 
 from typing import Any
 
-from kge.components.ui import UINode
-from kge.errors import ValidationError
+from kge.components.tracked import validate_writes
+from kge.components.ui import (
+    Dropdown,
+    Label,
+    ProgressBar,
+    ScrollList,
+    Slider,
+    TextInput,
+    Toggle,
+    UINode,
+)  # fmt: skip
+from kge.errors import ValidationError, where
 from kge.host import Host
 from kge.input import Input
 from kge.plugin import Plugin
 from kge.render.passes import Frame, passes_for
 from kge.schedule import Stage, System, SystemSet
 from kge.systems.behaviour import BehaviourRunner
+from kge.systems.ui_images import check_ui_images
 from kge.ui.events import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
 from kge.ui.interact import UIState, handle_input
 from kge.ui.theme import DEFAULT_THEME, Theme
@@ -71,6 +82,13 @@ class UIInput(System):
                 runner.call_one(ev.entity, hook, ev)
 
 
+#: UI components whose writes are bound to their entity (Button, Panel and UIImage are
+#: bound by :func:`check_ui_images`)
+WRITE_CHECKED = (UINode, Label, Toggle, Slider, ProgressBar, TextInput, Dropdown, ScrollList)
+#: the deepest a UI tree may nest (layout walks it from the root)
+MAX_DEPTH = 100
+
+
 def _check_parent(world: World) -> Any:
     def check(entity: int | None, node: UINode) -> None:
         p = node.parent
@@ -85,6 +103,20 @@ def _check_parent(world: World) -> Any:
                 f"{'entity ' + str(entity) + ', ' if entity is not None else ''}UINode.parent: "
                 f"entity {p} is not a UI node"
             )
+        depth, up = 1, world.get(p, UINode).parent
+        while up is not None:  # a loop (a parent that is a descendant) or a nest too deep
+            if up == entity:
+                raise ValidationError(
+                    f"entity {entity}, UINode.parent: entity {p} is inside this node (a loop)"
+                )
+            depth += 1
+            if depth >= MAX_DEPTH:
+                raise ValidationError(
+                    f"{where(entity, 'UINode', 'parent')}: entity {p} is {depth} levels deep, "
+                    f"the most a UI nests is {MAX_DEPTH}"
+                )
+            above = world.try_get(up, UINode) if world.exists(up) else None
+            up = None if above is None else above.parent
 
     return check
 
@@ -98,6 +130,9 @@ class UIPlugin(Plugin):
         if world.try_resource(Theme) is None:
             world.insert_resource(DEFAULT_THEME)
         world.validator(UINode, _check_parent(world))
+        for ctype in WRITE_CHECKED:  # writes name their entity; UINode.parent is checked
+            validate_writes(world, ctype)
+        check_ui_images(world)
         world.add_system(UIInput())
 
         def draw(frame: Frame) -> None:

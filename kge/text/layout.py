@@ -43,7 +43,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from kge.components.text import TextStyle
+from kge.components.text import TextOverflow, TextStyle
 from kge.text.markup import Span
 
 RGBA = tuple[int, int, int, int]
@@ -381,7 +381,7 @@ def layout(spans: Sequence[Span], style: TextStyle, source: FaceSource) -> TextL
     """Lay ``spans`` out in ``style`` with faces from ``source`` (see the module docstring)."""
     scale = 1.0
     if style.overflow == "shrink":
-        probe = style.replace(overflow="visible")
+        probe = style.replace(overflow=TextOverflow.VISIBLE)
         if not _fits(*_lay(spans, probe, source, 1.0), style):
             lo, hi = max(MIN_SHRINK, 1.0 / max(style.size, 1.0)), 1.0
             for _ in range(12):  # the largest size that fits, to 0.1 %
@@ -391,7 +391,7 @@ def layout(spans: Sequence[Span], style: TextStyle, source: FaceSource) -> TextL
                 else:
                     hi = mid
             scale = lo
-        lines, truncated, _ = _lay(spans, style.replace(overflow="clip"), source, scale)
+        lines, truncated, _ = _lay(spans, style.replace(overflow=TextOverflow.CLIP), source, scale)
     else:
         lines, truncated, _ = _lay(spans, style, source, 1.0)
     return _place(lines, truncated, scale, style)

@@ -40,7 +40,7 @@ class CellCollision(LayerCollision):
     def _cell(self, c: int, r: int) -> list[Piece]:
         kind = int(self.kind[r, c])
         if kind == SHAPES:
-            return self._shapes(c, r)
+            return self._cell_shapes(c, r)
         if kind not in (SOLID, ONE_WAY):
             return []
         grid = self.data.grid

@@ -129,7 +129,7 @@ class LayerCollision:
             yield from self.runs[r]
         rr, cc = np.nonzero(self.kind == SHAPES)
         for r, c in zip(rr.tolist(), cc.tolist(), strict=True):
-            self.cells[(c, r)] = self._shapes(c, r)
+            self.cells[(c, r)] = self._cell_shapes(c, r)
             yield from self.cells[(c, r)]
 
     def _build_solid(self) -> Iterator[Piece]:
@@ -231,7 +231,7 @@ class LayerCollision:
             return units.length(top_px), units.length(s.height)
         return 0.0, th
 
-    def _shapes(self, c: int, r: int) -> list[Piece]:
+    def _cell_shapes(self, c: int, r: int) -> list[Piece]:
         gid = int(self.layer.gids[r, c])
         flags = int(self.layer.flags[r, c])
         table = self.data.tiles
@@ -281,7 +281,7 @@ class LayerCollision:
             born += self.runs[r]
         gone += self.cells.pop((c, r), [])
         if new_kind == SHAPES:
-            self.cells[(c, r)] = self._shapes(c, r)
+            self.cells[(c, r)] = self._cell_shapes(c, r)
             born += self.cells[(c, r)]
         return gone, born
 

@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from kge.components.material import Material as DrawMaterial
 from kge.errors import KgeError
 from kge.gcpause import without_gc
 from kge.snapshot import carry_running
@@ -137,6 +138,8 @@ class TileMap:
         self.load_options: dict[str, Any] = {}
         #: (layer, col, row) of every cell set since loading (saves write their tiles)
         self.edited: set[tuple[str, int, int]] = set()
+        #: tile layer name -> the Material its tiles are drawn with (:meth:`set_material`)
+        self.materials: dict[str, DrawMaterial] = {}
 
     def __getstate__(self) -> dict[str, Any]:
         """Pickled without its world (a snapshot's maps are bound to the restored one)."""
@@ -239,6 +242,22 @@ class TileMap:
     # -- queries -------------------------------------------------------------------------
     def layer(self, name: str) -> TileLayerData:
         return self.data.layer(name)
+
+    def set_material(self, layer: str, material: DrawMaterial | None) -> None:
+        """Draw tile layer ``layer`` with ``material`` (your shader and its uniforms, as
+        for sprites: ``effect`` gets the layer's tint and the tile's texture); None
+        draws it plainly again. Its uniforms are read at draw time, so tweening or
+        ``material.set`` changes them without rebuilding a tile."""
+        self.data.layer(layer)  # an unknown name raises, naming the map and its layers
+        if material is None:
+            self.materials.pop(layer, None)
+            return
+        if not isinstance(material, DrawMaterial):
+            raise TilemapError(
+                f"{self.path}: set_material on layer {layer!r}: expected a Material, "
+                f"got {type(material).__name__}"
+            )
+        self.materials[layer] = material
 
     def tile_at(self, point: tuple[float, float], layer: str | None = None) -> int:
         """The gid under a world point (0 when empty or outside); ``layer=None``: the topmost."""

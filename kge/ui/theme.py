@@ -21,8 +21,10 @@ from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
 from kge.components.color import Color, rgba
+from kge.components.text import MAX_FONT_SIZE
+from kge.components.ui import MAX_PIXELS
 from kge.errors import ValidationError
-from kge.validate import finite
+from kge.validate import at_most, finite
 
 
 @dataclass(slots=True, frozen=True)
@@ -62,6 +64,10 @@ class Theme:
                 n = finite(v, "Theme", f.name)
                 if n < 0 or (f.name in ("font_size", "row_height") and n == 0):
                     raise ValidationError(f"Theme.{f.name} must be > 0, got {v!r}")
+                if f.name == "font_size":  # FreeType refuses much larger glyphs
+                    at_most(n, MAX_FONT_SIZE, "Theme", f.name, "points")
+                else:  # layout boxes stay finite
+                    at_most(n, MAX_PIXELS, "Theme", f.name, "pixels")
                 object.__setattr__(self, f.name, n)
 
     def to_data(self) -> dict[str, Any]:

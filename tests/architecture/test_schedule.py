@@ -16,19 +16,25 @@ from kge.schedule_cli import frame_table, main
 DEFAULT_FRAME = {
     Stage.INPUT: [
         ("AnimationFrameStart", "first"),
+        ("GizmoFrameStart", "first"),
+        ("DebugInput", "debug"),
         ("DebugKeys", "debug"),
         ("UIInput", "ui"),
         ("InputBehaviours", "scripts"),
     ],
     Stage.FIXED: [
+        ("GizmoStepStart", "first"),
         ("FixedBehaviours", "scripts"),
         ("FixedTweens", "pre_physics"),
+        ("CharacterSystem", "characters"),
         ("PhysicsSystem", "physics"),
+        ("CharacterSensorSystem", "physics"),
         ("PhysicsEventDelivery", "physics_events"),
         ("ParticleTriggers", "post_physics"),
     ],
     Stage.UPDATE: [
         ("ShakeRestore", "first"),
+        ("GizmoUpdateStart", "first"),
         ("UpdateBehaviours", "scripts"),
         ("AnimationSystem", "animation"),
         ("TileAnimationSystem", "animation"),
@@ -264,17 +270,17 @@ def test_render_passes_run_in_named_order_with_no_tie() -> None:
 
     app = App(lambda world: None, headless=True)
     passes = app.world.resource(RenderPasses)
-    assert passes.names("before") == ["animation", "tilemap", "particles", "lighting"]
-    assert passes.names("after") == ["ui"]
+    assert passes.names("before") == ["animation", "tilemap", "particles"]
+    assert passes.names("view") == ["lighting"]  # once per camera
+    assert passes.names("after") == ["gizmos", "ui", "debug_overlay"]
     assert passes.ties() == []
     log: list[str] = []
-    passes.add(lambda frame: log.append("fog"), phase="before", name="fog",
-               after=["particles"], before=["lighting"])  # fmt: skip
-    assert passes.names("before")[-2:] == ["fog", "lighting"]
+    passes.add(lambda frame: log.append("fog"), phase="view", name="fog", before=["lighting"])
+    assert passes.names("view") == ["fog", "lighting"]
     with pytest.raises(ScheduleError, match="cycle"):
-        passes.add(print, name="loop", after=["lighting"], before=["animation"])
+        passes.add(print, name="loop", after=["particles"], before=["animation"])
     assert "loop" not in passes.names("before")
-    with pytest.warns(DeprecationWarning, match=r"RenderPasses.add\(order=150\)"):
-        passes.add(lambda frame: None, name="old", order=150)  # between particles and lights
+    with pytest.warns(DeprecationWarning, match=r"RenderPasses.add\(order=0\)"):
+        passes.add(lambda frame: None, name="old", order=0)  # between tile maps and particles
     names = passes.names("before")
-    assert names.index("particles") < names.index("old") < names.index("lighting")
+    assert names.index("tilemap") < names.index("old") < names.index("particles")

@@ -186,7 +186,7 @@ def test_font_family_is_read_from_the_file(tmp_path: Path):
 def test_preload_reports_progress_and_collects_failures(store: Assets):
     job = store.preload(["beep.wav", "blip.wav", "missing.wav", "theme.wav"])
     assert (job.loaded, job.queued, job.progress, job.done) == (0, 4, 0.0, False)
-    assert job.step(budget=float("inf"), max_items=2) == 2  # no timing in a test
+    assert job.step(budget=float("inf"), max_items=2) == 2  # no clock in the test
     assert (job.loaded, job.progress) == (2, 0.5)
     assert store.is_cached("beep.wav") and not store.is_cached("theme.wav")
     with pytest.raises(AssetError) as info:

@@ -68,7 +68,7 @@ def test_polygon_hull_like_box2d_and_bad_counts() -> None:
 def test_bad_fixture_leaves_no_body() -> None:
     world = b2.b2World()
     with pytest.raises(KgeError):
-        world.CreateDynamicBody(fixtures=b2.b2FixtureDef(shape=b2.b2CircleShape(radius=0)))
+        world.CreateDynamicBody(fixtures=b2.b2FixtureDef(shape=b2.b2CircleShape(radius=-1)))
     assert world.bodies == [] and world.bodyCount == 0
 
 

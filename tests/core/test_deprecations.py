@@ -41,7 +41,7 @@ def test_particle_choices_take_enums_and_still_the_strings() -> None:
         em.collide = "bounce"  # type: ignore[assignment]
     assert em.collide is ParticleCollision.BOUNCE
     with pytest.raises(ValidationError, match=r"blend must be one of Blend.ALPHA, Blend.ADDITIVE"):
-        ParticleEmitter(blend="multiply")  # type: ignore[arg-type]
+        ParticleEmitter(blend="sideways")  # type: ignore[arg-type]
 
 
 def test_clip_loop_takes_an_enum_and_still_the_strings() -> None:

@@ -59,8 +59,9 @@ def test_default_app_has_the_default_plugins_in_order() -> None:
     app = App(hello, headless=True)
     names = [p.name for p in app.plugins]
     assert names == [
-        "BehaviourPlugin", "PhysicsPlugin", "AudioPlugin", "RenderPlugin", "AnimationPlugin",
-        "ParticlesPlugin", "LightingPlugin", "UIPlugin", "TilemapPlugin",
+        "BehaviourPlugin", "PhysicsPlugin", "CharacterPlugin", "AudioPlugin", "RenderPlugin",
+        "AnimationPlugin", "ParticlesPlugin", "LightingPlugin", "UIPlugin", "TilemapPlugin",
+        "DebugPlugin",
     ]
     assert [p.name for p in app.world.plugins] == names
     assert [type(p).__name__ for p in kge.default_plugins()] == names

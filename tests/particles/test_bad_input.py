@@ -41,7 +41,7 @@ NAN = float("nan")
         ("speed", (-1.0, 1.0), "speed must be >= 0"),
         ("max_particles", 0, "max_particles must be in 1..1000000"),
         ("max_particles", 10**9, "max_particles must be in 1..1000000"),
-        ("blend", "multiply", "blend must be one of"),
+        ("blend", "overlay", "blend must be one of"),
         ("space", "screen", "space must be one of"),
         ("collide", "stick", "collide must be one of"),
         ("bounciness", 2.0, "bounciness must be in"),

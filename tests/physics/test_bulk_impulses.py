@@ -181,8 +181,8 @@ def test_distinct_awake_bodies_take_the_numpy_path_and_equal_the_calls_one_by_on
 
 def _spy_ccd_reads(monkeypatch: pytest.MonkeyPatch) -> list[object]:
     """What each step's continuous collision is handed as its read, and a fresh read."""
-    from kge.physics.bulk import BodyReader
     from kge.physics.ccd import ContinuousCollision
+    from kge.physics.cp.bulk import BodyReader
     from kge.physics.sync import FIELDS
 
     seen: list[object] = []

@@ -24,7 +24,7 @@ from kge.physics.ccd import obstacles as obstacles_module
 from kge.physics.ccd.obstacles import Obstacles
 from kge.physics.ccd.sorted_boxes import SortedBoxes, _full_pass
 from kge.physics.ccd.sweep import bounds_of
-from kge.physics.static_bulk import add_shapes, chain_segments
+from kge.physics.cp.static_bulk import add_shapes, chain_segments
 
 _SPECIAL = [math.nan, math.inf, -math.inf]
 

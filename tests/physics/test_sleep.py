@@ -25,6 +25,26 @@ def test_free_body_sleeps_after_half_a_second(zero_g: Sim) -> None:
     assert step is not None and abs(step - 30) <= 5
 
 
+@pytest.mark.parametrize(("linear", "angular"), [(0.5, 0.0), (0.0, 2.0), (0.5, 2.0)])
+def test_a_damped_body_sleeps_after_half_a_second(zero_g: Sim, linear: float, angular: float) -> None:
+    """Damping used to restart the body's sleep clock every substep (pybox2d's
+    apply_force example: its damped ship never slept)."""
+    e = zero_g.dynamic(Box(0.5, 0.5), body=RigidBody(linear_damping=linear, angular_damping=angular))
+    step = _asleep_step(zero_g, e)
+    assert step is not None and abs(step - 30) <= 5
+
+
+def test_a_damped_body_slows_down_then_sleeps(sim: Sim) -> None:
+    sim.ground()
+    e = sim.dynamic(Box(0.5, 0.5), 0.0, 0.515,
+                    body=RigidBody(velocity=(2.0, 0.0), linear_damping=2.0), friction=0.0)
+    sim.step(60)
+    assert 0.5 < sim.t(e).x < 1.0 and sim.rb(e).awake  # damped: 1 m undamped by now
+    step = _asleep_step(sim, e, 400)
+    assert step is not None
+    assert sim.t(e).x < 1.05  # Box2D's 2 m/s under c = 2 coasts 1 m in all
+
+
 def test_slow_drifter_sleeps_and_freezes(zero_g: Sim) -> None:
     slow = zero_g.dynamic(Box(0.5, 0.5), body=RigidBody(velocity=(0.009, 0.0)))
     fast = zero_g.dynamic(Box(0.5, 0.5), 5.0, body=RigidBody(velocity=(0.011, 0.0)))
@@ -71,12 +91,26 @@ def test_awake_is_two_way(sim: Sim) -> None:
     assert not sim.rb(f).awake
 
 
-def test_allow_sleep_false_never_sleeps(sim: Sim) -> None:
+@pytest.mark.parametrize(("drop", "density"), [(0.0, 1.0), (0.085, 1.0), (0.085, 0.0)])
+def test_allow_sleep_false_never_sleeps(sim: Sim, drop: float, density: float) -> None:
     sim.ground()
-    e = sim.dynamic(Box(0.5, 0.5), 0.0, 0.515, body=RigidBody(allow_sleep=False))
+    e = sim.dynamic(Box(0.5, 0.5), 0.0, 0.515 + drop, body=RigidBody(allow_sleep=False),
+                    density=density)
+    # (a massless box dropped onto the ground, Box2D's mass of 1 kg with no rotation,
+    # used to doze off every 0.5 s: pybox2d's edge_test example)
     assert _asleep_step(sim, e, 120) is None
     sim.rb(e).allow_sleep = True
     assert _asleep_step(sim, e, 60) is not None
+
+
+def test_a_body_that_may_not_sleep_keeps_its_island_awake(sim: Sim) -> None:
+    """Box2D sleeps an island only when every body in it may sleep and has rested."""
+    sim.ground()
+    low = sim.dynamic(Box(0.5, 0.5), 0.0, 0.6, body=RigidBody(allow_sleep=False), density=0.0)
+    high = sim.dynamic(Box(0.5, 0.5), 0.0, 1.7)
+    apart = sim.dynamic(Box(0.5, 0.5), 3.0, 0.6)
+    assert _asleep_step(sim, high, 150) is None
+    assert sim.rb(low).awake and not sim.rb(apart).awake
 
 
 def test_sleep_disabled_in_settings_never_sleeps_and_awake_false_is_safe() -> None:

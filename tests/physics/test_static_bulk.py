@@ -1,4 +1,4 @@
-"""The bulk chain path (kge.physics.static_bulk) makes shapes pymunk treats as its own."""
+"""The bulk chain path (kge.physics.cp.static_bulk) makes shapes pymunk treats as its own."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ import pymunk
 import pytest
 
 from kge.physics.ccd.obstacles import Obstacles
-from kge.physics.static_bulk import (
+from kge.physics.cp.static_bulk import (
     add_shapes,
     chain_ends,
     chain_segments,

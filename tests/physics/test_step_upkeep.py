@@ -11,12 +11,12 @@ import pymunk
 import pymunk.batch as pb
 import pytest
 
-from kge.physics.bulk import BodyReader
 from kge.physics.ccd import ContinuousCollision
 from kge.physics.ccd import sweep as sweep_module
 from kge.physics.ccd.obstacles import Obstacles
+from kge.physics.cp.bulk import BodyReader
+from kge.physics.cp.static_bulk import add_shapes, chain_segments
 from kge.physics.speed_cap import SpeedCap
-from kge.physics.static_bulk import add_shapes, chain_segments
 
 _VELOCITIES = pb.BodyFields.VELOCITY | pb.BodyFields.ANGULAR_VELOCITY
 DT = 1.0 / 60.0

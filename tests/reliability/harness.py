@@ -16,12 +16,12 @@ import sys
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import ffi, lib
 
 from kge.components.collider import Collider
 from kge.components.joints import Joint
 from kge.components.rigidbody import RigidBody
 from kge.components.transform import Transform
+from kge.physics.cp import body_handle, ffi, lib, shape_handle
 from kge.physics.events import PhysicsEvents
 from kge.physics.resource import Physics
 from kge.physics.settings import PhysicsSettings
@@ -292,14 +292,14 @@ def contact_graph_problems(space: pymunk.Space) -> list[str]:
     Only pointers are compared (never dereferenced through Python), so a dangling
     arbiter is reported instead of crashing.
     """
-    shapes = {_addr(s._shape) for s in space.shapes}
-    bodies = {_addr(b._body) for b in space.bodies} | {_addr(space.static_body._body)}
+    shapes = {_addr(shape_handle(s)) for s in space.shapes}
+    bodies = {_addr(body_handle(b)) for b in space.bodies} | {_addr(body_handle(space.static_body))}
     problems = []
     pa, pb = ffi.new("cpShape **"), ffi.new("cpShape **")
     ba, bb = ffi.new("cpBody **"), ffi.new("cpBody **")
     for body in list(space.bodies):
         _seen.clear()
-        lib.cpBodyEachArbiter(body._body, _collect, ffi.NULL)
+        lib.cpBodyEachArbiter(body_handle(body), _collect, ffi.NULL)
         arbs = list(_seen)
         _seen.clear()
         if len({_addr(a) for a in arbs}) != len(arbs):

@@ -182,14 +182,14 @@ def _bouncing_balls(world, debug: DebugDraw | None) -> None:
 
 @pytest.mark.parametrize("debug", [None, DebugDraw(enabled=False), DebugDraw(contacts=False)])
 def test_contact_markers_are_not_kept_while_they_are_not_drawn(make_app, debug) -> None:
-    from kge.physics.events import PhysicsEvents
+    from kge.physics.events import ContactBegin
 
     app = make_app(lambda world: _bouncing_balls(world, debug))
     app.render()  # the renderer now records every fixed step
     begins = 0
     for _ in range(600):
         app.step()
-        begins += len(app.world.resource(PhysicsEvents).contact_begin)
+        begins += len(app.world.events(ContactBegin))
     assert begins > 100
     assert len(app.world.get_system(RenderSystem).view.debug._contacts) == 0
 

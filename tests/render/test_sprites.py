@@ -8,10 +8,12 @@ import numpy as np
 import pytest
 
 from kge import Transform
+from kge.assets import AssetDecodeError
 from kge.components.camera import Camera
 from kge.components.sprite import Sprite
 from kge.errors import ValidationError
 from kge.render.images import from_array, solid
+from kge.testing import write_png
 
 from .conftest import SIZE, bbox, mask, pixels
 
@@ -260,18 +262,29 @@ def test_a_new_scene_draws_its_own_world(make_app):
 
 def test_a_bad_image_does_not_lose_other_sprites(make_app, tmp_path):
     state = {}
-    (tmp_path / "nope.png").write_bytes(b"not a png")  # found at spawn, undecodable at draw
+    png = tmp_path / "nope.png"
+    write_png(np.full((2, 2, 4), 255, np.uint8), png)  # a good header at spawn...
 
     def scene(world):
-        state["bad"] = world.spawn(Transform(), Sprite(str(tmp_path / "nope.png")))
+        state["bad"] = world.spawn(Transform(), Sprite(str(png)))
         world.spawn(Transform(2, 0), Sprite(solid(4, 4, RED), size=(1, 1)))
 
     app = make_app(scene)
+    png.write_bytes(b"not a png")  # ...then the file breaks before the first draw
     with pytest.raises(ValidationError, match=f"entity {state['bad']}, Sprite.image"):
         app.render()
     app.world.get(state["bad"], Sprite).image = solid(2, 2, BLUE)  # fixed: both draw now
     px = pixels(app)
     assert mask(px, RED).any() and mask(px, BLUE).any()
+
+
+def test_an_undecodable_image_is_refused_at_the_spawn(make_app, tmp_path):
+    (tmp_path / "nope.png").write_bytes(b"not a png")
+    app = make_app(lambda world: None)
+    before = sorted(app.world.entities())
+    with pytest.raises(AssetDecodeError, match=r"Sprite\.image: asset .*nope\.png.* not an image"):
+        app.world.spawn(Transform(), Sprite(str(tmp_path / "nope.png")))
+    assert sorted(app.world.entities()) == before
 
 
 def test_sprites_keep_moving_after_a_neighbour_is_despawned(make_app):

@@ -7,7 +7,7 @@ import pytest
 
 from kge import Transform
 from kge.components.camera import Camera
-from kge.components.text import Text, TextStyle
+from kge.components.text import Text, TextAlign, TextStyle
 from kge.errors import ValidationError
 from kge.render.images import PixelImage, solid
 from kge.render.text import (
@@ -73,9 +73,9 @@ def test_measured_line_boxes_hold_the_drawn_ink(make_app):
 
 def test_right_alignment_lines_up_the_right_edges(make_app):
     px = draw(make_app, hud("wide line here\nshort\nmid one", size=14, width=150.0,
-                            align="right"), size=(200, 160))  # fmt: skip
+                            align=TextAlign.RIGHT), size=(200, 160))  # fmt: skip
     lit = ink(px)
-    box = measure("wide line here\nshort\nmid one", size=14, width=150.0, align="right")
+    box = measure("wide line here\nshort\nmid one", size=14, width=150.0, align=TextAlign.RIGHT)
     rights = []
     for line in box.lines:
         rows = lit[int(20 + line.y) + 2 : int(20 + line.y + line.height) - 2]

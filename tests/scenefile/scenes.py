@@ -13,17 +13,22 @@ from kge import (
     AudioListener,
     AudioSource,
     Behaviour,
+    Bloom,
     BodyType,
     Box,
     BurstOnHit,
     Button,
     Camera,
     CameraShake,
+    Capsule,
     Chain,
+    CharacterBody,
+    CharacterMode,
     Circle,
     Clip,
     Collider,
     DebugDraw,
+    DirectionalLight,
     DistanceJoint,
     Dropdown,
     Edge,
@@ -35,11 +40,13 @@ from kge import (
     Label,
     Light,
     Lighting,
+    Material,
     MotorJoint,
     MouseJoint,
     Name,
     OneWayPlatform,
     Panel,
+    ParticleAttractor,
     ParticleEmitter,
     PhysicsSettings,
     Polygon,
@@ -51,6 +58,7 @@ from kge import (
     RopeJoint,
     Script,
     ScrollList,
+    Shader,
     ShadowCaster,
     Slider,
     Sprite,
@@ -60,6 +68,7 @@ from kge import (
     Transform,
     UIImage,
     UINode,
+    Vignette,
     WeldJoint,
     WheelJoint,
     World,
@@ -149,7 +158,12 @@ def everything(world: World, art: Path) -> None:
                 Light(color=(255, 240, 200), radius=6.0, shadows=True), AudioListener(),
                 Camera(zoom=2.0, follow=hull, bounds=(-20.0, -5.0, 20.0, 15.0)),
                 CameraShake(decay=2.0))
-    world.spawn(Transform(2.0, 1.0), draw.Circle(0.5, segments=12), Name("Dot"))
+    world.spawn(Transform(2.0, 1.0), draw.Circle(0.5, segments=12), Name("Dot"),
+                Material(Shader("uniform float glow;\nvec4 effect(vec4 c, sampler2D t, vec2 u, "
+                                "vec2 w) { return c * glow; }", name="glow"), {"glow": 1.5}))
+    world.spawn(DirectionalLight(angle=-1.2, shadows=True, shadow_softness=0.1),
+                Camera(viewport=(0.75, 0.75, 0.25, 0.25), layers=(0, 2), order=1,
+                       background=(0, 0, 40), post=(Bloom(intensity=2.0), Vignette())))
     world.spawn(Transform(3.0, 1.0), draw.Triangle((0.0, 0.0), (1.0, 0.0), (0.0, 1.0)))
     world.spawn(Transform(4.0, 1.0), draw.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]))
     world.spawn(Transform(5.0, 1.0), draw.Line((0.0, 0.0), (1.0, 1.0), thickness=0.1))
@@ -161,6 +175,7 @@ def everything(world: World, art: Path) -> None:
         rate=20.0, shape=EmitBox(1.0, 0.5), lifetime=(0.5, 1.0), color=((255, 0, 0), (0, 0, 255)),
         seed=7, texture=str(art / "art" / "ship.png")))
     world.spawn(Transform(7.5, 1.0), BurstOnHit(emitter, count=5))
+    world.spawn(Transform(8.0, 2.0), ParticleAttractor(strength=-4.0, radius=2.5))
     panel = world.spawn(UINode(anchor="top_left", width=200.0, height="auto", layout="column"),
                         Panel(color=(20, 20, 20, 200)))
     for widget in (Label("Score", size=18.0), Button("Go", image=str(art / "art" / "ship.png")),
@@ -172,4 +187,6 @@ def everything(world: World, art: Path) -> None:
     world.spawn(Transform(9.0, 1.0), MapObject("m.tmx", "objects", 3, "door", "Door", "point",
                                                {"locked": True, "keys": 2}))
     world.spawn(TileCollider("ground", "outline", (0, 0, 4, 1)))
+    world.spawn(Transform(-6.0, 1.0), CharacterBody(Capsule(0.3, 0.8), jump_speed=6.5,
+                                                    step_height=0.2, mode=CharacterMode.TOP_DOWN))
     assert ground and math.isfinite(world.get(hull, Transform).x)

@@ -83,7 +83,7 @@ def test_loaded_scene_steps_exactly_as_the_original(folder: Path) -> None:
     app.step(300)
     loaded.step(300)
     assert poses(loaded.world) == poses(app.world)
-    assert len(poses(app.world)) == 5
+    assert len(poses(app.world)) == 6  # five bodies and a character
 
 
 def test_saved_mid_flight_contact_free_bodies_continue_exactly(tmp_path: Path) -> None:

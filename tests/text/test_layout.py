@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from kge.components.text import Text, TextStyle
+from kge.components.text import Text, TextAlign, TextOverflow, TextStyle, VerticalAlign
 from kge.errors import ValidationError
 from kge.text.layout import MonoFace, MonoSource, layout
 from kge.text.markup import Span, parse, spans_of
@@ -55,7 +55,7 @@ def test_no_wrap_keeps_one_line_per_paragraph():
     assert texts(out) == ["aaa bbb ccc"]
 
 
-@pytest.mark.parametrize(("align", "x"), [("left", 0.0), ("center", 2 * GLYPH), ("right", 4 * GLYPH)])
+@pytest.mark.parametrize(("align", "x"), [(TextAlign.LEFT, 0.0), (TextAlign.CENTER, 2 * GLYPH), (TextAlign.RIGHT, 4 * GLYPH)])
 def test_alignment_places_each_line_in_the_box(align, x):
     out = lay("ab\nabcdef", width=6 * GLYPH, align=align)
     assert out.lines[0].x == pytest.approx(x)
@@ -65,7 +65,7 @@ def test_alignment_places_each_line_in_the_box(align, x):
 
 
 def test_justify_stretches_wrapped_lines_but_not_the_last():
-    out = lay("a b c dd eee", width=9 * GLYPH, align="justify")
+    out = lay("a b c dd eee", width=9 * GLYPH, align=TextAlign.JUSTIFY)
     assert texts(out) == ["a b c dd", "eee"]
     assert out.lines[0].width == pytest.approx(9 * GLYPH)  # 3 gaps share the extra glyph
     d = [g.x for g in out.glyphs if g.char == "d"]
@@ -91,7 +91,7 @@ def test_boxes_scale_exactly_with_the_font_size():
 
 
 def test_clip_keeps_whole_lines_that_fit_the_height():
-    out = lay("a\nb\nc\nd", height=2.5 * LINE, overflow="clip")
+    out = lay("a\nb\nc\nd", height=2.5 * LINE, overflow=TextOverflow.CLIP)
     assert texts(out) == ["a", "b"] and out.truncated
     assert out.height == pytest.approx(2.5 * LINE)
     visible = lay("a\nb\nc\nd", height=2.5 * LINE)
@@ -99,35 +99,35 @@ def test_clip_keeps_whole_lines_that_fit_the_height():
 
 
 def test_ellipsis_ends_the_last_line_that_fits():
-    out = lay("one two three four five six", width=9 * GLYPH, max_lines=2, overflow="ellipsis")
+    out = lay("one two three four five six", width=9 * GLYPH, max_lines=2, overflow=TextOverflow.ELLIPSIS)
     assert len(out.lines) == 2 and out.truncated
     assert out.lines[1].text.endswith("\u2026")
     assert all(ln.width <= 9 * GLYPH + 1e-6 for ln in out.lines)
 
 
 def test_ellipsis_shortens_unwrapped_lines_to_the_width():
-    out = lay("a very long single line", width=10 * GLYPH, wrap=False, overflow="ellipsis")
+    out = lay("a very long single line", width=10 * GLYPH, wrap=False, overflow=TextOverflow.ELLIPSIS)
     assert out.lines[0].text == "a very lo\u2026" and out.lines[0].width <= 10 * GLYPH
 
 
 def test_ellipsis_falls_back_to_dots_when_the_face_lacks_the_glyph():
     src = MonoSource()
     src.face = MonoFace(missing="\u2026")
-    out = lay("abcdefghijk", source=src, width=6 * GLYPH, wrap=False, overflow="ellipsis")
+    out = lay("abcdefghijk", source=src, width=6 * GLYPH, wrap=False, overflow=TextOverflow.ELLIPSIS)
     assert out.lines[0].text == "abc..."
 
 
 def test_shrink_lowers_the_size_until_the_text_fits():
-    out = lay("make this fit", width=10 * GLYPH, height=LINE, overflow="shrink")
+    out = lay("make this fit", width=10 * GLYPH, height=LINE, overflow=TextOverflow.SHRINK)
     assert out.scale < 1.0 and len(out.lines) == 1
     assert out.lines[0].width <= 10 * GLYPH + 1e-6
     assert out.lines[0].width > 9 * GLYPH  # the largest size that fits, not any smaller one
-    assert lay("fits", width=10 * GLYPH, overflow="shrink").scale == 1.0
+    assert lay("fits", width=10 * GLYPH, overflow=TextOverflow.SHRINK).scale == 1.0
 
 
 def test_valign_places_the_block_in_a_taller_box():
     top = lay("a", height=100.0)
-    bottom = lay("a", height=100.0, valign="bottom")
+    bottom = lay("a", height=100.0, valign=VerticalAlign.BOTTOM)
     assert top.lines[0].y == pytest.approx(100.0 - LINE)
     assert bottom.lines[0].y == pytest.approx(0.0)
 

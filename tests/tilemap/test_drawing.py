@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pytest
 
 from kge import App
 from kge.components.camera import Camera
@@ -17,11 +18,10 @@ from kge.tilemap import load_map
 from kge.tilemap.model import TILED_FLIP_H, TILED_FLIP_V
 from kge.tilemap.writer import TileLayerSpec
 
-from .maps import ANIM_A, COLORS, GROUND, MARK, ONE_WAY, write_level
+from .maps import ANIM_A, COLORS, DECOR, GROUND, MARK, ONE_WAY, write_level
 
 SIZE = (200, 160)
 PPM = 20  # window pixels per metre; a tile is 1 m
-
 
 
 def render(apps: list[App], setup: Any) -> tuple[App, np.ndarray]:
@@ -180,3 +180,130 @@ def test_tint_offset_parallax_and_image_layers(tmp_path: Path, apps: list[App]) 
     px = frame_pixels(app)
     assert at(px, 7.5, 2.5) == COLORS[1]  # same screen spot as before (at() assumes centre 5, 4)
     assert at(px, 1.5, 1.5) == COLORS[0]  # the offset tile, 2 m to the left on screen
+
+
+def test_no_seams_or_bleeding_between_tiles_at_any_camera(tmp_path: Path, apps: list[App]) -> None:
+    """A block of one tile shows only that tile's colour inside: no gap to the
+    background, no pixel of the sheet's neighbouring tiles, wherever the camera sits
+    (between pixels, zoomed out below one pixel per texel, zoomed in)."""
+    from kge.render.setup import frame_pixels
+
+    g = np.zeros((8, 10), np.int64)
+    g[1:7, 1:9] = DECOR  # grey; its neighbours in the sheet are cyan, white, green, yellow
+    path = write_level(tmp_path, g)
+
+    def setup(world: Any) -> None:
+        world.insert_resource(Camera(center=(5.0, 4.0), pixels_per_meter=PPM))
+        load_map(world, path)
+
+    app, _ = render(apps, setup)
+    cam = app.world.resource(Camera)
+    rng = np.random.default_rng(1)
+    # seeded cameras, with three that bled a column of the next tile before the fix
+    cameras = [((5.6536507, 4.7710405), 27.433149), ((4.8936259, 3.7437091), 20.651738),
+               ((5.4347435, 3.5526260), 7.962957)]  # fmt: skip
+    cameras += [((float(rng.uniform(4, 6)), float(rng.uniform(3, 5))), float(rng.uniform(3, 40)))
+                for _ in range(40)]  # fmt: skip
+    bad = []
+    for center, ppm in cameras:
+        cam.center, cam.pixels_per_meter = center, ppm
+        app.render()
+        px = frame_pixels(app)
+        # the block covers x in [1, 9), y in [1, 7); look two pixels inside its edges
+        x0 = int(np.ceil(SIZE[0] / 2 + (1.0 - center[0]) * ppm)) + 2
+        x1 = int(np.floor(SIZE[0] / 2 + (9.0 - center[0]) * ppm)) - 2
+        y0 = int(np.ceil(SIZE[1] / 2 + (1.0 - center[1]) * ppm)) + 2
+        y1 = int(np.floor(SIZE[1] / 2 + (7.0 - center[1]) * ppm)) - 2
+        inside = px[max(y0, 0) : min(y1, SIZE[1]), max(x0, 0) : min(x1, SIZE[0]), :3].astype(int)
+        assert inside.size > 0
+        off = np.abs(inside - np.array(COLORS[6])).max(axis=-1) > 10
+        if off.any():
+            bad.append((center, ppm, int(off.sum()), tuple(inside[off][0])))
+    assert not bad, f"pixels off the tile's colour (camera, ppm, count, first): {bad}"
+
+
+@pytest.mark.parametrize("ppm", [20.0, 13.7])
+def test_a_bounded_follow_camera_never_shows_past_the_map(
+    tmp_path: Path, apps: list[App], ppm: float
+) -> None:
+    """A camera clamped to the map's bounds, following a body from the map's corner
+    out: no frame shows a strip of the background at a map edge (neither the first,
+    drawn before the camera system ran, nor those whose drawn pose lags the body)."""
+    from kge import BodyType, RigidBody, Transform, draw
+    from kge.render.setup import frame_pixels
+
+    path = write_level(tmp_path, np.full((12, 40), DECOR, np.int64))
+
+    def setup(world: Any) -> None:
+        m = load_map(world, path)
+        mover = world.spawn(Transform(3.0, 3.0),
+                            RigidBody(type=BodyType.KINEMATIC, velocity=(6.0, 3.0)),
+                            draw.Circle(0.3, color=(255, 0, 0)))  # fmt: skip
+        world.spawn(Camera(pixels_per_meter=ppm, follow=mover, bounds=m.bounds, smoothing=0.25))
+
+    app, px = render(apps, setup)
+    strips = []
+    for frame in range(60):
+        dark = px[..., :3].astype(int).sum(-1) < 30
+        if dark.any():
+            strips.append((frame, int(dark.sum())))
+        app.advance(1 / 100)  # frames between fixed steps: the drawn pose is blended
+        app.render()
+        px = frame_pixels(app)
+    assert not strips, f"frames with background showing (frame, pixels): {strips}"
+
+
+TONE = """
+uniform vec3 tone;
+vec4 effect(vec4 color, sampler2D tex, vec2 uv, vec2 world) {
+    vec4 t = texture(tex, uv);
+    return vec4(tone * t.rgb, t.a) * color;
+}
+"""
+
+
+def test_a_tile_layer_drawn_with_a_material(tmp_path: Path, apps: list[App]) -> None:
+    """A Material on a tile layer: its shader draws every tile of that layer (uniforms
+    read each frame, so set() shows at once), other layers stay plain; None undoes it."""
+    import warnings
+
+    from kge.components.material import Material, Shader, ShaderWarning
+    from kge.tilemap.errors import TilemapError
+    from kge.tilemap.runtime import TileMaps
+
+    g = np.zeros((8, 10), np.int64)
+    g[7, :] = GROUND  # bottom row, (200, 60, 40)
+    other = np.zeros((8, 10), np.int64)
+    other[2, 3] = ONE_WAY  # (40, 200, 60), another layer
+    path = write_level(tmp_path, g, extra_layers=[TileLayerSpec("Top", other)])
+    tone = Material(Shader(TONE, name="tone"), {"tone": (0.5, 1.0, 0.0)})
+
+    def setup(world: Any) -> None:
+        world.insert_resource(Camera(center=(5.0, 4.0), pixels_per_meter=PPM))
+        load_map(world, path).set_material("Ground", tone)
+
+    app, px = render(apps, setup)
+    assert at(px, 4.5, 0.5) == (100, 60, 0)  # red halved, green kept, blue gone
+    assert at(px, 3.5, 5.5) == COLORS[1]  # the other layer is drawn plainly
+    tone.set("tone", (1.0, 0.0, 1.0))
+    app.render()
+    from kge.render.setup import frame_pixels
+
+    assert at(frame_pixels(app), 4.5, 0.5) == (200, 0, 40)
+    (tmap,) = app.world.resource(TileMaps).maps
+    tmap.set_material("Ground", None)
+    app.render()
+    assert at(frame_pixels(app), 4.5, 0.5) == COLORS[0]
+    broken = Material(Shader("vec4 effect(vec4 c, sampler2D t, vec2 uv, vec2 w) { return nope; }",
+                             name="broken"))  # fmt: skip
+    tmap.set_material("Ground", broken)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        app.render()
+    assert any(issubclass(w.category, ShaderWarning) and "broken" in str(w.message)
+               for w in caught)  # fmt: skip
+    assert at(frame_pixels(app), 4.5, 0.5) == COLORS[0]  # drawn plainly meanwhile
+    with pytest.raises(TilemapError, match="no tile layer 'Water'"):
+        tmap.set_material("Water", tone)
+    with pytest.raises(TilemapError, match="expected a Material"):
+        tmap.set_material("Ground", "tone")  # type: ignore[arg-type]

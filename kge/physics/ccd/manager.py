@@ -18,11 +18,12 @@ import pymunk
 import pymunk.batch
 
 from kge.errors import ComponentTypeError, ValidationError
-from kge.physics.bulk import BodyReader
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.ccd.obstacles import Nearby, Obstacles
 from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
+from kge.physics.cp import body_shapes, shape_space
+from kge.physics.cp.bulk import BodyReader
 from kge.physics.speed_cap import clamp_one, largest, screen
 from kge.validate import boolean, integer, non_negative, positive
 
@@ -188,7 +189,7 @@ class ContinuousCollision:
         # only the shapes in the space: pymunk keeps a removed shape on its body (a
         # replaced collider's old shapes), which must not be swept nor bound the body
         space = self.space
-        shapes = tuple(s for s in body._shapes if s._space() is space)
+        shapes = tuple(s for s in body_shapes(body) if shape_space(s) is space)
         parts, core, reach = parts_of(body, shapes, self.margin)
         self._tracked[key] = info = Tracked(
             self, body, bullet, parts, core, reach, shapes, extent_of(body, shapes, reach)
@@ -484,7 +485,7 @@ class ContinuousCollision:
             return vel
         vel = vel.copy()
         for row in np.flatnonzero(over):
-            body = self._body(int(ids[row]))
+            body = self._body_by_id(int(ids[row]))
             if body is None:
                 continue
             vx, vy, w = (float(x) for x in vel[row])
@@ -497,7 +498,7 @@ class ContinuousCollision:
                 vel[row, 2] = nw
         return vel
 
-    def _body(self, body_id: int) -> pymunk.Body | None:
+    def _body_by_id(self, body_id: int) -> pymunk.Body | None:
         body = self._bodies.get(body_id) or self._movers.get(body_id)
         body = body or self._obstacles.body(body_id)
         if body is None:  # untracked (e.g. a user-made pymunk body): rare, so a plain scan

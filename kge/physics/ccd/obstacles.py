@@ -14,10 +14,18 @@ from typing import Any
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.gcpause import without_gc
 from kge.physics.ccd.sorted_boxes import SortedBoxes
+from kge.physics.cp import (
+    body_handle,
+    body_shapes,
+    lib,
+    shape_body,
+    shape_handle,
+    shape_hashid,
+    shape_space,
+)
 
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
@@ -25,8 +33,8 @@ _KINEMATIC = pymunk.Body.KINEMATIC
 
 def _pose(body: pymunk.Body) -> tuple[float, float, float]:
     """(x, y, angle) through Chipmunk's getters (no Vec2d)."""
-    p = lib.cpBodyGetPosition(body._body)
-    return (p.x, p.y, lib.cpBodyGetAngle(body._body))
+    p = lib.cpBodyGetPosition(body_handle(body))
+    return (p.x, p.y, lib.cpBodyGetAngle(body_handle(body)))
 
 
 
@@ -97,10 +105,10 @@ class Obstacles:
       ``reindex`` that lags a move by one step is still seen;
     * **type changes**: :meth:`reclassify`, called by ``track``/``untrack``
       (the physics system calls one of them after every type change, and after
-      a collider of the body is replaced: a re-laid chain). A body still of the
+      a collider of the body is replaced: a new chain). A body still of the
       kind its rows were indexed as costs a scan and its own rows, never a walk
-      of ``body.shapes`` (pymunk keeps removed shapes there: a moon re-laid
-      every episode carries every chain it ever had).
+      of ``body.shapes`` (pymunk keeps removed shapes there: terrain rebuilt
+      on every reset carries every chain it ever had).
 
     Queries: :meth:`nearby` finds the rows around many squares at once and
     returns them as :class:`Nearby`, which answers later questions about
@@ -217,14 +225,14 @@ class Obstacles:
         """Index the shapes added since the last scan (see the class docstring)."""
         shapes: Any = self.space.shapes  # a dict keys view: insertion order, reversible
         n = len(shapes)
-        if n == self._count and (n == 0 or next(reversed(shapes))._hashid == self._newest):
+        if n == self._count and (n == 0 or shape_hashid(next(reversed(shapes))) == self._newest):
             return
         added = 0
         newest = self._newest
         seen = []
         row_of, read, hashid = self.row_of, self._read_rows, lib.cpShapeGetHashID
         for shape in reversed(shapes):
-            h = hashid(shape._shape)  # what shape._hashid reads, without the property
+            h = hashid(shape_handle(shape))  # what shape_hashid reads, without a Python call
             if h <= self._newest:
                 break
             added += 1
@@ -256,16 +264,16 @@ class Obstacles:
             if body.body_type == _DYNAMIC:
                 return  # the common case (a dynamic body tracked): nothing of it is indexed
             newest = self._newest
-            if all(s._hashid > newest for s in body._shapes):
+            if all(shape_hashid(s) > newest for s in body_shapes(body)):
                 return  # a new body: the next scan indexes its shapes (they are the newest)
         elif self._same_kind(body, rows[0]):
             self._reread(body, key)
             return
         # only the shapes in the space: pymunk keeps a removed shape on its body, so a
-        # static body whose chain is re-laid every episode carries all its old segments
+        # static body whose chain is rebuilt on every reset carries all its old segments
         # (each would be looked at, then skipped, as in _classify_many)
         space = self.space
-        own = [s for s in body._shapes if s._space() is space]
+        own = [s for s in body_shapes(body) if shape_space(s) is space]
         self._classify_many(own)
         shapes, kept = self.shapes, set(own)
         gone = [shapes[row] for row in self._owner_rows.get(body.id, ())]
@@ -277,9 +285,9 @@ class Obstacles:
         return kind != _DYNAMIC and bool(self.kinematic[row]) == (kind == _KINEMATIC)
 
     def _reread(self, body: pymunk.Body, key: int) -> None:
-        """:meth:`reclassify` of an indexed body whose kind did not change (a re-laid
+        """:meth:`reclassify` of an indexed body whose kind did not change (a replaced
         chain): what the full pass does, without walking every shape pymunk keeps on
-        the body (it keeps removed ones: a moon re-laid every episode carries all its
+        the body (it keeps removed ones: terrain rebuilt on every reset carries all its
         old chains). Its shapes in the space either have rows or joined the space
         since the last scan (a shape gets a new hashid whenever it is added), so a
         scan and its own rows cover them all."""
@@ -290,9 +298,9 @@ class Obstacles:
             shape = shapes[row]
             if shape is None or row in fresh:
                 continue  # just read by the scan
-            if shape._space() is not space:
+            if shape_space(shape) is not space:
                 gone.append(shape)  # removed from the space: what _classify_many drops
-            elif shape._body() is body:
+            elif shape_body(shape) is body:
                 stay.append(shape)
             else:
                 moved.append(shape)
@@ -348,7 +356,7 @@ class Obstacles:
         fresh_moving: list[bool] = []
         gone: list[pymunk.Shape] = []  # rows to drop
         for shape in shapes:
-            body = shape._body()
+            body = shape_body(shape)
             if body is None:
                 kind, key = _DYNAMIC, 0
             else:
@@ -358,11 +366,11 @@ class Obstacles:
                     owners[known[1]] = body
                 kind, key = known
             row = row_of.get(shape)
-            if body is None or kind == _DYNAMIC or shape._space() is not space:
+            if body is None or kind == _DYNAMIC or shape_space(shape) is not space:
                 if row is not None:
                     gone.append(shape)
                 continue
-            bb = get_bb(shape._shape)  # what shape.bb reads, without building a BB
+            bb = get_bb(shape_handle(shape))  # what shape.bb reads, without building a BB
             if row is None:
                 fresh.append(shape)
                 fresh_key.append(key)
@@ -383,7 +391,7 @@ class Obstacles:
             self.any_kinematic |= any(moving)
             self._read_rows.update(rows)
         if gone:
-            # after the new rows: an owner whose shapes were all replaced (a re-laid
+            # after the new rows: an owner whose shapes were all replaced (a replaced
             # chain) never runs out of rows, so the owner table is not rebuilt
             self._drop_many(gone)
 
@@ -447,7 +455,7 @@ class Obstacles:
 
     def _drop_many(self, shapes: list[pymunk.Shape]) -> None:
         """:meth:`_drop` of each shape, with one numpy write and one pass per owner (a
-        re-laid chain's old segments)."""
+        replaced chain's old segments)."""
         row_of, table = self.row_of, self.shapes
         rows = []
         for shape in shapes:

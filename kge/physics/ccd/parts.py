@@ -19,7 +19,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib as _lib
+
+from kge.physics.cp import body_handle, shape_handle
+from kge.physics.cp import lib as _lib
 
 
 @dataclass(slots=True)
@@ -42,7 +44,7 @@ def geometry_of(shape: pymunk.Shape) -> tuple[Any, ...] | None:
     Read through Chipmunk directly: pymunk's ``get_vertices`` builds a Vec2d per
     vertex, and a game spawning a wave of 1,000 boxes tracks 1,000 bodies at once.
     """
-    cp = shape._shape
+    cp = shape_handle(shape)
     if isinstance(shape, pymunk.Circle):
         o = _lib.cpCircleShapeGetOffset(cp)
         return ("circle", _lib.cpCircleShapeGetRadius(cp), o.x, o.y)
@@ -110,7 +112,7 @@ def parts_of(
     segment of a chain, while it slides. Circles and polygons also get a guard:
     a circle of half their core radius at their centre.
     """
-    g = _lib.cpBodyGetCenterOfGravity(body._body)
+    g = _lib.cpBodyGetCenterOfGravity(body_handle(body))
     cog = (g.x, g.y)
     parts: list[Part] = []
     core = math.inf

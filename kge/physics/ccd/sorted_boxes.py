@@ -13,7 +13,7 @@ The sort is not redone at every change. Rows written since it was made are
 (their sorted left edge may be stale). A row that was freed keeps its stale
 place in the window, but its box is NaN, which fails every test. When the
 loose rows outnumber an eighth of the table the sort is redone (O(m log m),
-about 10 µs for 1,000 rows), so a re-laid chain or a moving kinematic body
+about 10 µs for 1,000 rows), so a replaced chain or a moving kinematic body
 costs a few loose rows, not a sort per step.
 
 Every candidate is tested with the same float expressions a full pass uses,

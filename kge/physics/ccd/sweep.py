@@ -22,10 +22,11 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import pymunk
-from pymunk._chipmunk import lib as _lib
 
 from kge.components.filter import Filter
 from kge.physics.ccd.parts import Part
+from kge.physics.cp import body_constraints, body_handle, shape_handle
+from kge.physics.cp import lib as _lib
 from kge.physics.speed_cap import clamp_one
 
 if TYPE_CHECKING:
@@ -89,7 +90,7 @@ class Tracked:
         self.fresh = False
         # read through Chipmunk's getters (body.velocity builds a Vec2d): most calls
         # end at the first test below, an armed body that is not fast this substep
-        cp = body._body
+        cp = body_handle(body)
         v = _lib.cpBodyGetVelocity(cp)
         vx, vy = v.x, v.y
         w = _lib.cpBodyGetAngularVelocity(cp)
@@ -348,7 +349,7 @@ class Tracked:
             moving = shape.body is not None and shape.body.body_type != pymunk.Body.STATIC
             g = reach if moving else motion
             # grown(box, g).intersects(shape.bb), without building either BB
-            bb = _shape_bb(shape._shape)
+            bb = _shape_bb(shape_handle(shape))
             if left - g <= bb.r and bb.l <= right + g and bottom - g <= bb.t and bb.b <= top + g:
                 return True
         return False
@@ -371,7 +372,7 @@ def bounds_of(shapes: tuple[pymunk.Shape, ...]) -> tuple[float, float, float, fl
     """
     box = None
     for shape in shapes:
-        bb = _shape_bb(shape._shape)
+        bb = _shape_bb(shape_handle(shape))
         if box is None:
             box = (bb.l, bb.b, bb.r, bb.t)
             continue
@@ -394,9 +395,9 @@ class JointFree:
 
     Most obstacles (the ground, walls, a tile map's static bodies) are joined to
     nothing, and a body joined to nothing cannot be joined to ``body``: pymunk
-    records every constraint on both of its bodies (``Body._constraints``), so
+    records every constraint on both of its bodies (``body_constraints``), so
     ``other in joint_free`` answers False from ``other``'s own record without
-    walking ``body``'s constraints (about 9 µs for a lander leg) or any cffi call.
+    walking ``body``'s constraints (about 9 µs for a jointed leg) or any cffi call.
 
     >>> a, b, c = pymunk.Body(1, 1), pymunk.Body(1, 1), pymunk.Body(1, 1)
     >>> pivot = pymunk.PivotJoint(a, b, (0, 0)); pivot.collide_bodies = False
@@ -405,18 +406,18 @@ class JointFree:
     (True, False, False)
     """
 
-    __slots__ = ("_bodies", "_body")
+    __slots__ = ("_bodies", "_start")
 
     def __init__(self, body: pymunk.Body) -> None:
-        self._body = body
+        self._start = body
         self._bodies: set[pymunk.Body] | None = None
 
     def __contains__(self, other: pymunk.Body) -> bool:
-        if not other._constraints:  # joined to nothing, so not to ``body``
+        if not body_constraints(other):  # joined to nothing, so not to ``body``
             return False
         bodies = self._bodies
         if bodies is None:
-            bodies = self._bodies = joint_free_bodies(self._body)
+            bodies = self._bodies = joint_free_bodies(self._start)
         return other in bodies
 
 

@@ -32,9 +32,9 @@ from collections.abc import Callable
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.components.tracked import raw_set
+from kge.physics.cp import body_handle, constraint_handle, lib, space_handle
 from kge.physics.joint_api import JointContext, JointHandle, in_space
 from kge.physics.joints.mechanics import is_dynamic
 from kge.physics.joints.positions import MAX_ANGULAR_CORRECTION, MAX_CORRECTION
@@ -308,7 +308,7 @@ class Composite(JointHandle):
         """Remember body B's momentum (for the reaction direction)."""
         body = self.b if is_dynamic(self.b) else self.a
         if is_dynamic(body):
-            cb = body._body
+            cb = body_handle(body)
             v = _get_velocity(cb)
             self._momentum = (v.x, v.y, _get_angular_velocity(cb))
         else:
@@ -345,8 +345,8 @@ class Composite(JointHandle):
             return 0.0, 0.0, 0.0
         body, sign = (self.b, 1.0) if is_dynamic(self.b) else (self.a, -1.0)
         vx0, vy0, w0 = self._momentum
-        g = _get_gravity(self.space._space)
-        cb = body._body
+        g = _get_gravity(space_handle(self.space))
+        cb = body_handle(body)
         m, i = _get_mass(cb), _get_moment(cb)
         v = _get_velocity(cb)
         jx = m * (v.x - vx0 - g.x * dt)
@@ -356,14 +356,14 @@ class Composite(JointHandle):
 
     def step_time(self) -> float:
         """The (sub)step that produced the constraints' current impulses."""
-        h = _get_step(self.space._space)
+        h = _get_step(space_handle(self.space))
         return float(h) if h > 0 else 1.0 / 60.0
 
     def impulse_force(self, constraint: pymunk.Constraint | None) -> float:
         """Force or torque magnitude a constraint applied in the last (sub)step."""
         if constraint is None or not in_space(self.space, constraint):
             return 0.0  # switched off, or out of the space with a disabled body
-        return float(_get_impulse(constraint._constraint)) / self.step_time()
+        return float(_get_impulse(constraint_handle(constraint))) / self.step_time()
 
     def write_reaction(
         self,

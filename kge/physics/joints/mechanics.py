@@ -7,7 +7,7 @@ relative to the origin (as in Box2D), so lever arms are measured from
 mass or inertia here, which is how they drop out of every effective mass.
 
 These run a few times per joint per step, so they call Chipmunk's getters and
-setters directly (``pymunk._chipmunk.lib``, what pymunk's own properties call)
+setters directly (``kge.physics.cp.lib``, what pymunk's own properties call)
 and work in floats: a pymunk ``Vec2d`` property read costs about five times the
 C call it wraps (``body.position`` ~1 µs, ``cpBodyGetPosition`` ~0.15 µs).
 """
@@ -18,7 +18,8 @@ import math
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
+
+from kge.physics.cp import body_handle, lib
 
 DYNAMIC = pymunk.Body.DYNAMIC
 
@@ -36,12 +37,12 @@ _cos, _sin = math.cos, math.sin
 
 
 def is_dynamic(body: pymunk.Body) -> bool:
-    return bool(_get_type(body._body) == DYNAMIC)
+    return bool(_get_type(body_handle(body)) == DYNAMIC)
 
 
 def cog_xy(body: pymunk.Body) -> tuple[float, float]:
     """The centre of gravity in world coordinates, as floats."""
-    cb = body._body
+    cb = body_handle(body)
     c = _local_to_world(cb, _get_cog(cb))
     return c.x, c.y
 
@@ -53,7 +54,7 @@ def cog_world(body: pymunk.Body) -> pymunk.Vec2d:
 
 def inv_mass(body: pymunk.Body) -> tuple[float, float]:
     """(1/m, 1/I) of a body, 0 for static, kinematic and fixed-rotation bodies."""
-    cb = body._body
+    cb = body_handle(body)
     if _get_type(cb) != DYNAMIC:
         return 0.0, 0.0
     m, i = _get_mass(cb), _get_moment(cb)
@@ -77,7 +78,7 @@ def point_mass(body: pymunk.Body, world_point: pymunk.Vec2d, u: pymunk.Vec2d) ->
 
 def shift(body: pymunk.Body, dx: float, dy: float, dangle: float) -> None:
     """Move a dynamic body's centre of gravity by (dx, dy) and turn it about it."""
-    cb = body._body
+    cb = body_handle(body)
     cog = _get_cog(cb)
     c = _local_to_world(cb, cog)
     move_cog(cb, cog.x, cog.y, c.x + dx, c.y + dy, _get_angle(cb) + dangle)
@@ -90,7 +91,7 @@ _journal: dict[Any, tuple[float, float, float]] | None = None
 
 def journal(on: bool) -> dict[Any, tuple[float, float, float]]:
     """Start (``on``) or stop recording the poses bodies had before position passes
-    moved them; returns the record, keyed by Chipmunk body (``body._body``).
+    moved them; returns the record, keyed by Chipmunk body (``body_handle(body)``).
 
     Box2D's position iterations (:mod:`kge.physics.joints.settle`) need the poses
     the step left only when a pass did move something, so they are recorded at

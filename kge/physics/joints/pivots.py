@@ -24,8 +24,8 @@ the same work over all of them at once:
   after the whole pass, so it matches the final poses exactly.
 
 Hinges with a motor or a limit join the batch when pymunk solves those in its
-iterations (``PhysicsSettings.iterated_hinges``, the Box2D-style setting kge.gym's
-LunarLander uses: its 128 legs at N = 64 took a fifth of an env step on the
+iterations (``PhysicsSettings.iterated_hinges``, the Box2D-style setting; 128
+motorised, limited legs in one world took a fifth of a step on the
 per-joint path). Their position pass is the per-joint one's: within each colour,
 the limits first (Box2D's angular projection back to within b2_angularSlop, at
 most 8° per step), then the points; gaps under ``ITERATED_PIVOT_TOLERANCE`` are
@@ -48,9 +48,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pymunk
 import pymunk.batch as pb
-from pymunk._chipmunk import lib
 
 from kge.components.tracked import raw_set
+from kge.physics.cp import body_handle, constraint_handle, lib
 from kge.physics.joints.base import JOLT
 from kge.physics.joints.mechanics import inv_mass, is_dynamic
 from kge.physics.joints.positions import (
@@ -184,8 +184,8 @@ class PivotBatch:
         self.motors = [k for k, j in enumerate(sets) if j.enable_motor]
         self.limits = [k for k, j in enumerate(sets) if j.enable_limit]
         self.torqued = sorted({*self.motors, *self.limits})
-        self._motor_cs = [handles[k].motor._constraint for k in self.motors]  # type: ignore[union-attr]
-        self._limit_cs = [handles[k].limit._constraint for k in self.limits]  # type: ignore[union-attr]
+        self._motor_cs = [constraint_handle(handles[k].motor) for k in self.motors]  # type: ignore[arg-type]
+        self._limit_cs = [constraint_handle(handles[k].limit) for k in self.limits]  # type: ignore[arg-type]
         where = {k: i for i, k in enumerate(self.torqued)}
         self._motor_rows = np.array([where[k] for k in self.motors], dtype=np.intp)
         self._limit_rows = np.array([where[k] for k in self.limits], dtype=np.intp)
@@ -215,9 +215,9 @@ class PivotBatch:
         kind = kinds.pop() if len(kinds) == 1 else object  # object: raw_set each
         self._setters = {f: slot_setter(kind, f) for f in (
             "angle", "speed", "reaction_force", "motor_torque", "reaction_torque")}
-        self.pivots = [h.pivot._constraint for h in handles]  # type: ignore[union-attr]
+        self.pivots = [constraint_handle(h.pivot) for h in handles]  # type: ignore[arg-type]
         self.bodies = bodies
-        self.cbodies = [b._body for b in bodies]
+        self.cbodies = [body_handle(b) for b in bodies]
         self.recs = recs
         self.ids = np.array([b.id for b in bodies[1:]], dtype=np.int64)
         self.ia = np.array([p[0] for p in pairs], dtype=np.intp)
@@ -244,7 +244,7 @@ class PivotBatch:
         for k, body in enumerate(self.bodies):
             im[k], ii[k] = inv_mass(body)
             if k:
-                cb = body._body  # Chipmunk's getters: no Vec2d per read
+                cb = body_handle(body)  # Chipmunk's getters: no Vec2d per read
                 mass[k] = _get_mass(cb)
                 c = _get_cog(cb)
                 cog[k] = complex(c.x, c.y)

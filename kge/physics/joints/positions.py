@@ -17,8 +17,8 @@ from __future__ import annotations
 import math
 
 import pymunk
-from pymunk._chipmunk import lib
 
+from kge.physics.cp import body_handle, lib
 from kge.physics.joints.mechanics import (
     cog_world,
     cross,
@@ -58,7 +58,7 @@ def project_point(a: pymunk.Body, b: pymunk.Body, la: Vec2, lb: Vec2) -> float:
 
     Returns the gap found, m (before the correction, which is at most ``MAX_CORRECTION``).
     """
-    pa, pb = _local_to_world(a._body, la), _local_to_world(b._body, lb)
+    pa, pb = _local_to_world(body_handle(a), la), _local_to_world(body_handle(b), lb)
     return project_gap(a, b, pa.x, pa.y, pb.x, pb.y)
 
 
@@ -73,7 +73,7 @@ def project_gap(a: pymunk.Body, b: pymunk.Body, pax: float, pay: float, pbx: flo
         cx, cy = cx * MAX_CORRECTION / n, cy * MAX_CORRECTION / n
     ima, iia = inv_mass(a)
     imb, iib = inv_mass(b)
-    ca, cb = a._body, b._body
+    ca, cb = body_handle(a), body_handle(b)
     loa, lob = _get_cog(ca), _get_cog(cb)
     ga, gb = _local_to_world(ca, loa), _local_to_world(cb, lob)
     rax, ray = pax - ga.x, pay - ga.y

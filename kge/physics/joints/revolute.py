@@ -21,10 +21,10 @@ import math
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
 from kge.components.joints import RevoluteJoint
 from kge.components.tracked import raw_set
+from kge.physics.cp import body_handle, constraint_handle, lib
 from kge.physics.joint_api import JointContext, register
 from kge.physics.joints.base import (
     PROJECTED_ERROR_BIAS,
@@ -153,7 +153,7 @@ class Revolute(Composite):
             return True
         j = self.settings
         iterated = self.ctx.iterated_hinges
-        ca, cb = self.a._body, self.b._body
+        ca, cb = body_handle(self.a), body_handle(self.b)
         angular = 0.0
         if j.enable_limit:
             # iterated hinges leave Box2D's b2_angularSlop alone, as its position pass
@@ -179,10 +179,10 @@ class Revolute(Composite):
         body can turn: ``track_rotation``), whatever it held before."""
         if c is None or not in_space(self.space, c):
             return 0.0
-        return float(_get_impulse(c._constraint))
+        return float(_get_impulse(constraint_handle(c)))
 
     def read_live(self, j: Any, dt: float) -> None:
-        ca, cb = self.a._body, self.b._body
+        ca, cb = body_handle(self.a), body_handle(self.b)
         raw_set(j, "angle", float(_get_angle(cb) - _get_angle(ca) - self.ref))
         raw_set(j, "speed", float(_get_angular_velocity(cb) - _get_angular_velocity(ca)))
         h = self.h

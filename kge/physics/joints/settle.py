@@ -4,7 +4,7 @@ Box2D ends every step with up to ``positionIterations`` passes in which each
 contact pushes its bodies apart (``b2ContactSolver::SolvePositionConstraints``)
 and each joint pulls its bodies together, stopping early once every contact
 overlaps by less than 3 x b2_linearSlop and every joint is within its slops. The
-two take turns, so a joint built with its anchors apart (Gymnasium's walker has
+two take turns, so a joint built with its anchors apart (a walker built with
 its legs 0.5 m from their hips) closes by folding the legs against the ground,
 not by pushing them into it: the contacts hold while the joints pull.
 
@@ -34,8 +34,8 @@ from collections.abc import Sequence
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk import lib
 
+from kge.physics.cp import body_handle, lib
 from kge.physics.joints.mechanics import DYNAMIC, cross, inv_mass, journal, push_apart
 from kge.physics.joints.positions import LINEAR_SLOP, MAX_CORRECTION
 
@@ -70,18 +70,19 @@ class ContactPoint:
         self.a, self.b = a, b
         self.la, self.lb = _to_local(a, pa, poses), _to_local(b, pb, poses)
         # the normal turns with the body that carries it: a static one never does
-        self.frame = b if _get_type(a._body) == DYNAMIC and _get_type(b._body) != DYNAMIC else a
+        a_moves = _get_type(body_handle(a)) == DYNAMIC
+        self.frame = b if a_moves and _get_type(body_handle(b)) != DYNAMIC else a
         self.nx, self.ny = float(normal.x), float(normal.y)
-        pose = poses.get(self.frame._body)
-        self.angle0 = _get_angle(self.frame._body) if pose is None else pose[2]
+        pose = poses.get(body_handle(self.frame))
+        self.angle0 = _get_angle(body_handle(self.frame)) if pose is None else pose[2]
 
     def solve(self) -> float:
         """Push the bodies apart along the normal (Box2D's rule); return the separation
         found before the push, m."""
         a, b = self.a, self.b
-        ca, cb = a._body, b._body
+        ca, cb = body_handle(a), body_handle(b)
         pa, pb = _local_to_world(ca, self.la), _local_to_world(cb, self.lb)
-        turn = _get_angle(self.frame._body) - self.angle0
+        turn = _get_angle(body_handle(self.frame)) - self.angle0
         nx, ny = self.nx, self.ny
         if turn:
             c, s = math.cos(turn), math.sin(turn)
@@ -107,9 +108,9 @@ class ContactPoint:
 
 
 def _to_local(body: pymunk.Body, point: Any, poses: dict[Any, Pose]) -> tuple[float, float]:
-    pose = poses.get(body._body)
+    pose = poses.get(body_handle(body))
     if pose is None:
-        q = _world_to_local(body._body, (point.x, point.y))
+        q = _world_to_local(body_handle(body), (point.x, point.y))
         return q.x, q.y
     x, y, angle = pose
     c, s = math.cos(angle), math.sin(angle)
@@ -169,7 +170,7 @@ def position_loop(joints: Sequence[Any], iterations: int) -> None:
     bodies: dict[int, pymunk.Body] = {}
     for h in joints:
         for body in (h.a, h.b):
-            cb = body._body
+            cb = body_handle(body)
             if _get_type(cb) == DYNAMIC and not _is_sleeping(cb):
                 bodies[id(body)] = body
     contacts = contacts_of(list(bodies.values()), poses)

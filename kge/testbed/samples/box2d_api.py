@@ -35,12 +35,19 @@ class Program(Script):
 
     def on_start(self) -> None:
         self.b2world.renderer = KgeDraw(self.world, thickness=self.thickness)
-        self.b2world.DrawDebugData()
+        self.draw()
 
     def on_fixed_update(self, dt: float) -> None:
         self.b2world.Step(dt, self.velocity, self.position)
         self.steps += 1
+        self.draw()
+
+    def draw(self) -> None:
+        """One frame of debug drawing, framed by StartDraw/EndDraw as pybox2d's testbed does."""
+        renderer = self.b2world.renderer
+        renderer.StartDraw()
         self.b2world.DrawDebugData()
+        renderer.EndDraw()
 
 
 def _program(world: World, build: Callable[[], b2.b2World], **kw: Any) -> None:
@@ -74,7 +81,7 @@ def hello_world_sample(world: World) -> None:
 @hello_world_sample.claim
 def _box_comes_to_rest_on_the_ground(app: Any) -> None:
     program = _running(app)
-    box = program.b2world.bodies[0]
+    box = program.b2world.bodies[-1]  # oldest first: the ground, then the box
     assert abs(box.position.y - 1.01) < 0.02 and abs(box.angle) < 0.01  # the manual: 1.00
     assert not box.awake  # Box2D's sleep: 0.5 s at rest
     # the box is drawn where it is: a solid polygon around (0, 1) in sleeping grey
@@ -117,7 +124,7 @@ class _Reverser(Program):
 
     def on_key_down(self, key: int) -> None:
         if key == Key.SPACE:
-            motor = self.b2world.joints[0]
+            motor = self.b2world.joints[-1]
             motor.motorSpeed = -motor.motorSpeed
 
 
@@ -131,8 +138,8 @@ def chain_sample(world: World) -> None:
 @chain_sample.claim
 def _chain_holds_and_arm_stays_in_limits(app: Any) -> None:
     program = _running(app)
-    joints = program.b2world.joints  # newest first: the motor, then the chain
-    motor, links = joints[0], joints[1:]
+    joints = program.b2world.joints  # oldest first: the chain, then the motor
+    motor, links = joints[-1], joints[:-1]
     assert len(links) == LINKS
     assert max((j.anchorB - j.anchorA).length for j in links) < 0.02
     assert motor.angle <= 0.25 * math.pi + math.radians(2.0) + 1e-6  # on its upper limit

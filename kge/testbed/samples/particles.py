@@ -173,3 +173,29 @@ def _ten_thousand_inside_the_box(app) -> None:  # type: ignore[no-untyped-def]
     for e in named(app.world, "stress"):
         pts = particles.positions(e)
         assert pts[:, 1].min() > -0.05 and np.abs(pts[:, 0]).max() < 8.05
+
+
+@sample("Particles", "Vortex And Orbit", help="Left: sparks born on a ring are pulled in and "
+        "swirled (radial and tangential acceleration). Right: a ring of resting particles "
+        "orbits its centre at half a turn a second.", camera=(0.0, 2.0, 1.0))
+def vortex_and_orbit(world: World) -> None:
+    world.spawn(Transform(-4.0, 2.0), Name("vortex"), ParticleEmitter(
+        rate=200.0, speed=(0.2, 0.5), spread=2 * math.pi, lifetime=(1.5, 2.0),
+        shape=EmitCircle(2.5, edge=True), radial_acceleration=-5.0,
+        tangential_acceleration=2.0, blend=Blend.ADDITIVE, size=(0.12, 0.04),
+        color=((140, 90, 255), (40, 200, 255)), seed=5,
+    ))  # fmt: skip
+    world.spawn(Transform(4.0, 2.0), Name("orbit"), ParticleEmitter(
+        burst=48, emitting=True, speed=0.0, lifetime=1e6, shape=EmitCircle(2.0, edge=True),
+        orbit=math.pi, size=0.15, color=((255, 210, 80),), seed=6,
+    ))  # fmt: skip
+
+
+@vortex_and_orbit.claim
+def _the_ring_keeps_its_radius_and_the_vortex_pulls_in(app) -> None:  # type: ignore[no-untyped-def]
+    ring = _live(app, "orbit") - np.array([4.0, 2.0])
+    assert len(ring) == 48
+    radius = np.hypot(ring[:, 0], ring[:, 1])
+    assert np.allclose(radius, 2.0, atol=1e-2), radius.min()
+    swirl = _live(app, "vortex") - np.array([-4.0, 2.0])
+    assert len(swirl) > 100 and np.median(np.hypot(swirl[:, 0], swirl[:, 1])) < 2.5

@@ -15,8 +15,11 @@ import numpy as np
 
 from kge.components import Name, Transform
 from kge.components.collider import Collider
+from kge.components.material import Material, Shader
 from kge.components.rigidbody import RigidBody
 from kge.components.shapes import Box, Circle
+from kge.components.tween import Tween
+from kge.systems.animation import tweens_of
 from kge.testbed import png
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import named
@@ -205,6 +208,41 @@ def _crates_land_on_ground_plank_and_through_a_gap(app: Any) -> None:
     # the plank's collision band is 4 px under a 2 px gap: its top is 6 - 2/16 m
     assert abs(y[1] - (6.0 - 2 / 16 + 0.4)) < 0.05, f"the second rests on the plank: {y[1]}"
     assert y[2] < 0.0, f"the third falls through the gap in the ground: {y[2]}"
+
+
+RIPPLE = Shader("""
+uniform float strength;
+vec4 effect(vec4 color, sampler2D tex, vec2 uv, vec2 world)
+{
+    // bright bands running along the water, and a shimmer that moves with time
+    float wave = 0.5 + 0.5 * sin(world.x * 2.5 - time * 3.0 + 2.0 * sin(world.y * 4.0));
+    vec4 c = texture(tex, uv) * color;
+    return vec4(c.rgb * (0.8 + strength * wave), c.a);
+}""", name="ripple")
+
+
+@sample(
+    "Tilemaps",
+    "Rippling Water",
+    help="The level's water layer drawn with a Material: a shader whose bands move with "
+    "time, its strength tweened up and down (TileMap.set_material).",
+    camera=(28.0, 2.5, 1.2),
+)
+def rippling_water(world: World) -> None:
+    m = load_map(world, levels()[0], unknown="ignore")
+    ripple = Material(RIPPLE, {"strength": 0.2})
+    m.set_material("Water", ripple)
+    # the same Material on an entity, so a tween can drive it (nothing else draws it there)
+    holder = world.spawn(Name("ripple strength"), ripple)
+    tweens_of(world).start(holder, Tween(Material, "uniforms.strength", 0.9, 1.5,
+                                         ease="sine_in_out", repeat=-1, yoyo=True))  # fmt: skip
+
+
+@rippling_water.claim
+def _the_water_layer_has_its_material_and_it_moves(app: Any) -> None:
+    (tmap,) = maps_in(app.world).maps
+    strength = tmap.materials["Water"].uniforms["strength"]
+    assert 0.2 < strength <= 0.9, f"the tween drives the layer's material: {strength}"
 
 
 @sample(

@@ -2,8 +2,8 @@
 
 ``pymunk.batch.get_space_bodies`` copies chosen fields of every body into a
 buffer in C, which is what makes sync-out, the speed caps and continuous
-collision cheap for thousands of bodies. For a handful of bodies (a Gymnasium
-lander, a unit test) its fixed cost is what remains: each call allocates the
+collision cheap for thousands of bodies. For a handful of bodies (a small
+world, a unit test) its fixed cost is what remains: each call allocates the
 ``pmBatchedData`` struct, looks up the iterator's address, and the caller wraps
 the result in two ``ffi.buffer`` and two ``np.frombuffer`` objects. A step reads
 the space up to ``substeps + 2`` times, so that setup was a third of a small
@@ -30,8 +30,9 @@ from typing import Any
 import numpy as np
 import pymunk
 import pymunk.batch as pb
-from pymunk._chipmunk import ffi as _ffi
-from pymunk._chipmunk import lib as _lib
+
+from kge.physics.cp.capi import ffi as _ffi
+from kge.physics.cp.capi import raw_lib as _lib
 
 _ITERATOR = _ffi.addressof(_lib, "pmSpaceBodyGetIteratorFuncBatched")
 _FLOAT = _ffi.sizeof("cpFloat")

@@ -29,9 +29,9 @@ from typing import Any
 
 import numpy as np
 import pymunk
-from pymunk._chipmunk import ffi, lib
 from pymunk._util import _dead_ref
 
+from kge.physics.cp.capi import ffi, lib
 from kge.physics.tiny import TINY, flush
 
 #: up to this many vertices a chain's tiny coordinates are looked for without numpy
@@ -141,7 +141,7 @@ def reinit_segments(
     Python objects and their attributes stay. Why not ``cpSegmentShapeSetEndpoints``:
     it computes the normal with the opposite sign of ``cpSegmentShapeInit`` (pymunk 7.3).
 
-    Why at all: a new outline of the same topology (an RL episode's terrain)
+    Why at all: a new outline of the same topology (terrain rebuilt on a reset)
     reuses its segments instead of allocating new ones. The shape's hashid is
     not Chipmunk's to reset; the space gives it a new one when it is added again.
     """
@@ -225,7 +225,7 @@ def add_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
 
 def remove_shapes(space: pymunk.Space, shapes: Sequence[pymunk.Shape]) -> None:
     """``space.remove`` of those of ``shapes`` that are in ``space``, without pymunk's
-    per-shape dispatch, asserts and attribute hooks (a re-laid outline's segments).
+    per-shape dispatch, asserts and attribute hooks (a replaced outline's segments).
 
     Same calls, order and bookkeeping as pymunk's ``Space._remove_shape``: each
     shape is kept alive until the next step, its space reference cleared,

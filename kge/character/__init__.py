@@ -1,0 +1,1 @@
+"""Character movement: collide-and-slide against the world in numpy (see kge.systems.character)."""

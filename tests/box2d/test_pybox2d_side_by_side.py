@@ -1,0 +1,151 @@
+"""pybox2d programs run unmodified on pybox2d and on kge.box2d in the same test must end the
+same way: the one-sided platform and breakable body examples (the same framework
+stand-in, the same frames), which examples' bodies fall asleep and when, and where a
+50 m/s impact stops."""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import io
+from typing import Any
+
+import pytest
+
+import kge.box2d as b2
+from kge.box2d.testbed import examples
+from kge.box2d.testbed.headless import HeadlessBackend
+
+pytestmark = pytest.mark.skipif(
+    importlib.util.find_spec("Box2D") is None or examples.examples_dir() is None,
+    reason="pybox2d (box2d 2.3.10, the dev extra) is not installed")
+
+
+class Traced(HeadlessBackend):
+    """Headless frames, with ``probe(test)`` recorded after each."""
+
+    def __init__(self, frames: int, probe: Any) -> None:
+        super().__init__(frames)
+        self.probe = probe
+        self.trace: list[Any] = []
+
+    def run(self, test: Any) -> None:
+        self.test = test
+        for _ in range(self.frames):
+            test.Frame()
+            self.trace.append(self.probe(test))
+            self.frames_run += 1
+
+
+def _both(name: str, frames: int, probe: Any) -> dict[str, Traced]:
+    out = {}
+    for engine in examples.ENGINES:
+        backend = Traced(frames, probe)
+        with contextlib.redirect_stdout(io.StringIO()):
+            examples.run(name, backend, engine)
+        out[engine] = backend
+    return out
+
+
+def _pieces(test: Any) -> list[tuple[float, float]]:
+    return sorted((b.position.x, b.position.y) for b in test.world.bodies if b.type == 2)
+
+
+def test_breakable_body_splits_on_impact_and_its_pieces_stop_where_pybox2d_s_do() -> None:
+    runs = _both("breakable", 240, lambda t: (t.broke, _pieces(t)))
+    broke_at = {e: next(i for i, (broke, _) in enumerate(r.trace) if broke)
+                for e, r in runs.items()}
+    # the 27.8 m/s impact breaks it on landing (pybox2d: frame 166; kge.box2d 167: its
+    # free fall lags Box2D's by one frame over 40 m)
+    assert abs(broke_at["kge"] - broke_at["pybox2d"]) <= 1
+    kge_end, ref_end = runs["kge"].trace[-1][1], runs["pybox2d"].trace[-1][1]
+    assert len(kge_end) == len(ref_end) == 2
+    for (kx, ky), (rx, ry) in zip(kge_end, ref_end, strict=True):
+        # pybox2d's pieces rest at x = 1.1 and 2.04 m; they were thrown 3-5 m when
+        # kge.box2d did not move the centre's velocity with the centre (ResetMassData)
+        assert abs(kx - rx) < 0.4 and abs(ky - ry) < 0.05
+
+
+def _drop(box2d: Any, bullet: bool, onto_dynamic: bool) -> float:
+    """The deepest a circle (r = 0.5) thrown down at 50 m/s gets into the top of a box
+    (negative: inside it) in 30 steps: a static box, or a dynamic box lying on the ground."""
+    world = box2d.b2World(gravity=(0, -10))
+    if onto_dynamic:
+        world.CreateStaticBody(position=(0, -3), shapes=box2d.b2PolygonShape(box=(50, 1)))
+        box = world.CreateDynamicBody(position=(0, -1))
+        box.CreatePolygonFixture(box=(5, 1), density=1)
+    else:
+        box = world.CreateStaticBody(position=(0, -1), shapes=box2d.b2PolygonShape(box=(5, 1)))
+    ball = world.CreateDynamicBody(position=(0, 2), linearVelocity=(0, -50), bullet=bullet)
+    ball.CreateCircleFixture(radius=0.5, density=1)
+    lowest = 9.0
+    for _ in range(30):
+        world.Step(1 / 60, 8, 3)
+        lowest = min(lowest, ball.position.y - 0.5 - (box.position.y + 1))
+    return lowest
+
+
+@pytest.mark.parametrize(("onto_dynamic", "bullet"), [
+    pytest.param(False, False, id="static-box"),
+    pytest.param(False, True, id="static-box-bullet"),
+    pytest.param(True, True, id="dynamic-box-bullet"),
+    pytest.param(True, False, id="dynamic-box"),
+])
+def test_a_50_m_s_impact_stops_where_pybox2d_s_does(onto_dynamic: bool, bullet: bool) -> None:
+    """Box2D's time of impact stops a body at a static one's surface, and a bullet at a
+    dynamic one's too; a plain body hitting a dynamic one goes in and is pushed out."""
+    ref = _drop(examples.pybox2d_module(), bullet, onto_dynamic)
+    got = _drop(b2, bullet, onto_dynamic)
+    slop = b2.b2_linearSlop
+    # pybox2d: +4.4 mm (above), +4.6 mm (bullet on the dynamic box), -189 mm (plain on it)
+    assert (got > -slop) == (ref > -slop), (got, ref)
+    assert got == pytest.approx(ref, abs=0.02)
+
+
+def test_one_sided_platform_holds_the_character_as_pybox2d_does() -> None:
+    runs = _both("one_sided_platform", 180,
+                 lambda t: (t.character.body.position.y, t.character.body.awake))
+    ref = runs["pybox2d"].trace
+    assert ref[-1][0] == pytest.approx(11.005, abs=0.01) and not ref[-1][1]  # landed, asleep
+    for (ky, _), (ry, _) in zip(runs["kge"].trace, ref, strict=True):
+        assert ky == pytest.approx(ry, abs=0.02)
+    assert not runs["kge"].trace[-1][1]
+
+
+def _awake(test: Any) -> int:
+    return sum(1 for body in test.world.bodies if body.type == 2 and body.awake)
+
+
+def _asleep_from(trace: list[int]) -> int:
+    """The first frame from which no dynamic body was awake (len(trace) if none)."""
+    return max((i for i, n in enumerate(trace) if n), default=-1) + 1
+
+
+@pytest.mark.parametrize(("name", "frames"), [
+    ("box_cutter", 330),  # pybox2d: all asleep from frame 279
+    ("breakable", 330),  # 291
+    ("confined", 90),  # 29
+    ("edge_test", 90),  # never: its box may not sleep (allowSleep=False)
+    ("character_collision", 90),  # never: the same for its four characters
+    ("body_types", 120),  # 64: a prismatic joint
+    ("pulley", 330),  # 238
+    ("apply_force", 90),  # 29: its ship is damped
+    pytest.param("collision_filtering", 180, marks=pytest.mark.xfail(strict=True, reason=(
+        "the box held on the ground by a prismatic joint creeps at 2 cm/s on kge"))),  # 103
+    pytest.param("top_down_car", 660, marks=pytest.mark.xfail(strict=True, reason=(
+        "an impulse every step (the tyres' friction) restarts Chipmunk's sleep clock; "
+        "Box2D's only wakes a sleeping body"))),  # 599
+])
+def test_the_example_falls_asleep_as_on_pybox2d(name: str, frames: int) -> None:
+    """Left alone (no key pressed), the example's dynamic bodies fall asleep on both
+    engines at about the same frame (Box2D: the island's bodies at rest 0.5 s), or stay
+    awake on both."""
+    runs = _both(name, frames, _awake)
+    ref, got = runs["pybox2d"].trace, runs["kge"].trace
+    assert got[-1] == ref[-1], f"{got[-1]} bodies awake at frame {frames}, pybox2d {ref[-1]}"
+    if ref[-1]:
+        assert min(got) == min(ref)  # (the bodies that may not sleep never did)
+        return
+    # kge's bodies come to rest along other paths (its integrator and solver are
+    # pymunk's): pybox2d's pulley sleeps from frame 238, kge.box2d's from 262
+    assert abs(_asleep_from(got) - _asleep_from(ref)) <= max(30, _asleep_from(ref) // 4)
