@@ -341,6 +341,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.ui import markdown_lines
 
         out += markdown_lines(report["ui"])
+    if report.get("editor"):
+        from benchmarks import editor as editor_bench
+
+        out += editor_bench.markdown_lines(report["editor"])
     if report.get("game"):
         from benchmarks.particles_lights import game_lines
 
@@ -420,8 +424,8 @@ def main(argv: list[str] | None = None) -> int:
                                progress=progress, seed=args.seed)
     print(table(results))
     fitting = fits(results)
-    sizes = {s.name: s.sizes for s in chosen}
-    labels = {name: {e: fitting_label(n, sizes[name]) for e, n in per.items()}
+    scene_sizes = {s.name: s.sizes for s in chosen}
+    labels = {name: {e: fitting_label(n, scene_sizes[name]) for e, n in per.items()}
               for name, per in fitting.items()}
     print("\nlargest size fitting a 16.7 ms frame (interpolated between measured sizes):")
     for name, per in labels.items():
@@ -470,8 +474,8 @@ def main(argv: list[str] | None = None) -> int:
         from benchmarks import ui as ui_bench
 
         ui_rows, why = ui_bench.bench_section(args.quick, progress)
-        print(why or "\nui, µs per widget and frame (median):\n" + ui_bench.table(
-            {int(n): r for n, r in ui_rows.items()}), file=sys.stderr if why else sys.stdout)
+        print(why or "\nui, µs of CPU per frame (median):\n" + ui_bench.text(ui_rows),
+              file=sys.stderr if why else sys.stdout)
         skipped += [why] if why else []
     game: dict[str, Any] = {}
     if not args.no_game and not args.scene:
@@ -544,6 +548,16 @@ def main(argv: list[str] | None = None) -> int:
             skipped.append(why)
         else:
             print("\ncharacters:", character.table(characters))
+    editor_rows: dict[str, Any] = {}
+    if not args.no_render and not args.scene:
+        from benchmarks import editor as editor_bench
+
+        editor_rows, why = editor_bench.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+        else:
+            print("\neditor (kge edit), µs of CPU per frame (median):")
+            print(editor_bench.table({int(n): r for n, r in editor_rows.items()}))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
     if tiles:
         goals += tilemap.targets(tiles)
@@ -584,6 +598,7 @@ def main(argv: list[str] | None = None) -> int:
         "rendering": drawing,
         "characters": characters,
         "features": features,
+        "editor": editor_rows,
         "targets": goals,
         "skipped": skipped,
     }

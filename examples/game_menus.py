@@ -4,8 +4,10 @@ Each is a small scene built from kge UI entities (``docs/ui-scenes-input.md``):
 
 * :func:`title_menu` — Play (fades into the game), Settings, Quit; keyboard (Tab,
   arrows, Enter), mouse and gamepad (d-pad, A) all work;
-* :func:`settings` — pushed as an overlay: music and effects volume sliders, and one
-  button per rebindable action ("press a key..." rebinds it through ``app.actions``);
+* :func:`settings` — pushed as an overlay, in tabs: Audio (music and effects volume
+  sliders), Controls (a scroll view of one button per rebindable action: "press a
+  key..." rebinds it through ``app.actions``; Reset asks to confirm, then restores the
+  defaults) and Display (UI size and text size, for every scene of the App);
 * :func:`pause` — pushed as an overlay over the frozen game (P, Escape or Start):
   Resume, Settings, Main menu;
 * :func:`hud_label` — a label anchored to a corner of the window.
@@ -16,6 +18,7 @@ them, with any rebinding, across every scene.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable
 from typing import Any
 
@@ -27,15 +30,20 @@ from kge import (
     Behaviour,
     Button,
     ButtonClicked,
+    DialogClosed,
     Fade,
     InputMap,
     Label,
     Panel,
     Script,
+    ScrollView,
     Slider,
+    Tabs,
     UINode,
+    UISettings,
     ValueChanged,
     World,
+    confirm,
     focus,
 )
 
@@ -44,8 +52,15 @@ FADE = Fade(0.4)
 Bindings = dict[str, tuple[Any, ...]]
 
 
+#: each App's action map -> the defaults its game declared (what "Reset" restores)
+_DEFAULTS: weakref.WeakKeyDictionary[InputMap, Bindings] = weakref.WeakKeyDictionary()
+
+
 def bind_defaults(actions: InputMap, defaults: Bindings) -> None:
-    """Bind each action that the map does not know yet (rebinding survives scene changes)."""
+    """Bind each action that the map does not know yet (rebinding survives scene changes).
+
+    A game passes this to ``App(..., bindings=...)`` or calls it from its scenes."""
+    _DEFAULTS[actions] = defaults
     known = set(actions.actions)
     for action, bindings in defaults.items():
         if action not in known:
@@ -116,7 +131,8 @@ class _Volumes(Script):
 
 
 class _Rebind(Script):
-    """Click an action's button, then press a key: the action is bound to that key."""
+    """Click an action's button, then press a key: the action is bound to that key.
+    Reset asks to confirm, then gives every action its default bindings back."""
 
     def __init__(self, buttons: dict[int, str]) -> None:
         self.buttons = buttons
@@ -135,6 +151,20 @@ class _Rebind(Script):
             if ev.entity in self.buttons:
                 self.waiting = ev.entity
                 world.get(ev.entity, Button).text = f"{self.buttons[ev.entity]}: press a key..."
+            elif ev.text == "Reset controls":
+                confirm(world, "Give every action its default keys back?", ok="Reset",
+                        title="Reset controls")  # fmt: skip
+        for closed in world.events(DialogClosed):
+            if closed.text == "Reset":
+                self.reset(actions)
+
+    def reset(self, actions: InputMap) -> None:
+        defaults = _DEFAULTS.get(actions, {})
+        for action in self.buttons.values():
+            if action in defaults:
+                actions.rebind(action, *defaults[action])
+        for button, action in self.buttons.items():
+            self.world.get(button, Button).text = _binding_text(actions, action)
 
 
 def _binding_text(actions: InputMap, action: str) -> str:
@@ -142,22 +172,61 @@ def _binding_text(actions: InputMap, action: str) -> str:
     return f"{action}: {' / '.join(keys) or '-'}"
 
 
+class _Display(Script):
+    """Sliders -> the App's UI scale and text scale (UISettings, shared by its scenes)."""
+
+    def __init__(self, size: int, text: int) -> None:
+        self.size, self.text = size, text
+
+    def on_update(self, dt: float) -> None:
+        settings = self.world.resource(UISettings)
+        for ev in self.world.events(ValueChanged):
+            if ev.entity == self.size:
+                settings.scale = ev.value
+            elif ev.entity == self.text:
+                settings.text_scale = ev.value
+
+
+def _page(world: World, tabs: int) -> int:
+    return world.spawn(UINode(parent=tabs, layout="column", padding=12, spacing=8,
+                              align="stretch"))  # fmt: skip
+
+
+def _labelled_slider(world: World, page: int, text: str, slider: Slider) -> int:
+    world.spawn(UINode(parent=page), Label(text, align="left"))
+    return world.spawn(UINode(parent=page, height=26), slider)
+
+
 def settings(world: World, rebindable: tuple[str, ...] = ()) -> None:
-    """Volumes and key rebinding, as an overlay; Back (or Escape) returns."""
+    """Audio, controls and display settings in tabs, as an overlay; Back (or Escape)
+    returns. The controls scroll (one rebinding button per action)."""
     _dim(world, 150)
-    col = _column(world, "Settings", width=380)
+    col = _column(world, "Settings", width=440)
+    tabs = world.spawn(UINode(parent=col, height=300), Tabs(["Audio", "Controls", "Display"]))
+    audio_page = _page(world, tabs)
     audio = world.resource(Audio)
-    world.spawn(UINode(parent=col), Label("Music volume", align="left"))
-    music = world.spawn(UINode(parent=col, height=26), Slider(0, 1, audio.music_volume, step=0.05))
-    world.spawn(UINode(parent=col), Label("Effects volume", align="left"))
-    sfx = world.spawn(UINode(parent=col, height=26), Slider(0, 1, audio.sfx_volume, step=0.05))
+    music = _labelled_slider(world, audio_page, "Music volume",
+                             Slider(0, 1, audio.music_volume, step=0.05))  # fmt: skip
+    sfx = _labelled_slider(world, audio_page, "Effects volume",
+                           Slider(0, 1, audio.sfx_volume, step=0.05))  # fmt: skip
     world.spawn(Behaviour(_Volumes(music, sfx)))
+    controls = _page(world, tabs)
+    keys = world.spawn(UINode(parent=controls, grow=1, layout="column", spacing=6,
+                              align="stretch"), ScrollView())  # fmt: skip
     actions = world.resource(InputMap)
     buttons = {}
     for action in rebindable:
-        text = _binding_text(actions, action)
-        buttons[world.spawn(UINode(parent=col, height=36), Button(text))] = action
+        label = _binding_text(actions, action)
+        buttons[world.spawn(UINode(parent=keys, height=36), Button(label))] = action
+    world.spawn(UINode(parent=controls, height=36), Button("Reset controls"))
     world.spawn(Behaviour(_Rebind(buttons)))
+    display = _page(world, tabs)
+    ui = world.resource(UISettings)
+    size = _labelled_slider(world, display, "UI size",
+                            Slider(0.75, 1.5, ui.scale, step=0.05))  # fmt: skip
+    text = _labelled_slider(world, display, "Text size",
+                            Slider(1.0, 2.0, ui.text_scale, step=0.1))  # fmt: skip
+    world.spawn(Behaviour(_Display(size, text)))
     back = _button(world, col, "Back")
     world.spawn(Behaviour(_Buttons({"Back": lambda app: app.pop_scene()})))
     world.spawn(Behaviour(_Escape()))

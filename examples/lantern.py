@@ -307,9 +307,15 @@ def won(world: World) -> None:
     ui._button(world, col, "Main menu")
     ui.focus(world, again)
     world.spawn(Behaviour(ui._Buttons({
-        "Play again": lambda app: (app.pop_scene(), app.replace_scene(level, transition=ui.FADE)),
-        "Main menu": lambda app: (app.pop_scene(), app.replace_scene(title, transition=ui.FADE)),
+        "Play again": lambda app: _leave(app, level),
+        "Main menu": lambda app: _leave(app, title),
     })))
+
+
+def _leave(app: App, scene: Any) -> None:
+    """Close the won overlay, then fade the woods into ``scene``."""
+    app.pop_scene()
+    app.replace_scene(scene, transition=ui.FADE)
 
 
 def bind_controls(actions: InputMap) -> None:

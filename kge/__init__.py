@@ -150,20 +150,51 @@ from kge.action_clock import ActionPressed, ActionReleased
 from kge.actions import InputMap, UnknownActionError
 from kge.components.ui import (
     Button,
+    ColorPicker,
+    Dialog,
+    DialogButton,
+    Draggable,
     Dropdown,
+    DropTarget,
     Label,
     Panel,
     ProgressBar,
+    RadioGroup,
+    RichText,
     ScrollList,
+    ScrollView,
     Slider,
+    SpinBox,
+    Style,
+    Tabs,
+    TextArea,
     TextInput,
     Toggle,
+    Tooltip,
+    TreeItem,
+    TreeView,
     UIImage,
     UINode,
 )
 from kge.input import Gamepad, GamepadEvent, TextEvent
 from kge.transitions import Crossfade, Fade, Slide, Wipe  # base class: kge.transitions.Transition
-from kge.ui import ButtonClicked, TextSubmitted, Theme, UIEvents, ValueChanged
+from kge.ui import (
+    ButtonClicked,
+    DialogClosed,
+    DragCancelled,
+    DragStarted,
+    Dropped,
+    FocusChanged,
+    ItemActivated,
+    ItemToggled,
+    TextSubmitted,
+    Theme,
+    TreeDrop,
+    UIEvents,
+    UISettings,
+    ValueChanged,
+)
+from kge.ui.dialogs import confirm, message_box
 
 if TYPE_CHECKING:
     from kge.assets import (
@@ -192,7 +223,7 @@ if TYPE_CHECKING:
     from kge.systems.particles import ParticlesPlugin
     from kge.systems.render import RenderPlugin
     from kge.systems.tilemap import TilemapPlugin
-    from kge.testing import GoldenMismatch, StepTimeout
+    from kge.testing import GoldenMismatch, StepTimeout, UITargetError
 
     # isort: split
     from kge.systems.loading import LoadingScreen
@@ -209,6 +240,7 @@ _LAZY = {
     "ExportError": "kge.export",
     "GoldenMismatch": "kge.testing",
     "StepTimeout": "kge.testing",
+    "UITargetError": "kge.testing",
     "Audio": "kge.audio",
     "SoundHandle": "kge.audio",
     "PixelImage": "kge.render.images",
@@ -423,6 +455,7 @@ __all__ = [
     "TweenHandle",
     "TweenSequence",
     "Tweens",
+    "UITargetError",
     "ValidationError",
     "VerticalAlign",
     "Vignette",
@@ -461,32 +494,58 @@ __all__ += [
     "ActionReleased",
     "Button",
     "ButtonClicked",
+    "ColorPicker",
     "Crossfade",
+    "Dialog",
+    "DialogButton",
+    "DialogClosed",
+    "DragCancelled",
+    "DragStarted",
+    "Draggable",
+    "DropTarget",
     "Dropdown",
+    "Dropped",
     "Fade",
+    "FocusChanged",
     "Gamepad",
     "GamepadEvent",
     "InputMap",
+    "ItemActivated",
+    "ItemToggled",
     "Label",
     "LoadingScreen",
     "Panel",
     "ProgressBar",
+    "RadioGroup",
+    "RichText",
     "ScrollList",
+    "ScrollView",
     "Slide",
     "Slider",
+    "SpinBox",
+    "Style",
+    "Tabs",
+    "TextArea",
     "TextEvent",
     "TextInput",
     "TextSubmitted",
     "Theme",
     "Toggle",
+    "Tooltip",
+    "TreeDrop",
+    "TreeItem",
+    "TreeView",
     "UIEvents",
     "UIImage",
     "UINode",
     "UIPlugin",
+    "UISettings",
     "UnknownActionError",
     "ValueChanged",
     "Wipe",
+    "confirm",
     "focus",
+    "message_box",
 ]
 
 # -- debug tools (docs/debug.md): gizmos, console, live inspector, system timings --

@@ -96,8 +96,7 @@ def _bench(args: list[str]) -> int:
     return int(bench_main(args) or 0)
 
 
-EDIT_HELP = """usage: kge edit [FILE] [--headless --frames N --screenshot PNG]
-                [--game MODULE.py ...]
+EDIT_HELP = """usage: kge edit [FILE] [--game GAME.py ...] [--headless --frames N --screenshot PNG]
 
 The scene editor: a window on the scene file FILE (.scene.toml; a new one when it does
 not exist yet). --game imports a Python file first, so its registered components and

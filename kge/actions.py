@@ -43,7 +43,7 @@ import difflib
 import json
 import math
 import os
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
@@ -53,6 +53,8 @@ from kge.input import PAD_AXES, PAD_BUTTONS, Input
 from kge.keys import Key, Mouse, key_name
 
 BindingLike = int | str
+#: what :meth:`InputMap.declare` takes
+Bindings = dict[str, Any] | str | os.PathLike[str] | Callable[["InputMap"], None]
 
 
 class UnknownActionError(KgeError, KeyError):
@@ -166,6 +168,10 @@ class AxisBinding:
     sticks: tuple[Binding, ...] = ()
     dead_zone: float = 0.2
     invert: bool = False
+
+
+#: the parts of :meth:`InputMap.to_data`, in order
+_PARTS = ("actions", "axes", "vectors", "combos")
 
 
 class InputMap:
@@ -469,11 +475,10 @@ class InputMap:
         """Replace every binding with ``data``; on any error the map is left unchanged."""
         if not isinstance(data, dict):
             raise ValidationError(f"InputMap data must be a dict, got {type(data).__name__}")
-        unknown = sorted(map(str, set(data) - {"actions", "axes", "vectors", "combos"}))
+        unknown = sorted(map(str, set(data) - set(_PARTS)))
         if unknown:
             raise ValidationError(
-                f"InputMap data has unknown keys {unknown} (it takes actions, axes, vectors, "
-                "combos)"
+                f"InputMap data has unknown keys {unknown} (it takes {', '.join(_PARTS)})"
             )
         fresh = InputMap(self.input)
         try:
@@ -499,6 +504,58 @@ class InputMap:
             raise ValidationError(f"InputMap data is malformed: {exc}") from exc
         self._actions, self._axes, self._vectors = fresh._actions, fresh._axes, fresh._vectors
         self.clock.combos = fresh.clock.combos
+
+    def declare(self, bindings: Bindings) -> None:
+        """Add the bindings a game declares, in any of these forms (``kge.run(level,
+        bindings=...)`` and ``App(..., bindings=...)`` call this):
+
+        * ``{"jump": ["key:SPACE", "pad:a"], "move_x": {"negative": ["key:A"],
+          "positive": ["key:D"], "stick": "pad:leftx"}}``: actions (a list, or one
+          binding) and axes (a dict of :meth:`bind_axis`'s arguments);
+        * what :meth:`to_data` returns (``{"actions": ..., "axes": ..., "vectors": ...,
+          "combos": ...}``);
+        * a path to a JSON file of either (what :meth:`save` writes);
+        * a function ``fn(actions)`` that binds in code.
+
+        On any error the map is left as it was.
+        """
+        trial = InputMap(self.input)
+        trial.load_data(self.to_data())
+        if callable(bindings):
+            bindings(trial)
+        else:
+            data: Any = bindings
+            if isinstance(bindings, (str, os.PathLike)):
+                with open(bindings, encoding="utf-8") as f:
+                    try:
+                        data = json.load(f)
+                    except json.JSONDecodeError as exc:
+                        raise ValidationError(f"{os.fspath(bindings)}: not JSON ({exc})") from exc
+            if not isinstance(data, dict):
+                raise ValidationError(
+                    f"bindings must be a dict, a JSON path or a function, got {type(data).__name__}"
+                )
+            if set(data) <= set(_PARTS) and data:
+                merged = trial.to_data()
+                for part in _PARTS:
+                    merged[part].update(dict(data.get(part, {})))
+                trial.load_data(merged)
+            else:
+                for name, spec in data.items():
+                    if isinstance(spec, dict):
+                        known = {"negative", "positive", "stick", "dead_zone", "invert"}
+                        unknown = set(spec) - known
+                        if unknown:
+                            raise ValidationError(
+                                f"axis {name!r}: unknown keys {sorted(unknown)} "
+                                f"(an axis takes {', '.join(sorted(known))})"
+                            )
+                        trial.bind_axis(name, **spec)
+                    elif isinstance(spec, (str, int)):
+                        trial.bind(name, spec)
+                    else:
+                        trial.bind(name, *spec)
+        self.load_data(trial.to_data())
 
     def save(self, path: str | os.PathLike[str]) -> None:
         with open(path, "w", encoding="utf-8") as f:

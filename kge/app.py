@@ -39,7 +39,7 @@ import sys
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
-from kge.actions import InputMap
+from kge.actions import Bindings, InputMap
 from kge.components.camera import Camera, active_camera, camera_at
 from kge.components.resolution import canvas_size
 from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
@@ -71,7 +71,9 @@ class App(Host):
 
     ``plugins`` chooses the subsystems every scene world gets (default:
     :func:`kge.default_plugins`, everything); ``App(scene, plugins=[PhysicsPlugin()])``
-    is a physics-only App that never imports rendering or audio.
+    is a physics-only App that never imports rendering or audio. ``bindings`` declares
+    the game's input actions (:meth:`kge.InputMap.declare`: a dict, a JSON file or a
+    function), ready before the first scene is set up.
     """
 
     def __init__(
@@ -87,6 +89,7 @@ class App(Host):
         time_scale: float = 1.0,
         background: tuple[int, int, int] = (24, 26, 33),
         plugins: Iterable[PluginLike] | None = None,
+        bindings: Bindings | None = None,
         **scene_kwargs: Any,
     ) -> None:
         self.headless = (not has_display()) if headless is None else bool(headless)
@@ -108,6 +111,8 @@ class App(Host):
         self.input = Input()
         self.input.screen_to_world = self.screen_to_world
         self.actions = InputMap(self.input)  #: named actions, shared by every scene
+        if bindings is not None:  # the game's controls, before any scene is set up
+            self.actions.declare(bindings)
         self.frontend: Frontend | None = None
         self.extra_systems: list[SystemFactory] = []
         self._stack: list[tuple[Scene, World]] = []
@@ -127,6 +132,7 @@ class App(Host):
         self._swap_grows = 0  #: how the pending transition's change grows the stack
         self._autoloads: dict[type, Any] = {}  #: resources every scene world shares
         self._in_frame = False
+        self._ending_frame = False  #: the scene changes asked for during a frame are running
         self._running = False
         self.frame_count = 0
         self.add_plugins(*(default_plugins() if plugins is None else plugins))
@@ -264,7 +270,8 @@ class App(Host):
         def begin() -> None:
             self._swap = change
             self._swap_grows = grows  # a pop is counted by _depth_when_queued until made
-            self.transition = ActiveTransition(transition)  # the newest one wins
+            # the newest one wins; asked for during a frame, its time starts with the next
+            self.transition = ActiveTransition(transition, fresh=self._ending_frame)
 
         return begin
 
@@ -292,7 +299,8 @@ class App(Host):
             leaving = self._stack[-1][1] if self._stack else None
             self._swap = lambda: self._replace(target, kwargs, leaving)
             self._swap_grows = 0
-            self.transition = ActiveTransition(transition)  # the newest one wins
+            # the newest one wins; asked for during a frame, its time starts with the next
+            self.transition = ActiveTransition(transition, fresh=self._ending_frame)
 
         self._schedule(0, begin)
 
@@ -308,14 +316,24 @@ class App(Host):
         active = self.transition
         if active is None:
             return
+        if active.fresh:  # begun as the frame that asked for it ended
+            active.fresh = False
+            return
         active.advance(real_dt)
         swap = self._swap
         if active.swap_due and swap is not None:
+            if active.transition.needs_picture and active.picture is None:
+                active.picture = self._capture()  # the old scene as it looks now
             active.swapped = True
             self._swap, grows, self._swap_grows = None, self._swap_grows, 0
             self._schedule(grows, swap)
         if active.done:
             self.transition = None
+
+    def _capture(self) -> Any:
+        """A picture of what the window shows now (None before anything was drawn)."""
+        capture = getattr(self.frontend, "capture", None)
+        return capture(self) if capture is not None else None
 
     def visible_worlds(self) -> list[World]:
         """The worlds drawn this frame, bottom first: the top one and the scenes below
@@ -603,7 +621,11 @@ class App(Host):
             self._in_frame = False
             self.input.end_frame()
             self.frame_count += 1
-        self._run_scene_ops()
+        self._ending_frame = True
+        try:
+            self._run_scene_ops()
+        finally:
+            self._ending_frame = False
 
     def _run_world(self, world: World, steps: int, game_dt: float, with_input: bool) -> None:
         """One frame of ``world``: its stages in order (kge/schedule.py's FRAME)."""
@@ -723,9 +745,11 @@ def run(
 ) -> App:
     """One-line entry point: ``kge.run(my_scene, title="Pong")``.
 
-    ``hot_reload`` (default: on when a window opens, or when ``KGE_HOT_RELOAD=1``)
-    reloads changed scene, prefab, map, image, sound and Python files while the
-    game runs (:mod:`kge.hotreload`).
+    Every other keyword goes to :class:`App` (``bindings={"jump": ["key:SPACE",
+    "pad:a"]}``, ``fixed_dt=...``) or, when App has no such parameter, to the scene's
+    setup. ``hot_reload`` (default: on when a window opens, or when
+    ``KGE_HOT_RELOAD=1``) reloads changed scene, prefab, map, image, sound and Python
+    files while the game runs (:mod:`kge.hotreload`).
     """
     app = App(scene, title=title, size=size, **kwargs)
     if hot_reload is None:
@@ -749,10 +773,10 @@ def run(
 _APP_OWNED: tuple[type, ...] = (Input, InputMap, Time, Host)
 
 
-def _check_transition(transition: object, where: str) -> None:
+def _check_transition(transition: object, call: str) -> None:
     if transition is not None and not isinstance(transition, Transition):
         raise ComponentTypeError(
-            f"{where}: transition must be a Transition (Fade(0.4)...), got {transition!r}"
+            f"{call}: transition must be a Transition (Fade(0.4)...), got {transition!r}"
         )
 
 

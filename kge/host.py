@@ -39,6 +39,10 @@ class Frontend(Protocol):
     def run_window(self, host: Host, frames: int | None, screenshot: str | None) -> bool:
         """Run the App in a real window until it closes; False when no window can open."""
 
+    def capture(self, host: Host) -> Any:
+        """Draw the current frame and return it as a texture (None if nothing was drawn
+        yet): the picture of the old scene a transition fades, slides or wipes away."""
+
 
 class Host:
     """The App as its systems see it (see the module docstring)."""
@@ -82,6 +86,14 @@ class Host:
     def pop_scene(self) -> None:  # pragma: no cover - App overrides
         """Close the top scene and resume the one below."""
         raise NotImplementedError
+
+    def quit(self) -> None:  # pragma: no cover - App overrides
+        """Stop the App's loop after the current frame (the window closes)."""
+        raise NotImplementedError
+
+    def world_to_screen(self, point: tuple[float, float]) -> tuple[float, float]:
+        """World metres to window pixels through the active camera (App overrides)."""
+        raise NotImplementedError  # pragma: no cover
 
     def add_system_to_all(self, factory: Callable[[], System]) -> None:  # pragma: no cover
         """Add a system to every current and future scene world (App overrides)."""

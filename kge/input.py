@@ -74,11 +74,16 @@ def _check_code(code: object, call: str, what: str, example: str) -> None:
 
 @dataclass(slots=True, frozen=True)
 class KeyEvent:
-    """A key went down or up. ``modifiers`` is a :class:`kge.keys.Mod` bit mask."""
+    """A key went down or up. ``modifiers`` is a :class:`kge.keys.Mod` bit mask.
+
+    ``repeat`` marks the operating system's auto-repeat of a held key (text fields
+    use it; edges and actions never see it).
+    """
 
     key: int
     down: bool
     modifiers: int = 0
+    repeat: bool = False
 
 
 @dataclass(slots=True, frozen=True)
@@ -110,7 +115,17 @@ class GamepadEvent:
     button: str = ""
 
 
-AnyEvent = KeyEvent | MouseEvent | TextEvent | GamepadEvent
+@dataclass(slots=True, frozen=True)
+class CompositionEvent:
+    """An input method (IME) is composing text not yet typed: ``text`` is shown at the
+    caret of the focused field with the IME's ``caret`` inside it; an empty ``text``
+    ends the composition. The finished text arrives as a :class:`TextEvent`."""
+
+    text: str
+    caret: int = -1
+
+
+AnyEvent = KeyEvent | MouseEvent | TextEvent | GamepadEvent | CompositionEvent
 
 
 _NONE: frozenset[Hashable] = frozenset()
@@ -389,6 +404,20 @@ class Input:
         self.modifiers = integer(modifiers, "Input.release", "modifiers")
         if self._keys.up(key):
             self.events.append(KeyEvent(key, False, modifiers))
+
+    def repeat_key(self, key: int, modifiers: int = 0) -> None:
+        """The system's auto-repeat of a held key (a held Backspace deleting on)."""
+        _check_code(key, "repeat_key", "key", "Key.BACKSPACE")
+        if key in self._keys.held:
+            self.events.append(KeyEvent(key, True, integer(modifiers, "Input.repeat_key",
+                                                           "modifiers"), repeat=True))
+
+    def compose(self, text: str, caret: int = -1) -> None:
+        """An input method's composition (preedit) text changed; ``""`` ends it."""
+        if not isinstance(text, str):
+            raise ValidationError(f"Input.compose needs a str, got {type(text).__name__}")
+        caret = integer(caret, "Input.compose", "caret")
+        self.events.append(CompositionEvent(text, caret if caret >= 0 else len(text)))
 
     def type_text(self, text: str) -> None:
         """Characters typed (the window's ``on_text``; tests type with it too)."""

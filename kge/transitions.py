@@ -14,11 +14,14 @@ the renderer draws it over the frame (``kge/render/transitions.py``):
 ``Wipe``       that picture is cut away by an edge moving towards ``direction``
 =============  ==========================================================================
 
-The picture-based ones change the scene on the frame after the request (the frame
-in between is drawn and kept as the picture). Progress is eased (smoothstep, or
-your own curve: ``ease=`` any function of progress 0..1, such as
-``kge.CubicBezier(0.7, 0, 0.3, 1)`` or ``lambda p: p``), and every quantity the
-renderer needs is a property of ``ActiveTransition`` at time t:
+The picture-based ones change the scene on the first frame of the transition, after
+taking a picture of the old scene as the window shows it then (nothing is pictured
+before anything was drawn, as in a headless run that never renders). A transition
+asked for during a frame (a script's ``on_update``, a button's ``on_click``) starts
+its clock with the next frame, so it plays whole wherever it was asked for.
+Progress is eased (smoothstep, or your own curve: ``ease=`` any function of progress
+0..1, such as ``kge.CubicBezier(0.7, 0, 0.3, 1)`` or ``lambda p: p``), and every
+quantity the renderer needs is a property of ``ActiveTransition`` at time t:
 
 >>> active = ActiveTransition(Fade(0.4))
 >>> active.advance(0.1); round(active.cover, 3)          # a quarter in: half covered
@@ -144,6 +147,8 @@ class ActiveTransition:
     #: the renderer's picture of the old scene (a pyglet texture), when it took one
     picture: Any = None
     frames: int = 0
+    #: asked for during a frame: its first advance (as that frame ends) is skipped
+    fresh: bool = False
 
     @property
     def kind(self) -> str:
@@ -164,7 +169,7 @@ class ActiveTransition:
         if self.swapped:
             return False
         if self.transition.needs_picture:
-            return self.frames >= 1  # the frame in between was drawn (and pictured)
+            return self.frames >= 1  # the first frame of the transition
         return self.t >= 0.5
 
     @property

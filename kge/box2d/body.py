@@ -53,10 +53,10 @@ class _View(b2Vec2):
     """A b2Vec2 that stands for one of a body's vectors; in-place arithmetic writes the
     result back once (``body.linearVelocity *= 0.99`` is one velocity write)."""
 
-    __slots__ = ("_body",)
+    __slots__ = ("_owner",)
 
     def __init__(self, body: b2Body) -> None:
-        self._body = body
+        self._owner = body
 
     def _put(self, value: tuple[float, float]) -> None:
         raise NotImplementedError
@@ -90,23 +90,23 @@ class PositionView(_View):
     __slots__ = ()
 
     def _put(self, value: tuple[float, float]) -> None:
-        self._body.position = value
+        self._owner.position = value
 
     @property
     def x(self) -> float:
-        return self._body._tf.x
+        return self._owner._tf.x
 
     @x.setter
     def x(self, value: float) -> None:
-        self._body.position = (value, self._body._tf.y)
+        self._owner.position = (value, self._owner._tf.y)
 
     @property
     def y(self) -> float:
-        return self._body._tf.y
+        return self._owner._tf.y
 
     @y.setter
     def y(self, value: float) -> None:
-        self._body.position = (self._body._tf.x, value)
+        self._owner.position = (self._owner._tf.x, value)
 
 
 class VelocityView(_View):
@@ -115,23 +115,23 @@ class VelocityView(_View):
     __slots__ = ()
 
     def _put(self, value: tuple[float, float]) -> None:
-        self._body.linearVelocity = value
+        self._owner.linearVelocity = value
 
     @property
     def x(self) -> float:
-        return float(self._body._rb.velocity[0])
+        return float(self._owner._rb.velocity[0])
 
     @x.setter
     def x(self, value: float) -> None:
-        self._body.linearVelocity = (value, self._body._rb.velocity[1])
+        self._owner.linearVelocity = (value, self._owner._rb.velocity[1])
 
     @property
     def y(self) -> float:
-        return float(self._body._rb.velocity[1])
+        return float(self._owner._rb.velocity[1])
 
     @y.setter
     def y(self, value: float) -> None:
-        self._body.linearVelocity = (self._body._rb.velocity[0], value)
+        self._owner.linearVelocity = (self._owner._rb.velocity[0], value)
 
 
 class b2BodyDef:

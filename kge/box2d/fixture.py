@@ -109,10 +109,10 @@ class b2Fixture:
 
     def __init__(self, body: b2Body, entity: int, col: Collider, shape: b2Shape,
                  user_data: Any, density: float) -> None:
-        self._body = body
+        self._owner = body
         self._entity = entity
         self._col = col
-        self._shape = shape
+        self._b2shape = shape
         shape._owner = self
         self.userData = user_data
         self._destroyed = False
@@ -133,15 +133,15 @@ class b2Fixture:
 
     @property
     def body(self) -> b2Body:
-        return self._body
+        return self._owner
 
     @property
     def shape(self) -> b2Shape:
-        return self._shape
+        return self._b2shape
 
     @property
     def type(self) -> int:
-        return self._shape.type
+        return self._b2shape.type
 
     def _live(self) -> Collider:
         if self._destroyed:
@@ -154,7 +154,7 @@ class b2Fixture:
 
     @density.setter
     def density(self, value: float) -> None:
-        self._live().density = massless_density(self._shape, value)
+        self._live().density = massless_density(self._b2shape, value)
         self._density = float(value)
     friction = property(lambda self: self._col.friction,
                         lambda self, v: setattr(self._live(), "friction", v))
@@ -177,7 +177,7 @@ class b2Fixture:
     def TestPoint(self, p: Any) -> bool:
         """Is the world point ``p`` inside this fixture's shape?"""
         self._live()
-        hits = self._body._world._physics.query_point(as_xy(p, "b2Fixture.TestPoint", "p"))
+        hits = self._owner._world._physics.query_point(as_xy(p, "b2Fixture.TestPoint", "p"))
         return any(h.collider == self._entity for h in hits)
 
     @property
@@ -189,14 +189,14 @@ class b2Fixture:
                           + md.mass * (md.center[0] ** 2 + md.center[1] ** 2))
 
     def GetAABB(self, childIndex: int = 0) -> Any:
-        return self._shape.getAABB(self._body.transform, childIndex)
+        return self._b2shape.getAABB(self._owner.transform, childIndex)
 
     @property
     def aabb(self) -> Any:
         return self.GetAABB(0)
 
     def __repr__(self) -> str:
-        return f"b2Fixture(entity={self._entity}, shape={self._shape!r})"
+        return f"b2Fixture(entity={self._entity}, shape={self._b2shape!r})"
 
 
 def default_should_collide(fa: b2Fixture, fb: b2Fixture) -> bool:

@@ -53,6 +53,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from kge.components.transform import Transform
 from kge.coroutines import Coroutine
 from kge.errors import ComponentTypeError, HookSignatureError
+from kge.host import Host
 
 if TYPE_CHECKING:
     from kge.world import World
@@ -86,6 +87,12 @@ HOOKS: dict[str, tuple[int, str]] = {
     "on_click": (1, "on_click(event)"),
     "on_value_changed": (1, "on_value_changed(event)"),
     "on_text_submitted": (1, "on_text_submitted(event)"),
+    "on_item_activated": (1, "on_item_activated(event)"),
+    "on_item_toggled": (1, "on_item_toggled(event)"),
+    "on_dialog_closed": (1, "on_dialog_closed(event)"),
+    "on_drag_started": (1, "on_drag_started(event)"),
+    "on_drop": (1, "on_drop(event)"),
+    "on_drag_cancelled": (1, "on_drag_cancelled(event)"),
 }
 
 _hook_cache: dict[type, tuple[str, ...]] = {}
@@ -175,6 +182,20 @@ class Script:
     @property
     def transform(self) -> Transform:
         return self.world.get(self.entity, Transform)
+
+    @property
+    def app(self) -> Host:
+        """The App running this script's scene: ``self.app.replace_scene(Level2,
+        transition=Fade(0.4))``, ``push_scene``, ``pop_scene``, ``quit()``, ``size``,
+        ``input``. Scene changes asked for here happen when the frame ends."""
+        world = getattr(self, "world", None)
+        host = world.try_resource(Host) if world is not None else None
+        if host is None:
+            raise LookupError(
+                f"{type(self).__name__}.app: this script is not run by an App (not attached "
+                "yet, or in a bare World)"
+            )
+        return host
 
     def start_coroutine(self, gen: Generator[Any, None, Any]) -> Coroutine:
         """Run generator ``gen`` as a coroutine of this entity (see :mod:`kge.coroutines`)."""

@@ -108,7 +108,8 @@ def _font(value: Any, owner: str, field: str) -> str | None:
     return name
 
 
-def _size(value: Any, owner: str, field: str) -> float:
+def font_points(value: Any, owner: str, field: str) -> float:
+    """A font size in points, in (0, :data:`MAX_FONT_SIZE`]."""
     v = finite(value, owner, field)
     if not 0.0 < v <= MAX_FONT_SIZE:
         raise ValidationError(
@@ -204,7 +205,7 @@ def _opacity(value: Any, owner: str, field: str) -> int:
 
 #: checks of the looks shared by Text and TextStyle (one table, one meaning per name)
 STYLE_CHECKS: dict[str, Check] = {
-    "size": _size,
+    "size": font_points,
     "color": rgba,
     "font": _font,
     "weight": _weight,

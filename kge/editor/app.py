@@ -6,9 +6,12 @@ The stack, bottom first:
   steps; its lowest entity is the editor's camera, so the viewport pans and zooms
   without touching the scene's own camera. Grid lines, the selection box and handles
   are editor-only entities there (never saved, not in the hierarchy);
-* the **editor UI** (``EditorUI``, an overlay): toolbar, hierarchy, inspector, status
-  line and dialogs, built from kge.ui widgets; its :class:`EditorInput` system turns
-  clicks, drags, wheel and keys into :class:`~kge.editor.model.EditorModel` edits.
+* the **editor UI** (``EditorUI``, an overlay): toolbar, hierarchy (a ``TreeView``
+  whose row drops reparent), inspector (a ``ScrollView`` of rows: ``SpinBox`` numbers,
+  ``ColorPicker`` colours, toggles, dropdowns, text fields), status line and dialogs,
+  built from kge.ui widgets; its :class:`EditorInput` system turns clicks, drags, wheel
+  and keys into :class:`~kge.editor.model.EditorModel` edits (a drag of a spin box or a
+  colour picker is one undo step).
 
 Play pushes the scene as the file would load (``PlayScene``, from the model's text)
 with a small bar over it (``PlayBar``); stop pops both, and the edited scene below was
@@ -31,12 +34,17 @@ from kge.components.debug import DebugDraw
 from kge.components.transform import Transform
 from kge.components.ui import (
     Button,
+    ColorPicker,
     Dropdown,
     Label,
     Panel,
-    ScrollList,
+    ScrollView,
+    SpinBox,
+    Style,
     TextInput,
     Toggle,
+    TreeItem,
+    TreeView,
     UINode,
 )
 from kge.editor.fields import FieldKind, asset_files, kind_of, parse, show
@@ -47,13 +55,22 @@ from kge.scene import Scene
 from kge.scenefile import SceneFileError, default_registry, load_scene_text
 from kge.scenefile.registry import COMPONENT
 from kge.schedule import Stage, System, SystemSet
-from kge.ui import ButtonClicked, TextSubmitted, Theme, ValueChanged
-from kge.ui.interact import UIState, list_rows
+from kge.ui import ButtonClicked, Dropped, ItemActivated, TextSubmitted, TreeDrop, ValueChanged
+from kge.ui.interact import UIState
 from kge.world import World
 
 TOOLS = ("select", "move", "rotate", "scale", "shape", "anchor", "paint", "prefab")
 LEFT_W, RIGHT_W, TOP_H, BOTTOM_H = 250.0, 330.0, 40.0, 26.0
 EDITOR_TITLE = "kge edit"
+
+
+def _compact() -> Style:
+    """The toolbar's and the hierarchy's buttons: small text, so every label fits."""
+    return Style(font_size=12.0, padding=5.0)
+
+
+#: above this many colliders the physics overlay starts off (the Physics button shows it)
+OVERLAY_LIMIT = 1000
 
 
 class EditScene(Scene):
@@ -69,7 +86,10 @@ class EditScene(Scene):
         self.model = EditorModel(world, self.path)
         world.insert_resource(self.model)
         if world.try_resource(DebugDraw) is None:  # the physics overlay (unless the scene has one)
-            world.insert_resource(DebugDraw(joints=True, contacts=False, contact_normals=False))
+            # drawn in Python per collider each frame: off by default on very large scenes
+            many = len(world.query(Collider)) > OVERLAY_LIMIT
+            world.insert_resource(DebugDraw(enabled=not many, joints=True, contacts=False,
+                                            contact_normals=False))
             self.model.own_resources.add(DebugDraw)
 
 
@@ -157,7 +177,10 @@ class Editor:
         self.prefab_choice: int | None = None
         self.inspector_rows: list[int] = []
         self.last_mouse: tuple[float, float] = (0.0, 0.0)
-        self.tree_from: int | None = None
+        self.tree_parents: set[int] = set()  #: hierarchy rows with children, last refresh
+        self.tree_shown: Any = None  #: (searching, (entity, depth, name) rows) last shown
+        #: a spin box or colour picker being dragged: (widget, field value before the drag)
+        self.live: tuple[int, Any] | None = None
         self.grid_key: Any = None
         model.listeners.append(self._changed)
 
@@ -238,6 +261,11 @@ class Editor:
             self.say(f"snapping {'on' if m.snap else 'off'} ({m.grid} m)")
         elif name == "frame":
             self.frame(m.selection or None)
+        elif name == "physics":
+            dd = self.edit_world.try_resource(DebugDraw)
+            if dd is not None:
+                dd.enabled = not dd.enabled
+                self.say(f"physics overlay {'on' if dd.enabled else 'off'}")
         elif name == "quit":
             self.quit()
         self.inspector_dirty = True
@@ -358,26 +386,37 @@ class EditorUI(Scene):
         top = world.spawn(UINode(anchor="top_left", width="100%", height=TOP_H, layout="row",
                                  padding=4.0, spacing=3.0, align="stretch"),
                           Panel(color=(24, 27, 34, 245), radius=0.0))
-        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "frame"):
-            e = world.spawn(UINode(parent=top, width=float(18 + 9 * len(name))),
-                            Button(name.capitalize()))
+        for name in (*TOOLS, "undo", "redo", "save", "save as", "play", "grid", "physics",
+                     "frame"):
+            e = world.spawn(UINode(parent=top), Button(name.capitalize()), _compact())
             ed.buttons[e] = name
-        left = world.spawn(UINode(anchor="top_left", offset=(0.0, -TOP_H), width=LEFT_W,
-                                  height=f"{100}%", layout="column", padding=6.0, spacing=4.0,
-                                  align="stretch"), Panel(color=(28, 31, 40, 240), radius=0.0))
+        # the side panels fill the height between the toolbar and the status line
+        frame = world.spawn(UINode(anchor="top_left", width="100%", height="100%",
+                                   layout="column", align="stretch"))
+        world.spawn(UINode(parent=frame, height=TOP_H))
+        middle = world.spawn(UINode(parent=frame, grow=1.0, shrink=1.0, layout="row",
+                                    align="stretch"))  # a long inspector scrolls
+        world.spawn(UINode(parent=frame, height=BOTTOM_H))
+        left = world.spawn(UINode(parent=middle, width=LEFT_W, layout="column", padding=6.0,
+                                  spacing=4.0, align="stretch"),
+                           Panel(color=(28, 31, 40, 240), radius=0.0))
         world.spawn(UINode(parent=left), Label("Hierarchy", size=14.0, align="left"))
         ed.search_box = world.spawn(UINode(parent=left, height=26.0),
                                     TextInput("", placeholder="search"))
         actions = world.spawn(UINode(parent=left, height=28.0, layout="row", spacing=3.0,
                                      align="stretch"))
         for name in ("new", "duplicate", "delete"):
-            e = world.spawn(UINode(parent=actions, width=76.0), Button(name.capitalize()))
+            e = world.spawn(UINode(parent=actions, grow=1.0), Button(name.capitalize()),
+                            _compact())
             ed.buttons[e] = name
-        ed.tree = world.spawn(UINode(parent=left, height=430.0), ScrollList([]))
-        right = world.spawn(UINode(anchor="top_right", offset=(0.0, -TOP_H), width=RIGHT_W,
-                                   height="100%", layout="column", padding=6.0, spacing=3.0,
-                                   align="stretch"), Panel(color=(28, 31, 40, 240), radius=0.0))
-        ed.inspector = right
+        ed.tree = world.spawn(UINode(parent=left, grow=1.0), TreeView(draggable=True))
+        world.spawn(UINode(parent=middle, grow=1.0))  # the viewport shows through
+        right = world.spawn(UINode(parent=middle, width=RIGHT_W, layout="column", padding=6.0,
+                                   spacing=3.0, align="stretch"),
+                            Panel(color=(28, 31, 40, 240), radius=0.0))
+        world.spawn(UINode(parent=right), Label("Inspector", size=14.0, align="left"))
+        ed.inspector = world.spawn(UINode(parent=right, grow=1.0, layout="column", spacing=3.0,
+                                          align="stretch"), ScrollView())
         world.spawn(UINode(anchor="bottom_left", width="100%", height=BOTTOM_H),
                     Panel(color=(18, 20, 26, 250), radius=0.0))
         ed.status = world.spawn(UINode(anchor="bottom_left", offset=(8.0, 4.0)),
@@ -406,7 +445,8 @@ class EditorInput(System):
     # -- UI events -----------------------------------------------------------------------------
     def ui_events(self) -> None:
         ed, world = self.ed, self.world
-        for ev in world.events(ButtonClicked, TextSubmitted, ValueChanged):  # in order
+        for ev in world.events(ButtonClicked, TextSubmitted, ValueChanged, Dropped,
+                               ItemActivated):  # in order
             if isinstance(ev, ButtonClicked):
                 if ev.entity in ed.dialog:
                     ed.dialog_button(ev.text)
@@ -434,18 +474,75 @@ class EditorInput(System):
                         self.field_edit(ev.entity, "true" if ev.value else "false")
                     elif w[3].widget == "choice":
                         self.field_edit(ev.entity, w[3].choices[int(ev.value)])
+                    elif w[3].widget in ("number", "angle", "colour", "vector"):
+                        self.live_edit(ev.entity, ev.value)
+            elif isinstance(ev, Dropped):
+                if ev.target == ed.tree and isinstance(ev.payload, TreeDrop):
+                    self.tree_drop(ev.payload)
+            elif isinstance(ev, ItemActivated) and ev.entity == ed.tree:
+                ed.frame([ev.item])
+        if ed.live is not None and not world.resource(Input).mouse_held(Mouse.LEFT):
+            self.commit_live()
         search = world.try_get(ed.search_box, TextInput)
         if search is not None and search.text != ed.search:
             ed.search = search.text
             ed.inspector_dirty = True
 
-    def tree_pick(self, index: int) -> None:
+    def tree_pick(self, entity: int | None) -> None:
         ed = self.ed
-        if not 0 <= index < len(ed.rows):
+        if entity is None or entity not in ed.rows:
             return
         inp = self.world.resource(Input)
-        shift = inp.any_held(Key.LSHIFT, Key.RSHIFT) if hasattr(Key, "RSHIFT") else False
-        ed.model.select(ed.rows[index], add=shift)
+        ed.model.select(entity, add=bool(inp.modifiers & Mod.SHIFT))
+
+    def tree_drop(self, drop: TreeDrop) -> None:
+        """A hierarchy row dropped inside another row reparents it there; before or after
+        a row, beside it (its parent); below the last row, to no parent."""
+        ed = self.ed
+        target = drop.target
+        if target is not None and drop.where != "inside":
+            target = ed.model.parent(int(target))
+        item = int(drop.item)
+        ed.run_edit(lambda: ed.model.reparent(item, None if target is None else int(target)))
+
+    def live_edit(self, widget: int, value: Any) -> None:
+        """A spin box's or colour picker's new value, applied at once; the undo step is
+        made when the mouse lets go (:meth:`commit_live`), one for the whole drag."""
+        ed = self.ed
+        entity, ctype, name, kind = ed.widgets[widget]
+        comp: Any = ed.model.world.get(entity, ctype)
+        current = getattr(comp, name)
+        if kind.widget == "colour":
+            text = ", ".join(str(int(v)) for v in tuple(value)[: len(current)])
+        elif kind.widget == "vector":  # this widget's component of the vector
+            parts = [float(value) if i == kind.index else v for i, v in enumerate(current)]
+            text = ", ".join(repr(float(v)) for v in parts)
+        else:
+            text = repr(float(value))
+        info = default_registry().info(ctype)
+        if info is None:
+            return
+        folder = ed.model.path.parent if ed.model.path else Path.cwd()
+        if ed.live is not None and ed.live[0] != widget:
+            self.commit_live()
+        before = current if ed.live is None else ed.live[1]
+        try:
+            setattr(comp, name, parse(kind, text, info, name, current, folder, ed.model.entity))
+        except (SceneFileError, ValueError, TypeError) as exc:
+            ed.say(str(exc))
+            return
+        ed.live = (widget, before)
+
+    def commit_live(self) -> None:
+        ed = self.ed
+        assert ed.live is not None
+        (widget, before), ed.live = ed.live, None
+        entity, ctype, name, _ = ed.widgets[widget]
+        if not ed.model.world.exists(entity) or not ed.model.world.has(entity, ctype):
+            return
+        now = getattr(ed.model.world.get(entity, ctype), name)
+        ed.run_edit(lambda: ed.model.set_fields(entity, ctype, {name: now},
+                                                f"{ctype.__name__}.{name}", before={name: before}))
 
     def field_edit(self, widget: int, text: str) -> None:
         ed = self.ed
@@ -517,7 +614,6 @@ class EditorInput(System):
             cam.center = (cam.center[0] - (mouse[0] - last[0]) * k,
                           cam.center[1] - (mouse[1] - last[1]) * k)
         ed.last_mouse = mouse
-        self.tree_drag(inp)
         if inp.mouse_pressed(Mouse.LEFT) and ed.in_viewport(mouse):
             self.press(ed.to_world(mouse), inp)
         elif ed.drag is not None and inp.mouse_held(Mouse.LEFT):
@@ -607,47 +703,27 @@ class EditorInput(System):
             cells = _cells_along(d["cells"] + [p], m.grid or 0.5)
             ed.run_edit(lambda: m.paint(d["brush"], cells))
 
-    def tree_drag(self, inp: Input) -> None:
-        """Drag a hierarchy row onto another: reparent (onto the empty space: no parent)."""
-        ed = self.ed
-        layout = self.world.resource(UIState).layout
-        box = layout.boxes.get(ed.tree)
-        lst = self.world.try_get(ed.tree, ScrollList)
-        if box is None or lst is None:
-            return
-        theme = self.world.resource(Theme)
-
-        def row_at(p: tuple[float, float]) -> int | None:
-            for i, r in list_rows(lst, box, theme):
-                if r.contains(p):
-                    return i
-            return None
-
-        mouse = inp.mouse_screen
-        if inp.mouse_pressed(Mouse.LEFT) and box.contains(mouse):
-            ed.tree_from = row_at(mouse)
-        elif inp.mouse_released(Mouse.LEFT) and ed.tree_from is not None:
-            src, ed.tree_from = ed.tree_from, None
-            dst = row_at(mouse) if box.contains(mouse) else None
-            if src is not None and dst != src and src < len(ed.rows):
-                target = ed.rows[dst] if dst is not None and dst < len(ed.rows) else None
-                if box.contains(mouse):
-                    ed.run_edit(lambda: ed.model.reparent(ed.rows[src], target))
-
     # -- panels  -------------------------------------------------------------------------------
     def refresh(self) -> None:
         ed = self.ed
         m = ed.model
         world = self.world
         rows = m.hierarchy(ed.search)
-        items = [("   " * d) + m.name(e) for e, d in rows]
-        lst = world.get(ed.tree, ScrollList)
         ed.rows = [e for e, _ in rows]
-        sel = ed.rows.index(m.selection[0]) if m.selection and m.selection[0] in ed.rows else -1
-        if lst.items != items:
-            lst.items = items
-        if lst.selected != sel:
-            lst.selected = sel
+        tree = world.get(ed.tree, TreeView)
+        shown = (bool(ed.search), [(e, d, m.name(e)) for e, d in rows])
+        if shown != ed.tree_shown:  # TreeItems are built only when a row changed
+            ed.tree_shown = shown
+            items = _tree_items(shown[1], flat=shown[0])
+            parents = {int(it.parent) for it in items if it.parent is not None}
+            # rows that gained children open; what the user folded stays folded
+            ids = set(ed.rows)
+            tree.items = items
+            tree.expanded = (set(tree.expanded) & ids) | (parents - ed.tree_parents)
+            ed.tree_parents = parents
+        sel = m.selection[0] if m.selection and m.selection[0] in ed.rows else None
+        if tree.selected != sel:
+            tree.selected = sel
         name = m.path.name if m.path else "untitled"
         status = f"{name}{' *' if m.dirty else ''}   tool: {ed.tool}   {ed.message}"
         reloader = _reloader(world)
@@ -661,6 +737,20 @@ class EditorInput(System):
             ed.shown_selection = tuple(m.selection)
             build_inspector(ed, world)
         update_markers(ed)
+
+
+def _tree_items(rows: list[tuple[int, int, str]], flat: bool) -> list[TreeItem]:
+    """The hierarchy's rows as tree items: each row's parent is the row above it one level
+    up (so a parent cycle in the scene never reaches the tree); a search shows a flat
+    list of the matches."""
+    items: list[TreeItem] = []
+    above: list[int] = []  # the open rows, one per depth
+    for e, depth, name in rows:
+        del above[depth:]
+        parent = above[-1] if above and not flat else None
+        items.append(TreeItem(e, name, parent))
+        above.append(e)
+    return items
 
 
 def _reloader(world: World) -> Any:
@@ -697,16 +787,14 @@ def build_inspector(ed: Editor, ui: World) -> None:
     ed.widgets, ed.labels, ed.remove_buttons = {}, {}, {}
     ed.name_box, ed.add_button, ed.add_choice = None, None, None
 
-    def row(*widgets: tuple[Any, float]) -> int:
-        r = ui.spawn(UINode(parent=ed.inspector, height=24.0, layout="row", spacing=4.0,
+    def row(*widgets: tuple[Any, float], height: float = 24.0) -> int:
+        r = ui.spawn(UINode(parent=ed.inspector, height=height, layout="row", spacing=4.0,
                             align="stretch"))
         rows.append(r)
-        for comp, width in widgets:
+        for comp, width in widgets:  # fixed sizes: "auto" would measure every option
             rows.append(ui.spawn(UINode(parent=r, width=width), comp))
         return r
 
-    rows.append(ui.spawn(UINode(parent=ed.inspector), Label("Inspector", size=14.0,
-                                                            align="left")))
     if not m.selection or not m.world.exists(m.selection[0]):
         rows.append(ui.spawn(UINode(parent=ed.inspector), Label(
             "nothing selected", size=12.0, align="left")))
@@ -746,8 +834,24 @@ def build_inspector(ed: Editor, ui: World) -> None:
             unit = " (deg)" if kind.widget == "angle" else ""
             text = show(kind, value, folder or Path.cwd(), m.key)
             widget: Any
+            height = 24.0
+            if kind.widget == "vector":  # x and y side by side
+                label = (Label(f.name, size=12.0, align="left"), 130.0)
+                row(label, *((_number_box(v, whole=isinstance(v, int)), 83.0) for v in value))
+                for i, w in enumerate(rows[-2:]):
+                    ed.widgets[w] = (entity, type(comp), f.name, FieldKind("vector", index=i))
+                ed.labels[rows[-3]] = (entity, type(comp), f.name, kind)
+                continue
             if kind.widget == "toggle":
                 widget = Toggle(bool(value))
+            elif kind.widget == "number":
+                widget = _number_box(value, whole=isinstance(value, int))
+            elif kind.widget == "angle":
+                widget = SpinBox(math.degrees(value), step=0.0, drag_speed=0.5)
+            elif kind.widget == "colour":
+                widget = ColorPicker(tuple(value) + (255,) * (4 - len(value)),
+                                     alpha=len(value) == 4)
+                height = 90.0
             elif kind.widget == "choice":
                 opts = list(kind.choices)
                 if text not in opts:
@@ -756,7 +860,8 @@ def build_inspector(ed: Editor, ui: World) -> None:
                 kind = FieldKind("choice", tuple(opts))
             else:
                 widget = TextInput(text, max_length=4000)
-            row((Label(f.name + unit, size=12.0, align="left"), 130.0), (widget, 170.0))
+            row((Label(f.name + unit, size=12.0, align="left"), 130.0), (widget, 170.0),
+                height=height)
             ed.widgets[rows[-1]] = (entity, type(comp), f.name, kind)
             ed.labels[rows[-2]] = (entity, type(comp), f.name, kind)
     names = [n for n in default_registry().names(COMPONENT)
@@ -764,6 +869,11 @@ def build_inspector(ed: Editor, ui: World) -> None:
     row((Dropdown(names, selected=0), 200.0), (Button("Add"), 90.0))
     ed.add_choice, ed.add_button = rows[-3], rows[-1]
     ed.inspector_rows = rows
+
+
+def _number_box(value: float, whole: bool) -> SpinBox:
+    """A number field: 0.02 per pixel dragged (0.1 for whole numbers), typed exactly."""
+    return SpinBox(float(value), step=0.0, drag_speed=0.1 if whole else 0.02, rounded=whole)
 
 
 def update_markers(ed: Editor) -> None:

@@ -7,9 +7,11 @@ bool               a Toggle
 enum               a Dropdown of the member names
 entity reference   a Dropdown of the scene's entity ids ("-" for none)
 asset path         a Dropdown of the files next to the scene (the file picker)
-number             a text field; dragging its label left or right changes it
+number             a SpinBox: drag it sideways, the wheel, +/-, or click and type
 angle              the same, in degrees (``angle``, ``*_angle`` fields)
-vector, colour     a text field of comma-separated numbers ("1.5, 2")
+colour             a ColorPicker (``color``, ``tint``, ``*_color``: 3 or 4 of 0..255)
+2D vector          two SpinBoxes, x and y
+numbers            a text field of comma-separated numbers ("1.5, 2, 3")
 anything else      a text field holding the value as TOML (a shape, a filter)
 =================  ==============================================================
 """
@@ -38,12 +40,22 @@ SOUND_SUFFIXES = (".wav", ".ogg", ".mp3", ".flac")
 class FieldKind:
     """How the inspector shows one field."""
 
-    widget: str  #: "toggle", "choice", "number", "angle", "numbers", "text", "toml"
+    widget: str  #: "toggle", "choice", "number", "angle", "colour", "vector", "numbers",
+    #: "text", "toml"
     choices: tuple[str, ...] = ()
+    index: int = -1  #: a vector's component shown by this widget (0: x, 1: y)
 
 
 def is_angle(name: str) -> bool:
     return name == "angle" or name.endswith("_angle") or name in ("direction", "spread", "cone")
+
+
+def is_colour(name: str, value: Any) -> bool:
+    """A colour field: named like one, holding 3 (RGB) or 4 (RGBA) integers in 0..255."""
+    named = name in ("color", "colour", "tint") or name.endswith(("_color", "_colour"))
+    return named and isinstance(value, tuple) and len(value) in (3, 4) and all(
+        isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= 255 for v in value
+    )
 
 
 def kind_of(info: TypeInfo, name: str, value: Any, entity_keys: list[str],
@@ -58,11 +70,16 @@ def kind_of(info: TypeInfo, name: str, value: Any, entity_keys: list[str],
     if hint_enum is not None:
         return FieldKind("choice", tuple(m.name for m in hint_enum))
     if isinstance(value, int | float):
+        if not math.isfinite(value):
+            return FieldKind("toml")  # a SpinBox holds finite numbers only; inf is typed
         return FieldKind("angle" if is_angle(name) else "number")
+    if is_colour(name, value):
+        return FieldKind("colour")
     if isinstance(value, tuple) and value and all(
         isinstance(v, int | float) and not isinstance(v, bool) for v in value
     ):
-        return FieldKind("numbers")
+        finite = all(math.isfinite(v) for v in value)
+        return FieldKind("vector" if len(value) == 2 and finite else "numbers")
     if isinstance(value, str):
         return FieldKind("text")
     return FieldKind("toml")
@@ -80,7 +97,7 @@ def show(kind: FieldKind, value: Any, folder: Path, key_of: Any) -> str:
         return f"{math.degrees(value):.6g}"
     if kind.widget == "number":
         return f"{value:.6g}" if isinstance(value, float) else str(value)
-    if kind.widget == "numbers":
+    if kind.widget in ("numbers", "vector"):
         return ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
     if kind.widget == "text":
         return str(value)
@@ -95,6 +112,8 @@ def show(kind: FieldKind, value: Any, folder: Path, key_of: Any) -> str:
             str(value)
     if kind.widget == "toggle":
         return "true" if value else "false"
+    if kind.widget == "colour":
+        return ", ".join(str(v) for v in value)
     encoder = Encoder(default_registry(), AssetPaths(folder), lambda e, w: key_of(e))
     return toml_value(encoder.value(value, Where(), 0))
 
@@ -112,7 +131,7 @@ def parse(kind: FieldKind, text: str, info: TypeInfo, name: str, current: Any, f
         if kind.widget == "angle":
             v = math.radians(v)
         return int(v) if isinstance(current, int) and v.is_integer() else v
-    if kind.widget == "numbers":
+    if kind.widget in ("numbers", "vector", "colour"):
         try:
             parts = tuple(float(p) for p in text.replace("(", "").replace(")", "").split(","))
         except ValueError:

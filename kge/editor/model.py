@@ -108,8 +108,10 @@ class EditorModel:
         if self.path is not None and self.path.exists():
             load_scene(world, self.path)
         scene_state(world).source = self.path
-        self.saved_text = self.text()
         self.listeners: list[Callable[[str], None]] = []
+        #: bumped by every change (views cache what they show by it)
+        self.revision = 0
+        self._saved_at: tuple[int, Any] = self._history_mark()
 
     # -- reading ----------------------------------------------------------------------------
     @property
@@ -121,8 +123,13 @@ class EditorModel:
         return scene_state(self.world)
 
     def entities(self) -> list[int]:
-        """The scene's entities (not the editor's own), in id order."""
-        return [e for e in self.world.entities() if not self.world.has(e, EditorOnly)]
+        """The scene's entities, in id order: not the editor's own, nor those a Tiled map
+        made (the map is one ``[[tilemap]]`` reference in the file)."""
+        from kge.scenefile.save import map_entities
+
+        skip = map_entities(self.world)
+        return [e for e in self.world.entities()
+                if e not in skip and not self.world.has(e, EditorOnly)]
 
     def key(self, entity: int) -> str:
         k = self.state.keys.get(entity)
@@ -187,10 +194,16 @@ class EditorModel:
             rows = [(e, d) for e, d in rows if s in self.name(e).lower() or s in self.key(e)]
         return rows
 
+    def _history_mark(self) -> tuple[int, Any]:
+        """Where the history stands: the undo stack's depth and its top step (the step
+        itself, not its id: a freed step's id can come back on a new one)."""
+        return (len(self.undo_stack), self.undo_stack[-1] if self.undo_stack else None)
+
     @property
     def dirty(self) -> bool:
-        """Unsaved changes?"""
-        return self.text() != self.saved_text
+        """Unsaved changes? (Undoing back to the saved state makes it clean again.)"""
+        (n, top), (saved_n, saved_top) = self._history_mark(), self._saved_at
+        return n != saved_n or top is not saved_top
 
     def text(self) -> str:
         folder = self.path.parent if self.path is not None else Path.cwd()
@@ -247,6 +260,7 @@ class EditorModel:
         self._notify(step.label)
 
     def _notify(self, what: str) -> None:
+        self.revision = getattr(self, "revision", 0) + 1
         for fn in list(getattr(self, "listeners", [])):
             fn(what)
 
@@ -517,6 +531,18 @@ class EditorModel:
         parts = [step] if not isinstance(moved, SetFields) else [step, moved]
         self._push(Compound(parts, "reparent"))
 
+    def add_map(self, source: str | os.PathLike[str], **options: Any) -> None:
+        """Load a Tiled map into the scene (saved as a ``[[tilemap]]`` reference with
+        these ``load_map`` options); one undo step."""
+        from kge.scenefile.state import MapRef
+        from kge.tilemap import load_map
+
+        def change() -> None:
+            handle = load_map(self.world, os.fspath(source), unknown="ignore", **options)
+            self.state.maps.append(MapRef(os.fspath(source), dict(options), handle))
+
+        self.structural("add map", change)
+
     def place_prefab(
         self, prefab: str | os.PathLike[str], at: Vec2, angle: float = 0.0
     ) -> list[int]:
@@ -697,7 +723,7 @@ class EditorModel:
                            exclude_resources=self.own_resources)
         self.path = Path(os.path.realpath(saved))
         self.state.source = self.path
-        self.saved_text = self.text()
+        self._saved_at = self._history_mark()
         self._notify("save")
         return saved
 

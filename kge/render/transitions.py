@@ -2,8 +2,8 @@
 
 The render frontend calls :func:`draw_transition` after every visible world is drawn.
 Fades cover the window with the transition colour at ``active.cover``; the other
-kinds keep a picture of the old scene (read back from the window on the last frame
-before the change, in window pixels) and draw it faded, shifted or cut.
+kinds draw a picture of the old scene (the App asks the frontend for one,
+:func:`take_picture`, just before it changes the scene) faded, shifted or cut.
 """
 
 from __future__ import annotations
@@ -31,12 +31,8 @@ def draw_transition(renderer: Renderer, active: ActiveTransition, background: An
     w, h = renderer.size
     tr = active.transition
     if tr.needs_picture:
-        if not active.swapped:
-            if active.picture is None:
-                active.picture = take_picture(renderer)
-            return  # the old scene is still on screen, drawn normally
-        if active.picture is None:
-            return  # the change happened before any frame was drawn: nothing to show
+        if not active.swapped or active.picture is None:
+            return  # the old scene is still on screen, or nothing was drawn to picture
         _draw_picture(renderer, active, w, h)
     cover = active.cover
     if cover > 0.0:

@@ -1,10 +1,16 @@
 """Drawing the screen-space UI (an after-pass: over the world, in window pixels).
 
-:class:`UIDrawer` keeps one pyglet object per (entity, part) — rounded rectangles,
-labels, sprites — and updates them in place each frame from the layout and the
-widget components, so text is laid out again only when it changes. Draw order is
-the layout's (parents under children), each part in its own ordered group; open
-dropdown lists go on top of everything; scroll lists clip their rows with a scissor.
+:class:`UIDrawer` keeps the pyglet objects of every widget (anti-aliased shapes,
+labels, sprites) in one batch and *syncs* an entity's objects only when something
+about it changed: one of its components was written, its box moved, or its look
+changed (hover, focus, press). A frame where nothing changed draws the batch and
+does nothing else, so an unchanged HUD costs one draw call per depth level.
+
+Draw order: parents under children (a depth level per nesting level, eight parts
+per level), open dropdown lists and tooltips over everything, dialogs above the
+rest of the UI. Scroll views clip their content with a scissor; text fields and
+lists clip their own text. Each widget kind's drawing is in
+:mod:`kge.render.ui_widgets` and :mod:`kge.render.ui_lists`.
 """
 
 from __future__ import annotations
@@ -13,314 +19,296 @@ from typing import Any
 
 import pyglet
 
-from kge.components.ui import (
-    Button,
-    Dropdown,
-    Label,
-    Panel,
-    ProgressBar,
-    ScrollList,
-    Slider,
-    TextInput,
-    Toggle,
-    UIImage,
-)
+from kge.components.transform import Transform
 from kge.host import Host
 from kge.render.passes import Frame
 from kge.render.setup import renderer_for
 from kge.render.textures import TextureCache
-from kge.render.ui_parts import ClipGroup, nine_patch
-from kge.ui.interact import UIState, dropdown_rows, list_rows
-from kge.ui.layout import Box, compute_layout
-from kge.ui.theme import DEFAULT_THEME, Theme
+from kge.render.ui_parts import ClipGroup
+from kge.render.ui_shapes import ShapeGroup, ShapeStore
+from kge.render.ui_text import PygletMeasure, TextStore
+from kge.ui.current import current_layout
+from kge.ui.layout import Box, Layout
+from kge.ui.measure import Font, elide, visible
+from kge.ui.settings import UISettings
+from kge.ui.sizing import Sizer
+from kge.ui.state import UIState
+from kge.ui.style import Look
 from kge.world import World
 
-Color = Any  # RGB or RGBA tuples
-_TOP = 1_000_000  # z of open dropdown lists
+Color = tuple[int, ...]  #: RGBA (themes and components always hold four channels)
+LEVEL = 16  #: draw orders per nesting level
+TOP = 1_000_000  #: open dropdown lists, tooltips, drag ghosts
+OVERLAY = -1  #: the pseudo-entity owning tooltips and drag ghosts
+
+
+class Canvas:
+    """Draws one entity's parts (keys are scoped to it; see :class:`UIDrawer`)."""
+
+    def __init__(self, drawer: UIDrawer, e: int, box: Box, z: int) -> None:
+        self.d, self.e, self.box, self.z = drawer, e, box, z
+        self.own_box: Box | None = None
+
+    # -- clipping ----------------------------------------------------------------------------------
+    def clip_to(self, box: Box) -> None:
+        """Parts drawn with ``own=True`` are cut to ``box`` (and to the scroll views around)."""
+        self.own_box = box
+
+    def _clip(self, own: bool) -> Any:
+        return self.d.own_clip(self.e, self.own_box) if own else self.d.layout_clip(self.e)
+
+    # -- parts ------------------------------------------------------------------------------------
+    def rect(self, part: Any, b: Box, color: Color, dz: int = 0, radius: float = 0.0,
+             border: float = 0.0, edge: Color = (0, 0, 0, 0), corners: Any = None,
+             own: bool = False, z: int | None = None) -> None:  # fmt: skip
+        if b.w <= 0 or b.h <= 0 or (color[3] == 0 and (border <= 0 or edge[3] == 0)
+                                    and corners is None):  # fmt: skip
+            return
+        key = (self.e, part)
+        self.d.used.add(key)
+        g = self.d.group("s", self.z + dz if z is None else z, self._clip(own))
+        self.d.shapes.box(key, g, b.x, b.y, b.w, b.h, color, radius, border, edge, corners)
+
+    def line(self, part: Any, a: tuple[float, float], b: tuple[float, float], width: float,
+             color: Color, dz: int = 0, own: bool = False,
+             z: int | None = None) -> None:  # fmt: skip
+        key = (self.e, part)
+        self.d.used.add(key)
+        g = self.d.group("s", self.z + dz if z is None else z, self._clip(own))
+        self.d.shapes.stroke(key, g, a, b, width, color)
+
+    def label(self, part: Any, text: str, x: float, baseline: float, font: Font, color: Color,
+              dz: int = 4, anchor: str = "left", own: bool = False,
+              z: int | None = None) -> None:  # fmt: skip
+        if not text:
+            return
+        key = (self.e, part)
+        self.d.used.add(key)
+        g = self.d.group("t", self.z + dz if z is None else z, self._clip(own))
+        self.d.texts.put(key, g, text, x, baseline, font, color, anchor)
+
+    def line_of_text(self, part: Any, text: str, b: Box, font: Font, color: Color,
+                     align: str = "center", dz: int = 4, own: bool = False,
+                     z: int | None = None) -> None:  # fmt: skip
+        """One line in ``b``, centred vertically, cut with an ellipsis to the box's width."""
+        m = self.d.measure
+        shown = elide(m, visible(text), font, b.w)
+        lh, asc = m.line_height(font), m.ascent(font)
+        baseline = b.center[1] + lh / 2 - asc
+        x = {"left": b.x, "center": b.center[0], "right": b.right}[align]
+        self.label(part, shown, x, baseline, font, color, dz, align, own, z)
+
+    def image(self, part: Any, image: Any, b: Box, dz: int = 2, tint: Color = (255, 255, 255, 255),
+              own: bool = False, z: int | None = None) -> None:  # fmt: skip
+        if b.w <= 0 or b.h <= 0:
+            return
+        key = (self.e, part)
+        self.d.used.add(key)
+        g = self.d.group("i", self.z + dz if z is None else z, self._clip(own))
+        self.d.sprite(key, g, image, b, tint)
 
 
 class UIDrawer:
-    """The pyglet side of one world's UI."""
+    """The pyglet side of one world's UI (see the module docstring)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
         self.batch = pyglet.graphics.Batch()
-        self.items: dict[tuple[Any, ...], Any] = {}
-        self.used: set[tuple[Any, ...]] = set()
-        self.groups: dict[int, Any] = {}
-        self.clips: dict[int, ClipGroup] = {}
-        self.theme: Theme = DEFAULT_THEME
-        self.time = 0.0
+        self.shapes = ShapeStore(self.batch)
+        self.texts = TextStore(self.batch)
+        self.sprites: dict[Any, Any] = {}
         self.textures = TextureCache(world)  # asset names, PixelImages, pyglet images
+        self.groups: dict[tuple[Any, ...], Any] = {}
+        self.clips: dict[Any, ClipGroup] = {}
+        self.owned: dict[int, set[Any]] = {}
+        self.drawn: dict[int, tuple[Any, ...]] = {}
+        self.used: set[Any] = set()
+        self.layout = Layout()
+        self.state: UIState = world.resource(UIState)
+        self.sizer: Sizer | None = None
+        self.measure: Any = None
+        self.version = -1
+        self.key: tuple[Any, ...] = ()
+        self.blink = -1
+        self.fb_scale = 1.0
+        self.syncs = 0  #: entities synced (a counter the benchmarks and tests read)
 
-    # -- cached primitives -------------------------------------------------------------------
-    def group(self, z: int, clip: int | None = None) -> Any:
-        if clip is not None:
-            return self.clips[clip].child(z)
-        g = self.groups.get(z)
-        if g is None:
-            g = self.groups[z] = pyglet.graphics.Group(order=z)
+    # -- groups ------------------------------------------------------------------------------------
+    def layout_clip(self, e: int) -> ClipGroup | None:
+        """The clip group of the scroll view ``e`` is inside, or None."""
+        lay = self.layout
+        if e not in lay.clip:
+            return None
+        owner = lay.parent.get(e)
+        while owner is not None and owner not in lay.scroll:
+            owner = lay.parent.get(owner)
+        if owner is None:
+            return None
+        view = lay.scroll[owner].viewport.intersect(lay.clip.get(owner))
+        order = 2 * (lay.depth[owner] * LEVEL + LEVEL - 1)  # after the view's own parts
+        return self._clip_group(("view", owner), view, order, self.layout_clip(owner))
+
+    def own_clip(self, e: int, box: Box | None) -> ClipGroup | None:
+        outer = self.layout_clip(e)
+        if box is None:
+            return outer
+        cut = box.intersect(self.layout.clip.get(e))
+        # after the entity's background parts (up to +2), before its clipped ones (+3 on)
+        order = 2 * (self.layout.depth.get(e, 0) * LEVEL + 2) + 1
+        return self._clip_group(("own", e), cut, order, outer)
+
+    def _clip_group(self, key: Any, box: Box, order: int, parent: Any) -> ClipGroup:
+        g = self.clips.get(key)
+        if g is None or g.parent is not parent or g.order != order:
+            g = self.clips[key] = ClipGroup(order=order, parent=parent)
+        g.box = (box.x, box.y, box.w, box.h)
+        g.scale = self.fb_scale
         return g
 
-    def _get(self, key: tuple[Any, ...], make: Any) -> Any:
-        self.used.add(key)
-        obj = self.items.get(key)
-        if obj is None:
-            obj = self.items[key] = make()
-        return obj
+    def group(self, kind: str, z: int, clip: Any) -> Any:
+        key = (kind, z, id(clip) if clip is not None else None)
+        g = self.groups.get(key)
+        if g is None or (clip is not None and g.parent is not clip):
+            order = 2 * z + (1 if kind == "t" else 0)
+            if kind == "s":
+                g = ShapeGroup(order, clip)
+            else:
+                g = pyglet.graphics.Group(order=order, parent=clip)
+            self.groups[key] = g
+        return g
 
-    def rect(self, key: tuple[Any, ...], box: Box, color: Color, z: int, radius: float = 0.0,
-             clip: int | None = None) -> None:  # fmt: skip
-        if box.w < 1 or box.h < 1 or color[3] == 0:
-            return
-        r = min(radius, box.w / 2, box.h / 2)
-        g = self.group(z, clip)
+    def sprite(self, key: Any, group: Any, image: Any, b: Box, tint: Color) -> None:
+        img = self.textures.texture(image) if not hasattr(image, "get_texture") or isinstance(
+            image, str) else image  # fmt: skip
+        spr = self.sprites.get(key)
+        if spr is not None and spr.group is not group:
+            spr.delete()
+            spr = None
+        if spr is None:
+            spr = self.sprites[key] = pyglet.sprite.Sprite(img, batch=self.batch, group=group)
+        if spr.image is not img:
+            spr.image = img
+        spr.update(x=b.x, y=b.y, scale_x=b.w / max(img.width, 1), scale_y=b.h / max(img.height, 1))
+        if tuple(spr.color) != tuple(tint):
+            spr.color = tint
 
-        def make() -> Any:
-            if r >= 1:
-                return pyglet.shapes.RoundedRectangle(
-                    box.x,
-                    box.y,
-                    box.w,
-                    box.h,
-                    r,
-                    segments=6,
-                    color=color,
-                    batch=self.batch,
-                    group=g,
-                )
-            return pyglet.shapes.Rectangle(
-                box.x, box.y, box.w, box.h, color=color, batch=self.batch, group=g
-            )
+    def _delete(self, key: Any) -> None:
+        self.shapes.delete(key)
+        self.texts.delete(key)
+        spr = self.sprites.pop(key, None)
+        if spr is not None:
+            spr.delete()
 
-        shape = self._get((*key, "rect", round(r), z, clip), make)
-        if (shape.x, shape.y, shape.width, shape.height) != (box.x, box.y, box.w, box.h):
-            shape.x, shape.y = box.x, box.y
-            shape.width, shape.height = box.w, box.h
-        if tuple(shape.color) != color:
-            shape.color = color
+    # -- syncing -----------------------------------------------------------------------------------
+    def look(self, e: int, kind: str, state: str) -> Look:
+        assert self.sizer is not None
+        return self.sizer.look(e, kind, state)
 
-    def text(
-        self,
-        key: tuple[Any, ...],
-        value: str,
-        x: float,
-        y: float,
-        color: Color,
-        z: int,
-        size: float | None = None,
-        anchor_x: Any = "center",
-        clip: int | None = None,
-    ) -> Any:
-        size = size or self.theme.font_size
-        g = self.group(z, clip)
+    def sync(self, e: int) -> None:
+        """Rebuild entity ``e``'s parts (deleting the ones it no longer draws)."""
+        from kge.render.ui_widgets import paint
 
-        def make() -> Any:
-            return pyglet.text.Label(
-                value, font_name=self.theme.font_name, font_size=size, color=color, x=x, y=y,
-                anchor_x=anchor_x, anchor_y="center", batch=self.batch, group=g,
-            )  # fmt: skip
-
-        label = self._get((*key, "text", size, anchor_x, z, clip), make)
-        if label.text != value:
-            label.text = value
-        if (label.x, label.y) != (x, y):
-            label.position = (x, y, 0)
-        if tuple(label.color) != color:
-            label.color = color
-        return label
-
-    def sprite(self, key: tuple[Any, ...], image: Any, box: Box, z: int, tint: Color) -> None:
-        g = self.group(z)
-        spr = self._get((*key, "sprite", z),
-                        lambda: pyglet.sprite.Sprite(image, batch=self.batch, group=g))  # fmt: skip
-        if spr.image is not image:
-            spr.image = image
-        spr.update(x=box.x, y=box.y, scale_x=box.w / max(image.width, 1),
-                   scale_y=box.h / max(image.height, 1))  # fmt: skip
-        spr.color = tint
-
-    # -- frame -----------------------------------------------------------------------------------
-    def draw(self, frame: Frame) -> None:
-        world = self.world
-        state = world.try_resource(UIState)
-        if state is None:
-            return
-        self.theme = world.try_resource(Theme) or DEFAULT_THEME
-        self.time = frame.time
+        lay = self.layout
         self.used = set()
-        lay = compute_layout(world, frame.viewport, self.theme)
-        state.layout = lay
-        for e in lay.order:
-            # one group per nesting level and part, not per widget: siblings share a
-            # level, so a grid of 200 buttons is a handful of draw calls
-            self.widget(e, lay.boxes[e], lay.widget.get(e), state, lay.depth[e] * 8)
-        for key in [k for k in self.items if k not in self.used]:
-            self.items.pop(key).delete()
-        renderer = renderer_for(world.resource(Host))
+        if e in lay.boxes:
+            canvas = Canvas(self, e, lay.boxes[e], lay.depth[e] * LEVEL)
+            paint(self, canvas, lay.widget.get(e))
+        old = self.owned.get(e, set())
+        for key in old - self.used:
+            self._delete(key)
+        if self.used:
+            self.owned[e] = self.used
+        else:
+            self.owned.pop(e, None)
+        self.syncs += 1
+
+    def _signature(self, e: int) -> tuple[Any, ...]:
+        lay = self.layout
+        return (lay.boxes.get(e), lay.depth.get(e), lay.clip.get(e))
+
+    def draw(self, frame: Frame) -> None:
+        world, state = self.world, self.state
+        host = world.try_resource(Host)
+        renderer = renderer_for(host) if host is not None else None
+        if renderer is not None:
+            window = renderer.window
+            fw, _ = window.get_framebuffer_size()
+            self.fb_scale = fw / max(window.width, 1)
+            state.store.attach(window)
+            settings = world.try_resource(UISettings)
+            extra = float(getattr(window, "scale", 1.0)) / self.fb_scale
+            if settings is not None and abs(extra - settings.dpi) > 1e-6 and 0.25 <= extra <= 8:
+                settings.dpi = extra
+        if not isinstance(state.measure, PygletMeasure):
+            state.measure = PygletMeasure()
+        self.measure = state.measure
+        # laid out for the App's window size, as the input handling sees it (a headless App
+        # resized after its first frame draws into its first buffer: the UI is cut, not moved)
+        size = host.size if host is not None else frame.viewport
+        lay = current_layout(world, size, self._to_screen(frame))
+        self.layout, self.sizer = lay, lay.sizer
+        todo = set(state.redraw)
+        state.redraw.clear()
+        key = (lay.size, lay.scale, id(self.sizer.theme) if self.sizer else None, self.fb_scale)
+        if key != self.key:
+            todo |= set(lay.order) | set(self.owned)
+            self.key = key
+        elif lay.version != self.version:
+            for e in lay.order:
+                if self._signature(e) != self.drawn.get(e):
+                    todo.add(e)
+            todo |= set(self.owned) - set(lay.boxes)
+        self.version = lay.version
+        blink = int(state.time * 2.0) % 2
+        if blink != self.blink:
+            self.blink = blink
+            if state.focused is not None:
+                todo.add(state.focused)
+        for e in sorted(todo, key=lambda k: lay.depth.get(k, 0)):
+            self.sync(e)
+            if e in lay.boxes:
+                self.drawn[e] = self._signature(e)
+            else:
+                self.drawn.pop(e, None)
+        if state.drag is not None or state.tip.shown or OVERLAY in self.owned:
+            from kge.render.ui_widgets import paint_overlay
+
+            self.used = set()
+            paint_overlay(self, Canvas(self, OVERLAY, Box(0, 0, *lay.size), TOP))
+            for k in self.owned.get(OVERLAY, set()) - self.used:
+                self._delete(k)
+            self.owned[OVERLAY] = self.used
         if renderer is None:
             return
         window = renderer.window
-        fw, _ = window.get_framebuffer_size()
-        for clip in self.clips.values():
-            clip.scale = fw / max(window.width, 1)
         saved, window.view = window.view, pyglet.math.Mat4()  # window pixels
         try:
             self.batch.draw()
         finally:
             window.view = saved
 
-    # -- widgets ---------------------------------------------------------------------------------
-    def widget(self, e: int, box: Box, w: Any, state: UIState, z: int) -> None:
-        th = self.theme
-        panel = self.world.try_get(e, Panel)
-        if panel is not None:
-            self.panel(e, box, panel, z)
-        if w is None:
-            return
-        look = state.state_of(e)
-        focused = state.focused == e
-        if focused and not isinstance(w, (Label, ProgressBar, UIImage, TextInput)):
-            self.rect(
-                (e, "focus"), box.inset(-th.focus_width), th.focus, z, th.radius + th.focus_width
-            )
-        muted = th.text_disabled if look == "disabled" else th.text
-        if isinstance(w, Label):
-            ax = w.align
-            x = {"left": box.x, "center": box.center[0], "right": box.right}[ax]
-            self.text((e,), w.text, x, box.center[1], w.color or th.text, z + 1, w.size, ax)
-        elif isinstance(w, Button):
-            fill = {"normal": th.button, "focused": th.button, "hover": th.button_hover,
-                    "pressed": th.button_pressed, "disabled": th.button_disabled}[look]  # fmt: skip
-            self.rect((e, "fill"), box, fill, z + 1, th.radius)
-            if w.image:
-                img = self.textures.texture(w.image)
-                side = min(box.h - 2 * th.padding, box.w - 2 * th.padding)
-                x = box.x + th.padding if w.text else box.center[0] - side / 2
-                self.sprite((e, "img"), img, Box(x, box.center[1] - side / 2, side, side), z + 2,
-                            (255, 255, 255, 255))  # fmt: skip
-            if w.text:
-                self.text((e,), w.text, box.center[0], box.center[1], muted, z + 3)
-        elif isinstance(w, Toggle):
-            side = min(box.h, 28.0)
-            square = Box(box.x, box.center[1] - side / 2, side, side)
-            hover = look in ("hover", "pressed")
-            self.rect((e, "box"), square, th.button_hover if hover else th.field, z + 1, 5)
-            if w.value:
-                self.rect((e, "tick"), square.inset(side * 0.22), th.accent, z + 2, 3)
-            self.text((e,), w.text, square.right + 8, box.center[1], muted, z + 3, anchor_x="left")
-        elif isinstance(w, Slider):
-            self.slider(e, box, w, look, z)
-        elif isinstance(w, ProgressBar):
-            self.rect((e, "track"), box, th.track, z + 1, min(th.radius, box.h / 2))
-            bar = Box(box.x, box.y, box.w * w.fraction, box.h)
-            self.rect((e, "fill"), bar, w.color or th.accent, z + 2, min(th.radius, box.h / 2))
-        elif isinstance(w, TextInput):
-            self.text_input(e, box, w, focused, z)
-        elif isinstance(w, Dropdown):
-            self.dropdown(e, box, w, look, z)
-        elif isinstance(w, ScrollList):
-            self.scroll_list(e, box, w, z)
-        elif isinstance(w, UIImage):
-            self.sprite((e,), self.textures.texture(w.image), box, z + 1, w.tint)
+    def _to_screen(self, frame: Frame) -> Any:
+        world = self.world
 
-    def panel(self, e: int, box: Box, p: Panel, z: int) -> None:
-        th = self.theme
-        if p.image:
-            img = self.textures.texture(p.image)
-            for i, (region, part) in enumerate(nine_patch(img, box, p.border)):
-                self.sprite((e, "nine", i), region, part, z, p.color or (255, 255, 255, 255))
-            return
-        color = p.color or th.panel
-        if len(color) == 3 or color[3] == 255:  # a border under a see-through panel would show
-            self.rect((e, "border"), box, th.panel_border, z, p.radius)
-            box = box.inset(1)
-        self.rect((e, "panel"), box, color, z, p.radius)
+        def to_screen(entity: int, offset: tuple[float, float]) -> tuple[float, float] | None:
+            pose = frame.pose(entity)
+            if pose is None:
+                t = world.try_get(entity, Transform) if world.exists(entity) else None
+                if t is None:
+                    return None
+                pose = (t.x, t.y, t.angle)
+            return frame.world_to_screen((pose[0] + offset[0], pose[1] + offset[1]))
 
-    def slider(self, e: int, box: Box, w: Slider, look: str, z: int) -> None:
-        th = self.theme
-        knob = box.h / 2
-        th_h = max(box.h / 4, 3.0)
-        track = Box(box.x + knob, box.center[1] - th_h / 2, box.w - 2 * knob, th_h)
-        self.rect((e, "track"), track, th.track, z + 1, th_h / 2)
-        span = w.max - w.min
-        t = 0.0 if span <= 0 else (w.value - w.min) / span
-        fill = Box(track.x, track.y, track.w * t, track.h)
-        self.rect(
-            (e, "fill"),
-            fill,
-            th.text_disabled if look == "disabled" else th.accent,
-            z + 2,
-            th_h / 2,
-        )
-        cx = track.x + track.w * t
-        r = knob - 2
-        color = th.button_pressed if look == "pressed" else th.text
-        self.rect((e, "knob"), Box(cx - r, box.center[1] - r, 2 * r, 2 * r), color, z + 3, r)
-
-    def text_input(self, e: int, box: Box, w: TextInput, focused: bool, z: int) -> None:
-        th = self.theme
-        self.rect((e, "edge"), box, th.focus if focused else th.panel_border, z + 1, th.radius)
-        self.rect((e, "field"), box.inset(2), th.field, z + 2, max(th.radius - 2, 0))
-        x0, cy = box.x + th.padding, box.center[1]
-        shown = w.text or w.placeholder
-        color = th.text if w.text else th.text_muted
-        self.text((e,), shown, x0, cy, color, z + 4, anchor_x="left")
-        if not focused or w.disabled:
-            return
-        fs = th.font_size
-
-        def x_at(i: int) -> float:
-            if not w.text or i == 0:
-                return x0
-            probe = self.text(
-                (e, "probe"), w.text[:i], -10_000, 0, (0, 0, 0, 0), z, anchor_x="left"
-            )
-            return x0 + probe.content_width
-
-        sel = w.selection
-        if sel is not None:
-            a, b = x_at(sel[0]), x_at(sel[1])
-            self.rect((e, "sel"), Box(a, cy - fs * 0.75, b - a, fs * 1.5), th.selection, z + 3)
-        if int(self.time * 2.0) % 2 == 0:  # blink on game time (deterministic headless)
-            cx = x_at(w.caret)
-            self.rect((e, "caret"), Box(cx, cy - fs * 0.7, 2, fs * 1.4), th.text, z + 5)
-
-    def dropdown(self, e: int, box: Box, w: Dropdown, look: str, z: int) -> None:
-        th = self.theme
-        fill = th.button_hover if look in ("hover", "pressed") else th.button
-        self.rect((e, "fill"), box, fill, z + 1, th.radius)
-        self.text(
-            (e,), w.value or "", box.x + th.padding, box.center[1], th.text, z + 2, anchor_x="left"
-        )
-        self.text((e, "arrow"), "v", box.right - th.padding, box.center[1], th.text_muted, z + 2,
-                  anchor_x="right")  # fmt: skip
-        if not w.open:
-            return
-        for i, row in enumerate(dropdown_rows(box, len(w.options))):
-            color = th.button_pressed if i == w.selected else th.panel
-            self.rect((e, "opt", i), row, th.panel_border, _TOP)
-            self.rect((e, "optbg", i), row.inset(1), color, _TOP + 1)
-            self.text((e, "opt", i), w.options[i], row.x + th.padding, row.center[1], th.text,
-                      _TOP + 2, anchor_x="left")  # fmt: skip
-
-    def scroll_list(self, e: int, box: Box, w: ScrollList, z: int) -> None:
-        th = self.theme
-        self.rect((e, "bg"), box, th.field, z + 1, th.radius)
-        clip = self.clips.get(e)
-        if clip is None:
-            clip = self.clips[e] = ClipGroup(order=z + 2)
-        clip.box = (box.x, box.y, box.w, box.h)
-        for i, row in list_rows(w, box, th):
-            if i == w.selected:
-                self.rect((e, "sel", i), row, th.selection, 0, clip=e)
-            self.text((e, "row", i), w.items[i], row.x + th.padding, row.center[1], th.text, 1,
-                      anchor_x="left", clip=e)  # fmt: skip
+        return to_screen
 
     def close(self) -> None:
-        for obj in self.items.values():
-            obj.delete()
-        self.items.clear()
+        self.shapes.clear()
+        self.texts.clear()
+        for spr in self.sprites.values():
+            spr.delete()
+        self.sprites.clear()
+        self.owned.clear()
+        self.drawn.clear()
 
 
 def drawer_for(world: World) -> UIDrawer:

@@ -12,27 +12,33 @@ from kge.ui.layout import Box
 
 
 class ClipGroup(pyglet.graphics.Group):
-    """Draws its children only inside ``box`` (window pixels; a scroll list's rows)."""
+    """Draws its children only inside ``box`` (window pixels: a scroll view's viewport, a
+    text field's inside). Clip groups nest: the inner one's box is already cut to the
+    outer one's, and leaving it restores the outer scissor."""
 
-    def __init__(self, order: int = 0) -> None:
-        super().__init__(order=order)
+    def __init__(self, order: int = 0, parent: pyglet.graphics.Group | None = None) -> None:
+        super().__init__(order=order, parent=parent)
         self.box: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
         self.scale = 1.0  #: framebuffer pixels per window pixel (HiDPI)
-        self._children: dict[int, pyglet.graphics.Group] = {}
 
-    def child(self, z: int) -> pyglet.graphics.Group:
-        g = self._children.get(z)
-        if g is None:
-            g = self._children[z] = pyglet.graphics.Group(order=z, parent=self)
-        return g
+    def apply(self) -> None:
+        x, y, w, h = self.box
+        k = self.scale
+        x0, y0 = round(x * k), round(y * k)
+        gl.glEnable(gl.GL_SCISSOR_TEST)
+        gl.glScissor(x0, y0, max(round((x + w) * k) - x0, 0), max(round((y + h) * k) - y0, 0))
 
     def set_state(self) -> None:
-        x, y, w, h = (round(v * self.scale) for v in self.box)
-        gl.glEnable(gl.GL_SCISSOR_TEST)
-        gl.glScissor(x, y, max(w, 0), max(h, 0))
+        self.apply()
 
     def unset_state(self) -> None:
-        gl.glDisable(gl.GL_SCISSOR_TEST)
+        outer = self.parent
+        while outer is not None and not isinstance(outer, ClipGroup):
+            outer = outer.parent
+        if outer is not None:
+            outer.apply()
+        else:
+            gl.glDisable(gl.GL_SCISSOR_TEST)
 
     def __eq__(self, other: object) -> bool:
         return self is other

@@ -37,6 +37,8 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
     window.push_handlers()  # a fresh frame: @window.event below fills it
     inp = app.input
     state = {"count": 0, "last": time.perf_counter()}
+    #: keys pressed whose first text motion (pyglet sends one with the press) is still due
+    first_motion: set[int] = set()
 
     def screen(x: float, y: float) -> tuple[float, float]:
         """Window pixels -> the game's screen pixels (design pixels with a Resolution)."""
@@ -67,10 +69,31 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
             window.set_fullscreen(not window.fullscreen)
             return True
         inp.press(symbol, modifiers)  # F1 / F2: the render plugin's DebugKeys system
+        first_motion.add(symbol)
         return True  # keep pyglet's default Escape-closes-window out of the game's way
+
+    def motion(code: int) -> None:
+        # arrows, PageUp/PageDown, Backspace and Delete arrive again as text
+        # motions while held: after the first (the press itself), each is the system's
+        # auto-repeat, which text fields follow (word and clipboard motions are codes < 9)
+        if code < 9:
+            return
+        if code in first_motion:
+            first_motion.discard(code)
+        else:
+            inp.repeat_key(code, inp.modifiers)
+
+    @window.event
+    def on_text_motion(code: int) -> None:
+        motion(code)
+
+    @window.event
+    def on_text_motion_select(code: int) -> None:
+        motion(code)
 
     @window.event
     def on_key_release(symbol: int, modifiers: int) -> None:
+        first_motion.discard(symbol)
         inp.release(symbol, modifiers)
 
     @window.event

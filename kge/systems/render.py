@@ -156,6 +156,14 @@ class PygletFrontend:
         self._ensure(host)
         renderer = renderer_for(host)
         assert renderer is not None
+        self._draw_worlds(host, renderer)
+        if host.transition is not None:
+            from kge.render.transitions import draw_transition
+
+            draw_transition(renderer, host.transition, host.background)
+
+    @staticmethod
+    def _draw_worlds(host: Host, renderer: Any) -> None:
         top = host.world
         worlds = host.visible_worlds()
         try:
@@ -165,10 +173,18 @@ class PygletFrontend:
                 world.schedule.run(Stage.RENDER, alpha)
         finally:
             renderer.clear = True
-        if host.transition is not None:
-            from kge.render.transitions import draw_transition
 
-            draw_transition(renderer, host.transition, host.background)
+    def capture(self, host: Host) -> Any:
+        """Draw the visible worlds and read the frame back as a texture (the old scene of a
+        transition); None when this App has not drawn yet (nothing to picture)."""
+        from kge.render.setup import renderer_for
+        from kge.render.transitions import take_picture
+
+        renderer = renderer_for(host)
+        if renderer is None:
+            return None
+        self._draw_worlds(host, renderer)
+        return take_picture(renderer)
 
     def screenshot(self, host: Host, path: str) -> None:
         from kge.render.setup import save_color_buffer

@@ -1,5 +1,6 @@
-"""Testing your own game headless: step until something happens, drive input, compare
-screenshots with golden images.
+"""Testing your own game headless: step until something happens, drive input and the UI
+(``click(app, "Play")``, ``type_text``, ``focus``, ``drag``: :mod:`kge.ui.driving`),
+compare screenshots with golden images.
 
 These helpers work in any test runner; with pytest, kge's plugin (registered when kge
 is installed) adds the fixtures ``kge_app``, ``kge_world`` and ``kge_golden`` and the
@@ -146,13 +147,38 @@ def compare_with_golden(
         )
 
 
+from kge.ui.driving import (  # noqa: E402  (after the helpers above, which it does not need)
+    UITargetError,
+    box_of,
+    click,
+    compose,
+    double_click,
+    drag,
+    find,
+    focus,
+    press,
+    scroll,
+    type_text,
+)
+
 __all__ = [
     "GoldenMismatch",
     "StepTimeout",
+    "UITargetError",
+    "box_of",
+    "click",
     "compare_with_golden",
+    "compose",
+    "double_click",
+    "drag",
+    "find",
+    "focus",
+    "press",
     "read_png",
     "screenshot_pixels",
+    "scroll",
     "step_until",
     "tap",
+    "type_text",
     "write_png",
 ]

@@ -3,406 +3,366 @@
 :func:`handle_input` runs once per frame (the UI system calls it in the INPUT stage,
 before behaviours see the input). It walks the frame's input events in order:
 
-* pointer: hover, press, release on the same widget = click; dragging a slider; the
-  wheel scrolls a list; a press anywhere over the UI (widgets and panels that block)
-  is *taken*: it is removed from the game's view of the input;
-* keyboard: Tab / Shift+Tab move the focus, arrows too once something has focus;
-  Enter or Space activates, Left/Right change a slider or dropdown, Escape closes a
-  dropdown; a focused text field takes typing, Backspace/Delete, Home/End, the
-  arrows (with Shift: selection), Ctrl+A/C/X/V and Enter (submit);
-* gamepad: the d-pad moves the focus (and changes sliders), ``a`` activates, ``b``
-  closes a dropdown.
+* pointer: hover, press, release on the same widget = click (two quick ones on a row:
+  a double click); dragging sliders, knobs, scrollbars, text selections and drag and
+  drop sources; the wheel scrolls the innermost scrollable thing under it; a press
+  anywhere over the UI (widgets and panels that block) is *taken*: removed from the
+  game's view of the input; while a modal dialog is shown, everything is;
+* keyboard: Tab / Shift+Tab move the focus in Tab order, arrows by direction once
+  something has focus; Enter or Space activates, Escape cancels (closes a dropdown
+  or a dialog); the focused widget gets first say (a text field takes typing and
+  its editing keys, a list its arrows and PageUp/PageDown);
+* gamepad: the d-pad is the arrows, ``a`` activates, ``b`` cancels, ``x`` picks up a
+  draggable, the shoulder buttons switch tabs;
+* IME composition events show in the focused text field until the text is typed.
 
-Widget state the user does not own (hover, press, focus, the clipboard) is the
-:class:`UIState` resource, not component fields.
+Each widget kind's behaviour lives in :mod:`kge.ui.controls` and
+:mod:`kge.ui.text_controls`; this module routes to them and keeps the frame's
+bookkeeping (:class:`Frame`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Any
 
-from kge.components.ui import Button, Dropdown, Panel, ScrollList, Slider, TextInput, Toggle
-from kge.input import GamepadEvent, Input, KeyEvent, MouseEvent, TextEvent
+from kge.components.ui import Dialog, DialogButton, Panel, Tooltip, UINode
+from kge.input import CompositionEvent, GamepadEvent, Input, KeyEvent, MouseEvent, TextEvent
 from kge.keys import Key, Mod, Mouse
-from kge.ui.events import ButtonClicked, FocusChanged, TextSubmitted, ValueChanged
-from kge.ui.layout import Box, Layout, compute_layout, text_width
-from kge.ui.theme import Theme
+from kge.ui import controls, drag, scrolling, text_controls
+from kge.ui.dialogs import close_dialog
+from kge.ui.events import FocusChanged, ValueChanged
+from kge.ui.focus import nearest, scroll_into_view, step, tab_order
+from kge.ui.geometry import list_rows
+from kge.ui.layout import Layout
+from kge.ui.sizing import Sizer
+from kge.ui.state import Tip, UIState
+
+__all__ = ["Frame", "UIState", "handle_input", "list_rows"]  # UIState, list_rows: as before
+from kge.ui.style import Look
 from kge.world import World
 
-INTERACTIVE: tuple[type, ...] = (Button, Toggle, Slider, TextInput, Dropdown, ScrollList)
+#: keys and gamepad buttons -> the UI's actions
+KEY_ACTIONS: dict[int, str] = {
+    Key.UP: "up", Key.DOWN: "down", Key.LEFT: "left", Key.RIGHT: "right",
+    Key.ENTER: "activate", Key.NUM_ENTER: "activate", Key.SPACE: "activate",
+    Key.ESCAPE: "cancel", Key.PAGEUP: "page_up", Key.PAGEDOWN: "page_down",
+    Key.HOME: "home", Key.END: "end",
+}  # fmt: skip
+PAD_ACTIONS: dict[str, str] = {
+    "dpup": "up", "dpdown": "down", "dpleft": "left", "dpright": "right", "a": "activate",
+    "b": "cancel", "x": "pick", "leftshoulder": "tab_prev", "rightshoulder": "tab_next",
+}  # fmt: skip
 
 
-@dataclass(slots=True)
-class UIState:
-    """Hover, press and focus (entities), the clipboard, and the last layout."""
+class Frame:
+    """One frame of UI input handling: the world, its layout and what the frame did."""
 
-    hovered: int | None = None
-    pressed: int | None = None
-    focused: int | None = None
-    clipboard: str = ""
-    layout: Layout = field(default_factory=Layout)
-    took_pointer: bool = False  #: the UI took this frame's mouse presses
-
-    def state_of(self, entity: int) -> str:
-        """ "disabled", "pressed", "hover", "focused" or "normal" (what the renderer shows)."""
-        w = self.layout.widget.get(entity)
-        if getattr(w, "disabled", False):
-            return "disabled"
-        if self.pressed == entity:
-            return "pressed"
-        if self.hovered == entity:
-            return "hover"
-        if self.focused == entity:
-            return "focused"
-        return "normal"
-
-
-def dropdown_rows(box: Box, count: int) -> list[Box]:
-    """The boxes of an open dropdown's options, stacked under it."""
-    return [Box(box.x, box.y - (i + 1) * box.h, box.w, box.h) for i in range(count)]
-
-
-def list_rows(lst: ScrollList, box: Box, theme: Theme) -> list[tuple[int, Box]]:
-    """(index, box) of the visible rows of a scroll list (partly visible ones too)."""
-    rh = lst.row_height or theme.row_height
-    rows = []
-    for i in range(len(lst.items)):
-        top = box.top - i * rh + lst.scroll
-        if top - rh < box.top and top > box.y:
-            rows.append((i, Box(box.x, top - rh, box.w, rh)))
-    return rows
-
-
-def max_scroll(lst: ScrollList, box: Box, theme: Theme) -> float:
-    return max(len(lst.items) * (lst.row_height or theme.row_height) - box.h, 0.0)
-
-
-class _Frame:
-    """One frame of UI input handling (see :func:`handle_input`)."""
-
-    def __init__(self, world: World, inp: Input, state: UIState, theme: Theme) -> None:
-        self.world, self.inp, self.state, self.theme = world, inp, state, theme
-        self.layout = state.layout
+    def __init__(self, world: World, inp: Input, state: UIState, size: tuple[int, int],
+                 dt: float) -> None:  # fmt: skip
+        self.world, self.inp, self.state, self.size, self.dt = world, inp, state, size, dt
+        self.layout: Layout = state.layout
+        sizer = self.layout.sizer
+        assert sizer is not None, "handle_input lays the UI out first"
+        self.sizer: Sizer = sizer
         self.events: list[Any] = []
         self.took = False
         self.used_keys: list[int] = []
+        self.nodes: dict[int, UINode] = self.layout.nodes
+        self.modal = self.layout.modal
 
-    # -- helpers -------------------------------------------------------------------------------
+    # -- lookups ---------------------------------------------------------------------------------
     def widget(self, e: int | None) -> Any:
         return None if e is None else self.layout.widget.get(e)
 
+    def look(self, e: int, state: str | None = None) -> Look:
+        w = self.widget(e)
+        kind = type(w).__name__ if w is not None else "Panel"
+        return self.sizer.look(e, kind, state or self.state.state_of(e))
+
+    def box(self, e: int) -> Any:
+        return self.layout.boxes[e]
+
+    def reachable(self, e: int) -> bool:
+        """Not behind a modal dialog."""
+        return self.modal is None or self.layout.dialog.get(e) == self.modal
+
     def interactive(self, e: int) -> bool:
         w = self.layout.widget.get(e)
-        return isinstance(w, INTERACTIVE) and not getattr(w, "disabled", False)
+        return (controls.is_interactive(w) and not getattr(w, "disabled", False)
+                and self.reachable(e))  # fmt: skip
 
     def blocking(self, e: int) -> bool:
         if self.interactive(e):
             return True
         p = self.world.try_get(e, Panel)
-        return p is not None and p.blocks
+        return (p is not None and p.blocks) or e in self.layout.scroll or (
+            self.world.try_get(e, Dialog) is not None)  # fmt: skip
 
-    def focusables(self) -> list[int]:
-        nodes = self.layout.order
-        return [e for e in nodes if self.interactive(e) and self._node_focusable(e)]
+    def can_focus(self, e: int) -> bool:
+        n = self.nodes.get(e)
+        return n is not None and n.focusable and self.interactive(e)
 
-    def _node_focusable(self, e: int) -> bool:
-        from kge.components.ui import UINode
+    def order(self) -> list[int]:
+        return tab_order(self.layout, self.nodes, self.can_focus, self.modal)
 
-        n = self.world.try_get(e, UINode)
-        return n is not None and n.focusable
-
-    def focus(self, e: int | None) -> None:
-        old = self.state.focused
-        if e != old:
-            self.state.focused = e
-            self.close_dropdowns(keep=e)
-            self.events.append(FocusChanged(e, old))
-
-    def move_focus(self, delta: int) -> None:
-        order = self.focusables()
-        if not order:
-            return
-        cur = self.state.focused
-        i = order.index(cur) + delta if cur in order else (0 if delta > 0 else -1)
-        self.focus(order[i % len(order)])
-
-    def close_dropdowns(self, keep: int | None = None) -> None:
-        for e, w in self.layout.widget.items():
-            if isinstance(w, Dropdown) and w.open and e != keep:
-                w.open = False
+    # -- changes ---------------------------------------------------------------------------------
+    def emit(self, event: Any) -> None:
+        self.events.append(event)
 
     def changed(self, e: int, value: Any, old: Any) -> None:
         self.events.append(ValueChanged(e, value, old))
 
-    # -- activation ----------------------------------------------------------------------
+    def focus(self, e: int | None) -> None:
+        st = self.state
+        old = st.focused
+        if e == old:
+            return
+        st.focused = e
+        st.touch(old, e)
+        controls.close_dropdowns(self, keep=e)
+        if old is not None:
+            text_controls.blur(self, old)
+        self.events.append(FocusChanged(e, old))
+        if e is not None:
+            scroll_into_view(self.world, self.layout, e)
+            if st.tip.shown:
+                st.touch(st.tip.entity)
+            st.tip = Tip()  # the new focus's tooltip, if it has one, after its delay
+
+    def move_focus(self, delta: int) -> None:
+        target = step(self.order(), self.state.focused, delta)
+        if target is not None:
+            self.focus(target)
+
+    def move_dir(self, direction: str) -> None:
+        order = self.order()
+        cur = self.state.focused
+        if cur is None or cur not in order:
+            self.focus(step(order, None, 1))
+            return
+        target = nearest(self.layout, order, cur, direction)
+        if target is None and direction in ("up", "down"):
+            target = step(order, cur, 1 if direction == "down" else -1)
+        if target is not None:
+            self.focus(target)
+
     def activate(self, e: int) -> None:
         w = self.widget(e)
-        if isinstance(w, Button):
-            self.events.append(ButtonClicked(e, w.text))
-        elif isinstance(w, Toggle):
-            w.value = not w.value
-            self.changed(e, w.value, not w.value)
-        elif isinstance(w, Dropdown):
-            w.open = not w.open
-        elif isinstance(w, TextInput):
-            self.events.append(TextSubmitted(e, w.text))
+        dialog = self.world.try_get(e, DialogButton)
+        controls.activate(self, e, w)
+        if dialog is not None and e in self.layout.dialog:
+            close_dialog(self, self.layout.dialog[e], dialog.result, getattr(w, "text", ""))
 
-    def nudge(self, e: int, direction: int) -> bool:
-        """Left/right on a slider or dropdown; True when it used the key."""
-        w = self.widget(e)
-        if isinstance(w, Slider) and not w.disabled:
-            step = w.step or (w.max - w.min) / 20.0
-            old = w.value
-            w.value = min(max(old + direction * step, w.min), w.max)
-            if w.value != old:
-                self.changed(e, w.value, old)
-            return True
-        if isinstance(w, (Dropdown, ScrollList)) and (
-            w.options if isinstance(w, Dropdown) else w.items
-        ):
-            self.select(e, w, w.selected + direction)
-            return True
-        return False
-
-    def select(self, e: int, w: Dropdown | ScrollList, index: int) -> None:
-        count = len(w.options) if isinstance(w, Dropdown) else len(w.items)
-        index = min(max(index, 0), count - 1)
-        if index != w.selected:
-            old, w.selected = w.selected, index
-            self.changed(e, index, old)
-
-    # -- pointer -----------------------------------------------------------------------------------
+    # -- pointer ---------------------------------------------------------------------------------
     def pointer(self, ev: MouseEvent) -> None:
         st, lay, p = self.state, self.layout, ev.screen
         if ev.kind == "move":
-            st.hovered = lay.hit(p, self.interactive)
-            if st.pressed is not None and isinstance(self.widget(st.pressed), Slider):
-                self.drag_slider(st.pressed, p)
+            hovered = lay.hit(p, self.interactive)
+            if hovered != st.hovered:
+                st.touch(st.hovered, hovered)
+                st.hovered = hovered
+            self._tooltip_at(p)
+            if drag.moved(self, p):
+                return
+            if "bar" in st.grab or "pan" in st.grab:
+                scrolling.grab_move(self, p)
+            elif st.pressed is not None:
+                controls.drag(self, st.pressed, self.widget(st.pressed), p)
             return
         if ev.kind == "scroll":
-            hit = lay.hit(p, self.blocking)
-            if hit is not None:
+            hit = lay.hit(p, lambda e: True)
+            if self.modal is not None or lay.hit(p, self.blocking) is not None:
                 self.took = True
-                w = self.widget(hit)
-                if isinstance(w, ScrollList):
-                    box = lay.boxes[hit]
-                    top = max_scroll(w, box, self.theme)
-                    w.scroll = min(
-                        max(w.scroll - ev.scroll[1] * (w.row_height or self.theme.row_height), 0.0),
-                        top,
-                    )
+            scrolling.wheel(self, hit if hit is not None and self.reachable(hit) else None,
+                            ev.scroll, bool(ev.modifiers & Mod.SHIFT))  # fmt: skip
             return
         if ev.button != Mouse.LEFT:
-            if lay.hit(p, self.blocking) is not None:
+            if self.modal is not None or lay.hit(p, self.blocking) is not None:
                 self.took = True
             return
         if ev.kind == "down":
-            self.press(p)
-        elif ev.kind == "up" and st.pressed is not None:
-            self.took = True
-            pressed, st.pressed = st.pressed, None
-            if lay.hit(p, self.interactive) == pressed:
-                w = self.widget(pressed)
-                if isinstance(w, (Button, Toggle)):
-                    self.activate(pressed)
+            self.press(p, ev.modifiers)
+        elif ev.kind == "up":
+            self.release(p)
 
-    def press(self, p: tuple[float, float]) -> None:
+    def press(self, p: tuple[float, float], mods: int) -> None:
         st, lay = self.state, self.layout
-        for e, w in lay.widget.items():  # an open dropdown's list is on top of everything
-            if isinstance(w, Dropdown) and w.open and e in lay.boxes:
-                for i, row in enumerate(dropdown_rows(lay.boxes[e], len(w.options))):
-                    if row.contains(p):
-                        self.took = True
-                        self.select(e, w, i)
-                        w.open = False
-                        return
+        st.tip.shown = False
+        if controls.press_open_dropdown(self, p):
+            self.took = True
+            return
         hit = lay.hit(p, self.blocking)
+        if self.modal is not None:
+            self.took = True
+            if hit is None or not self.reachable(hit):
+                return
+        if scrolling.press_bar(self, p):
+            self.took = True
+            return
         if hit is None:
-            self.close_dropdowns()
+            controls.close_dropdowns(self)
             if st.focused is not None:
                 self.focus(None)
             return
         self.took = True
+        drag.arm(self, hit, p)
         if not self.interactive(hit):
+            scrolling.arm_pan(self, hit, p)
             return
         st.pressed = hit
+        st.touch(hit)
         self.focus(hit)
-        w, box = self.widget(hit), lay.boxes[hit]
-        if isinstance(w, Slider):
-            self.drag_slider(hit, p)
-        elif isinstance(w, TextInput):
-            pad = self.theme.padding
-            i = round((p[0] - box.x - pad) / (self.theme.font_size * 0.56))
-            w.caret = min(max(i, 0), len(w.text))
-            w.anchor = -1
-        elif isinstance(w, Dropdown):
-            w.open = not w.open
-        elif isinstance(w, ScrollList):
-            for i, row in list_rows(w, box, self.theme):
-                if row.contains(p):
-                    self.select(hit, w, i)
+        controls.press(self, hit, self.widget(hit), p, mods)
 
-    def drag_slider(self, e: int, p: tuple[float, float]) -> None:
-        w, box = self.widget(e), self.layout.boxes[e]
-        knob = box.h / 2
-        t = (p[0] - box.x - knob) / max(box.w - 2 * knob, 1.0)
-        value = w.min + min(max(t, 0.0), 1.0) * (w.max - w.min)
-        if w.step:
-            value = w.min + round((value - w.min) / w.step) * w.step
-            value = min(max(value, w.min), w.max)
-        if value != w.value:
-            old, w.value = w.value, value
-            self.changed(e, w.value, old)
+    def release(self, p: tuple[float, float]) -> None:
+        st = self.state
+        if drag.release(self, p):
+            self.took = True
+            st.pressed = None
+            return
+        if st.pressed is None:
+            if st.grab:  # a scrollbar or a pan let go
+                st.grab.clear()
+                self.took = True
+            return
+        self.took = True
+        pressed, st.pressed = st.pressed, None
+        st.touch(pressed)
+        inside = self.layout.hit(p, self.interactive) == pressed
+        controls.release(self, pressed, self.widget(pressed), p, inside)
 
-    # -- keys -------------------------------------------------------------------------------------
+    def _tooltip_at(self, p: tuple[float, float]) -> None:
+        st = self.state
+        over = self.layout.hit(p, lambda e: self.world.try_get(e, Tooltip) is not None
+                               and self.reachable(e))  # fmt: skip
+        if over != st.tip.entity or (st.tip.shown and over is None):
+            if st.tip.shown:
+                st.touch(st.tip.entity)
+            st.tip = Tip(over, st.time, False, p)
+        elif not st.tip.shown:
+            st.tip.at = p
+
+    # -- keys and gamepad ------------------------------------------------------------------------
     def key(self, ev: KeyEvent) -> None:
         if not ev.down:
             return
         st = self.state
         focused = st.focused
         w = self.widget(focused)
-        k = ev.key
-        editing = isinstance(w, TextInput) and not w.disabled and focused is not None
-        if editing and self.edit(focused, w, k, ev.modifiers):  # type: ignore[arg-type]
+        k, mods = ev.key, ev.modifiers
+        if focused is not None and text_controls.key(self, focused, w, k, mods):
             self.used_keys.append(k)
             return
-        if k == Key.TAB:
-            self.move_focus(-1 if ev.modifiers & Mod.SHIFT else 1)
-        elif focused is None:
+        if ev.repeat and k not in (Key.UP, Key.DOWN, Key.LEFT, Key.RIGHT, Key.PAGEUP,
+                                   Key.PAGEDOWN):  # fmt: skip
             return
-        elif k in (Key.DOWN, Key.UP):
-            if (isinstance(w, Dropdown) and w.open) or isinstance(w, ScrollList):
-                self.nudge(focused, 1 if k == Key.DOWN else -1)
-            else:
-                self.move_focus(1 if k == Key.DOWN else -1)
-        elif k in (Key.LEFT, Key.RIGHT):
-            if not self.nudge(focused, 1 if k == Key.RIGHT else -1):
+        if k == Key.TAB:
+            back = bool(mods & Mod.SHIFT)
+            if not (mods & Mod.CTRL and controls.switch_tab(self, -1 if back else 1)):
+                if not self.order():
+                    return  # nothing to focus: Tab is the game's
+                self.move_focus(-1 if back else 1)
+        elif k == Key.SPACE and mods & Mod.CTRL:
+            if not drag.pick_up(self):
                 return
-        elif k in (Key.ENTER, Key.NUM_ENTER, Key.SPACE):
-            self.activate(focused)
-        elif k == Key.ESCAPE and isinstance(w, Dropdown) and w.open:
-            w.open = False
+        elif k in KEY_ACTIONS:
+            if not self.action(KEY_ACTIONS[k], mods):
+                return
         else:
             return
         self.used_keys.append(k)
 
-    def edit(self, e: int, w: TextInput, k: int, mods: int) -> bool:
-        """Editing keys of a focused text field; True when the key was used."""
-        shift, ctrl = bool(mods & Mod.SHIFT), bool(mods & (Mod.CTRL | Mod.COMMAND))
-        text, caret, sel = w.text, w.caret, w.selection
-        if k in (Key.ENTER, Key.NUM_ENTER):
-            self.events.append(TextSubmitted(e, text))
-        elif k == Key.BACKSPACE:
-            if sel:
-                self.replace(e, w, "")
-            elif caret > 0:
-                self.set_text(e, w, text[: caret - 1] + text[caret:], caret - 1)
-        elif k == Key.DELETE:
-            if sel:
-                self.replace(e, w, "")
-            elif caret < len(text):
-                self.set_text(e, w, text[:caret] + text[caret + 1 :], caret)
-        elif k in (Key.LEFT, Key.RIGHT, Key.HOME, Key.END):
-            target = {Key.LEFT: caret - 1, Key.RIGHT: caret + 1, Key.HOME: 0, Key.END: len(text)}[k]
-            if sel and not shift and k in (Key.LEFT, Key.RIGHT):
-                target = sel[0] if k == Key.LEFT else sel[1]
-            if shift and w.anchor < 0:
-                w.anchor = caret
-            elif not shift:
-                w.anchor = -1
-            w.caret = min(max(target, 0), len(text))
-        elif ctrl and k == Key.A:
-            w.anchor, w.caret = 0, len(text)
-        elif ctrl and k in (Key.C, Key.X):
-            if sel:
-                self.state.clipboard = text[sel[0] : sel[1]]
-                if k == Key.X:
-                    self.replace(e, w, "")
-        elif ctrl and k == Key.V:
-            self.replace(e, w, self.state.clipboard)
-        elif k == Key.TAB or k == Key.ESCAPE:
+    def action(self, act: str, mods: int = 0) -> bool:
+        """Carry out a navigation action (from a key or a gamepad); True when used."""
+        st = self.state
+        if drag.action(self, act):
+            return True
+        if act == "cancel" and controls.cancel(self):
+            return True
+        focused = st.focused
+        if act in ("tab_next", "tab_prev"):
+            return controls.switch_tab(self, 1 if act == "tab_next" else -1)
+        if act == "pick":
+            return drag.pick_up(self)
+        if focused is None:
             return False
-        else:
-            return k < 0xFF00  # printable keys arrive as text too: keep them from the game
-        return True
+        w = self.widget(focused)
+        if controls.action(self, focused, w, act, mods):
+            return True
+        if act in ("up", "down", "left", "right"):
+            self.move_dir(act)
+            return True
+        if act == "activate":
+            self.activate(focused)
+            return True
+        return False
 
-    def replace(self, e: int, w: TextInput, s: str) -> None:
-        """Put ``s`` over the selection (or at the caret), cut to the room max_length leaves."""
-        s = "".join(ch for ch in s if ch >= " " and ch != "\x7f")
-        sel = w.selection or (w.caret, w.caret)
-        room = w.max_length - (len(w.text) - (sel[1] - sel[0]))
-        s = s[: max(room, 0)]
-        self.set_text(e, w, w.text[: sel[0]] + s + w.text[sel[1] :], sel[0] + len(s))
-
-    def set_text(self, e: int, w: TextInput, new: str, caret: int) -> None:
-        old = w.text
-        w.text = new
-        w.caret = caret
-        w.anchor = -1
-        if new != old:
-            self.changed(e, new, old)
-
-    # -- gamepad -----------------------------------------------------------------------------------
     def pad(self, ev: GamepadEvent) -> None:
         if ev.kind != "down":
             return
         st = self.state
-        b = ev.button
-        if st.focused is None:
-            if b in ("dpup", "dpdown", "a"):
-                self.move_focus(1)
+        act = PAD_ACTIONS.get(ev.button)
+        if act is None:
             return
-        w = self.widget(st.focused)
-        if b in ("dpup", "dpdown"):
-            if isinstance(w, (ScrollList,)) or (isinstance(w, Dropdown) and w.open):
-                self.nudge(st.focused, 1 if b == "dpdown" else -1)
-            else:
-                self.move_focus(1 if b == "dpdown" else -1)
-        elif b in ("dpleft", "dpright"):
-            self.nudge(st.focused, 1 if b == "dpright" else -1)
-        elif b == "a":
-            self.activate(st.focused)
-        elif b == "b" and isinstance(w, Dropdown):
-            w.open = False
+        if st.focused is None and st.drag is None and act in ("up", "down", "activate"):
+            self.move_focus(1)  # the first press focuses the first widget
+            return
+        self.action(act)
 
 
-def handle_input(
-    world: World, inp: Input, size: tuple[int, int], state: UIState, theme: Theme
-) -> list[Any]:
-    """Handle this frame's input for the UI of ``world``; returns the UI events it made.
+def handle_input(world: World, inp: Input, state: UIState, dt: float = 0.0) -> list[Any]:
+    """Handle this frame's input for the UI of ``world`` (laid out already, in
+    ``state.layout``); returns the UI events it made.
 
     Mouse presses over the UI, keys the UI used and text typed into a focused field are
     removed from ``inp`` afterwards, so the game does not react to them too.
     """
-    state.layout = compute_layout(world, size, theme)
     boxes = state.layout.boxes
     for name in ("hovered", "pressed", "focused"):
         e = getattr(state, name)
         if e is not None and (e not in boxes or not world.exists(e)):
             setattr(state, name, None)
-    f = _Frame(world, inp, state, theme)
+    state.time += max(dt, 0.0)
+    f = Frame(world, inp, state, state.layout.size, dt)
+    if f.modal is not None and state.focused is not None and not f.reachable(state.focused):
+        f.focus(None)
     for ev in list(inp.events):
         if isinstance(ev, MouseEvent):
             f.pointer(ev)
         elif isinstance(ev, KeyEvent):
             f.key(ev)
         elif isinstance(ev, TextEvent):
-            w = f.widget(state.focused)
-            if isinstance(w, TextInput) and not w.disabled and state.focused is not None:
-                f.replace(state.focused, w, ev.text)
+            text_controls.typed(f, ev.text)
+        elif isinstance(ev, CompositionEvent):
+            text_controls.compose(f, ev.text, ev.caret)
         elif isinstance(ev, GamepadEvent):
             f.pad(ev)
+    _tooltip_timer(f)
     state.took_pointer = f.took
-    if f.took:
+    if f.took or f.modal is not None:
         inp.consume_mouse()
     if f.used_keys:
         inp.consume_keys(*f.used_keys)
-    if isinstance(f.widget(state.focused), TextInput):
+    if text_controls.takes_text(f.widget(state.focused), state, state.focused):
         inp.consume_text()
     return f.events
 
 
-def caret_x(w: TextInput, box: Box, theme: Theme) -> float:
-    """Where the caret is drawn (the same estimate the pointer uses)."""
-    return box.x + theme.padding + text_width(w.text[: w.caret], theme.font_size)
+def _tooltip_timer(f: Frame) -> None:
+    st = f.state
+    tip = st.tip
+    focused = st.focused
+    if (tip.entity is None and focused is not None and focused in f.layout.boxes
+            and f.world.try_get(focused, Tooltip) is not None):  # fmt: skip
+        b = f.layout.boxes[focused]  # nothing under the pointer asks: the focus's tooltip
+        tip = st.tip = Tip(focused, st.time, False, (b.center[0], b.y))
+    if tip.entity is None or tip.shown:
+        return
+    t = f.world.try_get(tip.entity, Tooltip)
+    if t is None or tip.entity not in f.layout.boxes:
+        st.tip = Tip()
+        return
+    if st.time - tip.since >= t.delay - 1e-9:  # (sums of frame times are not exact)
+        tip.shown = True
+        st.touch(tip.entity)
+

@@ -234,3 +234,18 @@ def test_save_and_save_as(model: EditorModel, tmp_path: Path) -> None:
     assert "x = 4.0" in path.read_text()
     assert (tmp_path / "level.scene.toml").read_text() == LEVEL  # the original is untouched
     assert isinstance(model.world.get(crate, Name), Name)
+
+
+def test_unsaved_after_undo_and_a_new_edit_even_when_the_old_step_is_gone(
+    model: EditorModel,
+) -> None:
+    crate = named(model, "Crate")
+    model.set_field(crate, Transform, "x", 4.0)
+    model.save()
+    for i in range(20):  # the saved step is freed; a new step may get its id
+        model.undo()
+        assert model.dirty
+        model.set_field(crate, Transform, "x", 5.0 + i)
+        assert model.dirty  # one step deep again, but not the saved one
+        model.undo()
+        model.redo()

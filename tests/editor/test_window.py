@@ -6,8 +6,28 @@ from pathlib import Path
 
 import pytest
 
-from kge import App, Button, Collider, Key, Mod, Mouse, RevoluteJoint, TextInput, Time, Transform
+from kge import (
+    App,
+    Button,
+    Circle,
+    Collider,
+    ColorPicker,
+    Key,
+    Label,
+    Mod,
+    Mouse,
+    RevoluteJoint,
+    RigidBody,
+    ScrollView,
+    SpinBox,
+    TextInput,
+    Time,
+    Transform,
+    TreeView,
+)
+from kge.components.drawables import Rect
 from kge.editor.app import Editor, editor_app
+from kge.testing import box_of, click, double_click, drag, scroll
 from kge.ui.interact import UIState
 
 from .test_model import LEVEL
@@ -22,16 +42,12 @@ def editor(tmp_path: Path) -> tuple[App, Editor]:
     return app, ed
 
 
-def box_of(app: App, entity: int) -> object:
-    return app.world.resource(UIState).layout.boxes[entity]
-
-
 def button(app: App, text: str) -> int:
     return next(e for e, (b,) in app.world.query(Button) if b.text == text)
 
 
 def click_button(app: App, text: str) -> None:
-    app.input.click(at=box_of(app, button(app, text)).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, button(app, text)).center)
     app.advance(1 / 60)  # a real frame: respects the pause
 
 
@@ -61,7 +77,7 @@ def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     app.step()
     app.step()  # the new inspector rows are laid out
     widget = next(w for w, (_, c, f, _) in ed.widgets.items() if c is Collider and f == "density")
-    app.input.click(at=box_of(app, widget).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, widget).center)
     app.step()
     app.input.press(Key.A, Mod.CTRL)
     app.input.release(Key.A)
@@ -167,7 +183,7 @@ def test_save_and_the_unsaved_changes_prompt(editor: tuple[App, Editor]) -> None
 def test_hierarchy_search_and_delete_key(editor: tuple[App, Editor]) -> None:
     app, ed = editor
     search = ed.search_box
-    app.input.click(at=box_of(app, search).center)  # type: ignore[attr-defined]
+    app.input.click(at=box_of(app, search).center)
     app.step()
     app.input.type_text("gro")
     app.step()
@@ -179,3 +195,207 @@ def test_hierarchy_search_and_delete_key(editor: tuple[App, Editor]) -> None:
     app.input.press(Key.DELETE)
     app.step()
     assert "Crate" not in [ed.model.name(e) for e in ed.model.entities()]
+
+
+def named(ed: Editor, name: str) -> int:
+    return next(e for e in ed.model.entities() if ed.model.name(e) == name)
+
+
+def test_the_hierarchy_is_a_tree_whose_row_drops_reparent(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    tree = app.world.get(ed.tree, TreeView)
+    assert [(it.text, it.parent) for it in tree.items] == [
+        ("Ground", None), ("Crate", None), ("hinge", None)]  # fmt: skip
+    before = ed.model.text()
+    crate, ground = named(ed, "Crate"), named(ed, "Ground")
+    drag(app, "Ground", "Crate")  # the middle of the Crate row: inside it (a compound part)
+    app.step()
+    assert ed.model.parent(ground) == crate and len(ed.model.undo_stack) == 1
+    assert {it.text: it.parent for it in tree.items}["Ground"] == crate  # shown under it
+    assert crate in tree.expanded  # a row that gains children opens
+    assert [it.text for it in tree.items] == ["Crate", "Ground", "hinge"]
+    ed.model.undo()
+    assert ed.model.text() == before
+    app.step()
+    assert {it.text: it.parent for it in tree.items}["Ground"] is None
+    drag(app, "Crate", "Ground")  # a static collider cannot carry the crate: refused
+    app.step()
+    assert ed.model.parent(crate) is None and "RigidBody" in ed.message
+    assert ed.model.text() == before
+
+
+def test_a_collider_dropped_on_a_body_in_the_tree_becomes_its_part(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    part = ed.model.create(Transform(2.0, 2.0), Collider(Circle(0.2)), name="Bumper")
+    app.step()
+    app.step()
+    crate = named(ed, "Crate")
+    drag(app, "Bumper", "Crate")
+    app.step()
+    assert ed.model.world.get(part, Collider).body == crate
+    assert ed.model.parent(part) == crate
+    assert ed.model.name(ed.rows[ed.rows.index(crate) + 1]) == "Bumper"  # shown under it
+
+
+def test_a_tree_row_click_selects_and_a_double_click_frames_it(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    click(app, "Ground")
+    assert ed.model.selection == [named(ed, "Ground")]
+    assert app.world.get(ed.tree, TreeView).selected == named(ed, "Ground")
+    zoom = ed.model.camera.zoom
+    double_click(app, "Crate")
+    assert ed.model.selection == [named(ed, "Crate")] and ed.model.camera.zoom != zoom
+
+
+def select(app: App, ed: Editor, name: str) -> int:
+    """Select ``name`` and let the inspector build and lay out its rows."""
+    entity = named(ed, name)
+    ed.model.select(entity)
+    app.step()
+    app.step()
+    return entity
+
+
+def _field(ed: Editor, ctype: type, name: str) -> int:
+    return next(w for w, (_, c, f, _) in ed.widgets.items() if c is ctype and f == name)
+
+
+def test_number_fields_are_spin_boxes_and_a_drag_is_one_undo_step(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = select(app, ed, "Crate")
+    widget = _field(ed, Collider, "density")
+    assert app.world.get(widget, SpinBox).value == 1.0
+    angle = app.world.get(_field(ed, Transform, "angle"), SpinBox)
+    assert angle.value == 0.0 and angle.drag_speed == 0.5  # degrees
+    start = box_of(app, widget).center
+    app.input.mouse_down(at=start)
+    app.step()
+    for i in range(1, 6):
+        app.input.move_mouse(start[0] + 10 * i, start[1])
+        app.step()
+        assert ed.model.world.get(crate, Collider).density == pytest.approx(1.0 + 0.2 * i)
+        assert not ed.model.undo_stack  # live: the undo step comes with the release
+    app.input.mouse_up(at=(start[0] + 50, start[1]))
+    app.step()
+    assert ed.model.world.get(crate, Collider).density == pytest.approx(2.0)
+    assert len(ed.model.undo_stack) == 1 and ed.model.dirty
+    ed.model.undo()
+    assert ed.model.world.get(crate, Collider).density == 1.0 and not ed.model.dirty
+
+
+def test_colour_fields_are_colour_pickers_and_a_drag_is_one_undo_step(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    tile = ed.model.create(Transform(0.0, 0.0), Rect(1.0, 1.0, color=(200, 40, 40, 255)),
+                           name="Tile")  # fmt: skip
+    steps = len(ed.model.undo_stack)
+    app.step()
+    app.step()
+    widget = _field(ed, Rect, "color")
+    assert app.world.get(widget, ColorPicker).color == (200, 40, 40, 255)
+    box = box_of(app, widget)
+    app.input.mouse_down(at=(box.x + 10, box.top - 10))  # the square's bright top left
+    app.step()
+    app.input.move_mouse(box.x + 12, box.y + 10)  # down: darker
+    app.step()
+    app.input.mouse_up(at=(box.x + 12, box.y + 10))
+    app.step()
+    color = ed.model.world.get(tile, Rect).color
+    assert color != (200, 40, 40, 255) and max(color[:3]) < 100 and color[-1] == 255
+    assert len(ed.model.undo_stack) == steps + 1
+    ed.model.undo()
+    assert ed.model.world.get(tile, Rect).color == (200, 40, 40, 255)
+
+
+def test_the_inspector_scrolls_and_keeps_its_place_across_edits(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = select(app, ed, "Crate")
+    view = app.world.get(ed.inspector, ScrollView)
+    scroll(app, ed.inspector, -4)  # the wheel down
+    assert view.scroll[1] > 0
+    where = view.scroll
+    ed.model.set_field(crate, Collider, "density", 3.0)  # the rows are rebuilt
+    app.step()
+    app.step()
+    assert view.scroll == where
+
+
+def test_the_status_line_marks_unsaved_changes_after_edits_undo_and_save(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+
+    def status() -> str:
+        app.step()
+        return app.world.get(ed.status, Label).text
+
+    assert "*" not in status()
+    crate = named(ed, "Crate")
+    ed.model.set_field(crate, Transform, "x", 4.0)
+    assert "level.scene.toml *" in status()
+    ed.model.undo()
+    assert "*" not in status()
+    ed.model.redo()
+    assert "*" in status()
+    ed.model.save()
+    assert "*" not in status()
+
+
+def test_vector_fields_are_two_spin_boxes_each_changing_its_component(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    crate = select(app, ed, "Crate")
+    x, y = (w for w, (_, c, f, _) in ed.widgets.items() if c is RigidBody and f == "velocity")
+    assert app.world.get(x, SpinBox).value == 0.0 and app.world.get(y, SpinBox).value == 0.0
+    click(app, y)  # a click without a drag: type a value
+    app.input.type_text("-3.5")
+    app.input.press(Key.ENTER)
+    app.step()
+    app.input.release(Key.ENTER)
+    assert ed.model.world.get(crate, RigidBody).velocity == (0.0, -3.5)
+    app.step()
+    x = next(w for w, (_, c, f, k) in ed.widgets.items()
+             if c is RigidBody and f == "velocity" and k.index == 0)  # fmt: skip
+    drag(app, x, (box_of(app, x).center[0] + 50, box_of(app, x).center[1]))
+    app.step()
+    assert ed.model.world.get(crate, RigidBody).velocity == pytest.approx((1.0, -3.5))
+    assert len(ed.model.undo_stack) == 2
+    ed.model.undo()
+    assert ed.model.world.get(crate, RigidBody).velocity == (0.0, -3.5)
+
+
+def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    click_button(app, "Rotate")
+    cx, cy = screen_of(ed, "Crate")
+    k = ed.model.camera.pixels_per_meter * ed.model.camera.zoom
+    app.input.mouse_down(Mouse.LEFT, at=(cx + 0.3 * k, cy))  # on the crate, to its right
+    app.step()
+    app.input.move_mouse(cx, cy + 0.3 * k)  # a quarter turn around it
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    assert ed.model.world.get(crate, Transform).angle == pytest.approx(3.14159265 / 2)
+    click_button(app, "Paint")
+    start = ed.to_screen((1.0, 3.5))
+    app.input.mouse_down(Mouse.LEFT, at=start)
+    app.step()
+    app.input.move_mouse(start[0] + 2.0 * k, start[1])
+    app.step()
+    app.input.mouse_up(Mouse.LEFT)
+    app.step()
+    painted = [e for e in ed.model.entities() if ed.model.world.has(e, Transform)
+               and ed.model.world.get(e, Transform).y == 3.5]
+    assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
+    assert ed.model.undo() and len(ed.model.entities()) == 3

@@ -75,11 +75,15 @@ def test_settings_volume_slider_and_key_rebinding() -> None:
     app.step()
     world = app.world
     boxes = world.resource(UIState).layout.boxes
-    music = next(e for e, _ in world.query(Slider))
+    music = min(e for e, _ in world.query(Slider))  # the first slider spawned
     b = boxes[music]
     app.input.click(at=(b.x + b.w / 2, b.center[1]))
     app.step()
     assert math.isclose(app.world.resource(Audio).music_volume, 0.5)
+    from kge.testing import click as click_text
+
+    click_text(app, "Controls")  # the settings' tabs: Audio, Controls, Display
+    app.step()
     click(app, "up:")
     assert any(b.text == "up: press a key..." for _, (b,) in world.query(Button))
     tap(app, Key.I)

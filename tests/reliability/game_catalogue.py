@@ -283,7 +283,7 @@ EMITTER = _fields("particles", "world.get(fx, ParticleEmitter)", [
     ("spread", "7.0", V, r"entity 3, ParticleEmitter\.spread"),
     ("size", "()", V, r"entity 3, ParticleEmitter\.size"),
     ("color", "('nope',)", T, r"entity 3, ParticleEmitter\.color"),
-    ("blend", "'glow'", V, r"entity 3, ParticleEmitter\.blend"),
+    ("blend", "'glow'", V, r"entity 3, ParticleEmitter\.blend"),  # 'screen' is a mode now
     ("space", "'galaxy'", V, r"entity 3, ParticleEmitter\.space"),
     ("seed", "-1", V, r"entity 3, ParticleEmitter\.seed"),
     ("shape", "'circle'", T, r"entity 3, ParticleEmitter\.shape"),

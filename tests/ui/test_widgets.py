@@ -16,7 +16,7 @@ from kge.components.ui import (
     UINode,
 )
 from kge.systems.ui import focus
-from kge.ui import ButtonClicked, TextSubmitted, UIEvents, ValueChanged
+from kge.ui import ButtonClicked, TextSubmitted, ValueChanged
 from kge.ui.interact import UIState
 
 SIZE = (400, 300)
@@ -85,12 +85,11 @@ def test_click_on_a_button_emits_its_event_and_hook_and_the_game_never_sees_it()
     play = next(e for e, (b,) in app.world.query(Button) if b.text == "Play")
     app.input.click(at=centre(app, play))
     app.step()
-    events = app.world.resource(UIEvents)
-    assert events.of(ButtonClicked) == [ButtonClicked(play, "Play")] and events.clicked(play)
+    assert app.world.events(ButtonClicked) == [ButtonClicked(play, "Play")]
     assert [c.entity for c in hooks.clicks] == [play]
     assert game.downs == 0 and game.pressed == 0
     app.step()
-    assert app.world.resource(UIEvents).items == []  # per frame
+    assert app.world.events(ButtonClicked) == []  # per frame
     app.input.click(at=(5, 5))  # outside the UI: the game gets it
     app.step()
     assert game.downs == 1 and game.pressed == 1 and len(hooks.clicks) == 1
@@ -215,7 +214,7 @@ def test_typing_editing_selection_paste_max_length_and_submit() -> None:
     app.input.type_text("ok")
     app.input.press(Key.ENTER)
     app.step()
-    assert app.world.resource(UIEvents).of(TextSubmitted) == [TextSubmitted(field, "ok")]
+    assert app.world.events(TextSubmitted) == [TextSubmitted(field, "ok")]
     assert game.downs == 0
 
 
@@ -232,14 +231,14 @@ def test_slider_drag_toggle_click_and_value_events() -> None:
     app.input.move_mouse(box.center[0], box.center[1])
     app.step()
     assert app.world.get(s, Slider).value == 5
-    assert app.world.resource(UIEvents).of(ValueChanged) == [ValueChanged(s, 5.0, 10.0)]
+    assert app.world.events(ValueChanged) == [ValueChanged(s, 5.0, 10.0)]
     app.input.mouse_up()
     app.step()
     t = entity_of(app, Toggle)
     app.input.click(at=centre(app, t))
     app.step()
     assert app.world.get(t, Toggle).value is True
-    assert app.world.resource(UIEvents).of(ValueChanged) == [ValueChanged(t, True, False)]
+    assert app.world.events(ValueChanged) == [ValueChanged(t, True, False)]
 
 
 def _lists(world: World) -> None:
@@ -264,7 +263,7 @@ def test_dropdown_opens_picks_and_closes() -> None:
     app.input.click(at=(box.center[0], box.y - 2.5 * box.h))  # third option
     app.step()
     assert not dd.open and dd.selected == 2 and dd.value == "C"
-    assert app.world.resource(UIEvents).of(ValueChanged) == [ValueChanged(d, 2, 0)]
+    assert app.world.events(ValueChanged) == [ValueChanged(d, 2, 0)]
 
 
 def test_scroll_list_scrolls_with_the_wheel_and_selects_rows() -> None:

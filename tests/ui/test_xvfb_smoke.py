@@ -1,108 +1,94 @@
-"""One real window under Xvfb, driven by xdotool: a click, typing and Enter reach the UI.
+"""One real window under Xvfb, driven by xdotool: clicks, typing, Enter and the system
+clipboard (copy in one field, paste in another through X11's CLIPBOARD) reach the UI.
 
-Needs the Debian packages xvfb and xdotool (``tools/bootstrap.sh`` installs them); the
-test installs nothing and fails, naming them, when they are absent. It never sleeps:
-after each input it waits for the app to report the result (a line on its stdout),
-with a generous deadline that only a hung app reaches.
+The app reports each thing its UI did as a JSON line; the test waits for the line it
+expects before the next input (never a fixed sleep). Needs the Debian packages xvfb
+and xdotool (``tools/bootstrap.sh`` installs them); the test installs nothing and
+fails, naming them, when they are absent.
 """
 
 from __future__ import annotations
 
 import json
 import os
-import select
-import shutil
+import selectors
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
-import pytest
+from .. import xvfb
+from ..xvfb import virtual_display
 
 HERE = Path(__file__).parent
+TIMEOUT = 60.0  #: seconds to wait for any one report (a busy machine is slow, never wrong)
 
-
-def _need(tool: str) -> str:
-    path = shutil.which(tool)
-    if path is None:
-        pytest.fail(
-            f"{tool} is not installed: run tools/bootstrap.sh (Debian packages xvfb, xdotool)"
-        )
-    return path
-
-
-def _xdo(display: str, *args: str) -> str:
-    out = subprocess.run(
-        [_need("xdotool"), *args], env={**os.environ, "DISPLAY": display},
-        capture_output=True, text=True, timeout=30, check=True,
-    )  # fmt: skip
-    return out.stdout.strip()
 
 
 class Reports:
-    """The app's report lines, read straight from the pipe (no buffered reader, whose
-    buffer select() cannot see)."""
+    """The app's JSON lines, read as they come."""
 
-    def __init__(self, app: subprocess.Popen[bytes]) -> None:
-        assert app.stdout is not None
-        self.app, self.fd = app, app.stdout.fileno()
-        self.seen: list[str] = []
-        self._partial = b""
+    def __init__(self, proc: subprocess.Popen[bytes]) -> None:
+        assert proc.stdout is not None
+        self.proc, self.stream = proc, proc.stdout
+        self.sel = selectors.DefaultSelector()
+        self.sel.register(self.stream, selectors.EVENT_READ)
+        self.buf = b""
+        self.seen: list[dict[str, Any]] = []
 
-    def wait_for(self, want: str) -> None:
-        """Read until the app reports ``want`` (the condition, not a delay)."""
-        deadline = time.monotonic() + 60.0  # a hung app, not a slow machine, reaches this
-        while want not in self.seen:
+    def wait(self, want: Callable[[dict[str, Any]], object], what: str) -> dict[str, Any]:
+        deadline = time.monotonic() + TIMEOUT
+        while True:
+            while b"\n" in self.buf:
+                line, self.buf = self.buf.split(b"\n", 1)
+                got = json.loads(line)
+                self.seen.append(got)
+                if want(got):
+                    return got
             left = deadline - time.monotonic()
-            assert left > 0, f"no {want!r} from the app in 60 s; it said {self.seen}"
-            ready, _, _ = select.select([self.fd], [], [], min(left, 1.0))
-            if not ready:
-                continue
-            chunk = os.read(self.fd, 4096)
-            assert chunk, f"the app ended ({self.app.wait()}) before {want!r}: {self.seen}"
-            *lines, self._partial = (self._partial + chunk).split(b"\n")
-            self.seen += [line.decode().strip() for line in lines]
+            if left <= 0 or (self.proc.poll() is not None and not self.sel.select(0)):
+                raise AssertionError(f"the app never reported {what}; it said {self.seen}")
+            if self.sel.select(timeout=left):
+                chunk = os.read(self.stream.fileno(), 4096)
+                if not chunk:
+                    raise AssertionError(f"the app exited before {what}; it said {self.seen}")
+                self.buf += chunk
 
 
-def test_real_window_click_typing_and_enter_under_xvfb(tmp_path: Path) -> None:
-    xvfb = _need("Xvfb")
-    _need("xdotool")
-    read, write = os.pipe()
-    server = subprocess.Popen(
-        [xvfb, "-displayfd", str(write), "-screen", "0", "800x600x24", "-nolisten", "tcp"],
-        pass_fds=(write,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-    )  # fmt: skip
-    os.close(write)
+def test_real_window_clicks_typing_enter_and_the_system_clipboard(tmp_path: Path) -> None:
     app = None
-    try:
-        number = b""
-        while not number.endswith(b"\n"):
-            chunk = os.read(read, 16)
-            assert chunk, "Xvfb exited before reporting its display"
-            number += chunk
-        display = f":{number.decode().strip()}"
-        out = tmp_path / "got.json"
-        env = {k: v for k, v in os.environ.items() if k not in ("PYGLET_HEADLESS", "KGE_HEADLESS")}
-        env.update(DISPLAY=display, PYGLET_AUDIO="silent")
-        app = subprocess.Popen([sys.executable, str(HERE / "xvfb" / "smoke_app.py"), str(out)],
-                               env=env, stdout=subprocess.PIPE)  # fmt: skip
-        reports = Reports(app)
-        wid = _xdo(display, "search", "--sync", "--name", "kge-smoke").splitlines()[0]
-        reports.wait_for("ready")  # the UI is laid out and drawn
-        _xdo(display, "windowfocus", "--sync", wid)
-        _xdo(display, "mousemove", "--window", wid, "200", "110", "click", "1")  # the field
-        reports.wait_for("focused")
-        _xdo(display, "type", "--delay", "30", "hello")
-        reports.wait_for("typed hello")
-        _xdo(display, "key", "Return")
-        reports.wait_for("submitted hello")
-        _xdo(display, "mousemove", "--window", wid, "200", "190", "click", "1")  # Done
-        assert app.wait(timeout=30) == 0
-        got = json.loads(out.read_text())
-        assert got["submitted"] == "hello" and got["clicked"] is True and got["frames"] > 5
-    finally:
-        if app is not None and app.poll() is None:
-            app.kill()
-        server.terminate()
-        server.wait(timeout=10)
-        os.close(read)
+    with virtual_display("800x600x24") as (display, env):
+
+        def xdo(*args: str) -> str:
+            return xvfb.xdo(display, *args)
+
+        try:
+            app = subprocess.Popen([sys.executable, str(HERE / "xvfb" / "smoke_app.py")], env=env,
+                                   stdout=subprocess.PIPE)  # fmt: skip
+            reports = Reports(app)
+            wid = xdo("search", "--sync", "--name", "kge-smoke").splitlines()[0]
+            reports.wait(lambda r: r.get("ready"), "that it was ready")
+            xdo("windowfocus", "--sync", wid)
+            xdo("mousemove", "--window", wid, "200", "90", "click", "1")  # the first field
+            reports.wait(lambda r: r.get("focus") == "first", "the first field's focus")
+            xdo("type", "--delay", "20", "hello")
+            reports.wait(lambda r: r.get("field") == "first" and r.get("text") == "hello", "hello")
+            xdo("key", "Return")
+            reports.wait(lambda r: r.get("submitted") == "hello", "the submit")
+            xdo("key", "ctrl+a", "ctrl+c")
+            copied = reports.wait(lambda r: r.get("clipboard") == "hello", "the copy")
+            assert copied["system"] is True  # through pyglet's X11 window, not the fallback
+            xdo("mousemove", "--window", wid, "200", "140", "click", "1")  # the second field
+            reports.wait(lambda r: r.get("focus") == "second", "the second field's focus")
+            xdo("key", "ctrl+v")
+            reports.wait(lambda r: r.get("field") == "second" and r.get("text") == "hello", "paste")
+            xdo("mousemove", "--window", wid, "200", "200", "click", "1")  # Done
+            done = reports.wait(lambda r: r.get("clicked"), "the click on Done")
+            assert done["frames"] > 5
+            assert app.wait(timeout=TIMEOUT) == 0
+        finally:
+            if app is not None and app.poll() is None:
+                app.kill()
+                app.wait(timeout=10)

@@ -22,4 +22,8 @@ from kge.testbed.samples import (  # noqa: F401
     tilemaps,
     tween_control,
     ui,
+    ui_editor,
+    ui_overlays,
+    ui_scrolling,
+    ui_world,
 )

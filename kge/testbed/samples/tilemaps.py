@@ -87,21 +87,41 @@ def _level(
     return g
 
 
+#: (columns, gaps (from, to), ledges (row, from, to), the level the door leads to)
+LEVEL_SPECS: list[tuple[int, list[tuple[int, int]], list[tuple[int, int, int]], str]] = [
+    (40, [(12, 14)], [(9, 5, 10), (7, 16, 22), (5, 25, 30)], "level2.tmx"),
+    (60, [(18, 21), (35, 38)], [(9, 8, 13), (7, 14, 18), (9, 24, 30), (6, 40, 46)],
+     "level1.tmx"),
+]
+
+
+def write_terrain(folder: Path) -> tuple[Path, Path]:
+    """The platformer's two levels as terrain only (ground, ledges, water; no objects):
+    ``terrain1.tmx`` and ``terrain2.tmx`` and the tile sheet, for scene files that place
+    the player, coins and door themselves (examples/levels)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    png.write(folder / "platformer.png", _sheet())
+    out = []
+    for i, (cols, gaps, ledges, _) in enumerate(LEVEL_SPECS):
+        grid = _level(cols, gaps, ledges)
+        water = np.zeros_like(grid)
+        for a, b in gaps:
+            water[13:, a:b] = WATER
+        path = folder / f"terrain{i + 1}.tmx"
+        write_map(path, T, T, [_tileset()], [
+            TileLayerSpec("Water", water, properties={"collision": False}),
+            TileLayerSpec("Ground", grid),
+        ])
+        out.append(path)
+    return out[0], out[1]
+
+
 def write_levels(folder: Path) -> tuple[Path, Path]:
     """Write level1.tmx and level2.tmx (and the tile sheet) into ``folder``."""
     folder.mkdir(parents=True, exist_ok=True)
     png.write(folder / "platformer.png", _sheet())
     paths = []
-    specs = [
-        (40, [(12, 14)], [(9, 5, 10), (7, 16, 22), (5, 25, 30)], "level2.tmx"),
-        (
-            60,
-            [(18, 21), (35, 38)],
-            [(9, 8, 13), (7, 14, 18), (9, 24, 30), (6, 40, 46)],
-            "level1.tmx",
-        ),
-    ]
-    for i, (cols, gaps, ledges, target) in enumerate(specs):
+    for i, (cols, gaps, ledges, target) in enumerate(LEVEL_SPECS):
         grid = _level(cols, gaps, ledges)
         objects: list[dict[str, Any]] = [
             {

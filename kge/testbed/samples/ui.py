@@ -1,5 +1,7 @@
 """UI samples: a widget gallery, layouts that follow the window, a see-through pause
-overlay, and scene transitions."""
+overlay, and scene transitions. The editor widgets, scrolling and lists, dialogs and
+drag and drop, and UI in the world are in ``ui_editor``, ``ui_lists``, ``ui_overlays``
+and ``ui_world``; ``ui_parts`` holds what they share."""
 
 from __future__ import annotations
 
@@ -13,70 +15,74 @@ from kge.components.ui import (
     Label,
     Panel,
     ProgressBar,
+    RadioGroup,
+    RichText,
     ScrollList,
     Slider,
+    SpinBox,
+    Style,
+    Tabs,
     TextInput,
     Toggle,
+    UIImage,
     UINode,
 )
 from kge.host import Host
 from kge.keys import Key
+from kge.render.images import checker
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import box, static_box
+from kge.testbed.samples.ui_parts import Status, column, root_area, tip
 from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
-from kge.ui.events import ButtonClicked, TextSubmitted, ValueChanged
+from kge.ui.events import ButtonClicked
 from kge.ui.interact import UIState
 from kge.world import World
 
 
-class _Status(Script):
-    """Shows the last UI event in a label (what the gallery reports)."""
-
-    def __init__(self, label: int) -> None:
-        self.label = label
-
-    def on_update(self, dt: float) -> None:
-        world = self.world
-        for ev in world.events(ButtonClicked, ValueChanged, TextSubmitted):  # in order
-            shown = getattr(ev, "value", getattr(ev, "text", ""))
-            if isinstance(shown, float):
-                shown = round(shown, 2)
-            world.get(self.label, Label).text = f"{type(ev).__name__}: {shown}"
-
-
-def _root(world: World) -> int:
-    """The area the samples use: the window less a strip on the left and one at the top,
-    where the testbed shows its sample list and help (a 1280 x 720 window keeps 192 px
-    and 115 px clear)."""
-    return world.spawn(UINode(anchor="bottom_right", width="85%", height="84%"))
-
-
-def _column(world: World, **node: Any) -> int:
-    node.setdefault("layout", "column")
-    node.setdefault("padding", 14)
-    node.setdefault("spacing", 8)
-    node.setdefault("align", "stretch")
-    return world.spawn(UINode(**node), Panel())
-
-
-@sample("UI", "Widget Gallery", help="Every widget: click, drag, type, Tab/arrows/Enter, d-pad.")
+@sample("UI", "Widget Gallery",
+        help="Every basic widget: click, drag, type, Tab/arrows/Enter, d-pad; hover for tips.")
 def widget_gallery(world: World) -> None:
-    root = _root(world)
-    left = _column(world, parent=root, anchor="left", offset=(20, 0), width=300)
+    root = root_area(world)
+    left = column(world, parent=root, anchor="left", offset=(16, 0), width=300)
     world.spawn(UINode(parent=left), Label("Widgets", size=22))
-    world.spawn(UINode(parent=left, height=38), Button("Button"))
-    world.spawn(UINode(parent=left, height=38), Button("Disabled", disabled=True))
+    tip(world, world.spawn(UINode(parent=left, height=38), Button("Button")), "Emits ButtonClicked")
+    row = world.spawn(UINode(parent=left, layout="row", spacing=8))
+    world.spawn(UINode(parent=row, grow=1, height=38), Button("Disabled", disabled=True))
+    world.spawn(UINode(parent=row, grow=1, height=38), Button("Delete"),
+                Style(background=(190, 50, 60, 255), radius=19, bold=True))  # a per-widget style
     world.spawn(UINode(parent=left), Toggle(True, "Toggle"))
     world.spawn(UINode(parent=left, height=26), Slider(0, 100, 40, step=5))
     world.spawn(UINode(parent=left, height=14), ProgressBar(0.65))
     world.spawn(UINode(parent=left), TextInput(placeholder="type here", max_length=24))
     world.spawn(UINode(parent=left), Dropdown(["Easy", "Normal", "Hard"], 1))
-    right = _column(world, parent=root, anchor="right", offset=(-20, 0), width=260)
+    spin = world.spawn(UINode(parent=left), SpinBox(12.5, 0, 100, 0.5, suffix=" m"))
+    tip(world, spin, "Drag sideways, or click and type")
+    world.spawn(UINode(parent=left), RadioGroup(["Low", "Mid", "High"], 1, horizontal=True))
+    middle = column(world, parent=root, anchor="center", offset=(20, 40), width=320)
+    tabs = world.spawn(UINode(parent=middle, height=190), Tabs(["Audio", "Video", "About"]))
+    audio = world.spawn(UINode(parent=tabs, layout="column", padding=10, spacing=8,
+                               align="stretch"))  # fmt: skip
+    world.spawn(UINode(parent=audio), Label("Music", align="left"))
+    world.spawn(UINode(parent=audio, height=24), Slider(0, 1, 0.8))
+    world.spawn(UINode(parent=audio), Toggle(False, "Mute"))
+    video = world.spawn(UINode(parent=tabs, layout="column", padding=10, spacing=8,
+                               align="stretch"))  # fmt: skip
+    world.spawn(UINode(parent=video), Toggle(True, "Fullscreen"))
+    world.spawn(UINode(parent=video), Dropdown(["1280 x 720", "1920 x 1080"], 0))
+    world.spawn(UINode(parent=tabs, padding=10), RichText(
+        "[b]kge[/b] UI: widgets are [color=#2ec4b6]entities[/color], themes are "
+        "[i]data[/i], and every frame is [size=20]testable[/size] headless."))  # fmt: skip
+    right = column(world, parent=root, anchor="right", offset=(-16, 0), width=240)
     world.spawn(UINode(parent=right), Label("Scroll list", size=18))
-    world.spawn(UINode(parent=right, height=180), ScrollList([f"Level {i + 1}" for i in range(30)]))
-    status_node = UINode(parent=root, anchor="bottom", offset=(0, 16))
-    status = world.spawn(status_node, Label("Click something"))
-    world.spawn(Behaviour(_Status(status)))
+    rows = [f"Level {i + 1}" for i in range(30)]
+    world.spawn(UINode(parent=right, height=180), ScrollList(rows))
+    icons = world.spawn(UINode(parent=right, layout="row", spacing=8, justify="center"))
+    art = checker(16, 16, 4, (46, 196, 182), (30, 34, 44))
+    world.spawn(UINode(parent=icons, width=48, height=48), UIImage(art))
+    world.spawn(UINode(parent=icons, width=120, height=48), Button("Icon", image=art))
+    status = world.spawn(UINode(parent=root, anchor="bottom", offset=(0, 16)),
+                         Label("Click something"))  # fmt: skip
+    world.spawn(Behaviour(Status(status)))
 
 
 @widget_gallery.claim
@@ -90,7 +96,7 @@ def _gallery_reports_a_click(app: Any) -> None:
 
 @sample("UI", "Resizing Layout", help="HUD in the corners, a percent-wide bar, a grid: resize!")
 def resizing_layout(world: World) -> None:
-    root = _root(world)
+    root = root_area(world)
     for name in ("top_left", "top_right", "bottom_left", "bottom_right"):
         x = 12 if "left" in name else -12
         y = -12 if "top" in name else 12
@@ -136,7 +142,7 @@ class _Pause(Script):
 def pause_menu(world: World) -> None:
     """A see-through overlay: the game below is frozen and stays visible."""
     world.spawn(UINode(width="100%", height="100%"), Panel(color=(0, 0, 0, 110), radius=0))
-    menu = _column(world, width=240)
+    menu = column(world, width=240)
     world.spawn(UINode(parent=menu), Label("Paused", size=24))
     resume = world.spawn(UINode(parent=menu, height=40), Button("Resume"))
     world.spawn(Behaviour(_Resume(resume)))
@@ -163,7 +169,8 @@ def pause_overlay(world: World) -> None:
     for i in range(12):
         crate = box(world, -5.5 + i, 2.0 + 1.5 * (i % 4), 0.4, 0.4, density=1.0, name="crate")
         world.add(crate, Rect(0.8, 0.8, color=(230, 160, 60, 255)))
-    corner = UINode(parent=_root(world), anchor="top_right", offset=(-12, -12), width=90, height=34)
+    corner = UINode(parent=root_area(world), anchor="top_right", offset=(-12, -12), width=90,
+                    height=34)  # fmt: skip
     world.spawn(corner, Button("Pause"))
     world.spawn(Behaviour(_Pause()))
 
@@ -202,9 +209,9 @@ class _Switch(Script):
 
 
 def _room(world: World, title: str, color: tuple[int, int, int, int], target: Any) -> None:
-    root = _root(world)
+    root = root_area(world)
     world.spawn(UINode(parent=root, width="100%", height="100%"), Panel(color=color, radius=0))
-    col = _column(world, parent=root, width=260)
+    col = column(world, parent=root, width=260)
     world.spawn(UINode(parent=col), Label(title, size=26))
     for kind in _KINDS:
         world.spawn(UINode(parent=col, height=36), Button(kind))
