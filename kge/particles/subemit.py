@@ -60,9 +60,9 @@ def take_events(st: EmitterState, em: ParticleEmitter, subs: ParticleSubEmitters
     found: dict[SubEmitEvent, np.ndarray] = {}
     if SubEmitEvent.BIRTH in kinds and new > 0:
         found[SubEmitEvent.BIRTH] = pool.data[0:4, pool.count - new : pool.count].copy()
-    for kind, rows in ((SubEmitEvent.COLLISION, pool.hits), (SubEmitEvent.DEATH, pool.deaths)):
-        if kind in kinds and rows:
-            found[kind] = np.concatenate(rows, axis=1)
+    for kind, kept in ((SubEmitEvent.COLLISION, pool.hits), (SubEmitEvent.DEATH, pool.deaths)):
+        if kind in kinds and kept:
+            found[kind] = np.concatenate(kept, axis=1)
     pool.hits, pool.deaths = [], []
     budget = subs.max_events
     out: dict[SubEmitEvent, np.ndarray] = {}

@@ -104,6 +104,9 @@ def strip(lines: np.ndarray, widths: np.ndarray, out: np.ndarray | None = None,
     complex, float32, each at least (s, m)) reused from frame to frame, as fresh pages
     are what a loaded machine makes slow."""
     s_, m = lines.shape[1:]
+    p: Any
+    t: Any
+    length: Any
     if work is None:
         p, t, length = (np.empty((s_, m), np.complex64), np.empty((s_, m), np.complex64),
                         np.empty((s_, m), np.float32))  # fmt: skip

@@ -150,9 +150,10 @@ def test_the_same_scene_sprays_the_same_particles() -> None:
     (lambda: SubEmitter(1, count=-1), "SubEmitter.count must be in 0..100000"),
     (lambda: SubEmitter(1, inherit_velocity=20.0), "SubEmitter.inherit_velocity must be in"),
     (lambda: SubEmitter(1, inherit_velocity=float("nan")), "SubEmitter.inherit_velocity must be"),
-    (lambda: SubEmitter(1, on="touch"), "SubEmitter.on must be one of"),
+    (lambda: SubEmitter(1, on="touch"), "SubEmitter.on must be one of"),  # type: ignore[arg-type]
     (lambda: SubEmitter(-3), "SubEmitter.emitter"),
-    (lambda: ParticleSubEmitters(3), r"ParticleSubEmitters.emitters\[0\] must be a SubEmitter"),
+    (lambda: ParticleSubEmitters(3),  # type: ignore[arg-type]
+     r"ParticleSubEmitters.emitters\[0\] must be a SubEmitter"),
     (lambda: ParticleSubEmitters(max_events=-1), "ParticleSubEmitters.max_events must be in"),
 ])  # fmt: skip
 def test_bad_sub_emitters_are_refused_at_the_call(make: Any, message: str) -> None:
