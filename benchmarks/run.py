@@ -349,6 +349,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.particles_lights import game_lines
 
         out += game_lines(report["game"])
+    if report.get("game_frame"):
+        from benchmarks.game_frame import lines as frame_lines
+
+        out += frame_lines(report["game_frame"])
     if report.get("rendering"):
         from benchmarks.rendering import lines as rendering_lines
 
@@ -489,6 +493,16 @@ def main(argv: list[str] | None = None) -> int:
             from benchmarks.particles_lights import game_lines
 
             print("\n".join(game_lines(game)))
+    frame: dict[str, Any] = {}
+    if not args.no_game and not args.no_render and not args.scene:
+        from benchmarks import game_frame
+
+        frame, why = game_frame.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        else:
+            print("\n".join(game_frame.lines(frame)))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -559,6 +573,14 @@ def main(argv: list[str] | None = None) -> int:
             print("\neditor (kge edit), µs of CPU per frame (median):")
             print(editor_bench.table({int(n): r for n, r in editor_rows.items()}))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
+    if frame:
+        from benchmarks.game_frame import targets as frame_targets
+
+        for f_name, f_value, f_goal, f_at_most, f_unit in frame_targets(frame):
+            goals.append({"target": f_name, "value": f_value, "goal": f_goal,
+                          "at_most": f_at_most, "unit": f_unit,
+                          "met": None if f_value is None else (
+                              f_value <= f_goal if f_at_most else f_value >= f_goal)})
     if tiles:
         goals += tilemap.targets(tiles)
     if drawing:
@@ -594,6 +616,7 @@ def main(argv: list[str] | None = None) -> int:
         "ui": ui_rows,
         "costs": costs,
         "game": game,
+        "game_frame": frame,
         "tilemap": tiles,
         "rendering": drawing,
         "characters": characters,
