@@ -153,6 +153,13 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
 
     add("LunarLander steps/s, kge batched / pybox2d SyncVectorEnv, N = 64 (one core)",
         rl_ratio(rl or [], 64), 1.0, False)
+    from benchmarks.rl import single_ratio
+
+    add("LunarLander steps/s, kge/LunarLander-v0 / pybox2d LunarLander-v3, one env each",
+        single_ratio(rl or []), 0.3, False)
+    lander = ratio(results, "lunar-lander", 50, "kge", "box2d")
+    add("Gymnasium LunarLander-v3 steps/s, on kge.box2d / on pybox2d",
+        None if not lander else 1.0 / lander, 0.25, False)
     anim = animation[max(animation)] if animation else {}
     add("animated sprites per sprite and frame (advance + tex coords + upload, largest N)",
         anim.get("kge_total"), 0.3, True, "µs")
