@@ -311,9 +311,9 @@ def breakdown(n: int, env_steps: int = 4000, warmup: int = WARMUP) -> str:
     parts = Exclusive(time.thread_time)
     if single:
         parts.wrap(inner, "reset", "env resets: a new scene (world, plugins, bodies)")
-        parts.wrap(lunar_lander, "fire", "engine impulses: numpy geometry, apply_linear_impulse")
-        parts.wrap(inner, "_observe", "observation: components read, numpy, checks")
-        parts.wrap(inner, "reward", "reward: numpy shaping")
+        parts.wrap(lunar_lander, "fire_one", "engine impulses: geometry, apply_linear_impulse")
+        parts.wrap(inner, "_observe", "observation: components read, floats, checks")
+        parts.wrap(inner, "reward", "reward: shaping")
     else:
         parts.wrap(env, "_respawn", "scene resets: re-lay the finished envs' scenes")
         parts.wrap(lander_vector, "fire",
