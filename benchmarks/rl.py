@@ -282,43 +282,65 @@ class Exclusive:
 
 
 def breakdown(n: int, env_steps: int = 4000, warmup: int = WARMUP) -> str:
-    """Where an env step of the batched env goes at ``n`` envs (random actions, resets as
-    episodes end), after ``warmup`` batch steps: wall time per part, each exclusive of
-    the parts it calls."""
-    from kge.gym import lander_vector
+    """Where an env step goes at ``n`` envs (the batched env; ``n`` = 1: one env from
+    ``gymnasium.make``, the single-env layout of RLlib and SB3), random actions, resets
+    as episodes end, after ``warmup`` steps: time per part, each exclusive of the parts it
+    calls (the game thread's CPU time: steadier than wall time on a shared machine)."""
+    from kge.gym import lander_vector, lunar_lander
     from kge.systems.physics import PhysicsSystem
 
-    env = _make("kge", "batched", n)
+    single = n == 1
+    env = _make("kge", "single" if single else "batched", n)
     rng = np.random.default_rng(0)
     calls = max(1, env_steps // n)
     actions = rng.integers(0, 4, size=(calls + warmup, n))
     env.reset(seed=0)
+
+    def step(a: np.ndarray) -> None:
+        if not single:
+            env.step(a)
+            return
+        _, _, terminated, truncated, _ = env.step(int(a[0]))
+        if terminated or truncated:
+            env.reset()
+
     for a in actions[:warmup]:
-        env.step(a)
-    system = env.world.get_system(PhysicsSystem)
-    sim = system.sim
-    parts = Exclusive()
-    parts.wrap(env, "_respawn", "scene resets: re-lay the finished envs' scenes")
-    parts.wrap(lander_vector, "fire",
-               "engine impulses: numpy geometry, Physics.apply_linear_impulses")
-    parts.wrap(sim, "sync_in", "physics sync-in: the resets' and impulses' changes into pymunk")
-    parts.wrap(sim.joints, "before_step", "joints before the step")
+        step(a)
+    inner = env.unwrapped
+    sim = inner.world.get_system(PhysicsSystem).sim
+    parts = Exclusive(time.thread_time)
+    if single:
+        parts.wrap(inner, "reset", "env resets: a new scene (world, plugins, bodies)")
+        parts.wrap(lunar_lander, "fire_one", "engine impulses: geometry, apply_linear_impulse")
+        parts.wrap(inner, "_observe", "observation: components read, floats, checks")
+        parts.wrap(inner, "reward", "reward: shaping")
+    else:
+        parts.wrap(env, "_respawn", "scene resets: re-lay the finished envs' scenes")
+        parts.wrap(lander_vector, "fire",
+                   "engine impulses: numpy geometry, Physics.apply_linear_impulses")
+    # on the classes: a reset of the single env makes a new world (and simulation)
+    sim_cls, joints_cls = type(sim), type(sim.joints)
+    parts.wrap(sim_cls, "sync_in", "physics sync-in: the resets' and impulses' changes into pymunk")
+    parts.wrap(joints_cls, "before_step", "joints before the step")
     if sim.ccd is not None:
-        parts.wrap(sim.ccd, "before_step", "continuous collision before the step")
-    parts.wrap(sim._speed_cap, "before_substep", "speed caps between substeps")
-    parts.wrap(sim.space, "step", "pymunk space.step: the solver (C), kge's contact callbacks")
-    parts.wrap(sim.joints, "after_step", "joints after the step: position pass, read-back")
-    parts.wrap(sim, "sync_out", "physics sync-out: bulk pose read, component write-back")
+        parts.wrap(type(sim.ccd), "before_step", "continuous collision before the step")
+    parts.wrap(type(sim._speed_cap), "before_substep", "speed caps between substeps")
+    parts.wrap(type(sim.space), "step",
+               "pymunk space.step: the solver (C), kge's contact callbacks")
+    parts.wrap(joints_cls, "after_step", "joints after the step: position pass, read-back")
+    parts.wrap(sim_cls, "sync_out", "physics sync-out: bulk pose read, component write-back")
+    parts.wrap(sim_cls, "step", "physics step: the rest of Simulation.step")
     gc.collect()
-    start = time.perf_counter()
+    start = time.thread_time()
     for a in actions[warmup:]:
-        env.step(a)
-    real = (time.perf_counter() - start) / (calls * n) * 1e6
+        step(a)
+    real = (time.thread_time() - start) / (calls * n) * 1e6
     parts.restore()
     env.close()
     per_step = 1e6 / (calls * n)
-    lines = [f"batched LunarLander, N = {n}: {real:.1f} µs per env step "
-             f"({1e6 / real:,.0f} steps/s), load average {os.getloadavg()[0]:.2f}",
+    what = "gymnasium.make LunarLander" if single else f"batched LunarLander, N = {n}"
+    lines = [f"{what}: {real:.1f} µs per env step ({1e6 / real:,.0f} steps/s), "
+             f"load average {os.getloadavg()[0]:.2f}",
              "| part | µs per env step | share |", "|---|---:|---:|"]
     accounted = 0.0
     for label, t in parts.acc.items():
@@ -326,11 +348,18 @@ def breakdown(n: int, env_steps: int = 4000, warmup: int = WARMUP) -> str:
         accounted += t
         lines.append(f"| {label} | {t:.1f} | {t / real:.0%} |")
     rest = real - accounted
-    lines.append(f"| the rest: App frame, systems, the env's numpy (observations, rewards), "
-                 f"contacts | {rest:.1f} | {rest / real:.0%} |")
-    lines.append("(wall time, each part exclusive of the parts it calls; the timers cost about "
-                 "0.1 µs per env step)")
+    lines.append(f"| the rest: App frame, schedule and systems, Gymnasium's wrappers, the "
+                 f"env's numpy, contacts | {rest:.1f} | {rest / real:.0%} |")
+    lines.append("(game-thread CPU time, each part exclusive of the parts it calls; the "
+                 "timers cost about 0.5 µs per call)")
     return "\n".join(lines)
+
+
+def single_ratio(rows: list[dict[str, Any]]) -> float | None:
+    """kge/LunarLander-v0 / pybox2d LunarLander-v3, one env each (None if either is missing)."""
+    by = {(r["engine"], r["mode"]): r["steps_per_s"] for r in rows if r["mode"] == "single"}
+    kge, box2d = by.get(("kge", "single")), by.get(("box2d", "single"))
+    return None if kge is None or box2d is None else kge / box2d
 
 
 def ratio(rows: list[dict[str, Any]], n: int) -> float | None:

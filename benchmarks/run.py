@@ -153,6 +153,13 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
 
     add("LunarLander steps/s, kge batched / pybox2d SyncVectorEnv, N = 64 (one core)",
         rl_ratio(rl or [], 64), 1.0, False)
+    from benchmarks.rl import single_ratio
+
+    add("LunarLander steps/s, kge/LunarLander-v0 / pybox2d LunarLander-v3, one env each",
+        single_ratio(rl or []), 0.3, False)
+    lander = ratio(results, "lunar-lander", 50, "kge", "box2d")
+    add("Gymnasium LunarLander-v3 steps/s, on kge.box2d / on pybox2d",
+        None if not lander else 1.0 / lander, 0.25, False)
     anim = animation[max(animation)] if animation else {}
     add("animated sprites per sprite and frame (advance + tex coords + upload, largest N)",
         anim.get("kge_total"), 0.3, True, "µs")
@@ -349,6 +356,10 @@ def markdown(report: dict[str, Any], chart_link: str | None) -> str:
         from benchmarks.particles_lights import game_lines
 
         out += game_lines(report["game"])
+    if report.get("game_frame"):
+        from benchmarks.game_frame import lines as frame_lines
+
+        out += frame_lines(report["game_frame"])
     if report.get("rendering"):
         from benchmarks.rendering import lines as rendering_lines
 
@@ -489,6 +500,16 @@ def main(argv: list[str] | None = None) -> int:
             from benchmarks.particles_lights import game_lines
 
             print("\n".join(game_lines(game)))
+    frame: dict[str, Any] = {}
+    if not args.no_game and not args.no_render and not args.scene:
+        from benchmarks import game_frame
+
+        frame, why = game_frame.run_section(args.quick, progress)
+        if why:
+            skipped.append(why)
+            print(why, file=sys.stderr)
+        else:
+            print("\n".join(game_frame.lines(frame)))
     rows: list[dict[str, Any]] = []
     if args.breakdown:
         rows = run_breakdown(chosen, progress, args.quick)
@@ -559,6 +580,14 @@ def main(argv: list[str] | None = None) -> int:
             print("\neditor (kge edit), µs of CPU per frame (median):")
             print(editor_bench.table({int(n): r for n, r in editor_rows.items()}))
     goals = targets(results, fitting, render, rl, animation, costs, game if game else None)
+    if frame:
+        from benchmarks.game_frame import targets as frame_targets
+
+        for f_name, f_value, f_goal, f_at_most, f_unit in frame_targets(frame):
+            goals.append({"target": f_name, "value": f_value, "goal": f_goal,
+                          "at_most": f_at_most, "unit": f_unit,
+                          "met": None if f_value is None else (
+                              f_value <= f_goal if f_at_most else f_value >= f_goal)})
     if tiles:
         goals += tilemap.targets(tiles)
     if drawing:
@@ -594,6 +623,7 @@ def main(argv: list[str] | None = None) -> int:
         "ui": ui_rows,
         "costs": costs,
         "game": game,
+        "game_frame": frame,
         "tilemap": tiles,
         "rendering": drawing,
         "characters": characters,

@@ -1,10 +1,11 @@
 """Per-system timings: how long each system of a world takes, measured only when asked.
 
-``world.schedule.enable_timings()`` wraps each system's run in a pair of
-``time.perf_counter()`` calls (its flush of queued changes included); with timings
-off (the default) the schedule runs exactly as before and pays nothing. The stats
-overlay (F3 in a window), ``kge schedule --timings`` and the console's ``timings``
-command read the same numbers.
+``world.schedule.enable_timings()`` wraps each system's run (its flush of queued
+changes included) in a pair of ``time.perf_counter()`` calls, or of the clock it is
+given (``time.thread_time``: the game thread's CPU only); with timings off (the
+default) the schedule runs exactly as before and pays nothing. The stats overlay (F3
+in a window), ``kge schedule --timings`` and the console's ``timings`` command read
+the same numbers.
 
 Numbers per system:
 
@@ -25,6 +26,7 @@ Numbers per system:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 #: weight of the newest frame in ``average`` (about a 30-frame window)
@@ -63,7 +65,10 @@ class _Entry:
 class SystemTimings:
     """The timings of one schedule (see the module docstring)."""
 
-    def __init__(self) -> None:
+    def __init__(self, clock: Callable[[], float] | None = None) -> None:
+        #: what the schedule reads before and after each system (seconds); None:
+        #: ``time.perf_counter``
+        self.clock = clock
         self._entries: dict[int, _Entry] = {}
         self._keep: dict[int, object] = {}  # ids stay unique while the system is known
         self.frames = 0  #: frames ended since enabled or reset

@@ -160,25 +160,24 @@ class LunarLander(KgeEnv):
     # -- one step --------------------------------------------------------------------------------
     def act(self, world: World, action: Any) -> None:
         tf = world.get(self.lander, Transform)
-        actions = np.asarray(action, dtype=np.float64).reshape(1, -1)
-        m_power, s_power, direction = throttles(actions, self.continuous)
-        self.m_power, self.s_power = float(m_power[0]), float(s_power[0])
-        pose = np.array([[tf.x, tf.y, tf.angle]])
-        fire(world.resource(Physics), [self.lander], pose,
-             self.np_random.uniform(-1.0, 1.0, size=(1, 2)), m_power, s_power, direction)
+        m_power, s_power, direction = throttle_one(action, self.continuous)
+        self.m_power, self.s_power = m_power, s_power
+        d0, d1 = self.np_random.uniform(-1.0, 1.0, size=2).tolist()
+        fire_one(world.resource(Physics), self.lander, (tf.x, tf.y, tf.angle), (d0, d1),
+                 m_power, s_power, direction)
 
     def throttle(self, action: Any) -> tuple[float, float, float]:
         """(main power 0..1, side power 0..1, side direction -1/+1) for one action."""
-        m, s, d = throttles(np.asarray(action, dtype=np.float64).reshape(1, -1), self.continuous)
-        return float(m[0]), float(s[0]), float(d[0])
+        return throttle_one(action, self.continuous)
 
     def observe(self, world: World) -> np.ndarray:
         self._read_contacts(world)
         tf = world.get(self.lander, Transform)
         rb = world.get(self.lander, RigidBody)
         vx, vy = rb.velocity
-        state = np.array([[tf.x, tf.y, vx, vy, tf.angle, rb.angular_velocity]])
-        return observations(state, np.array([self.leg_contact], np.float64), self.helipad_y)[0]
+        legs = (self.leg_contact[0], self.leg_contact[1])
+        return observation_one((tf.x, tf.y, vx, vy, tf.angle, rb.angular_velocity), legs,
+                               self.helipad_y)
 
     def _read_contacts(self, world: World) -> None:
         """Box2D's contact listener of the original: hull contact ends the game, legs flag."""
@@ -196,12 +195,9 @@ class LunarLander(KgeEnv):
 
     def reward(self, world: World, obs: Any, action: Any) -> float:
         awake = world.get(self.lander, RigidBody).awake
-        prev = np.array([math.nan if self.prev_shaping is None else self.prev_shaping])
-        r, shaped = rewards(obs[None, :], prev, np.array([self.m_power]),
-                            np.array([self.s_power]), np.array([self.game_over]),
-                            np.array([awake]))
-        self.prev_shaping = float(shaped[0])
-        return float(r[0])
+        r, self.prev_shaping = reward_one(obs, self.prev_shaping, self.m_power, self.s_power,
+                                          self.game_over, awake)
+        return r
 
     def terminated(self, world: World, obs: Any) -> bool:
         return (self.game_over or abs(float(obs[0])) >= 1.0
@@ -466,6 +462,86 @@ def rewards(obs: np.ndarray, prev_shaping: np.ndarray, m_power: np.ndarray,
     r -= m_power * 0.30 + s_power * 0.03
     r = np.where(awake, r, 100.0)
     r = np.where(game_over | (np.abs(s[:, 0]) >= 1.0), -100.0, r)
+    return r, shaping
+
+
+# -- one lander in Python floats: what the single env runs -------------------------------------
+# The row functions above, for one lander: numpy calls on one-row arrays cost more than
+# their arithmetic (about 250 µs of a 1 ms env step went there). The same formulas on
+# floats, the same operations in the same order (IEEE double, as numpy's), and numpy's
+# own sin, cos and hypot on the scalars: every result has the row version's bits
+# (tests/gym/test_lander_one.py runs both on the same inputs).
+
+
+def throttle_one(action: Any, continuous: bool) -> tuple[float, float, float]:
+    """(main power 0..1, side power 0..1, side direction -1/+1): ``throttles`` for one
+    action (a discrete action number, or the two continuous throttles)."""
+    if not continuous:
+        a = float(np.asarray(action, dtype=np.float64).reshape(-1)[0])
+        side = a in (LEFT, RIGHT)
+        return (1.0 if a == MAIN else 0.0), (1.0 if side else 0.0), (a - 2 if side else 0.0)
+    main, lateral = (float(v) for v in np.asarray(action, dtype=np.float64).reshape(-1)[:2])
+    m_power = (min(max(main, 0.0), 1.0) + 1.0) * 0.5 if main > 0.0 else 0.0
+    on = abs(lateral) > 0.5
+    s_power = min(max(abs(lateral), 0.5), 1.0) if on else 0.0
+    return m_power, s_power, (math.copysign(1.0, lateral) if on else 0.0)
+
+
+def fire_one(physics: Physics, lander: int, pose: tuple[float, float, float],
+             dispersion: tuple[float, float], m_power: float, s_power: float,
+             direction: float) -> None:
+    """``fire`` for one lander: its main engine's impulse, then its side engine's."""
+    if not (m_power > 0.0 or s_power > 0.0):
+        return
+    x, y, angle = pose
+    tip_x, tip_y = float(np.sin(angle)), float(np.cos(angle))
+    d0, d1 = dispersion[0] / SCALE, dispersion[1] / SCALE
+    if m_power > 0.0:
+        along = MAIN_ENGINE_Y_LOCATION / SCALE + 2 * d0
+        ox = tip_x * along + (-tip_y) * d1
+        oy = -tip_y * along - tip_x * d1
+        power = MAIN_ENGINE_POWER * m_power
+        physics.apply_linear_impulse(lander, (-ox * power, -oy * power), (x + ox, y + oy))
+    if s_power > 0.0:
+        across = 3 * d1 + direction * SIDE_ENGINE_AWAY / SCALE
+        ox = tip_x * d0 + (-tip_y) * across
+        oy = -tip_y * d0 - tip_x * across
+        power = SIDE_ENGINE_POWER * s_power
+        px = x + ox - tip_x * 17 / SCALE
+        py = y + oy + tip_y * SIDE_ENGINE_HEIGHT / SCALE
+        physics.apply_linear_impulse(lander, (-ox * power, -oy * power), (px, py))
+
+
+def observation_one(state: tuple[float, float, float, float, float, float],
+                    legs: tuple[bool, bool], helipad_y: float) -> np.ndarray:
+    """``observations`` for one lander: ``state`` is (x, y, vx, vy, angle, angular
+    velocity), ``legs`` the two contact flags."""
+    x, y, vx, vy, angle, w = state
+    return np.array([
+        (x - W / 2) / (W / 2),
+        (y - (helipad_y + LEG_DOWN / SCALE)) / (H / 2),
+        vx * (W / 2) / FPS,
+        vy * (H / 2) / FPS,
+        angle,
+        20.0 * w / FPS,
+        float(legs[0]),
+        float(legs[1]),
+    ], np.float32)  # fmt: skip
+
+
+def reward_one(obs: np.ndarray, prev_shaping: float | None, m_power: float, s_power: float,
+               game_over: bool, awake: bool) -> tuple[float, float]:
+    """``rewards`` for one lander: (reward, shaping); ``prev_shaping`` None on an
+    episode's first step."""
+    s0, s1, s2, s3, s4, _, s6, s7 = obs.tolist()  # float32 -> the same doubles as astype
+    shaping = (-100 * float(np.hypot(s0, s1)) - 100 * float(np.hypot(s2, s3))
+               - 100 * abs(s4) + 10 * s6 + 10 * s7)
+    r = 0.0 if prev_shaping is None or math.isnan(prev_shaping) else shaping - prev_shaping
+    r -= m_power * 0.30 + s_power * 0.03
+    if not awake:
+        r = 100.0
+    if game_over or abs(s0) >= 1.0:
+        r = -100.0
     return r, shaping
 
 

@@ -4,8 +4,10 @@ Each particle is a quad of 4 vertices whose corners are fixed (``corner``,
 written once); each frame the emitter's live particles write their centre,
 size and angle (one vec4) and RGBA colour into the vertex buffers of the world's batch
 with one numpy ``repeat`` per attribute, and the shader turns corner, size and
-angle into the quad. Quads past the live count get size 0. The vertex list sits
-under the emitter's layer group, so particles sort with sprites of that layer.
+angle into the quad. Quads past the live count get size 0 and are not drawn: a
+particle domain draws each emitter's live quads only (:class:`LiveDraw`), so an
+emitter's spare capacity costs no vertex work. The vertex list sits under the
+emitter's layer group, so particles sort with sprites of that layer.
 
 The list grows (by re-allocation) with the emitter's pool, which is capped by
 ``max_particles``; it never shrinks while the emitter lives.
@@ -168,6 +170,48 @@ def _quad_list(program: Any, batch: Any, group: Any, quads: int,
     return vl
 
 
+class LiveDraw:
+    """A particle domain's draw: the live quads of each emitter's list, in buffer order.
+
+    pyglet draws every index a domain holds, so an emitter's dead quads (size 0:
+    nothing on screen) would still go through the vertex stage, which software GL
+    runs on the game thread. This draws ``6 * live`` indices from each list's start
+    instead: the same triangles that cover pixels, in the same order. A domain
+    holding a list this does not know (its index total differs) is drawn whole.
+    """
+
+    __slots__ = ("domain", "live", "whole")
+
+    def __init__(self, domain: Any) -> None:
+        self.domain = domain
+        self.whole = domain.draw  # pyglet's own
+        self.live: dict[Any, int] = {}  #: vertex list -> live quads
+
+    @staticmethod
+    def of(vertex_list: Any) -> LiveDraw:
+        domain = vertex_list.domain
+        draw = domain.__dict__.get("draw")
+        if not isinstance(draw, LiveDraw):
+            draw = LiveDraw(domain)
+            domain.draw = draw  # the batch's draw list calls domain.draw(mode)
+        return draw
+
+    def __call__(self, mode: int) -> None:
+        d = self.domain
+        _, sizes = d.index_allocator.get_allocated_regions()
+        if sum(sizes) != sum(vl.index_count for vl in self.live):
+            self.whole(mode)
+            return
+        d.vao.bind()
+        for buffer, _ in d.buffer_attributes:
+            buffer.commit()
+        d.index_buffer.commit()
+        size = d.index_element_size
+        runs = sorted((vl.index_start, 6 * n) for vl, n in self.live.items() if n)
+        for start, count in runs:
+            gl.glDrawElements(mode, count, d.index_gl_type, d.index_buffer.ptr + start * size)
+
+
 class _EmitterMesh:
     """The vertex list of one emitter and what it was made for."""
 
@@ -225,7 +269,7 @@ class ParticleDrawer:
         if mesh is not None and mesh.key == key and mesh.capacity >= capacity:
             return mesh
         if mesh is not None:
-            mesh.vertex_list.delete()
+            _delete(mesh.vertex_list)
         parent = self.groups.get(em.layer, WORLD, em.order)
         if prog is not self.program and material is not None:
             parent = MaterialGroup(material, prog, self.textures, parent)
@@ -239,7 +283,7 @@ class ParticleDrawer:
         if particles is None:
             return
         for entity in [e for e in self.meshes if e not in particles.states]:
-            self.meshes.pop(entity).vertex_list.delete()
+            _delete(self.meshes.pop(entity).vertex_list)
         for entity, st in particles.states.items():
             em = self.world.try_get(entity, ParticleEmitter)
             if em is None:
@@ -284,6 +328,7 @@ class ParticleDrawer:
             arr[lo + 4 * n : lo + 4 * mesh.written, 2] = 0.0
             buf.invalidate_region(lo + 4 * n, 4 * (mesh.written - n))
         mesh.written = n
+        LiveDraw.of(vl).live[vl] = n
 
     def more(self, entity: int, em: ParticleEmitter, st: EmitterState, mesh: _EmitterMesh,
              n: int) -> None:  # fmt: skip
@@ -292,5 +337,13 @@ class ParticleDrawer:
 
     def close(self) -> None:
         for mesh in self.meshes.values():
-            mesh.vertex_list.delete()
+            _delete(mesh.vertex_list)
         self.meshes.clear()
+
+
+def _delete(vertex_list: Any) -> None:
+    """Free an emitter's vertex list (and forget it in its domain's :class:`LiveDraw`)."""
+    draw = vertex_list.domain.__dict__.get("draw")
+    if isinstance(draw, LiveDraw):
+        draw.live.pop(vertex_list, None)
+    vertex_list.delete()

@@ -57,3 +57,13 @@ def test_the_breakdown_accounts_for_the_whole_step() -> None:
     assert float(rows["joints after the step: position pass, read-back"]) > 0.0
     # every part plus the rest is the measured step (to the printed rounding)
     assert sum(float(v) for v in rows.values()) == pytest.approx(total, abs=0.1 * len(rows))
+
+
+def test_the_single_env_breakdown_names_the_env_parts() -> None:
+    pytest.importorskip("gymnasium")
+    text = breakdown(1, env_steps=30, warmup=5)
+    rows = dict(re.findall(r"^\| (.+?) \| ([\d.-]+) \| -?\d+% \|$", text, re.M))
+    total = float(re.search(r"LunarLander: ([\d.]+) µs", text).group(1))  # type: ignore[union-attr]
+    assert float(rows["observation: components read, floats, checks"]) > 0.0
+    assert float(rows["pymunk space.step: the solver (C), kge's contact callbacks"]) > 0.0
+    assert sum(float(v) for v in rows.values()) == pytest.approx(total, abs=0.1 * len(rows))

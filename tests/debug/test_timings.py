@@ -102,3 +102,20 @@ def test_kge_schedule_prints_measured_timings(capsys) -> None:
     assert main(["--timings", "5"]) == 0
     out = capsys.readouterr().out
     assert "avg ms" in out and "PhysicsSystem" in out
+
+
+def test_timings_take_the_clock_they_are_given() -> None:
+    ticks = iter(range(1000))
+
+    class Work(System):
+        stage = Stage.FIXED
+
+        def process(self, dt: float) -> None:
+            pass
+
+    app = App(lambda world: None, headless=True)
+    work = app.world.add_system(Work())
+    timings = app.world.schedule.enable_timings(lambda: float(next(ticks)))
+    app.step(1)
+    row = timings.of(work)
+    assert row is not None and row.last == 1000.0  # one tick of the fake clock, in ms

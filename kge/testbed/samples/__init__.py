@@ -10,6 +10,7 @@ from kge.testbed.samples import (  # noqa: F401
     collision_module,
     debug_tools,
     determinism,
+    game_frame,
     games,
     joints,
     large,
