@@ -150,7 +150,6 @@ def spawn_profile(count: int = 1000, waves: int = 6) -> dict[str, Any]:
     from benchmarks.scenes import KgeSpawn
 
     spawn = KgeSpawn(count)
-    spawn.prepare()
     prof = cProfile.Profile()
     total = 0.0
     for _ in range(waves):
