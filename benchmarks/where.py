@@ -27,7 +27,6 @@ import subprocess
 import sys
 import time
 from collections import deque
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -64,22 +63,10 @@ PIECES = (
 )
 
 
-def _timer(acc: dict[str, float], inner: Callable[..., Any], key: str) -> Callable[..., Any]:
-    clock = time.perf_counter
-
-    def timed(*args: Any, **kwargs: Any) -> Any:
-        t0 = clock()
-        try:
-            return inner(*args, **kwargs)
-        finally:
-            acc[key] = acc.get(key, 0.0) + clock() - t0
-
-    return timed
-
-
 def scene_profile(slug: str, param: str, size: int, extra: dict[str, Any],
                   frames: int) -> dict[str, Any]:
     """Median ms per piece of ``frames`` kge frames, raw pymunk's step interleaved."""
+    from benchmarks.breakdown import timed
     from benchmarks.engines import KgeRunner, PymunkRunner, spec_of
     from kge.physics import simulation
     from kge.systems.physics import PhysicsSystem
@@ -95,9 +82,9 @@ def scene_profile(slug: str, param: str, size: int, extra: dict[str, Any],
     for path, method, key in PIECES:
         owner = getattr(sim, path) if path else sim
         if owner is not None:
-            setattr(owner, method, _timer(acc, getattr(owner, method), key))
+            setattr(owner, method, timed(acc, getattr(owner, method), key))
     write_poses = simulation.write_poses
-    simulation.write_poses = _timer(acc, write_poses, "sync_out.write_poses")
+    simulation.write_poses = timed(acc, write_poses, "sync_out.write_poses")
     rows: list[dict[str, float]] = []
     raw_ms: list[float] = []
     try:
