@@ -348,7 +348,9 @@ def test_the_position_pass_leaves_chipmunks_own_poses(bystanders: int) -> None:
                         Collider(Circle(0.25, (0.05, 0.02))))
 
     app = App(scene, headless=True)
-    sim = app.world.get_system(PhysicsSystem).sim
+    system = app.world.get_system(PhysicsSystem)
+    assert system is not None
+    sim = system.sim
     for _ in range(40):
         app.step()
         for e, (t, _rb) in app.world.query(Transform, RigidBody):
