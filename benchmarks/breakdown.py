@@ -30,6 +30,20 @@ from kge.systems.physics import PhysicsEventDelivery, PhysicsSystem
 PHASES = ("sync-in", "step", "sync-out", "events", "other")
 
 
+def timed(acc: dict[str, float], inner: Callable[..., Any], key: str) -> Callable[..., Any]:
+    """``inner`` that adds the seconds each call takes to ``acc[key]``."""
+    clock = time.perf_counter
+
+    def run(*args: Any, **kwargs: Any) -> Any:
+        t0 = clock()
+        try:
+            return inner(*args, **kwargs)
+        finally:
+            acc[key] = acc.get(key, 0.0) + clock() - t0
+
+    return run
+
+
 class PhaseTimer:
     """Accumulates time per phase for the frames of one App."""
 
@@ -51,18 +65,7 @@ class PhaseTimer:
         self.frames: list[dict[str, float]] = []
 
     def _wrap(self, obj: Any, method: str, key: str) -> None:
-        inner: Callable[..., Any] = getattr(obj, method)
-        acc = self.acc
-        clock = time.perf_counter
-
-        def timed(*args: Any, **kwargs: Any) -> Any:
-            t0 = clock()
-            try:
-                return inner(*args, **kwargs)
-            finally:
-                acc[key] = acc.get(key, 0.0) + clock() - t0
-
-        setattr(obj, method, timed)
+        setattr(obj, method, timed(self.acc, getattr(obj, method), key))
 
     def frame(self) -> None:
         """Run one frame and record its phases (ms)."""

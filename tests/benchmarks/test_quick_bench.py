@@ -81,11 +81,15 @@ def test_report_has_per_body_costs_and_their_targets(report: dict) -> None:
     assert "in a world of 2,000 bodies" in report["_md"]
     names = {t["target"] for t in report["targets"]}
     assert {"kge / raw pymunk, chain-200", "kge / raw pymunk, dense-pile-6000",
-            "kge / raw pymunk, joint-grid-100",
+            "kge / raw pymunk, joint-grid-100", "kge / raw pymunk, sparse-20000",
+            "spawning 1,000 bodies in one frame, kge / raw pymunk",
+            "memory per body, kge / raw pymunk (fresh processes)",
             "sync-out per moved body (sparse field)",
             "spawn+despawn of 7 entities, kge in 2,000 bodies / in 200"} <= names
     sync = next(t for t in report["targets"] if t["target"].startswith("sync-out"))
     assert sync["value"] == c["sync_out_us"] and sync["met"] is not None
+    memory = next(t for t in report["targets"] if t["target"].startswith("memory per body"))
+    assert memory["value"] == c["bytes_per_body_kge"] / c["bytes_per_body_pymunk"]
     assert "Per-body costs" in report["_md"]
 
 

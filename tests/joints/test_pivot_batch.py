@@ -11,7 +11,7 @@ from kge.app import App
 from kge.components import Transform
 from kge.components.collider import Collider
 from kge.components.joints import RevoluteJoint
-from kge.components.rigidbody import RigidBody
+from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Circle
 from kge.errors import EntityNotFoundError, ValidationError
 from kge.physics.events import PhysicsEvents
@@ -330,3 +330,30 @@ def test_few_joints_stay_on_the_per_joint_path(monkeypatch: pytest.MonkeyPatch) 
         app.step(2)
         assert len(_bridge(app)._batched) == batched
         app.close()
+
+
+@pytest.mark.parametrize("bystanders", [0, 60])
+def test_the_position_pass_leaves_chipmunks_own_poses(bystanders: int) -> None:
+    """After the bulk position pass, every Transform is its body's pose in Chipmunk
+    to the last bit (off-centre discs: the origin is recomputed from the centre of
+    gravity). Alone, the chain's moves are read back by one read of the whole space;
+    among many still bodies, body by body."""
+
+    def scene(world: World) -> None:
+        _chain(world)
+        for i in range(bystanders):  # resting far away: moved by nothing
+            world.spawn(Transform(100.0 + 3 * i, 0.0), RigidBody(type=BodyType.STATIC),
+                        Collider(Box(1.0, 0.1)))
+            world.spawn(Transform(100.0 + 3 * i, 0.35, 0.2), RigidBody(),
+                        Collider(Circle(0.25, (0.05, 0.02))))
+
+    app = App(scene, headless=True)
+    system = app.world.get_system(PhysicsSystem)
+    assert system is not None
+    sim = system.sim
+    for _ in range(40):
+        app.step()
+        for e, (t, _rb) in app.world.query(Transform, RigidBody):
+            body = sim.bodies[e].body
+            assert (t.x, t.y, t.angle) == (body.position.x, body.position.y, body.angle), e
+    app.close()
