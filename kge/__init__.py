@@ -98,6 +98,7 @@ from kge.errors import (
     ValidationError,
     WorldLockedError,
 )
+from kge.host import CloseRequested
 from kge.input import Input, KeyEvent, MouseEvent
 from kge.keys import Key, Mod, Mouse
 from kge.physics.contacts import PostSolve, PreSolve
@@ -320,6 +321,7 @@ __all__ = [
     "CharacterPlugin",
     "Circle",
     "Clip",
+    "CloseRequested",
     "Collider",
     "ColorGrade",
     "ComponentTypeError",

@@ -49,6 +49,7 @@ from kge.components.ui import (
 )
 from kge.editor.fields import FieldKind, asset_files, kind_of, parse, show
 from kge.editor.model import EditorModel, EditorOnly
+from kge.host import CloseRequested
 from kge.input import Input, KeyEvent
 from kge.keys import Key, Mod, Mouse
 from kge.scene import Scene
@@ -135,6 +136,10 @@ class PlayBarInput(System):
         for ev in self.world.events(ButtonClicked):
             {"Pause": self.editor.pause, "Step": self.editor.step_once,
              "Stop": self.editor.stop}.get(ev.text, lambda: None)()
+        if self.world.events(CloseRequested):  # the window's close button while playing
+            self.editor.stop()
+            self.editor.quit()
+            return
         inp = self.world.resource(Input)
         if inp.pressed(Key.ESCAPE):
             self.editor.stop()
@@ -437,6 +442,8 @@ class EditorInput(System):
         ed = self.ed
         if ed.playing:
             return
+        if self.world.events(CloseRequested):  # the window's close button: as Quit does
+            ed.run("quit")
         self.ui_events()
         self.keys()
         self.viewport()
@@ -955,6 +962,7 @@ def editor_app(
 ) -> tuple[App, Editor]:
     """The editor on the scene file ``path`` (a new scene when None or missing)."""
     app = App(headless=headless, size=size, title=EDITOR_TITLE, background=(38, 42, 52))
+    app.quit_on_close = False  # closing the window asks about unsaved changes first
     if hot_reload:
         from kge.hotreload import HotReloadPlugin
 

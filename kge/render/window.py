@@ -129,8 +129,9 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
         app.size = (int(width), int(height))  # cameras clamp to bounds with the real size
 
     @window.event
-    def on_close() -> None:
-        app.quit()
+    def on_close() -> bool:
+        app.request_close()  # quits, or asks the top scene (app.quit_on_close = False)
+        return True  # the window closes when the App's loop ends, not before
 
 
 def disconnect(window: Any) -> None:

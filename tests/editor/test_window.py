@@ -399,3 +399,76 @@ def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
                and ed.model.world.get(e, Transform).y == 3.5]
     assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
     assert ed.model.undo() and len(ed.model.entities()) == 3
+
+
+def _close_button(app: App) -> None:
+    """The window manager's close button: pyglet's on_close on the App's (EGL) window."""
+    from kge.render.setup import ensure_renderer
+    from kge.render.window import connect, disconnect
+
+    window = ensure_renderer(app).window
+    connect(app, window)
+    try:
+        window.dispatch_event("on_close")
+        window.dispatch_events()  # outside pyglet's loop, window events are queued
+    finally:
+        disconnect(window)
+
+
+def test_closing_the_window_with_unsaved_changes_asks_first(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    app.render()  # the window the close button belongs to
+    app._running = True  # as inside App.run: quit() is what ends it
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    ed.model.set_field(crate, Transform, "x", 5.0)
+    _close_button(app)
+    app.step()
+    assert ed.dialog_kind == "unsaved" and app.running  # asked; the editor stays open
+    app.step()  # laid out
+    click_button(app, "Cancel")
+    assert ed.dialog_kind == "" and app.running and ed.model.dirty
+    assert app.world.name == "editor"  # still editing, the change still there
+    assert ed.model.world.get(crate, Transform).x == 5.0
+    _close_button(app)
+    app.step()
+    app.step()
+    click_button(app, "Discard")
+    assert not app.running  # discarded: the App's loop ends, the file is untouched
+    assert ed.model.path is not None and "x = 5.0" not in ed.model.path.read_text()
+
+
+def test_closing_the_window_can_save_and_quits_at_once_when_clean(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    app._running = True
+    app.request_close()  # what the window's on_close calls
+    app.step()
+    assert not app.running and ed.dialog_kind == ""  # nothing to save: no question
+    app._running = True
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    ed.model.set_field(crate, Transform, "x", 7.0)
+    click_button(app, "Play")  # closing while playing stops play, then asks
+    app.request_close()
+    app.advance(1 / 60)
+    assert not ed.playing and ed.dialog_kind == "unsaved" and app.running
+    app.step()
+    save = next(e for e in ed.dialog if app.world.has(e, Button)
+                and app.world.get(e, Button).text == "Save")  # the dialog's, not the toolbar's
+    app.input.click(at=box_of(app, save).center)
+    app.step()
+    assert not app.running and not ed.model.dirty
+    assert ed.model.path is not None and "x = 7.0" in ed.model.path.read_text()
+
+
+def test_an_app_quits_on_close_unless_told_otherwise() -> None:
+    from kge import CloseRequested
+
+    app = App(lambda w: None, headless=True)
+    app._running = True
+    app.request_close()
+    assert not app.running  # the default: the close button ends the game
+    app._running, app.quit_on_close = True, False
+    app.request_close()
+    assert app.running and len(app.world.events(CloseRequested)) == 1
+    app.close()
