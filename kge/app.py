@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING, Any
 from kge.actions import Bindings, InputMap
 from kge.components.camera import Camera, active_camera, camera_at
 from kge.components.resolution import canvas_size
+from kge.cursor import Cursor
 from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
 from kge.host import CloseRequested, Frontend, Host
 from kge.input import Input
@@ -134,6 +135,8 @@ class App(Host):
         self._in_frame = False
         self._ending_frame = False  #: the scene changes asked for during a frame are running
         self._running = False
+        #: how the mouse pointer looks over the window (hide, lock, an image)
+        self.cursor = Cursor()
         #: the window's close button quits at once (False: it sends CloseRequested)
         self.quit_on_close = True
         self.frame_count = 0
