@@ -73,6 +73,16 @@ def test_opens_clean_and_selects_with_a_click(editor: tuple[App, Editor]) -> Non
     assert len(ed.model.selection) == 2
 
 
+def _replace_text(app: App, text: str) -> None:
+    """In the focused field: select all (Ctrl+A), type ``text`` and press Enter."""
+    app.input.press(Key.A, Mod.CTRL)
+    app.input.release(Key.A)
+    app.input.type_text(text)
+    app.input.press(Key.ENTER)
+    app.step()
+    app.input.release(Key.ENTER)
+
+
 def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     app, ed = editor
     app.input.click(at=screen_of(ed, "Crate"))
@@ -81,12 +91,7 @@ def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     widget = next(w for w, (_, c, f, _) in ed.widgets.items() if c is Collider and f == "density")
     app.input.click(at=box_of(app, widget).center)
     app.step()
-    app.input.press(Key.A, Mod.CTRL)
-    app.input.release(Key.A)
-    app.input.type_text("2.5")
-    app.input.press(Key.ENTER)
-    app.step()
-    app.input.release(Key.ENTER)
+    _replace_text(app, "2.5")
     crate = ed.model.selection[0]
     assert ed.model.world.get(crate, Collider).density == 2.5 and ed.model.dirty
     app.world.resource(UIState).focused = None  # keys go to the editor, not the field
@@ -618,12 +623,7 @@ def test_rename_duplicate_new_and_the_view_buttons(editor: tuple[App, Editor]) -
     crate = select(app, ed, "Crate")
     assert ed.name_box is not None
     click(app, ed.name_box)
-    app.input.press(Key.A, Mod.CTRL)
-    app.input.release(Key.A)
-    app.input.type_text("Barrel")
-    app.input.press(Key.ENTER)
-    app.step()
-    app.input.release(Key.ENTER)
+    _replace_text(app, "Barrel")
     assert m.world.get(crate, Name).value == "Barrel"
     app.world.resource(UIState).focused = None
     click_button(app, "Duplicate")

@@ -7,7 +7,7 @@ import importlib
 import shutil
 import sys
 import textwrap
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -236,6 +236,26 @@ def _sheet(path: Path, colours: list[tuple[int, int, int]]) -> None:
     img.save(path)
 
 
+def _playing(game: Path, clip: object) -> tuple[App, HotReload, int, Callable[[str], object]]:
+    """A 64x64 App running one animated sprite playing ``clip`` (drawn 4 m wide at the
+    centre): the app, its reloader, the entity, and ``shown(name)``, the centre pixel
+    of a screenshot saved as ``name``."""
+    from kge import Animator
+
+    def scene(world: World) -> None:
+        world.spawn(Transform(), Sprite("run.png", size=(4.0, 4.0)),
+                    Animator({"run": clip}, current="run"))  # type: ignore[dict-item]
+
+    app, reloader = reloading(scene, size=(64, 64))
+
+    def shown(name: str) -> object:
+        app.screenshot(game / name)
+        return Image.open(game / name).convert("RGB").getpixel((32, 32))
+
+    (hero,) = [e for e, _ in app.world.query(Animator)]
+    return app, reloader, hero, shown
+
+
 def test_an_animated_sprite_sheet_reloads_while_its_clip_plays(game: Path) -> None:
     from kge import Animations, Animator, Clip
 
@@ -244,19 +264,10 @@ def test_an_animated_sprite_sheet_reloads_while_its_clip_plays(game: Path) -> No
     new = [(0, 255, 255), (255, 0, 255), (255, 255, 255), (128, 64, 0)]
     _sheet(sheet, old)
 
-    def scene(world: World) -> None:
-        clip = Clip.grid("run.png", (4, 1), fps=6)  # 10 steps a frame at 60 Hz
-        world.spawn(Transform(), Sprite("run.png", size=(4.0, 4.0)),
-                    Animator({"run": clip}, current="run"))
-
-    def shown(name: str) -> object:
-        app.screenshot(game / name)
-        return Image.open(game / name).convert("RGB").getpixel((32, 32))
-
-    app, reloader = reloading(scene, size=(64, 64))
+    clip = Clip.grid("run.png", (4, 1), fps=6)  # 10 steps a frame at 60 Hz
+    app, reloader, hero, shown = _playing(game, clip)
     try:
         anims = app.world.resource(Animations)
-        (hero,) = [e for e, _ in app.world.query(Animator)]
         app.step(14)  # 15 steps: frame 1, 5 steps into it
         assert anims.frame(hero) == 1 and shown("before.png") == old[1]
         _sheet(game / "next.png", new)
@@ -272,23 +283,14 @@ def test_an_animated_sprite_sheet_reloads_while_its_clip_plays(game: Path) -> No
 
 
 def test_a_sheet_with_bigger_frames_or_a_broken_one_keeps_the_clip_playing(game: Path) -> None:
-    from kge import Animations, Animator, Clip
+    from kge import Animations, Clip
 
     sheet = game / "run.png"
     _sheet(sheet, [(255, 0, 0), (0, 255, 0)])
 
-    def scene(world: World) -> None:
-        world.spawn(Transform(), Sprite("run.png", size=(4.0, 4.0)),
-                    Animator({"run": Clip.grid("run.png", (2, 1), fps=6)}, current="run"))
-
-    def shown(name: str) -> object:
-        app.screenshot(game / name)
-        return Image.open(game / name).convert("RGB").getpixel((32, 32))
-
-    app, reloader = reloading(scene, size=(64, 64))
+    app, reloader, hero, shown = _playing(game, Clip.grid("run.png", (2, 1), fps=6))
     try:
         anims = app.world.resource(Animations)
-        (hero,) = [e for e, _ in app.world.query(Animator)]
         app.step(12)
         assert anims.frame(hero) == 1 and shown("a.png") == (0, 255, 0)
         change(reloader, app, sheet, b"not a png")  # a half-written or broken file
