@@ -103,6 +103,7 @@ from kge.errors import (
     ValidationError,
     WorldLockedError,
 )
+from kge.host import CloseRequested
 from kge.input import Input, KeyEvent, MouseEvent
 from kge.keys import Key, Mod, Mouse
 from kge.physics.contacts import PostSolve, PreSolve
@@ -331,6 +332,7 @@ __all__ = [
     "CharacterPlugin",
     "Circle",
     "Clip",
+    "CloseRequested",
     "Collider",
     "ColorGrade",
     "ComponentTypeError",

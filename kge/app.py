@@ -42,8 +42,9 @@ from typing import TYPE_CHECKING, Any
 from kge.actions import Bindings, InputMap
 from kge.components.camera import Camera, active_camera, camera_at
 from kge.components.resolution import canvas_size
+from kge.cursor import Cursor
 from kge.errors import ComponentTypeError, SceneStackError, ValidationError, WorldLockedError
-from kge.host import Frontend, Host
+from kge.host import CloseRequested, Frontend, Host
 from kge.input import Input
 from kge.platform import has_display
 from kge.plugin import Plugin, PluginError, PluginLike, resolve
@@ -134,6 +135,10 @@ class App(Host):
         self._in_frame = False
         self._ending_frame = False  #: the scene changes asked for during a frame are running
         self._running = False
+        #: how the mouse pointer looks over the window (hide, lock, an image)
+        self.cursor = Cursor()
+        #: the window's close button quits at once (False: it sends CloseRequested)
+        self.quit_on_close = True
         self.frame_count = 0
         self.add_plugins(*(default_plugins() if plugins is None else plugins))
         if scene is not NO_SCENE:  # App(None) is refused: usually App(level(world)) by mistake
@@ -690,6 +695,15 @@ class App(Host):
     def quit(self) -> None:
         """Stop :meth:`run` after the current frame."""
         self._running = False
+
+    def request_close(self) -> None:
+        """The window's close button: quit, or, with ``quit_on_close = False``, emit
+        :class:`~kge.host.CloseRequested` into the top scene's world and keep running
+        (an editor asks about unsaved changes first). Headless tests call it too."""
+        if self.quit_on_close or not self._stack:
+            self.quit()
+        else:
+            self.world.emit(CloseRequested())
 
     @property
     def running(self) -> bool:

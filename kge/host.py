@@ -16,6 +16,7 @@ without it is headless-only and says so when asked to draw.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:
@@ -25,6 +26,13 @@ if TYPE_CHECKING:
     from kge.schedule import System
     from kge.transitions import ActiveTransition
     from kge.world import World
+
+
+@dataclass(slots=True, frozen=True)
+class CloseRequested:
+    """The window's close button (or :meth:`App.request_close`) asked the App to end
+    while ``app.quit_on_close`` is False: the top scene decides (ask to save, then
+    ``app.quit()``), and the window stays open until it does."""
 
 
 class Frontend(Protocol):

@@ -6,6 +6,8 @@ test using these helpers installs nothing and fails, naming them, when they are 
 
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import os
 import shutil
 import subprocess
@@ -30,6 +32,42 @@ def xdo(display: str, *args: str) -> str:
     out = subprocess.run([need("xdotool"), *args], env={**os.environ, "DISPLAY": display},
                          capture_output=True, text=True, timeout=30, check=True)  # fmt: skip
     return out.stdout.strip()
+
+
+class _ClientMessage(ctypes.Structure):
+    """Xlib's XClientMessageEvent, padded to the size of an XEvent (24 longs)."""
+
+    _fields_ = [
+        ("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
+        ("display", ctypes.c_void_p), ("window", ctypes.c_ulong),
+        ("message_type", ctypes.c_ulong), ("format", ctypes.c_int),
+        ("data", ctypes.c_long * 5), ("pad", ctypes.c_long * 12),
+    ]  # fmt: skip
+
+
+def close_window(display: str, window: str) -> None:
+    """What a window manager's close button sends: a WM_DELETE_WINDOW request to
+    ``window`` (the client decides; xdotool's windowclose would destroy it instead)."""
+    path = ctypes.util.find_library("X11")
+    assert path, "libX11 is not installed"
+    x11 = ctypes.CDLL(path)
+    x11.XOpenDisplay.restype = ctypes.c_void_p
+    x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    x11.XInternAtom.restype = ctypes.c_ulong
+    x11.XInternAtom.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
+    x11.XSendEvent.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_long,
+                               ctypes.c_void_p]  # fmt: skip
+    x11.XFlush.argtypes = x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+    dpy = x11.XOpenDisplay(display.encode())
+    assert dpy, f"cannot open the X display {display}"
+    try:
+        ev = _ClientMessage(type=33, send_event=1, display=dpy, window=int(window), format=32)
+        ev.message_type = x11.XInternAtom(dpy, b"WM_PROTOCOLS", 0)
+        ev.data[0] = x11.XInternAtom(dpy, b"WM_DELETE_WINDOW", 0)
+        assert x11.XSendEvent(dpy, int(window), 0, 0, ctypes.byref(ev)), "XSendEvent failed"
+        x11.XFlush(dpy)
+    finally:
+        x11.XCloseDisplay(dpy)
 
 
 @contextmanager

@@ -49,6 +49,8 @@ from kge.components.ui import (
 )
 from kge.editor.fields import FieldKind, asset_files, kind_of, parse, show
 from kge.editor.model import EditorModel, EditorOnly
+from kge.editor.starters import starter
+from kge.host import CloseRequested
 from kge.input import Input, KeyEvent
 from kge.keys import Key, Mod, Mouse
 from kge.scene import Scene
@@ -135,6 +137,10 @@ class PlayBarInput(System):
         for ev in self.world.events(ButtonClicked):
             {"Pause": self.editor.pause, "Step": self.editor.step_once,
              "Stop": self.editor.stop}.get(ev.text, lambda: None)()
+        if self.world.events(CloseRequested):  # the window's close button while playing
+            self.editor.stop()
+            self.editor.quit()
+            return
         inp = self.world.resource(Input)
         if inp.pressed(Key.ESCAPE):
             self.editor.stop()
@@ -437,6 +443,8 @@ class EditorInput(System):
         ed = self.ed
         if ed.playing:
             return
+        if self.world.events(CloseRequested):  # the window's close button: as Quit does
+            ed.run("quit")
         self.ui_events()
         self.keys()
         self.viewport()
@@ -567,7 +575,11 @@ class EditorInput(System):
         info = default_registry().get(dd.value or "")
         if info is None:
             return
-        ed.run_edit(lambda: ed.model.add_component(ed.model.selection[0], _default_of(info.cls)))
+        entity = ed.model.selection[0]
+        folder = ed.model.path.parent if ed.model.path else None
+        ed.run_edit(lambda: ed.model.add_component(
+            entity, starter(info.cls, entity, [str(folder / a) for a in asset_files(folder)]
+                            if folder else [])))
 
     # -- keys  ---------------------------------------------------------------------------------
     def keys(self) -> None:
@@ -767,13 +779,6 @@ def _cells_along(points: list[tuple[float, float]], step: float) -> list[tuple[f
     return out or points
 
 
-def _default_of(cls: type) -> Any:
-    """A component of ``cls`` with its defaults (and a small shape, for a Collider)."""
-    if cls is Collider:
-        from kge.components.shapes import Box
-
-        return Collider(Box(0.5, 0.5))
-    return cls()
 
 
 def build_inspector(ed: Editor, ui: World) -> None:
@@ -867,7 +872,7 @@ def build_inspector(ed: Editor, ui: World) -> None:
     names = [n for n in default_registry().names(COMPONENT)
              if n != "Name" and default_registry().get(n) is not None]
     row((Dropdown(names, selected=0), 200.0), (Button("Add"), 90.0))
-    ed.add_choice, ed.add_button = rows[-3], rows[-1]
+    ed.add_choice, ed.add_button = rows[-2], rows[-1]  # [.., the row, the list, the button]
     ed.inspector_rows = rows
 
 
@@ -955,6 +960,7 @@ def editor_app(
 ) -> tuple[App, Editor]:
     """The editor on the scene file ``path`` (a new scene when None or missing)."""
     app = App(headless=headless, size=size, title=EDITOR_TITLE, background=(38, 42, 52))
+    app.quit_on_close = False  # closing the window asks about unsaved changes first
     if hot_reload:
         from kge.hotreload import HotReloadPlugin
 

@@ -183,7 +183,11 @@ class HotReload:
                     if image in names or _file_of(store, image) == path:
                         comp.image = image  # a write: the renderer redraws it
                         touched.append(f"entity {e} {ctype.__name__}")
-        self.ok(path, f"reloaded image {path.name}: {len(touched)} drawables")
+        from kge.render.animation import redraw_file
+
+        frames = redraw_file(str(path))  # animated sprites: their atlas frames, in place
+        self.ok(path, f"reloaded image {path.name}: {len(touched)} drawables, "
+                f"{frames} animation frames")
         return touched
 
     # -- messages ----------------------------------------------------------------------------

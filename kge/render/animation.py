@@ -23,6 +23,8 @@ the Sprite component). Frames of one animator share one pixel size.
 
 from __future__ import annotations
 
+import os
+import weakref
 from typing import Any
 
 import numpy as np
@@ -39,6 +41,16 @@ ATLAS_SIZE = 2048
 MAX_ATLAS_SIZE = 16384
 # vertex order of a pyglet sprite quad: bottom-left, bottom-right, top-right, top-left
 _FLIPS = ([0, 1, 2, 3], [1, 0, 3, 2], [3, 2, 1, 0], [2, 3, 0, 1])
+
+
+#: every live atlas, so a changed sprite sheet reaches them all (hot reload)
+_ATLASES: weakref.WeakSet[AtlasFrames] = weakref.WeakSet()
+
+
+def redraw_file(path: str) -> int:
+    """The image file ``path`` changed: every atlas draws the frames cut from it again
+    (see :meth:`AtlasFrames.redraw_file`); how many frames were redrawn."""
+    return sum(atlas.redraw_file(path) for atlas in list(_ATLASES))
 
 
 class AtlasFrames:
@@ -68,6 +80,7 @@ class AtlasFrames:
         self._key: tuple[int, int, int] | None = None
         self._domains: list[tuple[Any, np.ndarray, np.ndarray, tuple[int, int] | None, int,
                                   np.ndarray]] = []
+        _ATLASES.add(self)
 
     # -- packing ------------------------------------------------------------------------
     @staticmethod
@@ -163,6 +176,49 @@ class AtlasFrames:
             corners = np.asarray(region.tex_coords, np.float32).reshape(4, 3)
             rows.extend(corners[order].ravel() for order in _FLIPS)
         self.tc = np.concatenate([self.tc, np.array(rows, np.float32).reshape(-1, 12)])
+
+    def redraw_file(self, path: str) -> int:
+        """Draw the packed frames cut from the image file ``path`` again, from its pixels
+        now: in place when a frame keeps its size (else in a new atlas slot), so every
+        animator keeps its clip, frame and time. All frames are cut before any is drawn:
+        a sheet that no longer holds them is refused and the old frames stay."""
+        from kge.assets import assets_for
+
+        target = os.path.realpath(path)
+        store = assets_for(self.world)
+
+        def from_file(image: Any) -> bool:
+            if not isinstance(image, str):
+                return False
+            found = store.find(image)
+            where = image if found is None or found.path is None else found.path
+            return os.path.realpath(where) == target
+
+        sources = self.table.sources[: len(self.regions)]
+        hit = [i for i, ref in enumerate(sources) if from_file(ref.image)]
+        if not hit:
+            return 0
+        names = {sources[i].image for i in hit}
+        stale = {k: v for k, v in self._images.items()
+                 if k in names or (isinstance(k, tuple) and k[0] == "gif" and k[1] in names)}
+        for k in stale:
+            del self._images[k]
+        try:
+            images = [self._source_image(sources[i]) for i in hit]
+        except (KgeError, OSError) as exc:
+            self._images.update(stale)
+            raise ValidationError(f"sprite sheet {path}: {exc}") from exc
+        for i, image in zip(hit, images, strict=True):
+            region = self.regions[i]
+            if (image.width, image.height) == (region.width, region.height):
+                region.blit_into(image, 0, 0, 0)
+                continue
+            region, self.page_of[i] = self._place(image)
+            self.regions[i] = region
+            corners = np.asarray(region.tex_coords, np.float32).reshape(4, 3)
+            self.tc[4 * i : 4 * i + 4] = [corners[order].ravel() for order in _FLIPS]
+        self._key = None  # a frame may have moved to another page
+        return len(hit)
 
     def frame_region(self, entity: int) -> tuple[Any, tuple[int, int, int, int]] | None:
         """The store's ``frame_source``: the atlas texture and the entity's current frame."""

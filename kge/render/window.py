@@ -20,6 +20,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from kge.components.resolution import Resolution
+from kge.cursor import apply as apply_cursor
 from kge.keys import Key
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
 
     window.push_handlers()  # a fresh frame: @window.event below fills it
     inp = app.input
-    state = {"count": 0, "last": time.perf_counter()}
+    state = {"count": 0, "last": time.perf_counter(), "cursor": 0}
     #: keys pressed whose first text motion (pyglet sends one with the press) is still due
     first_motion: set[int] = set()
 
@@ -57,6 +58,9 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
             pyglet.app.exit()
             return
         app.advance(dt)
+        if app.cursor.version != state["cursor"]:  # the game changed the pointer's look
+            state["cursor"] = app.cursor.version
+            apply_cursor(app.cursor, window, _image_loader(app))
         state["count"] += 1
         if frames is not None and state["count"] >= frames:
             app.quit()
@@ -129,8 +133,18 @@ def connect(app: App, window: Any, frames: int | None = None) -> None:
         app.size = (int(width), int(height))  # cameras clamp to bounds with the real size
 
     @window.event
-    def on_close() -> None:
-        app.quit()
+    def on_close() -> bool:
+        app.request_close()  # quits, or asks the top scene (app.quit_on_close = False)
+        return True  # the window closes when the App's loop ends, not before
+
+
+def _image_loader(app: App) -> Callable[[str], Any]:
+    def load(name: str) -> Any:
+        from kge.assets import assets_for
+
+        return assets_for(app.world).image(name)
+
+    return load
 
 
 def disconnect(window: Any) -> None:

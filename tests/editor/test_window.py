@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -20,6 +21,7 @@ from kge import (
     RigidBody,
     ScrollView,
     SpinBox,
+    Sprite,
     TextInput,
     Time,
     Transform,
@@ -27,7 +29,7 @@ from kge import (
 )
 from kge.components.drawables import Rect
 from kge.editor.app import Editor, editor_app
-from kge.testing import box_of, click, double_click, drag, scroll
+from kge.testing import box_of, click, double_click, drag, focus, scroll
 from kge.ui.interact import UIState
 
 from .test_model import LEVEL
@@ -71,6 +73,16 @@ def test_opens_clean_and_selects_with_a_click(editor: tuple[App, Editor]) -> Non
     assert len(ed.model.selection) == 2
 
 
+def _replace_text(app: App, text: str) -> None:
+    """In the focused field: select all (Ctrl+A), type ``text`` and press Enter."""
+    app.input.press(Key.A, Mod.CTRL)
+    app.input.release(Key.A)
+    app.input.type_text(text)
+    app.input.press(Key.ENTER)
+    app.step()
+    app.input.release(Key.ENTER)
+
+
 def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     app, ed = editor
     app.input.click(at=screen_of(ed, "Crate"))
@@ -79,12 +91,7 @@ def test_inspector_edit_undo_redo_by_keys(editor: tuple[App, Editor]) -> None:
     widget = next(w for w, (_, c, f, _) in ed.widgets.items() if c is Collider and f == "density")
     app.input.click(at=box_of(app, widget).center)
     app.step()
-    app.input.press(Key.A, Mod.CTRL)
-    app.input.release(Key.A)
-    app.input.type_text("2.5")
-    app.input.press(Key.ENTER)
-    app.step()
-    app.input.release(Key.ENTER)
+    _replace_text(app, "2.5")
     crate = ed.model.selection[0]
     assert ed.model.world.get(crate, Collider).density == 2.5 and ed.model.dirty
     app.world.resource(UIState).focused = None  # keys go to the editor, not the field
@@ -399,3 +406,254 @@ def test_rotate_and_paint_tools_by_mouse(editor: tuple[App, Editor]) -> None:
                and ed.model.world.get(e, Transform).y == 3.5]
     assert len(painted) == 5  # 1.0 .. 3.0 every 0.5 m
     assert ed.model.undo() and len(ed.model.entities()) == 3
+
+
+def _close_button(app: App) -> None:
+    """The window manager's close button: pyglet's on_close on the App's (EGL) window."""
+    from kge.render.setup import ensure_renderer
+    from kge.render.window import connect, disconnect
+
+    window = ensure_renderer(app).window
+    connect(app, window)
+    try:
+        window.dispatch_event("on_close")
+        window.dispatch_events()  # outside pyglet's loop, window events are queued
+    finally:
+        disconnect(window)
+
+
+def test_closing_the_window_with_unsaved_changes_asks_first(editor: tuple[App, Editor]) -> None:
+    app, ed = editor
+    app.render()  # the window the close button belongs to
+    app._running = True  # as inside App.run: quit() is what ends it
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    ed.model.set_field(crate, Transform, "x", 5.0)
+    _close_button(app)
+    app.step()
+    assert ed.dialog_kind == "unsaved" and app.running  # asked; the editor stays open
+    app.step()  # laid out
+    click_button(app, "Cancel")
+    assert ed.dialog_kind == "" and app.running and ed.model.dirty
+    assert app.world.name == "editor"  # still editing, the change still there
+    assert ed.model.world.get(crate, Transform).x == 5.0
+    _close_button(app)
+    app.step()
+    app.step()
+    click_button(app, "Discard")
+    assert not app.running  # discarded: the App's loop ends, the file is untouched
+    assert ed.model.path is not None and "x = 5.0" not in ed.model.path.read_text()
+
+
+def test_closing_the_window_can_save_and_quits_at_once_when_clean(
+    editor: tuple[App, Editor]
+) -> None:
+    app, ed = editor
+    app._running = True
+    app.request_close()  # what the window's on_close calls
+    app.step()
+    assert not app.running and ed.dialog_kind == ""  # nothing to save: no question
+    app._running = True
+    crate = next(e for e in ed.model.entities() if ed.model.name(e) == "Crate")
+    ed.model.set_field(crate, Transform, "x", 7.0)
+    click_button(app, "Play")  # closing while playing stops play, then asks
+    app.request_close()
+    app.advance(1 / 60)
+    assert not ed.playing and ed.dialog_kind == "unsaved" and app.running
+    app.step()
+    save = next(e for e in ed.dialog if app.world.has(e, Button)
+                and app.world.get(e, Button).text == "Save")  # the dialog's, not the toolbar's
+    app.input.click(at=box_of(app, save).center)
+    app.step()
+    assert not app.running and not ed.model.dirty
+    assert ed.model.path is not None and "x = 7.0" in ed.model.path.read_text()
+
+
+def test_an_app_quits_on_close_unless_told_otherwise() -> None:
+    from kge import CloseRequested
+
+    app = App(lambda w: None, headless=True)
+    app._running = True
+    app.request_close()
+    assert not app.running  # the default: the close button ends the game
+    app._running, app.quit_on_close = True, False
+    app.request_close()
+    assert app.running and len(app.world.events(CloseRequested)) == 1
+    app.close()
+
+
+def _mouse_drag(app: App, ed: Editor, start: tuple[float, float], end: tuple[float, float]
+                ) -> None:
+    """Press at world point ``start``, move to ``end`` in three frames, release there."""
+    a, b = ed.to_screen(start), ed.to_screen(end)
+    app.input.mouse_down(Mouse.LEFT, at=a)
+    app.step()
+    for t in (0.33, 0.66, 1.0):
+        app.input.move_mouse(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
+        app.step()
+    app.input.mouse_up(Mouse.LEFT, at=b)
+    app.step()
+
+
+def _one_undo_step(ed: Editor, before: str) -> None:
+    """The last tool use was one undo step: undo gives back ``before``, redo the edit."""
+    after = ed.model.text()
+    assert after != before
+    assert ed.model.undo() and ed.model.text() == before
+    assert ed.model.redo() and ed.model.text() == after
+
+
+def test_scale_shape_anchor_and_prefab_tools_by_mouse(
+    editor: tuple[App, Editor], tmp_path: Path
+) -> None:
+    from kge import Box
+
+    from .test_model import PREFABS
+
+    app, ed = editor
+    m = ed.model
+    crate = named(ed, "Crate")
+    click_button(app, "Scale")
+    before = m.text()
+    _mouse_drag(app, ed, (1.25, 2.0), (1.5, 2.0))  # twice as far from the crate's centre
+    assert m.selection == [crate]
+    box = m.world.get(crate, Collider).shape
+    assert isinstance(box, Box) and (box.half_width, box.half_height) == pytest.approx((1, 1))
+    _one_undo_step(ed, before)
+    m.undo()
+    click_button(app, "Shape")
+    before = m.text()
+    _mouse_drag(app, ed, (1.5, 2.5), (2.0, 3.0))  # the box's corner handle, snapped
+    assert m.world.get(crate, Collider).shape == Box(1.0, 1.0)
+    _one_undo_step(ed, before)
+    click_button(app, "Anchor")
+    hinge = named(ed, "hinge")
+    m.select(hinge)  # a joint has no position to click: chosen in the hierarchy
+    app.step()
+    before = m.text()
+    _mouse_drag(app, ed, (1.0, 2.5), (0.5, 3.0))
+    assert m.world.get(hinge, RevoluteJoint).anchor == (0.5, 3.0)
+    _one_undo_step(ed, before)
+    shutil.copy(PREFABS / "wheel.prefab.toml", tmp_path / "wheel.prefab.toml")
+    m.select(None)  # with nothing selected the inspector offers the prefab files
+    ed.inspector_dirty = True
+    app.step()
+    click_button(app, "Prefab")
+    assert ed.prefab is not None and ed.prefab.endswith("wheel.prefab.toml")
+    before = m.text()
+    assert ed.in_viewport(ed.to_screen((3.0, 3.0)))
+    app.input.click(at=ed.to_screen((3.0, 3.0)))
+    app.step()
+    assert 'prefab = "wheel.prefab.toml"' in m.text() and "at = [3.0, 3.0" in m.text()
+    _one_undo_step(ed, before)
+
+
+def test_inspector_toggles_lists_references_assets_and_component_buttons(
+    editor: tuple[App, Editor], tmp_path: Path
+) -> None:
+    from PIL import Image
+
+    from kge import BodyType, Dropdown
+
+    app, ed = editor
+    m = ed.model
+    for name in ("barrel.png", "crate.png"):
+        Image.new("RGBA", (4, 4), (255, 0, 0, 255)).save(tmp_path / name)
+    crate = select(app, ed, "Crate")
+    steps = len(m.undo_stack)
+    click(app, _field(ed, RigidBody, "bullet"))  # a boolean: a toggle
+    assert m.world.get(crate, RigidBody).bullet is True
+    app.step()
+    click(app, _field(ed, RigidBody, "type"))  # an enum: a list of its members
+    assert app.world.get(_field(ed, RigidBody, "type"), Dropdown).open
+    click(app, "KINEMATIC")
+    assert m.world.get(crate, RigidBody).type == BodyType.KINEMATIC
+    app.step()
+    hinge = select(app, ed, "hinge")
+    widget = _field(ed, RevoluteJoint, "body_a")  # an entity reference: the scene's ids
+    assert "ground" in app.world.get(widget, Dropdown).options
+    click(app, widget)
+    click(app, "ground")
+    assert m.world.get(hinge, RevoluteJoint).body_a == named(ed, "Ground")
+    assert len(m.undo_stack) == steps + 3
+    crate = select(app, ed, "Crate")
+    assert ed.add_choice is not None and ed.add_button is not None
+    choice = app.world.get(ed.add_choice, Dropdown)  # the Add list: kge's types and the game's
+    choice.selected = choice.options.index("Sprite")
+    scroll(app, ed.inspector, -40)  # the Add row is at the bottom of the inspector
+    click(app, ed.add_button)
+    assert m.world.has(crate, Sprite), ed.message  # with the first image of the folder
+    assert m.world.get(crate, Sprite).image == str(tmp_path / "barrel.png")
+    app.step()
+    widget = _field(ed, Sprite, "image")  # an asset path: the files beside the scene
+    assert "crate.png" in app.world.get(widget, Dropdown).options
+    focus(app, widget)  # scrolls it into view
+    click(app, widget)
+    click(app, "crate.png")
+    assert m.world.get(crate, Sprite).image == str(tmp_path / "crate.png")
+    assert 'image = "crate.png"' in m.text()  # saved relative to the scene
+    app.step()
+    remove = next(b for b, (e, c) in ed.remove_buttons.items() if c is Sprite)
+    focus(app, remove)
+    click(app, remove)  # the x beside a component's name
+    assert not m.world.has(crate, Sprite)
+    assert len(m.undo_stack) == steps + 6
+    for _ in range(6):
+        m.undo()
+    assert m.text() == LEVEL_TEXT(ed)
+
+
+def LEVEL_TEXT(ed: Editor) -> str:
+    from .test_model import LEVEL
+
+    app = App(lambda w: None, headless=True)
+    path = ed.model.path
+    assert path is not None
+    path.with_name("fresh.scene.toml").write_text(LEVEL)
+    from kge.editor import EditorModel
+
+    return EditorModel(app.world, path.with_name("fresh.scene.toml")).text()
+
+
+def test_rename_duplicate_new_and_the_view_buttons(editor: tuple[App, Editor]) -> None:
+    from kge import Name
+    from kge.components.debug import DebugDraw
+
+    app, ed = editor
+    m = ed.model
+    crate = select(app, ed, "Crate")
+    assert ed.name_box is not None
+    click(app, ed.name_box)
+    _replace_text(app, "Barrel")
+    assert m.world.get(crate, Name).value == "Barrel"
+    app.world.resource(UIState).focused = None
+    click_button(app, "Duplicate")
+    assert [m.name(e) for e in m.entities()].count("Barrel") == 2
+    click_button(app, "New")
+    assert len(m.entities()) == 5 and len(m.undo_stack) == 3
+    click_button(app, "Undo")
+    click_button(app, "Undo")
+    click_button(app, "Redo")
+    assert len(m.entities()) == 4 and len(m.undo_stack) == 2
+    snap = m.snap
+    click_button(app, "Grid")
+    assert m.snap is not snap
+    overlay = ed.edit_world.resource(DebugDraw).enabled
+    click_button(app, "Physics")
+    assert ed.edit_world.resource(DebugDraw).enabled is not overlay
+    cam = m.camera
+    zoom, centre = cam.zoom, cam.center
+    where = ed.to_screen((0.0, 0.0))
+    app.input.move_mouse(*where)
+    app.input.scroll_by(0.0, 2.0)  # the wheel zooms at the pointer
+    app.step()
+    assert cam.zoom == pytest.approx(zoom * 1.15 ** 2)
+    assert ed.to_world(where) == pytest.approx((0.0, 0.0))
+    app.input.mouse_down(Mouse.RIGHT, at=where)  # a right drag pans
+    app.step()
+    app.input.move_mouse(where[0] + 100, where[1])
+    app.step()
+    app.input.mouse_up(Mouse.RIGHT)
+    app.step()
+    assert cam.center[0] < centre[0]
+    click_button(app, "Frame")
+    assert m.selection and cam.center != centre

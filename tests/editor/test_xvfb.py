@@ -1,5 +1,6 @@
 """``kge edit`` in a real window under Xvfb, driven by xdotool: click an entity, delete it
-with the Delete key, save with Ctrl+S, quit with Ctrl+Q. Each step waits for the editor's
+with the Delete key, close the window (the unsaved-changes prompt; Cancel keeps it
+open), save with Ctrl+S, and close it again (clean: it quits). Each step waits for the editor's
 own report of what it shows (written every frame), never for a fixed time."""
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ..xvfb import virtual_display, xdo
+from ..xvfb import close_window, virtual_display, xdo
 from .test_model import LEVEL
 
 HERE = Path(__file__).parent
@@ -53,11 +54,17 @@ def test_kge_edit_in_a_real_window(tmp_path: Path) -> None:
             _until(report, lambda d: d["selection"] == ["Crate"], proc, "the crate selected")
             xdo(display, "key", "--window", wid, "Delete")
             _until(report, lambda d: "Crate" not in d["names"] and d["dirty"], proc, "it deleted")
+            close_window(display, wid)  # the window manager's close button
+            data = _until(report, lambda d: d["dialog"] == "unsaved" and "Cancel" in d["buttons"],
+                          proc, "the unsaved-changes prompt")
+            x, y = data["buttons"]["Cancel"]
+            xdo(display, "mousemove", "--window", wid, str(int(x)), str(int(y)), "click", "1")
+            _until(report, lambda d: d["dialog"] == "" and d["dirty"], proc, "the prompt gone")
             xdo(display, "key", "--window", wid, "ctrl+s")
             _until(report, lambda d: not d["dirty"], proc, "it saved")
             text = scene.read_text()
             assert 'name = "Crate"' not in text and 'name = "Ground"' in text
-            xdo(display, "key", "--window", wid, "ctrl+q")
+            close_window(display, wid)  # nothing unsaved: the editor quits at once
             assert proc.wait(timeout=60) == 0
         finally:
             if proc is not None and proc.poll() is None:

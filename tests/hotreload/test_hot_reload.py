@@ -7,7 +7,7 @@ import importlib
 import shutil
 import sys
 import textwrap
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -224,5 +224,85 @@ def test_a_script_reloads_keeping_its_state_and_survives_broken_edits(game_modul
         assert t.x == x
         app.step()
         assert t.x == x + 10.0 and app.world is world
+    finally:
+        app.close()
+
+
+def _sheet(path: Path, colours: list[tuple[int, int, int]]) -> None:
+    """A sprite sheet of 8x8 frames in one row, each frame one colour."""
+    img = Image.new("RGBA", (8 * len(colours), 8))
+    for i, c in enumerate(colours):
+        img.paste((*c, 255), (8 * i, 0, 8 * i + 8, 8))
+    img.save(path)
+
+
+def _playing(game: Path, clip: object) -> tuple[App, HotReload, int, Callable[[str], object]]:
+    """A 64x64 App running one animated sprite playing ``clip`` (drawn 4 m wide at the
+    centre): the app, its reloader, the entity, and ``shown(name)``, the centre pixel
+    of a screenshot saved as ``name``."""
+    from kge import Animator
+
+    def scene(world: World) -> None:
+        world.spawn(Transform(), Sprite("run.png", size=(4.0, 4.0)),
+                    Animator({"run": clip}, current="run"))  # type: ignore[dict-item]
+
+    app, reloader = reloading(scene, size=(64, 64))
+
+    def shown(name: str) -> object:
+        app.screenshot(game / name)
+        return Image.open(game / name).convert("RGB").getpixel((32, 32))
+
+    (hero,) = [e for e, _ in app.world.query(Animator)]
+    return app, reloader, hero, shown
+
+
+def test_an_animated_sprite_sheet_reloads_while_its_clip_plays(game: Path) -> None:
+    from kge import Animations, Animator, Clip
+
+    sheet = game / "run.png"
+    old = [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 0)]
+    new = [(0, 255, 255), (255, 0, 255), (255, 255, 255), (128, 64, 0)]
+    _sheet(sheet, old)
+
+    clip = Clip.grid("run.png", (4, 1), fps=6)  # 10 steps a frame at 60 Hz
+    app, reloader, hero, shown = _playing(game, clip)
+    try:
+        anims = app.world.resource(Animations)
+        app.step(14)  # 15 steps: frame 1, 5 steps into it
+        assert anims.frame(hero) == 1 and shown("before.png") == old[1]
+        _sheet(game / "next.png", new)
+        change(reloader, app, sheet, (game / "next.png").read_bytes())  # one more step
+        # the clip went on from where it was (frame 1, 6 steps in), drawn from the new sheet
+        assert anims.frame(hero) == 1 and shown("after.png") == new[1]
+        assert any(m.startswith("reloaded image run.png") for m in reloader.log)
+        app.step(4)  # 4 more steps: into frame 2, as if nothing had happened
+        assert anims.frame(hero) == 2 and shown("later.png") == new[2]
+        assert app.world.get(hero, Animator).current == "run"
+    finally:
+        app.close()
+
+
+def test_a_sheet_with_bigger_frames_or_a_broken_one_keeps_the_clip_playing(game: Path) -> None:
+    from kge import Animations, Clip
+
+    sheet = game / "run.png"
+    _sheet(sheet, [(255, 0, 0), (0, 255, 0)])
+
+    app, reloader, hero, shown = _playing(game, Clip.grid("run.png", (2, 1), fps=6))
+    try:
+        anims = app.world.resource(Animations)
+        app.step(12)
+        assert anims.frame(hero) == 1 and shown("a.png") == (0, 255, 0)
+        change(reloader, app, sheet, b"not a png")  # a half-written or broken file
+        assert any("run.png" in m for m in reloader.errors.values())
+        assert anims.frame(hero) == 1 and shown("b.png") == (0, 255, 0)  # the old frames
+        big = Image.new("RGBA", (64, 32), (0, 0, 255, 255))  # 32x32 frames now
+        big.paste((255, 255, 0, 255), (32, 0, 64, 32))
+        big.save(game / "big.png")
+        change(reloader, app, sheet, (game / "big.png").read_bytes())
+        assert not reloader.errors  # fixed: the message goes
+        assert anims.frame(hero) == 1 and shown("c.png") == (255, 255, 0)
+        app.step(8)  # 22 steps in: frame 0 again (10 steps a frame)
+        assert anims.frame(hero) == 0 and shown("d.png") == (0, 0, 255)
     finally:
         app.close()

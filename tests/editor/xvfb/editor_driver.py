@@ -8,8 +8,10 @@ import os
 import sys
 from pathlib import Path
 
+from kge.components.ui import Button
 from kge.editor.app import editor_app
 from kge.schedule import Stage, System
+from kge.ui.interact import UIState
 
 
 class Report(System):
@@ -27,8 +29,13 @@ class Report(System):
         crate = next((e for e in m.entities() if m.name(e) == "Crate"), None)
         x, y = ed.to_screen(m.world_pose(crate)[:2]) if crate else (0.0, 0.0)  # type: ignore[attr-defined]
         h = ed.app.size[1]  # type: ignore[attr-defined]
+        ui = ed.ui  # type: ignore[attr-defined]
+        boxes = ui.resource(UIState).layout.boxes
+        buttons = {ui.get(e, Button).text: [boxes[e].center[0], h - boxes[e].center[1]]
+                   for e in ed.dialog if ui.exists(e) and ui.has(e, Button) and e in boxes}  # type: ignore[attr-defined]
         data = {"frames": self.frames, "selection": [m.name(e) for e in m.selection],
                 "names": [m.name(e) for e in m.entities()], "dirty": m.dirty,
+                "dialog": ed.dialog_kind, "buttons": buttons,  # type: ignore[attr-defined]
                 "crate": [x, h - y]}  # window pixels from the top-left, as xdotool counts
         tmp = self.out.with_suffix(".tmp")
         tmp.write_text(json.dumps(data))
