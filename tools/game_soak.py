@@ -80,7 +80,7 @@ from kge import (  # noqa: E402
 from kge.assets import Assets  # noqa: E402
 from kge.tilemap.writer import TileLayerSpec, TilesetSpec, write_map  # noqa: E402
 from tests.reliability.harness import AppProbe, check_invariants  # noqa: E402
-from tools.soak import Fuse, judge_growth, rss_kb  # noqa: E402
+from tools.soak import Fuse, add_run_options, judge_growth, rss_kb  # noqa: E402
 
 MAP_W, MAP_H = 24, 6
 
@@ -494,15 +494,9 @@ def run(
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--frames", type=int, default=100_000)
-    p.add_argument("--interval", type=int, default=2_000)
-    p.add_argument("--population", type=int, default=100)
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--max-growth", type=float, default=0.05)
+    add_run_options(p)
     p.add_argument("--render-every", type=int, default=20, help="0: never draw")
-    p.add_argument("--log", help="write one JSON line per sample to this file")
     p.add_argument("--tables", help="write the table sizes (before, warm, after) as JSON here")
-    p.add_argument("--no-tracemalloc", action="store_true",
-                   help="heap as allocator blocks (tracemalloc slows the run about 2x)")
     args = p.parse_args(argv)
     log = open(args.log, "w") if args.log else None  # noqa: SIM115
     try:

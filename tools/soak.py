@@ -323,19 +323,24 @@ def run(
     return report
 
 
-def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("--steps", type=int, default=100_000)
+def add_run_options(p: argparse.ArgumentParser) -> None:
+    """The options every soak shares: sampling, churn size, seed, limits, the log."""
     p.add_argument("--interval", type=int, default=2_000)
     p.add_argument("--population", type=int, default=100)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--max-growth", type=float, default=0.05)
+    p.add_argument("--log", help="write one JSON line per sample to this file")
+    p.add_argument("--no-tracemalloc", action="store_true",
+                   help="no tracemalloc (it slows the run about 2x)")
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--steps", type=int, default=100_000)
+    add_run_options(p)
     p.add_argument("--render", action="store_true",
                    help="also draw headless and count pyglet objects")
     p.add_argument("--render-every", type=int, default=10)
-    p.add_argument("--log", help="write one JSON line per sample to this file")
-    p.add_argument("--no-tracemalloc", action="store_true",
-                   help="RSS only (tracemalloc slows the run about 2x)")
     args = p.parse_args(argv)
     log = open(args.log, "w") if args.log else None  # noqa: SIM115
     try:

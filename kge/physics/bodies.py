@@ -49,9 +49,9 @@ import pymunk
 
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.physics.cp import arbiter_handle, body_handle, constraint_handle, space_handle
-from kge.physics.cp.handles import body_shapes, shape_space
 from kge.physics.cp import ffi as _ffi
 from kge.physics.cp import lib as _lib
+from kge.physics.cp.handles import body_shapes, shape_space
 from kge.physics.mass import ZERO, MassData
 from kge.physics.tiny import flush
 

@@ -108,8 +108,10 @@ def test_a_pop_asked_while_a_crossfade_replace_closes_the_old_scenes_is_refused_
 def test_a_pop_from_on_exit_after_a_push_from_the_new_setup_is_made_in_order() -> None:
     """The crossfade's new scene B pushes D in its setup; A's on_exit (A closes after B's
     setup) pops: D is pushed, then popped, and B runs."""
-    app = App(Named("A", on_exit=lambda: app.pop_scene()), headless=True, size=(64, 64),
-              plugins=[])
+    def pop() -> None:
+        app.pop_scene()
+
+    app: App = App(Named("A", on_exit=pop), headless=True, size=(64, 64), plugins=[])
     app.replace_scene(Named("B", on_setup=lambda: app.push_scene(Named("D"))),
                       transition=Crossfade(0.1))
     for _ in range(20):
