@@ -129,7 +129,10 @@ class App(Host):
         self._scene_ops: list[tuple[int, Callable[[], None]]] = []
         self._applying = False
         self._closing = False
-        self._leaving = 0  #: scenes a replace being made will close once its setup ends
+        #: while a replace is being made: how many scenes at the bottom of the stack stay
+        #: (the ones above close); its new scene is counted apart, on the stack during its
+        #: setup and off it while the old ones close
+        self._keep: int | None = None
         self._swap_grows = 0  #: how the pending transition's change grows the stack
         self._autoloads: dict[type, Any] = {}  #: resources every scene world shares
         self._in_frame = False
@@ -239,6 +242,8 @@ class App(Host):
         """
         target = _as_scene(scene)
         check_setup_args(target, kwargs)
+        overlay = boolean(overlay, "push_scene", "overlay")
+        run_below = boolean(run_below, "push_scene", "run_below")
         if run_below and not overlay:
             raise ValidationError("push_scene(run_below=True) needs overlay=True")
         _check_transition(transition, "push_scene")
@@ -314,7 +319,10 @@ class App(Host):
         queued = sum(grows for grows, _ in self._scene_ops)
         # a pending pop counts now; a pending push only once made (nothing pops it before)
         pending = min(self._swap_grows, 0) if self._swap is not None else 0
-        return len(self._stack) - self._leaving + queued + pending
+        # a replace being made (its setup or the old scenes' on_exit asking): the scenes
+        # that stay and its new scene, whatever the stack holds at this moment
+        depth = len(self._stack) if self._keep is None else self._keep + 1
+        return depth + queued + pending
 
     def _advance_transition(self, real_dt: float) -> None:
         """Play the running transition: change the scene when due, end it when done."""
@@ -392,15 +400,17 @@ class App(Host):
             first = len(worlds) - 1 if worlds else 0
         else:
             first = worlds.index(leaving) if leaving in worlds else len(worlds)
-        self._leaving = len(worlds) - first  # for pops its setup asks for
+        self._keep = first  # for the changes its setup and the on_exits ask for
         try:
             self._start(scene, kwargs, None)
+            new = self._stack.pop()
+            try:
+                while len(self._stack) > first:
+                    self._close_top()
+            finally:
+                self._stack.append(new)
         finally:
-            self._leaving = 0
-        new = self._stack.pop()
-        while len(self._stack) > first:
-            self._close_top()
-        self._stack.append(new)
+            self._keep = None
 
     def _start(self, scene: Scene, kwargs: dict[str, Any], overlay: bool | None) -> None:
         """Make a world for ``scene`` on top and set it up; on any error, take it off

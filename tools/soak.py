@@ -100,6 +100,32 @@ def rss_kb() -> float:
     return pages * os.sysconf("SC_PAGE_SIZE") / 1024.0
 
 
+def judge_growth(
+    samples: list[tuple[int, float, float]], warm_step: int, max_growth: float
+) -> tuple[float, float, list[str]]:
+    """Heap and RSS growth from the end of the warm-up to the last sample, and problems.
+
+    ``samples`` are (step, heap KiB, RSS KiB). The heap is judged on its upper
+    envelope (the peak of the late half against the peak of the early half of the
+    samples after ``warm_step``), so one busy moment does not decide it.
+    """
+    warm = [s for s in samples if s[0] >= warm_step]
+    if len(warm) < 2:
+        return 0.0, 0.0, []
+    (_, heap0, rss0), (_, heap1, rss1) = warm[0], warm[-1]
+    heap_growth = heap1 / heap0 - 1.0 if heap0 else 0.0
+    rss_growth = rss1 / rss0 - 1.0 if rss0 else 0.0
+    problems = []
+    peak_late = max(s[1] for s in warm[len(warm) // 2:])
+    peak_early = max(s[1] for s in warm[: max(1, len(warm) // 2)])
+    envelope = peak_late / peak_early - 1.0 if peak_early else 0.0
+    if envelope > max_growth:
+        problems.append(f"Python heap grew {envelope:.1%} after warm-up")
+    if rss_growth > max_growth:
+        problems.append(f"RSS grew {rss_growth:.1%} after warm-up")
+    return heap_growth, rss_growth, problems
+
+
 class Fuse(Script):
     """Despawns its entity after ``life`` fixed steps (from a behaviour)."""
 
@@ -290,36 +316,31 @@ def run(
         tracemalloc.stop()
         report.spawned = churn.spawned
         app.close()
-    warm = [s for s in report.samples if s.step >= warm_step]
-    if len(warm) >= 2:
-        base, last = warm[0], warm[-1]
-        report.heap_growth = last.heap_kb / base.heap_kb - 1.0 if base.heap_kb else 0.0
-        report.rss_growth = last.rss_kb / base.rss_kb - 1.0 if base.rss_kb else 0.0
-        # growth is judged on the upper envelope so one busy moment does not decide it
-        peak_late = max(s.heap_kb for s in warm[len(warm) // 2:])
-        peak_early = max(s.heap_kb for s in warm[: max(1, len(warm) // 2)])
-        envelope = peak_late / peak_early - 1.0 if peak_early else 0.0
-        if envelope > max_growth:
-            report.problems.append(f"Python heap grew {envelope:.1%} after warm-up")
-        if report.rss_growth > max_growth:
-            report.problems.append(f"RSS grew {report.rss_growth:.1%} after warm-up")
+    report.heap_growth, report.rss_growth, grew = judge_growth(
+        [(s.step, s.heap_kb, s.rss_kb) for s in report.samples], warm_step, max_growth)
+    report.problems.extend(grew)
     report.ok = not report.problems
     return report
+
+
+def add_run_options(p: argparse.ArgumentParser) -> None:
+    """The options every soak shares: sampling, churn size, seed, limits, the log."""
+    p.add_argument("--interval", type=int, default=2_000)
+    p.add_argument("--population", type=int, default=100)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--max-growth", type=float, default=0.05)
+    p.add_argument("--log", help="write one JSON line per sample to this file")
+    p.add_argument("--no-tracemalloc", action="store_true",
+                   help="no tracemalloc (it slows the run about 2x)")
 
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--steps", type=int, default=100_000)
-    p.add_argument("--interval", type=int, default=2_000)
-    p.add_argument("--population", type=int, default=100)
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--max-growth", type=float, default=0.05)
+    add_run_options(p)
     p.add_argument("--render", action="store_true",
                    help="also draw headless and count pyglet objects")
     p.add_argument("--render-every", type=int, default=10)
-    p.add_argument("--log", help="write one JSON line per sample to this file")
-    p.add_argument("--no-tracemalloc", action="store_true",
-                   help="RSS only (tracemalloc slows the run about 2x)")
     args = p.parse_args(argv)
     log = open(args.log, "w") if args.log else None  # noqa: SIM115
     try:

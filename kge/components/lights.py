@@ -116,6 +116,9 @@ def _unit(value: Any, owner: str, field: str) -> float:
 class Light(Tracked):
     """A point or spot light at the entity. See the module docstring."""
 
+    #: a cookie image named by file is looked up by the lighting plugin (spawn and write)
+    _world_fields: ClassVar[frozenset[str]] = frozenset({"texture"})
+
     _checks: ClassVar[dict[str, Check]] = {
         "color": rgb,
         "intensity": _intensity,

@@ -51,6 +51,7 @@ from kge.components.rigidbody import BodyType, RigidBody
 from kge.physics.cp import arbiter_handle, body_handle, constraint_handle, space_handle
 from kge.physics.cp import ffi as _ffi
 from kge.physics.cp import lib as _lib
+from kge.physics.cp.handles import body_shapes, shape_space
 from kge.physics.mass import ZERO, MassData
 from kge.physics.tiny import flush
 
@@ -381,6 +382,26 @@ def wake_neighbours(body: pymunk.Body) -> None:
     for other in neighbours(space, body):
         if other.body_type == DYNAMIC:
             other.activate()
+    if body.body_type != DYNAMIC:
+        wake_sleepers_on(space, body)
+
+
+def wake_sleepers_on(space: pymunk.Space, body: pymunk.Body) -> None:
+    """Wake the sleeping dynamic bodies whose shapes overlap the static or kinematic
+    ``body``'s shapes, contact or not.
+
+    A body put to sleep with no contact computed (restored asleep from a snapshot, or
+    ``awake=False`` at spawn) has no arbiter with what holds it up, so
+    :func:`neighbours` does not find it; Box2D wakes the bodies touching a fixture or
+    body that is destroyed, and without this one would hover where its floor was.
+    """
+    for shape in body_shapes(body):
+        if shape_space(shape) is not space:
+            continue
+        for hit in space.bb_query(shape.bb, pymunk.ShapeFilter()):
+            other = hit.body
+            if other is not None and other.body_type == DYNAMIC and other.is_sleeping:
+                other.activate()
 
 
 def set_mass(body: pymunk.Body, md: MassData) -> None:

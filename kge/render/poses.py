@@ -44,6 +44,7 @@ system only: another writer's moves would not be drawn.)
 
 from __future__ import annotations
 
+import heapq
 import math
 from operator import attrgetter
 
@@ -116,8 +117,8 @@ class PoseTable:
             self._refs[entity] += 1
             return row
         t = transform if transform is not None else _IDENTITY
-        if self._free:
-            row = self._free.pop()
+        if self._free:  # the lowest free row: live rows stay packed at the bottom
+            row = heapq.heappop(self._free)
             self._transforms[row] = t
         else:
             row = len(self._transforms)
@@ -146,8 +147,27 @@ class PoseTable:
             self.written.discard(entity)
             self._transforms[row] = _IDENTITY
             self.cur[row] = self.prev[row] = 0.0
-            self._free.append(row)
+            heapq.heappush(self._free, row)
             self._index = None
+            if row == len(self._transforms) - 1:
+                self._trim()
+
+    def _trim(self) -> None:
+        """Give back the free rows at the top (and halve the arrays once a quarter full),
+        so a table that held many entities once is as small as what it holds now."""
+        free = set(self._free)
+        n = len(self._transforms)
+        while n and n - 1 in free:
+            n -= 1
+        del self._transforms[n:]
+        self._free = [r for r in self._free if r < n]
+        heapq.heapify(self._free)
+        cap = len(self.cur)
+        while cap > 64 and n <= cap // 4:
+            cap //= 2
+        if cap < len(self.cur):
+            self.prev, self.cur = self.prev[:cap].copy(), self.cur[:cap].copy()
+            self._bare = self._bare[:cap].copy()
 
     def set_transform(self, entity: int, transform: Transform | None) -> None:
         """The entity gained or lost its Transform: read the new one, restart history."""

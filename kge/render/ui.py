@@ -192,6 +192,15 @@ class UIDrawer:
         if tuple(spr.color) != tuple(tint):
             spr.color = tint
 
+    def _forget(self, gone: set[int]) -> None:
+        """Drop the clip groups of nodes that left the layout, and the groups under them."""
+        dropped = [k for k in self.clips if k[1] in gone]
+        if not dropped:
+            return
+        ids = {id(self.clips.pop(k)) for k in dropped}
+        for key in [k for k in self.groups if k[2] in ids]:
+            del self.groups[key]
+
     def _delete(self, key: Any) -> None:
         self.shapes.delete(key)
         self.texts.delete(key)
@@ -264,12 +273,16 @@ class UIDrawer:
             self.blink = blink
             if state.focused is not None:
                 todo.add(state.focused)
+        gone = set()
         for e in sorted(todo, key=lambda k: lay.depth.get(k, 0)):
             self.sync(e)
             if e in lay.boxes:
                 self.drawn[e] = self._signature(e)
             else:
                 self.drawn.pop(e, None)
+                gone.add(e)
+        if gone:
+            self._forget(gone)
         if state.drag is not None or state.tip.shown or OVERLAY in self.owned:
             from kge.render.ui_widgets import paint_overlay
 

@@ -10,12 +10,14 @@ drawn frame, so they follow game time through the poses they are drawn at.
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 from kge.components.collider import Collider
 from kge.components.lights import DirectionalLight, Light, Lighting, ShadowCaster
 from kge.components.rigidbody import RigidBody
 from kge.components.tracked import validate_writes
+from kge.errors import where
 from kge.lighting.occluders import Occluders
 from kge.plugin import Plugin
 from kge.render.passes import passes_for
@@ -35,6 +37,7 @@ class LightingPlugin(Plugin):
     """
 
     def build(self, world: World) -> None:
+        world.validator(Light, _check_cookie(world))  # a missing cookie file: at the call
         validate_writes(world, Light)  # a bad write names its entity
         validate_writes(world, ShadowCaster)
         occluders = world.try_resource(Occluders) or world.insert_resource(Occluders())
@@ -69,6 +72,20 @@ class LightingPlugin(Plugin):
 
         passes_for(world).add(draw, phase="view", name="lighting")
         world.add_system(_LightMapOwner(holder))
+
+
+def _check_cookie(world: World) -> Any:
+    """A Light whose ``texture`` names a file that is missing or cannot load is refused
+    at spawn and write (as a Sprite's image), not at the first lit frame."""
+
+    def check(entity: int | None, light: Light) -> None:
+        if isinstance(light.texture, (str, os.PathLike)):
+            from kge.assets.store import assets_for
+
+            assets_for(world).checked_image(light.texture,
+                                            owner=where(entity, "Light", "texture"))
+
+    return check
 
 
 class _LightMapOwner(System):

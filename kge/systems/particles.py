@@ -127,6 +127,8 @@ class ParticleSystem(System):
         self.particles.states.pop(entity, None)
 
     def _changed(self, entity: int, comp: Any) -> None:
+        if self.particles.grid_dirty:
+            return  # rebuilt from scratch when next needed: nothing to sort out
         self._pending.add(entity)
         if len(self._pending) > self.MAX_PENDING:
             self.particles.grid_dirty = True
@@ -161,11 +163,17 @@ class ParticleSystem(System):
                     return True  # colliders attached to it became static
         return False
 
-    def _grid(self) -> StaticGrid | None:
-        p = self.particles
+    def _fold_pending(self) -> None:
+        """Sort the changes since the last frame out now (is the grid stale?), so they
+        never pile up while no emitter collides."""
         if self._pending:
+            p = self.particles
             p.grid_dirty = p.grid_dirty or self._static_changed()
             self._pending.clear()
+
+    def _grid(self) -> StaticGrid | None:
+        p = self.particles
+        self._fold_pending()
         if p.grid_dirty:
             self._members = set()
             p.grid = StaticGrid.from_geometry(
@@ -184,6 +192,8 @@ class ParticleSystem(System):
         grid = None
         if any(em.collide != "none" for _, (em, _t) in emitters):
             grid = self._grid()
+        else:
+            self._fold_pending()
         attractors: list[tuple[float, ...]] = [(at.x, at.y, a.strength, a.radius, a.falloff)
                       for _, (a, at) in world.query(ParticleAttractor, Transform) if a.enabled]
         finished = []

@@ -65,9 +65,11 @@ def current_layout(world: World, size: tuple[int, int] | None = None,
         state.redraw |= state.writes
         state.writes.clear()
     if state.writes or key != state.layout_key or lay.sizer is None:
-        state.structural.clear()
         for e in state.writes:
             state.versions[e] = state.versions.get(e, 0) + 1
+        state.forget({e for e in state.structural
+                      if not world.exists(e) or not world.has(e, UINode)})
+        state.structural.clear()
         state.redraw |= state.writes
         state.writes.clear()
         version = lay.version + 1

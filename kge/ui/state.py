@@ -132,5 +132,12 @@ class UIState:
             return True
         return False
 
+    def forget(self, entities: set[int]) -> None:
+        """Drop the per-entity state of nodes that are gone (despawned, or no longer UI)."""
+        for table in (self.versions, self.text_scroll, self.picker, self.spin,
+                      self.dropdown_first):
+            for e in entities & table.keys():
+                del table[e]
+
     def version(self, entity: int) -> int:
         return self.versions.get(entity, 0)

@@ -60,6 +60,66 @@ class Chaos(Script):
         self.m.fire("on_destroy")
 
 
+class Named(Scene):
+    """A scene that runs ``on_setup`` / ``on_exit`` callbacks (None: nothing)."""
+
+    def __init__(self, name: str, on_setup: Any = None, on_exit: Any = None) -> None:
+        self.name, self.on_setup, self.exit_cb = name, on_setup, on_exit
+
+    def setup(self, world: World, **kwargs: Any) -> None:
+        if self.on_setup is not None:
+            self.on_setup()
+
+    def on_exit(self, world: World) -> None:
+        if self.exit_cb is not None:
+            self.exit_cb()
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+def _names(app: App) -> list[str]:
+    return [repr(s) for s in app.scenes]
+
+
+def test_a_pop_asked_while_a_crossfade_replace_closes_the_old_scenes_is_refused_at_once(
+) -> None:
+    """Found by the machine below: [A, C, E] replaced by B behind a crossfade; E's on_exit
+    pops. Only B will be left, so the pop must be refused at the call, not accepted and
+    then raised out of App.step when it is made."""
+    refused: list[SceneStackError] = []
+
+    def pop() -> None:
+        try:
+            app.pop_scene()
+        except SceneStackError as err:
+            refused.append(err)
+
+    app = App(Named("A"), headless=True, size=(64, 64), plugins=[])
+    app.replace_scene(Named("B"), transition=Crossfade(0.1))
+    app.push_scene(Named("C"))
+    app.push_scene(Named("E", on_exit=pop))
+    for _ in range(20):
+        app.step()
+    assert len(refused) == 1 and _names(app) == ["B"]
+    app.close()
+
+
+def test_a_pop_from_on_exit_after_a_push_from_the_new_setup_is_made_in_order() -> None:
+    """The crossfade's new scene B pushes D in its setup; A's on_exit (A closes after B's
+    setup) pops: D is pushed, then popped, and B runs."""
+    def pop() -> None:
+        app.pop_scene()
+
+    app: App = App(Named("A", on_exit=pop), headless=True, size=(64, 64), plugins=[])
+    app.replace_scene(Named("B", on_setup=lambda: app.push_scene(Named("D"))),
+                      transition=Crossfade(0.1))
+    for _ in range(20):
+        app.step()
+    assert _names(app) == ["B"] and not app.world.closed
+    app.close()
+
+
 class StackMachine(RuleBasedStateMachine):
     @initialize()
     def start(self) -> None:

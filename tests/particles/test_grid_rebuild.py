@@ -84,3 +84,32 @@ def test_a_body_that_becomes_static_under_attached_colliders_rebuilds_it(
     positions = app.world.resource(Particles).positions(
         next(e for e, _ in app.world.query(ParticleEmitter)))
     assert np.count_nonzero(positions[:, 1] > 1.3) > 50
+
+
+def test_changes_do_not_pile_up_while_no_emitter_collides() -> None:
+    from kge.systems.particles import ParticleSystem
+
+    def scene(world: World) -> None:
+        world.spawn(Transform(0.0, -1.0), Collider(Box(10.0, 0.5)))
+        world.spawn(Transform(0.0, 3.0), ParticleEmitter(
+            rate=50, collide=ParticleCollision.BOUNCE, lifetime=0.2))
+
+    app = App(scene, headless=True)
+    app.step()  # the grid is built for the colliding emitter
+    for e, _ in app.world.query(ParticleEmitter):
+        app.world.despawn(e)
+    system = app.world.get_system(ParticleSystem)
+    assert system is not None
+    balls: list[int] = []
+    for k in range(300):  # long play with no colliding emitter: bodies come and go
+        balls.append(app.world.spawn(Transform(k % 10, 5.0), RigidBody(), Collider(Circle(0.2))))
+        if len(balls) > 10:
+            app.world.despawn(balls.pop(0))
+        app.step()
+        assert len(system._pending) <= 2, "changes of past frames kept"
+    # a colliding emitter coming back still sees the floor (the grid was kept right)
+    e = app.world.spawn(Transform(0.0, 3.0), ParticleEmitter(
+        rate=200, speed=0.0, acceleration=(0.0, -10.0), collide=ParticleCollision.BOUNCE,
+        lifetime=2.0))
+    app.step(90)
+    assert float(app.world.resource(Particles).positions(e)[:, 1].min()) > -1.0

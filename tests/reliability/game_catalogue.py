@@ -514,9 +514,161 @@ MEDIA = [
          r"SoundData\.samples is empty"),
 ]
 
+#: more hostile calls, by area (the second probe of the game layer)
+MORE = [
+    Case("particles", "emission circle of NaN radius", "EmitCircle(nan)", V,
+         r"EmitCircle\.radius must be finite"),
+    Case("particles", "burst of a negative count", "ParticleBurst(fx, -3)", V,
+         r"ParticleBurst\.count must be in 0\.\.1000000"),
+    Case("particles", "burst of a billion particles", "ParticleBurst(fx, 10**9)", V,
+         r"ParticleBurst\.count must be in 0\.\.1000000"),
+    Case("particles", "burst direction NaN", "ParticleBurst(fx, 5, direction=nan)", V,
+         r"ParticleBurst\.direction must be finite"),
+    Case("particles", "attractor strength 1e308",
+         "world.spawn(Transform(), ParticleAttractor(strength=1e308))", V,
+         r"ParticleAttractor\.strength must be within"),
+    Case("particles", "attractor radius below 0",
+         "world.spawn(Transform(), ParticleAttractor(radius=-1.0))", V,
+         r"ParticleAttractor\.radius must be > 0"),
+    *_fields("particles", "world.get(fx, ParticleEmitter)", [
+        ("spin", "(2.0, 1.0)", V, r"entity 3, ParticleEmitter\.spin must be \(low, high\)"),
+        ("duration", "-1.0", V, r"entity 3, ParticleEmitter\.duration must be > 0"),
+        ("burst", "-1", V, r"entity 3, ParticleEmitter\.burst must be in"),
+        ("rate_per_meter", "nan", V, r"entity 3, ParticleEmitter\.rate_per_meter"),
+    ]),
+    *_fields("lights", "world.get(lamp, Light)", [
+        ("color", "(256, 0, 0)", V, r"entity 5, Light\.color\[0\] must be an int in 0\.\.255"),
+        ("shadow_softness", "-1.0", V, r"entity 5, Light\.shadow_softness must be >= 0"),
+        ("height", "nan", V, r"entity 5, Light\.height must be finite"),
+        ("enabled", "'yes'", T, r"entity 5, Light\.enabled must be True or False"),
+        ("texture", "'missing.png'", AssetNotFoundError, r"entity 5, Light\.texture"),
+    ]),
+    Case("lights", "light spawned with a missing cookie",
+         "world.spawn(Transform(), Light(texture='nope.png'))", AssetNotFoundError,
+         r"Light\.texture: .*nope\.png"),
+    Case("lights", "light cookie of a truncated PNG",
+         "world.get(lamp, Light).texture = 'truncated.png'", AssetDecodeError,
+         r"entity 5, Light\.texture"),
+    Case("lights", "ambient light of 1e308", "kge.Lighting(ambient=(1e308, 0, 0))", T,
+         r"Lighting\.ambient\[0\] must be an int in 0\.\.255"),
+    Case("tweens", "tween speed NaN",
+         "h = tweens.to(hero, Transform, 'x', 1.0, 1.0); h.speed = nan", V,
+         r"speed must be finite"),
+    Case("tweens", "tween repeat of -2", "Tween(Transform, 'x', 1.0, 1.0, repeat=-2)", V,
+         r"Tween\(Transform\.x\)\.repeat must be >= 0, or -1 for forever"),
+    Case("tweens", "sequence step that is not a tween",
+         "TweenSequence(Tween(Transform, 'x', 1.0, 1.0), 5)", T,
+         r"TweenSequence step 1 must be a Tween"),
+    Case("tweens", "tween of a component instance, not its class",
+         "tweens.to(hero, Transform(), 'x', 1.0, 1.0)", T,
+         r"Tween\.component must be a component class"),
+    Case("tweens", "zoom tween to infinity", "tweens.zoom_to(inf, 1.0)", V,
+         r"entity 2, Camera\.zoom: target value must be finite"),
+    Case("ui", "progress bar value NaN", "world.spawn(UINode(), ProgressBar(nan))", V,
+         r"ProgressBar\.value must be finite"),
+    Case("ui", "dropdown with no options selecting 0",
+         "world.spawn(UINode(), Dropdown([], selected=0))", V,
+         r"Dropdown\.selected 0 is not an index of its 0 options"),
+    Case("ui", "focus on an entity that is not UI", "kge.focus(world, plain)", V,
+         r"focus: entity 12 is not a UI node"),
+    *_fields("ui", "world.get(ok, UINode)", [
+        ("height", "-5", V, r"entity 8, UINode\.height must be >= 0 pixels"),
+        ("width", "'200%%%'", V, r"entity 8, UINode\.width must be >= 0 pixels"),
+    ]),
+    *_fields("ui", "world.get(volume, Slider)", [
+        ("step", "nan", V, r"entity 9, Slider\.step must be finite"),
+    ]),
+    *_fields("ui", "world.get(name, TextInput)", [
+        ("caret", "-2", V, r"entity 10, TextInput\.caret"),
+    ]),
+    Case("scenes", "pop of the only scene", "app.pop_scene()", kge.SceneStackError,
+         r"pop_scene\(\) would leave the App with no scene"),
+    Case("scenes", "crossfade of negative seconds", "Crossfade(-1.0)", V,
+         r"Crossfade\.duration must be a positive number"),
+    Case("scenes", "push of a scene file that is not there",
+         "app.push_scene(root_dir / 'nope.scene.toml')", kge.SceneFileError,
+         r"nope\.scene\.toml: cannot read"),
+    Case("scenes", "push with overlay='yes'", "app.push_scene(level, overlay='yes')", T,
+         r"push_scene\.overlay must be True or False"),
+]
+
+#: hostile scene and prefab files in the game's asset folder (see :func:`_assets_dir`),
+#: with what the message must say
+_HEAD = 'format = 1\nkind = "scene"\n[[entity]]\nid = "a"\n'
+BAD_SCENE_FILES: dict[str, tuple[str, str]] = {
+    "format-99.scene.toml": ('format = 99\nkind = "scene"\n',
+                             r":1: format 99 was written by a newer kge"),
+    "kind-exe.scene.toml": ('format = 1\nkind = "exe"\n', r":2: kind must be one of"),
+    "not-toml.scene.toml": ('format = 1\nkind = "scene"\n[[entity]\n', r":3: not valid TOML"),
+    "binary.scene.toml": ("\x00\x01\x02\udcff", r"not UTF-8 text"),
+    "unknown-component.scene.toml": (_HEAD + "[entity.Rocket]\n",
+                                     r"entity 'a', Rocket: unknown component 'Rocket'"),
+    "code-component.scene.toml": (_HEAD + '[entity."os.system"]\n',
+                                  r"unknown component 'os\.system'"),
+    "code-shape.scene.toml": (
+        _HEAD + '[entity.Collider]\nshape = { type = "subprocess.Popen", args = ["ls"] }\n',
+        r"entity 'a', Collider\.shape: unknown value type 'subprocess\.Popen'"),
+    "code-script.scene.toml": (_HEAD + '[entity.Behaviour]\nscript = "os.system"\n',
+                               r"entity 'a', Behaviour\.script: unknown script 'os\.system'"),
+    "nan-pose.scene.toml": (_HEAD + "[entity.Transform]\nx = nan\n",
+                            r"entity 'a', Transform\.x: nan is not a finite number"),
+    "inf-velocity.scene.toml": (_HEAD + "[entity.RigidBody]\nvelocity = [inf, 0.0]\n",
+                                r"entity 'a', RigidBody\.velocity: inf is not a finite"),
+    "unknown-field.scene.toml": (_HEAD + "[entity.Transform]\nz = 1.0\n",
+                                 r"entity 'a', Transform\.z: Transform has no field 'z'"),
+    "string-pose.scene.toml": (_HEAD + '[entity.Transform]\nx = "left"\n',
+                               r"entity 'a', Transform\.x: must be a number"),
+    "duplicate-id.scene.toml": (_HEAD + '[[entity]]\nid = "a"\n',
+                                r"two entities have the id 'a'"),
+    "missing-reference.scene.toml": (
+        _HEAD + '[entity.RevoluteJoint]\nbody_b = "ghost"\nanchor = [0.0, 0.0]\n',
+        r"RevoluteJoint\.body_b: names entity 'ghost', which is not in this file"),
+    "image-outside.scene.toml": (
+        _HEAD + '[entity.Sprite]\nimage = "../../../../../../etc/passwd"\n',
+        r"Sprite\.image: asset path '\.\./\.\./\.\./\.\./\.\./\.\./etc/passwd' leads outside"),
+    "image-absolute.scene.toml": (_HEAD + '[entity.Sprite]\nimage = "/etc/hostname"\n',
+                                  r"Sprite\.image: asset path '/etc/hostname' is absolute"),
+    "prefab-outside.scene.toml": (_HEAD + 'prefab = "../../../../../../dev/zero"\n',
+                                  r"prefab path '\.\./\.\./\.\./\.\./\.\./\.\./dev/zero' leads"),
+    "deep-nesting.scene.toml": (_HEAD + "[entity.Transform]\nx = " + "[" * 400 + "]" * 400
+                                + "\n", r"Transform\.x: nested deeper than 24 levels"),
+    "5000-vertices.scene.toml": (
+        _HEAD + '[entity.Collider]\nshape = { type = "Polygon", vertices = ['
+        + ", ".join(["[0.0, 0.0]"] * 5000) + "] }\n",
+        r"Collider\.shape: Polygon\.vertices must have 3\.\.16 vertices, got 5000"),
+    "negative-radius.scene.toml": (
+        _HEAD + '[entity.Collider]\nshape = { type = "Circle", radius = -1.0 }\n',
+        r"Collider\.shape: Circle\.radius must be > 0"),
+    "unknown-resource.scene.toml": ('format = 1\nkind = "scene"\n[resources.Launcher]\nx = 1\n',
+                                    r"unknown resource 'Launcher'"),
+    "infinite-gravity.scene.toml": (
+        'format = 1\nkind = "scene"\n[resources.PhysicsSettings]\ngravity = [0.0, -inf]\n',
+        r"PhysicsSettings\.gravity: -inf is not a finite number"),
+    "scene-as-prefab.prefab.toml": (_HEAD, r"a scene file, not a prefab"),
+    "prefab-of-itself.prefab.toml": (
+        'format = 1\nkind = "prefab"\n[[entity]]\nid = "a"\n'
+        'prefab = "prefab-of-itself.prefab.toml"\n', r"prefab cycle"),
+    "nan-emitter.prefab.toml": (
+        'format = 1\nkind = "prefab"\n[[entity]]\nid = "a"\n[entity.ParticleEmitter]\n'
+        "rate = nan\n", r"entity 'a', ParticleEmitter\.rate: nan is not a finite number"),
+}
+
+
+def _load_call(name: str) -> str:
+    if name.endswith(".prefab.toml"):
+        return f"kge.instantiate(world, root_dir / '{name}', at=(0.0, 0.0))"
+    return f"kge.load_scene(world, root_dir / '{name}')"
+
+
+SCENE_FILES = [
+    Case("scene files", name, _load_call(name), kge.SceneFileError,
+         re.escape(name) + r".*" + rx)
+    for name, (_, rx) in BAD_SCENE_FILES.items()
+]
+
 CASES: list[Case] = [
     *SPRITE, *CLIPS, *SHAKE, *CAMERA, *TEXT, *DRAWN, *LIGHTS, *PARTICLES, *TWEENS, *UI,
-    *AUDIO, *SCENES, *MEDIA,
+    *AUDIO, *SCENES, *MEDIA, *MORE, *SCENE_FILES,
 ]
 
 
@@ -539,6 +691,8 @@ def _assets_dir() -> Path:
     wav = tone(440, 0.05, rate=8000).to_wav()
     (root / "beep.wav").write_bytes(wav)
     _hostile_media(root, (root / "sheet.png").read_bytes(), wav)
+    for name, (text, _) in BAD_SCENE_FILES.items():
+        (root / name).write_bytes(text.encode("utf-8", "surrogateescape"))
     return root
 
 

@@ -18,8 +18,8 @@ from .game_catalogue import CASES, Case, doc_section, render_table, run_case
 def test_the_catalogue_covers_every_area_of_the_game_layer() -> None:
     areas = {c.area for c in CASES}
     assert areas >= {"sprite", "animation", "camera", "text", "drawables", "lights",
-                     "particles", "tweens", "ui", "audio", "scenes"}
-    assert len(CASES) >= 200
+                     "particles", "tweens", "ui", "audio", "scenes", "scene files", "media"}
+    assert len(CASES) >= 300
     assert len({c.name for c in CASES}) == len(CASES)
 
 

@@ -321,3 +321,26 @@ def test_rows_are_found_by_entity_without_a_table_as_large_as_the_largest_id():
     table.release(big)
     table.adopt(np.array([big]), np.array([[0.0, 0.0, 0.0]]), np.array([[9.0, 0.0, 0.0]]))
     assert len(table) == 2 and big not in table.row_of
+
+
+def test_the_table_shrinks_back_once_its_entities_are_gone() -> None:
+    table = PoseTable()
+    transforms = {e: Transform(float(e), 0.0) for e in range(1, 501)}
+    alive: list[int] = []
+    for e, t in transforms.items():  # churn: 500 entities, 40 alive at once
+        table.acquire(e, t)
+        alive.append(e)
+        if len(alive) > 40:
+            table.release(alive.pop(0))
+        table.record()
+        assert len(table) <= 2 * 40 + 2
+    for e in alive[:-1]:
+        table.release(e)
+    last = alive[-1]
+    table.record()
+    row = table.row_of[last]
+    assert tuple(table.cur[row]) == (float(last), 0.0, 0.0)  # the live row kept its pose
+    table.release(last)
+    assert len(table) == 0 and table._free == [] and len(table.cur) == 64
+    e = table.acquire(7, Transform(3.0, 4.0))
+    assert e == 0 and tuple(table.cur[0]) == (3.0, 4.0, 0.0)

@@ -507,7 +507,10 @@ class ContinuousCollision:
 
     def _index_changed(self, key: int, info: Tracked | None) -> None:
         """Record a change of the tracked set for the next :meth:`_lookup_index`."""
-        if self._index is not None:
+        if not self._tracked:  # nothing left to index: drop it (rebuilt when next needed)
+            self._index = None
+            self._index_changes.clear()
+        elif self._index is not None:
             self._index_changes[key] = info
 
     def _lookup_index(self) -> Index:
