@@ -25,7 +25,7 @@ from __future__ import annotations
 import functools
 from typing import Any
 
-from kge.animation.clips import ClipState, ClipTable
+from kge.animation.clips import ClipState, ClipTable, CrossFade
 from kge.animation.events import AnimationEvent, AnimationEvents, AnimationFinished, TweenFinished
 from kge.animation.shake import decayed, offset
 from kge.animation.tweens import TweenHandle, Tweens
@@ -64,6 +64,9 @@ class Animations:
         self.dirty: set[int] = set()
         self._new: list[int] = []
         self._serials: dict[int, int] = {}
+        #: entity -> the clip name it last started (the outgoing clip of a cross-fade)
+        self._names: dict[int, str] = {}
+        self._fading_from: dict[int, str] = {}
         self._conditional: set[int] = set()
         #: called with an entity whose sprite must be re-made (added/removed Animator)
         self.redraw: Any = None
@@ -86,6 +89,8 @@ class Animations:
             self._new.remove(entity)
         self.state.remove(entity)
         self._serials.pop(entity, None)
+        self._names.pop(entity, None)
+        self._fading_from.pop(entity, None)
         self._conditional.discard(entity)
         if self.redraw is not None:
             self.redraw(entity)
@@ -104,6 +109,17 @@ class Animations:
         """True once a ``once``/``hold`` clip has ended (or the animator was stopped)."""
         self.sync()
         return bool(self.state.finished[self._row(entity)])
+
+    def crossfade(self, entity: int) -> CrossFade | None:
+        """The cross-fade ``entity`` shows now (None when it shows one clip alone)."""
+        self.sync()
+        row = self._row(entity)
+        state = self.state
+        if state.from_clip[row] < 0:
+            return None
+        state.table.ensure()
+        frame = int(state.table.frame_orig[state.from_shown[row]])
+        return CrossFade(self._fading_from.get(entity, ""), frame, state.weight(row))
 
     def _row(self, entity: int) -> int:
         row = self.state.rows.get(entity)
@@ -172,9 +188,15 @@ class Animations:
         slot = self.table.register(anim.clips[str(anim.current)]).slot
         state.speed[row] = anim.speed
         state.playing[row] = anim.playing
-        if self._serials.get(entity) != anim.serial or state.clip[row] != slot:
-            state.start(row, slot, stopped=anim.stopped)
+        serial = self._serials.get(entity)
+        if serial != anim.serial or state.clip[row] != slot:
+            # a play() of a started row may cross-fade; new clips for the same play cut
+            fade = anim.fade if serial is not None and serial != anim.serial else 0.0
+            state.start(row, slot, stopped=anim.stopped, fade=fade)
+            if fade > 0.0:
+                self._fading_from[entity] = self._names.get(entity, "")
             self._serials[entity] = anim.serial
+            self._names[entity] = str(anim.current)
         if any(tr.when is not None for tr in anim.transitions):
             self._conditional.add(entity)
         else:
@@ -193,7 +215,7 @@ class Animations:
                     and anim.current != tr.dst
                     and tr.holds(anim.params)
                 ):
-                    anim.play(tr.dst)
+                    anim.play(tr.dst, fade=tr.fade)
                     self._sync_one(entity)
                     break
 
@@ -201,7 +223,7 @@ class Animations:
         """A clip ended: follow an end transition, else the queue."""
         for tr in anim.transitions:
             if tr.when is None and tr.src in ("*", anim.current):
-                anim.play(tr.dst)
+                anim.play(tr.dst, fade=tr.fade)
                 break
         else:
             if not anim.queued:
@@ -398,6 +420,7 @@ class _AtlasPass:
         self.world = world
         self.anims = anims
         self.frames: Any = None
+        self.ghosts: Any = None  # kge.render.crossfade.FadeGhosts
         self.current: Frame | None = None
 
     def __call__(self, frame: Frame) -> None:
@@ -426,6 +449,13 @@ class _AtlasPass:
                 view.sprites.poser.write(frame.poses, frame.view)
         self.current = frame
         self.frames.write()
+        if self.ghosts is None:
+            if not (self.anims.state.from_clip >= 0).any():
+                return
+            from kge.render.crossfade import FadeGhosts
+
+            self.ghosts = FadeGhosts(view.sprites.batch)
+        self.ghosts.write(self.anims.state, view.sprites, self.frames)
 
     def _migrate(self, entities: list[int]) -> None:
         """Sync these sprites now: onto the atlas page of the frame they show."""

@@ -8,6 +8,7 @@ from kge.testbed.samples import (  # noqa: F401
     character,
     collision,
     collision_module,
+    crossfade,
     debug_tools,
     determinism,
     games,
