@@ -20,6 +20,9 @@ repetitions, in microseconds per sprite (or tween) per frame:
   than the run): the advance, the texture coordinates and the ghost sprites that draw
   the outgoing frames (:mod:`kge.render.crossfade`); fades are transient, so this is the
   cost per sprite *while* it fades;
+* ``timeline``: :class:`~kge.systems.timeline.TimelineSystem` playing N looping
+  timelines of two property tracks each (``Transform.x`` linear, ``Transform.y``
+  cubic), per player and frame (sampling + the write-back into the components);
 * ``arcade_sprite``: Arcade 3's ``TextureAnimationSprite`` (``update_animation`` +
   buffer upload), run by ``benchmarks/arcade_animation.py`` in ``.venv-arcade``
   (Arcade pins pymunk 6.9) when that venv exists; ``make bench`` creates it.
@@ -48,7 +51,7 @@ if __package__ in (None, ""):  # run as a script: make the repository importable
 import numpy as np
 
 VARIANTS = ("advance", "texcoords", "upload", "kge_total", "pyglet_sprite", "tweens",
-            "crossfade")
+            "crossfade", "timeline")
 DT = 1.0 / 60.0
 
 
@@ -138,6 +141,24 @@ def _tweens(n: int) -> tuple[Any, Any]:
     return w, system
 
 
+def _timelines(n: int) -> tuple[Any, Any]:
+    from kge import Transform, World
+    from kge.components.timeline import Keys, Timeline, TimelinePlayer
+    from kge.systems.animation import AnimationPlugin
+    from kge.systems.timeline import TimelineSystem
+
+    w = World()
+    w.add_plugins(AnimationPlugin())
+    tl = Timeline([Keys(Transform, "x", [(0.0, 0.0), (0.5, 1.0), (1.0, 0.0)]),
+                   Keys(Transform, "y", [(0.0, 0.0), (0.3, 1.0), (0.7, -1.0), (1.0, 0.0)],
+                        interp="cubic")], loop=True)
+    for i in range(n):
+        w.spawn(Transform(), TimelinePlayer({"bob": tl}, speed=0.5 + (i % 7) * 0.1))
+    system = w.get_system(TimelineSystem)
+    assert system is not None
+    return w, system
+
+
 def measure(n: int, repeats: int = 9) -> dict[str, float]:
     """Median microseconds per sprite (tween) and frame for each variant, in one run."""
     app, system, atlas, _ = _kge(n)
@@ -145,6 +166,7 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
     fade_app, fade_system, fade_atlas, _ = _kge(n, fading=True)
     sprites, tick = _pyglet(n)
     tw_world, tw_system = _tweens(n)
+    tl_world, tl_system = _timelines(n)
     samples: dict[str, list[float]] = {v: [] for v in VARIANTS}
     buffers = [d[0].attrib_name_buffers["tex_coords"] for d in frames._domains] or []
     for _ in range(3):  # warm-up (first writes index the domains)
@@ -152,6 +174,7 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
         frames.write()
         tick()
         tw_system.process(DT)
+        tl_system.process(DT)
     buffers = [d[0].attrib_name_buffers["tex_coords"] for d in frames._domains]
     assert frames.write() == n, "every animated sprite is on the atlas"
     for _ in range(repeats):
@@ -180,10 +203,15 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
         fade_system.process(DT)
         fade_atlas(fade_atlas.current)
         samples["crossfade"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        tl_system.process(DT)
+        samples["timeline"].append(time.perf_counter() - t0)
     assert len(fade_atlas.ghosts) == n, "every fading sprite has a ghost"
     for s in sprites:
         s.delete()
     fade_app.close()
+    tl_world.close()
     app.close()
     tw_world.close()
     return {k: statistics.median(v) * 1e6 / n for k, v in samples.items()}

@@ -51,7 +51,15 @@ from kge.components.conditions import parse as parse_condition
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import at_most, boolean, finite, integer, non_negative, positive
+from kge.validate import (
+    at_most,
+    boolean,
+    finite,
+    integer,
+    name_map,
+    non_negative,
+    positive,
+)
 
 
 class Loop(StrEnum):
@@ -434,16 +442,7 @@ class Transition:
 
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
-    if not isinstance(value, Mapping) or not value:
-        raise ValidationError(f"{owner}.{field} must be a non-empty {{name: Clip}} mapping")
-    out = {}
-    for name, clip in value.items():
-        if not isinstance(name, str) or not name:
-            raise ValidationError(f"{owner}.{field}: clip names must be non-empty strings")
-        if not isinstance(clip, Clip):
-            raise ComponentTypeError(f"{owner}.{field}[{name!r}] must be a Clip, got {clip!r}")
-        out[name] = clip
-    return out
+    return name_map(value, Clip, owner, field)
 
 
 def _has(obj: object, name: str) -> bool:

@@ -8,6 +8,7 @@ system                       stage, set              does
 ``ShakeRestore``             UPDATE, FIRST           takes last frame's shake offset off
 ``AnimationSystem``          UPDATE, ANIMATION       advances every Animator, events, hooks
 ``TweenSystem``              UPDATE, ANIMATION       every other tween (after the clips)
+``TimelineSystem``           UPDATE, ANIMATION       keyframe timelines (kge.systems.timeline)
 ``ShakeApply``               LATE, CAMERA_EFFECTS    decays trauma, adds this frame's offset
 ===========================  ======================  ===================================
 
@@ -470,7 +471,8 @@ class _AtlasPass:
 
 
 class AnimationPlugin(Plugin):
-    """Sprite animation (Animator + clips), tweens and camera shake. See the module docstring."""
+    """Sprite animation (Animator + clips), tweens, keyframe timelines and camera shake.
+    See the module docstring."""
 
     def build(self, world: World) -> None:
         anims = animations(world)
@@ -485,3 +487,6 @@ class AnimationPlugin(Plugin):
         world.validator(Animator, functools.partial(check_frames, world))
         validate_writes(world, Animator)
         validate_writes(world, CameraShake)  # a bad write names its entity
+        from kge.systems.timeline import TimelinePlugin  # it orders itself after the clips
+
+        TimelinePlugin().build(world)

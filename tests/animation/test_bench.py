@@ -15,6 +15,8 @@ def test_animation_bench_measures_every_variant_side_by_side() -> None:
     assert rows["live tweens per tween and frame (largest N)"]["value"] == r["tweens"]
     fading = "cross-fading animated sprites per sprite and frame (advance + ghosts, largest N)"
     assert rows[fading]["value"] == r["crossfade"]
+    assert rows["keyframe timelines (2 tracks) per player and frame (largest N)"][
+        "value"] == r["timeline"]
     ratio = rows["pyglet animated Sprite / kge per animated sprite (largest N)"]["value"]
     assert ratio == r["pyglet_sprite"] / r["kge_total"]
 

@@ -21,6 +21,7 @@ from kge.testbed.samples import (  # noqa: F401
     rendering,
     stacking,
     tilemaps,
+    timeline,
     tween_control,
     ui,
     ui_editor,
