@@ -8,7 +8,7 @@ system                       stage, set              does
 ``ShakeRestore``             UPDATE, FIRST           takes last frame's shake offset off
 ``AnimationSystem``          UPDATE, ANIMATION       advances every Animator, events, hooks
 ``TweenSystem``              UPDATE, ANIMATION       every other tween (after the clips)
-``TimelineSystem``           UPDATE, ANIMATION       keyframe timelines (kge.systems.timeline)
+``TimelineSystem``           UPDATE, ANIMATION       keyframe timelines, after the tweens
 ``ShakeApply``               LATE, CAMERA_EFFECTS    decays trauma, adds this frame's offset
 ===========================  ======================  ===================================
 
@@ -488,6 +488,6 @@ class AnimationPlugin(Plugin):
         world.validator(Animator, functools.partial(check_frames, world))
         validate_writes(world, Animator)
         validate_writes(world, CameraShake)  # a bad write names its entity
-        from kge.systems.timeline import TimelinePlugin  # it orders itself after the clips
+        from kge.systems.timeline import install  # keyframe timelines, after the tweens
 
-        TimelinePlugin().build(world)
+        install(world, after=(TweenSystem,))

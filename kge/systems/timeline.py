@@ -1,6 +1,6 @@
 """The timeline system: every TimelinePlayer advanced at once, tracks written, cues fired.
 
-``TimelineSystem`` runs in UPDATE / ANIMATION (after the sprite clips, on game time:
+``TimelineSystem`` runs in UPDATE / ANIMATION (after the clips and tweens, on game time:
 it freezes with the pause, slows with ``time_scale``). Each frame it
 
 1. syncs the players whose component was written (``play``, ``seek``, ``speed``...);
@@ -33,7 +33,6 @@ from kge.components.tracked import Tracked, bind, raw_set, unbind
 from kge.errors import MissingComponentError, ValidationError, where
 from kge.plugin import Plugin
 from kge.schedule import Stage, System, SystemSet
-from kge.systems.animation import AnimationSystem
 from kge.systems.behaviour import BehaviourRunner
 from kge.validate import MAX_COORDINATE, coordinate, finite
 from kge.world import World
@@ -208,7 +207,6 @@ class TimelineSystem(System):
 
     stage = Stage.UPDATE
     in_set = SystemSet.ANIMATION
-    after = (AnimationSystem,)
 
     def attach(self, world: World) -> None:
         super().attach(world)
@@ -270,13 +268,19 @@ class TimelineSystem(System):
                 audio.play(key[1], volume=track.volume, bus=track.bus)
 
 
+def install(world: World, after: tuple[Any, ...] = ()) -> None:
+    """Add the timeline system (ordered ``after`` those systems) and its checks."""
+    timelines_of(world)
+    world.add_system(TimelineSystem(), after=after)
+    world.validator(TimelinePlayer, functools.partial(check_player, world))
+
+
 class TimelinePlugin(Plugin):
-    """Keyframe timelines (TimelinePlayer): property, call and sound tracks."""
+    """Keyframe timelines (TimelinePlayer): property, call and sound tracks. The
+    AnimationPlugin installs them too, after its tweens."""
 
     def build(self, world: World) -> None:
-        timelines_of(world)
-        world.add_system(TimelineSystem())
-        world.validator(TimelinePlayer, functools.partial(check_player, world))
+        install(world)
 
 
 __all__ = ["TimelinePlugin", "TimelineSystem", "Timelines", "timelines_of"]

@@ -39,6 +39,7 @@ DEFAULT_FRAME = {
         ("AnimationSystem", "animation"),
         ("TileAnimationSystem", "animation"),
         ("TweenSystem", "animation"),
+        ("TimelineSystem", "animation"),
         ("ParticleSystem", "effects"),
     ],
     Stage.LATE: [
