@@ -16,6 +16,13 @@ repetitions, in microseconds per sprite (or tween) per frame:
   texture swap per sprite per frame: pyglet's own path);
 * ``tweens``: :class:`~kge.systems.animation.TweenSystem` advancing N live tweens
   (``Transform.x``, sine in-out, yoyo forever) and writing them back;
+* ``crossfade``: the same N sprites all cross-fading between two clips (a fade longer
+  than the run): the advance, the texture coordinates and the ghost sprites that draw
+  the outgoing frames (:mod:`kge.render.crossfade`); fades are transient, so this is the
+  cost per sprite *while* it fades;
+* ``timeline``: :class:`~kge.systems.timeline.TimelineSystem` playing N looping
+  timelines of two property tracks each (``Transform.x`` linear, ``Transform.y``
+  cubic), per player and frame (sampling + the write-back into the components);
 * ``arcade_sprite``: Arcade 3's ``TextureAnimationSprite`` (``update_animation`` +
   buffer upload), run by ``benchmarks/arcade_animation.py`` in ``.venv-arcade``
   (Arcade pins pymunk 6.9) when that venv exists; ``make bench`` creates it.
@@ -43,7 +50,8 @@ if __package__ in (None, ""):  # run as a script: make the repository importable
 
 import numpy as np
 
-VARIANTS = ("advance", "texcoords", "upload", "kge_total", "pyglet_sprite", "tweens")
+VARIANTS = ("advance", "texcoords", "upload", "kge_total", "pyglet_sprite", "tweens",
+            "crossfade", "timeline")
 DT = 1.0 / 60.0
 
 
@@ -56,7 +64,7 @@ def _sheet() -> Any:
     return PixelImage(64, 8, arr.tobytes())
 
 
-def _kge(n: int) -> tuple[Any, Any, Any, Any]:
+def _kge(n: int, fading: bool = False) -> tuple[Any, Any, Any, Any]:
     from kge import Animator, App, Camera, Clip, Sprite, Transform
     from kge.render.passes import RenderPasses
     from kge.systems.animation import AnimationSystem, _AtlasPass
@@ -70,13 +78,18 @@ def _kge(n: int) -> tuple[Any, Any, Any, Any]:
         world.insert_resource(Camera(pixels_per_meter=64))
         for x, y in zip(xs.tolist(), ys.tolist(), strict=True):
             world.spawn(Transform(x, y), Sprite(sheet, size=(0.125, 0.125)),
-                        Animator({"run": clip}))
+                        Animator({"run": clip, "back": back}))
 
+    back = Clip.grid(sheet, (8, 1), duration=DT, flip_x=True)
     app = App(scene, headless=True, size=(960, 540))
     app.render()
+    if fading:
+        for _, (anim,) in app.world.query(Animator):
+            anim.play("back", fade=3600.0)
+        app.render()
     system = app.world.get_system(AnimationSystem)
     atlas = next(p for p in app.world.resource(RenderPasses).before() if isinstance(p, _AtlasPass))
-    return app, system, atlas.frames, clip
+    return app, system, atlas, clip
 
 
 def _pyglet(n: int) -> tuple[Any, Any]:
@@ -128,11 +141,32 @@ def _tweens(n: int) -> tuple[Any, Any]:
     return w, system
 
 
+def _timelines(n: int) -> tuple[Any, Any]:
+    from kge import Transform, World
+    from kge.components.timeline import Keys, Timeline, TimelinePlayer
+    from kge.systems.animation import AnimationPlugin
+    from kge.systems.timeline import TimelineSystem
+
+    w = World()
+    w.add_plugins(AnimationPlugin())
+    tl = Timeline([Keys(Transform, "x", [(0.0, 0.0), (0.5, 1.0), (1.0, 0.0)]),
+                   Keys(Transform, "y", [(0.0, 0.0), (0.3, 1.0), (0.7, -1.0), (1.0, 0.0)],
+                        interp="cubic")], loop=True)
+    for i in range(n):
+        w.spawn(Transform(), TimelinePlayer({"bob": tl}, speed=0.5 + (i % 7) * 0.1))
+    system = w.get_system(TimelineSystem)
+    assert system is not None
+    return w, system
+
+
 def measure(n: int, repeats: int = 9) -> dict[str, float]:
     """Median microseconds per sprite (tween) and frame for each variant, in one run."""
-    app, system, frames, _ = _kge(n)
+    app, system, atlas, _ = _kge(n)
+    frames = atlas.frames
+    fade_app, fade_system, fade_atlas, _ = _kge(n, fading=True)
     sprites, tick = _pyglet(n)
     tw_world, tw_system = _tweens(n)
+    tl_world, tl_system = _timelines(n)
     samples: dict[str, list[float]] = {v: [] for v in VARIANTS}
     buffers = [d[0].attrib_name_buffers["tex_coords"] for d in frames._domains] or []
     for _ in range(3):  # warm-up (first writes index the domains)
@@ -140,6 +174,7 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
         frames.write()
         tick()
         tw_system.process(DT)
+        tl_system.process(DT)
     buffers = [d[0].attrib_name_buffers["tex_coords"] for d in frames._domains]
     assert frames.write() == n, "every animated sprite is on the atlas"
     for _ in range(repeats):
@@ -163,8 +198,20 @@ def measure(n: int, repeats: int = 9) -> dict[str, float]:
         t0 = time.perf_counter()
         tw_system.process(DT)
         samples["tweens"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        fade_system.process(DT)
+        fade_atlas(fade_atlas.current)
+        samples["crossfade"].append(time.perf_counter() - t0)
+
+        t0 = time.perf_counter()
+        tl_system.process(DT)
+        samples["timeline"].append(time.perf_counter() - t0)
+    assert len(fade_atlas.ghosts) == n, "every fading sprite has a ghost"
     for s in sprites:
         s.delete()
+    fade_app.close()
+    tl_world.close()
     app.close()
     tw_world.close()
     return {k: statistics.median(v) * 1e6 / n for k, v in samples.items()}

@@ -175,6 +175,10 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
         anim["arcade_sprite"] / anim["kge_total"] if "arcade_sprite" in anim else None,
         10.0, False)
     add("live tweens per tween and frame (largest N)", anim.get("tweens"), 0.5, True, "µs")
+    add("cross-fading animated sprites per sprite and frame (advance + ghosts, largest N)",
+        anim.get("crossfade"), 2.0, True, "µs")
+    add("keyframe timelines (2 tracks) per player and frame (largest N)", anim.get("timeline"),
+        2.0, True, "µs")
     if game is not None:
         from benchmarks.particles_lights import game_ratios, game_targets
 

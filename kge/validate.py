@@ -22,7 +22,7 @@ tracked.Tracked` can skip formatting the owner's name and calling the check.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from enum import Enum
 from typing import Any, TypeVar
 
@@ -31,6 +31,7 @@ from kge.errors import ComponentTypeError, ValidationError
 
 Vec2 = tuple[float, float]
 E = TypeVar("E", bound=Enum)
+T = TypeVar("T")
 
 
 def _label(owner: str, field: str) -> str:
@@ -231,6 +232,29 @@ def in_range(value: Any, lo: float, hi: float, owner: str, field: str) -> float:
     if not lo <= v <= hi:
         raise ValidationError(f"{_label(owner, field)} must be in [{lo}, {hi}], got {v!r}")
     return v
+
+
+def name_map(value: Any, kind: type[T], owner: str, field: str) -> dict[str, T]:
+    """A non-empty ``{name: kind}`` mapping (an animator's clips, a player's timelines).
+
+    >>> name_map({"walk": 1.0}, float, "Animator", "clips")
+    {'walk': 1.0}
+    >>> name_map({"": 1.0}, float, "Animator", "clips")
+    Traceback (most recent call last):
+    ...
+    kge.errors.ValidationError: Animator.clips: names must be non-empty strings
+    """
+    what = kind.__name__
+    if not isinstance(value, Mapping) or not value:
+        raise ValidationError(f"{owner}.{field} must be a non-empty {{name: {what}}} mapping")
+    out: dict[str, T] = {}
+    for name, item in value.items():
+        if not isinstance(name, str) or not name:
+            raise ValidationError(f"{owner}.{field}: names must be non-empty strings")
+        if not isinstance(item, kind):
+            raise ComponentTypeError(f"{owner}.{field}[{name!r}] must be a {what}, got {item!r}")
+        out[name] = item
+    return out
 
 
 def vec2(value: Any, owner: str, field: str) -> Vec2:

@@ -15,6 +15,10 @@ moves them all with a handful of numpy operations:
 * frame events and finished events are found by counting crossings of the
   frames' start times between the previous and the new time, so a long frame
   (a slow machine, a large time scale) never skips an event;
+* a cross-fade (``Animator.play(name, fade=0.2)``, ``Transition(..., fade=0.2)``)
+  keeps the outgoing clip running in a second set of columns (``from_clip``,
+  ``from_time``, ``from_shown``) while ``fade_t`` climbs to ``fade_len``; the
+  renderer draws the outgoing frame over the incoming one at ``1 - weight``;
 * the table holds only clips some row plays: :meth:`ClipState.compact` drops the
   others once they outnumber the live ones, so a game that spawns entities with
   clips of their own keeps a table the size of what is alive, and registering a
@@ -165,6 +169,16 @@ class ClipTable:
         return table, remap
 
 
+@dataclass(slots=True, frozen=True)
+class CrossFade:
+    """A cross-fade under way: the outgoing ``clip``, the ``frame`` of it shown, and
+    ``weight``, how much of the incoming clip shows (0 at the cut, 1 when done)."""
+
+    clip: str
+    frame: int
+    weight: float
+
+
 @dataclass(slots=True)
 class Crossings:
     """What one :meth:`ClipState.advance` found: frame events and finished rows."""
@@ -187,6 +201,14 @@ class ClipState:
         self.finished = np.zeros(0, bool)
         self.fresh = np.zeros(0, bool)  # started since the last pass: frame 0's events due
         self.shown = np.zeros(0, np.intp)  # global frame index shown
+        # a cross-fade: the outgoing clip (-1: none), its time, rate and frame, the fade's
+        # elapsed and total seconds (game time)
+        self.from_clip = np.zeros(0, np.intp)
+        self.from_time = np.zeros(0, float)
+        self.from_rate = np.zeros(0, float)
+        self.from_shown = np.zeros(0, np.intp)
+        self.fade_t = np.zeros(0, float)
+        self.fade_len = np.zeros(0, float)
         self.version = 0  # bumped when rows are added, removed or moved
 
     def __len__(self) -> int:
@@ -194,19 +216,9 @@ class ClipState:
 
     def add(self, entity: int) -> int:
         row = self.rows.get(entity)
-        if row is not None:
-            return row
-        row = len(self.entity)
-        self.rows[entity] = row
-        self.entity = np.append(self.entity, entity)
-        self.clip = np.append(self.clip, 0)
-        self.time = np.append(self.time, 0.0)
-        self.speed = np.append(self.speed, 1.0)
-        self.playing = np.append(self.playing, False)
-        self.finished = np.append(self.finished, False)
-        self.fresh = np.append(self.fresh, False)
-        self.shown = np.append(self.shown, 0)
-        self.version += 1
+        if row is None:
+            self.add_many([entity])
+            row = self.rows[entity]
         return row
 
     def add_many(self, entities: list[int]) -> None:
@@ -225,6 +237,10 @@ class ClipState:
         self.finished = np.concatenate([self.finished, np.zeros(k, bool)])
         self.fresh = np.concatenate([self.fresh, np.zeros(k, bool)])
         self.shown = np.concatenate([self.shown, np.zeros(k, np.intp)])
+        self.from_clip = np.concatenate([self.from_clip, np.full(k, -1, np.intp)])
+        self.from_shown = np.concatenate([self.from_shown, np.zeros(k, np.intp)])
+        for name in ("from_time", "from_rate", "fade_t", "fade_len"):
+            setattr(self, name, np.concatenate([getattr(self, name), np.zeros(k)]))
         self.version += 1
 
     def remove(self, entity: int) -> None:
@@ -233,7 +249,8 @@ class ClipState:
         if row is None:
             return
         last = len(self.entity) - 1
-        arrays = ("entity", "clip", "time", "speed", "playing", "finished", "fresh", "shown")
+        arrays = ("entity", "clip", "time", "speed", "playing", "finished", "fresh", "shown",
+                  "from_clip", "from_time", "from_rate", "from_shown", "fade_t", "fade_len")
         if row != last:
             moved = int(self.entity[last])
             for name in arrays:
@@ -244,9 +261,24 @@ class ClipState:
             setattr(self, name, getattr(self, name)[:last])
         self.version += 1
 
-    def start(self, row: int, slot: int, *, stopped: bool = False) -> None:
+    def start(self, row: int, slot: int, *, stopped: bool = False, fade: float = 0.0) -> None:
         """Row ``row`` plays clip ``slot`` from its first frame (``stopped``: shows it, still);
-        a row of negative speed plays it backwards from its end."""
+        a row of negative speed plays it backwards from its end. ``fade`` > 0 cross-fades
+        from what the row showed (that clip runs on, fading out over ``fade`` seconds)."""
+        if fade > 0.0 and not stopped:
+            t = self.table
+            t.ensure()
+            old = int(self.clip[row])
+            moving = bool(self.playing[row]) and not bool(self.finished[row])
+            self.from_clip[row] = old
+            once_over = bool(self.finished[row]) and int(t.mode[old]) == ONCE
+            self.from_time[row] = 0.0 if once_over else self.time[row]  # it shows frame 0
+            self.from_rate[row] = self.speed[row] * t.speed[old] if moving else 0.0
+            self.from_shown[row] = self.shown[row]
+            self.fade_t[row] = 0.0
+            self.fade_len[row] = fade
+        else:
+            self.end_fade(row)
         self.clip[row] = slot
         self.time[row] = 0.0
         self.finished[row] = stopped
@@ -256,11 +288,23 @@ class ClipState:
             self.table.ensure()
             self.seek(row, float(self.table.total[slot]))
 
+    def end_fade(self, row: int) -> None:
+        """Row ``row`` shows its clip alone (a cross-fade, if any, is over)."""
+        self.from_clip[row] = -1
+        self.fade_t[row] = self.fade_len[row] = 0.0
+
+    def weight(self, row: int) -> float:
+        """How much of the incoming clip ``row`` shows: 1 unless it cross-fades (0 -> 1)."""
+        total = float(self.fade_len[row])
+        return 1.0 if total <= 0.0 else min(float(self.fade_t[row]) / total, 1.0)
+
     def compact(self, slack: int = 32) -> bool:
         """Drop the clips no row plays once they outnumber the played ones (plus
         ``slack``), renumbering the rows' slots and frames; True if it did."""
         t = self.table
-        live = np.unique(self.clip).tolist() if len(self.clip) else []
+        fading = self.from_clip >= 0
+        live = np.unique(np.concatenate([self.clip, self.from_clip[fading]])).tolist() if len(
+            self.clip) else []
         if len(t) - len(live) <= max(len(live), slack if live else 0):
             return False
         t.ensure()
@@ -268,6 +312,11 @@ class ClipState:
         offset = self.shown - t.first[self.clip]
         self.clip = remap[self.clip]
         self.shown = table.first[self.clip] + offset
+        if fading.any():
+            src = self.from_clip[fading]
+            inner = self.from_shown[fading] - t.first[src]
+            self.from_clip[fading] = remap[src]
+            self.from_shown[fading] = table.first[self.from_clip[fading]] + inner
         self.table = table
         self.version += 1
         return True
@@ -325,7 +374,31 @@ class ClipState:
         g = np.searchsorted(t.frame_end, t.base[clip] + local + EPS, side="right")
         self.shown = np.minimum(np.maximum(g, first), first + t.length[clip] - 1)
         self.fresh[:] = False
+        if self.fade_len.any():
+            self._fade(dt)
         return Crossings(events, finished_rows)
+
+    def _fade(self, dt: float) -> None:
+        """Cross-fades: the outgoing clips run on (without events) and fade out."""
+        t = self.table
+        rows = np.flatnonzero(self.fade_len > 0.0)
+        self.fade_t[rows] += np.where(self.playing[rows], dt, 0.0)
+        over = rows[self.fade_t[rows] >= self.fade_len[rows]]
+        self.from_clip[over] = -1
+        self.fade_t[over] = self.fade_len[over] = 0.0
+        rows = np.flatnonzero(self.fade_len > 0.0)
+        if not len(rows):
+            return
+        clip = self.from_clip[rows]
+        total, looping = t.total[clip], t.mode[clip] == LOOP
+        after = self.from_time[rows] + np.where(self.playing[rows], self.from_rate[rows], 0.) * dt
+        laps = np.floor((after + EPS) / total)
+        local = np.where(looping, after - laps * total, after)
+        local = np.minimum(np.maximum(local, 0.0), total)
+        self.from_time[rows] = local
+        first = t.first[clip]
+        g = np.searchsorted(t.frame_end, t.base[clip] + local + EPS, side="right")
+        self.from_shown[rows] = np.minimum(np.maximum(g, first), first + t.length[clip] - 1)
 
     def _events(
         self, before: np.ndarray, after: np.ndarray, total: np.ndarray, looping: np.ndarray,

@@ -50,6 +50,14 @@ class TweenFinished:
     name: str = ""
 
 
+@dataclass(slots=True, frozen=True)
+class TimelineFinished:
+    """Timeline ``name`` (one that does not loop) reached its end on ``entity``."""
+
+    entity: int
+    name: str
+
+
 @dataclass(slots=True)
 class AnimationEvents:
     """This frame's animation and tween events (see the module docstring)."""

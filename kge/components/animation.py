@@ -51,7 +51,15 @@ from kge.components.conditions import parse as parse_condition
 from kge.components.tracked import Check, Tracked
 from kge.deprecation import enum_value
 from kge.errors import ComponentTypeError, ValidationError
-from kge.validate import at_most, boolean, finite, integer, positive
+from kge.validate import (
+    at_most,
+    boolean,
+    finite,
+    integer,
+    name_map,
+    non_negative,
+    positive,
+)
 
 
 class Loop(StrEnum):
@@ -69,6 +77,8 @@ Rect4 = tuple[int, int, int, int]
 MIN_FRAME, MAX_FRAME = 1e-6, 1e6
 #: the fastest playback speed (a clip's, an animator's)
 MAX_SPEED = 1e3
+#: the longest cross-fade between two clips, seconds
+MAX_FADE = 3600.0
 #: the most frames one clip may have, and the most cells a sheet grid may have per side
 MAX_FRAMES = 10_000
 MAX_GRID = 65_536
@@ -96,6 +106,11 @@ def _frame_seconds(value: Any, owner: str, field: str) -> float:
             f"got {v!r}"
         )
     return v
+
+
+def fade_seconds(value: Any, owner: str, field: str) -> float:
+    """A cross-fade's length: 0 (a cut) up to :data:`MAX_FADE` seconds."""
+    return at_most(non_negative(value, owner, field), MAX_FADE, owner, field, "s")
 
 
 def _clip_speed(value: Any, owner: str, field: str) -> float:
@@ -397,11 +412,15 @@ class Transition:
     ``when`` is a parameter name (truthy), ``"not name"``, a comparison
     (``"speed > 0.1"``, ``"state == jump"``) or clauses joined by ``and``; see
     :mod:`kge.components.conditions`. It is checked when the Transition is made.
+
+    ``fade`` > 0 cross-fades: the outgoing clip runs on, drawn over the incoming one
+    and fading out over ``fade`` seconds of game time (0: a cut).
     """
 
     src: str
     dst: str
     when: str | None = None
+    fade: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("src", "dst"):
@@ -415,6 +434,7 @@ class Transition:
                     f"'speed > 0.1'), got {self.when!r}"
                 )
             parse_condition(self.when)
+        object.__setattr__(self, "fade", fade_seconds(self.fade, "Transition", "fade"))
 
     def holds(self, params: Mapping[str, Any]) -> bool:
         """Does ``when`` hold for these parameters? (False for an end transition.)"""
@@ -422,16 +442,7 @@ class Transition:
 
 
 def _clips(value: Any, owner: str, field: str) -> dict[str, Clip]:
-    if not isinstance(value, Mapping) or not value:
-        raise ValidationError(f"{owner}.{field} must be a non-empty {{name: Clip}} mapping")
-    out = {}
-    for name, clip in value.items():
-        if not isinstance(name, str) or not name:
-            raise ValidationError(f"{owner}.{field}: clip names must be non-empty strings")
-        if not isinstance(clip, Clip):
-            raise ComponentTypeError(f"{owner}.{field}[{name!r}] must be a Clip, got {clip!r}")
-        out[name] = clip
-    return out
+    return name_map(value, Clip, owner, field)
 
 
 def _has(obj: object, name: str) -> bool:
@@ -469,7 +480,9 @@ class Animator(Tracked):
     stops. ``speed`` multiplies every clip's own speed; a negative speed plays
     backwards (a clip started then begins at its end; frame events fire as the
     playhead crosses their frame going back; a ``once`` clip ends at its start).
-    ``set(param, value)`` feeds the transition table.
+    ``set(param, value)`` feeds the transition table. ``play(name, fade=0.2)``
+    cross-fades from the clip shown into ``name`` over 0.2 s (``fade`` keeps that
+    length until the next ``play``; the outgoing clip fires no more events).
     """
 
     #: new clips are checked against their images by the animation plugin
@@ -482,6 +495,7 @@ class Animator(Tracked):
         "params": _params,
         "serial": _serial,
         "stopped": boolean,
+        "fade": fade_seconds,
     }
 
     clips: dict[str, Clip]
@@ -494,6 +508,8 @@ class Animator(Tracked):
     #: bumped by play()/stop(): the system restarts the clip when it changes
     serial: int = 0
     stopped: bool = False
+    #: the cross-fade (seconds) of the latest play(): the system fades when serial changes
+    fade: float = 0.0
 
     def __setattr__(self, name: str, value: Any) -> None:
         # ``current`` must name a clip, and new ``clips`` must still hold ``current``: rules
@@ -551,11 +567,14 @@ class Animator(Tracked):
             )
         return str(name)
 
-    def play(self, name: str, *, restart: bool = True) -> None:
-        """Play clip ``name`` from its first frame (no-op if it plays and not ``restart``)."""
+    def play(self, name: str, *, restart: bool = True, fade: float = 0.0) -> None:
+        """Play clip ``name`` from its first frame (no-op if it plays and not ``restart``);
+        ``fade`` > 0 cross-fades into it from the frame shown over that many seconds."""
         self._check_name(name, "play")
+        fade = fade_seconds(fade, self._owner(), "play(fade)")
         if not restart and name == self.current and self.playing and not self.stopped:
             return
+        self.fade = fade
         self.queued.clear()
         self.current = name
         self.playing = True
@@ -575,6 +594,7 @@ class Animator(Tracked):
 
     def stop(self) -> None:
         """Show the current clip's first frame and stop."""
+        self.fade = 0.0
         self.stopped = True
         self.playing = False
         self.serial += 1

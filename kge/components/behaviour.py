@@ -22,6 +22,7 @@ on_mouse_scroll        (event)
 on_animation_event     (event)           a named frame of a clip was entered
 on_animation_end       (event)           a once/hold clip finished
 on_tween_end           (event)           a tween started on this entity ended
+on_timeline_end        (event)           a timeline (TimelinePlayer) reached its end
 on_text                (text)            characters typed (after the keyboard layout)
 on_gamepad_down/up     (event)           a :class:`kge.input.GamepadEvent`
 on_click               (event)           a UI button of this entity was clicked
@@ -81,6 +82,7 @@ HOOKS: dict[str, tuple[int, str]] = {
     "on_animation_event": (1, "on_animation_event(event)"),
     "on_animation_end": (1, "on_animation_end(event)"),
     "on_tween_end": (1, "on_tween_end(event)"),
+    "on_timeline_end": (1, "on_timeline_end(event)"),
     "on_text": (1, "on_text(text)"),
     "on_gamepad_down": (1, "on_gamepad_down(event)"),
     "on_gamepad_up": (1, "on_gamepad_up(event)"),

@@ -14,6 +14,7 @@ import pyglet
 from pyglet import gl
 
 from kge.render.setup import Renderer
+from kge.transition_shaders import Shaded
 from kge.transitions import ActiveTransition, Wipe
 
 
@@ -30,6 +31,11 @@ def draw_transition(renderer: Renderer, active: ActiveTransition, background: An
     window.view = pyglet.math.Mat4()
     w, h = renderer.size
     tr = active.transition
+    if isinstance(tr, Shaded):  # Iris, ShaderTransition: kge/render/transition_shaders.py
+        from kge.render.transition_shaders import draw_shaded
+
+        draw_shaded(active, window.get_framebuffer_size())
+        return
     if tr.needs_picture:
         if not active.swapped or active.picture is None:
             return  # the old scene is still on screen, or nothing was drawn to picture

@@ -8,6 +8,7 @@ system                       stage, set              does
 ``ShakeRestore``             UPDATE, FIRST           takes last frame's shake offset off
 ``AnimationSystem``          UPDATE, ANIMATION       advances every Animator, events, hooks
 ``TweenSystem``              UPDATE, ANIMATION       every other tween (after the clips)
+``TimelineSystem``           UPDATE, ANIMATION       keyframe timelines, after the tweens
 ``ShakeApply``               LATE, CAMERA_EFFECTS    decays trauma, adds this frame's offset
 ===========================  ======================  ===================================
 
@@ -25,7 +26,7 @@ from __future__ import annotations
 import functools
 from typing import Any
 
-from kge.animation.clips import ClipState, ClipTable
+from kge.animation.clips import ClipState, ClipTable, CrossFade
 from kge.animation.events import AnimationEvent, AnimationEvents, AnimationFinished, TweenFinished
 from kge.animation.shake import decayed, offset
 from kge.animation.tweens import TweenHandle, Tweens
@@ -64,6 +65,9 @@ class Animations:
         self.dirty: set[int] = set()
         self._new: list[int] = []
         self._serials: dict[int, int] = {}
+        #: entity -> the clip name it last started (the outgoing clip of a cross-fade)
+        self._names: dict[int, str] = {}
+        self._fading_from: dict[int, str] = {}
         self._conditional: set[int] = set()
         #: called with an entity whose sprite must be re-made (added/removed Animator)
         self.redraw: Any = None
@@ -86,6 +90,8 @@ class Animations:
             self._new.remove(entity)
         self.state.remove(entity)
         self._serials.pop(entity, None)
+        self._names.pop(entity, None)
+        self._fading_from.pop(entity, None)
         self._conditional.discard(entity)
         if self.redraw is not None:
             self.redraw(entity)
@@ -104,6 +110,17 @@ class Animations:
         """True once a ``once``/``hold`` clip has ended (or the animator was stopped)."""
         self.sync()
         return bool(self.state.finished[self._row(entity)])
+
+    def crossfade(self, entity: int) -> CrossFade | None:
+        """The cross-fade ``entity`` shows now (None when it shows one clip alone)."""
+        self.sync()
+        row = self._row(entity)
+        state = self.state
+        if state.from_clip[row] < 0:
+            return None
+        state.table.ensure()
+        frame = int(state.table.frame_orig[state.from_shown[row]])
+        return CrossFade(self._fading_from.get(entity, ""), frame, state.weight(row))
 
     def _row(self, entity: int) -> int:
         row = self.state.rows.get(entity)
@@ -173,9 +190,15 @@ class Animations:
         slot = self.table.register(anim.clips[str(anim.current)]).slot
         state.speed[row] = anim.speed
         state.playing[row] = anim.playing
-        if self._serials.get(entity) != anim.serial or state.clip[row] != slot:
-            state.start(row, slot, stopped=anim.stopped)
+        serial = self._serials.get(entity)
+        if serial != anim.serial or state.clip[row] != slot:
+            # a play() of a started row may cross-fade; new clips for the same play cut
+            fade = anim.fade if serial is not None and serial != anim.serial else 0.0
+            state.start(row, slot, stopped=anim.stopped, fade=fade)
+            if fade > 0.0:
+                self._fading_from[entity] = self._names.get(entity, "")
             self._serials[entity] = anim.serial
+            self._names[entity] = str(anim.current)
         if any(tr.when is not None for tr in anim.transitions):
             self._conditional.add(entity)
         else:
@@ -194,7 +217,7 @@ class Animations:
                     and anim.current != tr.dst
                     and tr.holds(anim.params)
                 ):
-                    anim.play(tr.dst)
+                    anim.play(tr.dst, fade=tr.fade)
                     self._sync_one(entity)
                     break
 
@@ -202,7 +225,7 @@ class Animations:
         """A clip ended: follow an end transition, else the queue."""
         for tr in anim.transitions:
             if tr.when is None and tr.src in ("*", anim.current):
-                anim.play(tr.dst)
+                anim.play(tr.dst, fade=tr.fade)
                 break
         else:
             if not anim.queued:
@@ -399,6 +422,7 @@ class _AtlasPass:
         self.world = world
         self.anims = anims
         self.frames: Any = None
+        self.ghosts: Any = None  # kge.render.crossfade.FadeGhosts
         self.current: Frame | None = None
 
     def __call__(self, frame: Frame) -> None:
@@ -427,6 +451,13 @@ class _AtlasPass:
                 view.sprites.poser.write(frame.poses, frame.view)
         self.current = frame
         self.frames.write()
+        if self.ghosts is None:
+            if not (self.anims.state.from_clip >= 0).any():
+                return
+            from kge.render.crossfade import FadeGhosts
+
+            self.ghosts = FadeGhosts(view.sprites.batch)
+        self.ghosts.write(self.anims.state, view.sprites, self.frames)
 
     def _migrate(self, entities: list[int]) -> None:
         """Sync these sprites now: onto the atlas page of the frame they show."""
@@ -441,7 +472,8 @@ class _AtlasPass:
 
 
 class AnimationPlugin(Plugin):
-    """Sprite animation (Animator + clips), tweens and camera shake. See the module docstring."""
+    """Sprite animation (Animator + clips), tweens, keyframe timelines and camera shake.
+    See the module docstring."""
 
     def build(self, world: World) -> None:
         anims = animations(world)
@@ -456,3 +488,6 @@ class AnimationPlugin(Plugin):
         world.validator(Animator, functools.partial(check_frames, world))
         validate_writes(world, Animator)
         validate_writes(world, CameraShake)  # a bad write names its entity
+        from kge.systems.timeline import install  # keyframe timelines, after the tweens
+
+        install(world, after=(TweenSystem,))

@@ -13,6 +13,10 @@ def test_animation_bench_measures_every_variant_side_by_side() -> None:
     assert "pyglet/kge" in table({200: r})
     rows = {t["target"]: t for t in run.targets([], {}, {}, animation={200: r})}
     assert rows["live tweens per tween and frame (largest N)"]["value"] == r["tweens"]
+    fading = "cross-fading animated sprites per sprite and frame (advance + ghosts, largest N)"
+    assert rows[fading]["value"] == r["crossfade"]
+    assert rows["keyframe timelines (2 tracks) per player and frame (largest N)"][
+        "value"] == r["timeline"]
     ratio = rows["pyglet animated Sprite / kge per animated sprite (largest N)"]["value"]
     assert ratio == r["pyglet_sprite"] / r["kge_total"]
 

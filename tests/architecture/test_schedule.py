@@ -39,6 +39,7 @@ DEFAULT_FRAME = {
         ("AnimationSystem", "animation"),
         ("TileAnimationSystem", "animation"),
         ("TweenSystem", "animation"),
+        ("TimelineSystem", "animation"),
         ("ParticleTurbulenceSystem", "effects"),
         ("ParticleSystem", "effects"),
         ("ParticleEffectsSystem", "effects"),

@@ -33,6 +33,7 @@ from kge.render.images import checker
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import box, static_box
 from kge.testbed.samples.ui_parts import Status, column, root_area, tip
+from kge.transition_shaders import Iris, ShaderTransition
 from kge.transitions import Crossfade, Fade, Slide, Transition, Wipe
 from kge.ui.events import ButtonClicked
 from kge.ui.interact import UIState
@@ -190,11 +191,22 @@ def _overlay_freezes_the_game(app: Any) -> None:
     assert app.world is game
 
 
+#: a user-shader transition: the old picture breaks up into blocks of ``grain`` pixels
+DISSOLVE = """
+uniform float grain;
+vec4 transition(sampler2D old_scene, vec2 uv, float progress) {
+    float n = fract(sin(dot(floor(uv * resolution / grain), vec2(12.9898, 78.233))) * 43758.5);
+    return n < progress ? vec4(0.0) : texture(old_scene, uv);
+}
+"""
+
 _KINDS: dict[str, Transition] = {
     "Fade": Fade(0.5),
     "Crossfade": Crossfade(0.6),
     "Slide": Slide(0.6, direction="left"),
     "Wipe": Wipe(0.6, direction="up"),
+    "Iris": Iris(0.8, center=(0.5, 0.5)),
+    "Dissolve": ShaderTransition(DISSOLVE, 0.8, uniforms={"grain": 6.0}),
 }
 
 
@@ -226,7 +238,8 @@ def _red_room(world: World) -> None:
     _room(world, "Red room", (140, 40, 40, 255), _blue_room)
 
 
-@sample("UI", "Scene Transitions", help="Fade, crossfade, slide and wipe between two rooms.")
+@sample("UI", "Scene Transitions",
+        help="Fade, crossfade, slide, wipe, iris and a dissolve shader between two rooms.")
 def scene_transitions(world: World) -> None:
     _blue_room(world)
 
@@ -241,3 +254,8 @@ def _a_button_fades_to_the_other_room(app: Any) -> None:
     app.step(40)
     assert app.transition is None and app.world is not world
     assert any(lbl.text == "Red room" for _, (lbl,) in app.world.query(Label))
+    red = app.world
+    iris = next(e for e, (b,) in red.query(Button) if b.text == "Iris")
+    app.input.click(at=red.resource(UIState).layout.boxes[iris].center)
+    app.step(60)
+    assert app.transition is None and app.world is not red
