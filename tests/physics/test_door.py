@@ -11,6 +11,8 @@ are pinned against pymunk-built shapes in ``tests/physics/test_static_bulk.py``.
 
 from __future__ import annotations
 
+import gc
+import weakref
 from collections.abc import Callable
 from typing import Any
 
@@ -424,3 +426,19 @@ def test_routed_contacts_get_the_arbiter_pymunk_would_wrap() -> None:
     assert {s for _, pair in seen for s in pair} == {ball, floor}
     with pytest.raises(ValueError, match="kept"):
         errors.raise_pending()
+
+
+def test_a_routed_space_and_its_handler_object_are_collected() -> None:
+    class Owner:
+        def __init__(self) -> None:
+            self.space = pymunk.Space()  # the handler's object holds its space
+            route_contacts(self.space, self.begin, self.begin, None)
+
+        def begin(self, arb: Any) -> None:
+            pass
+
+    owner = Owner()
+    gone = weakref.ref(owner.space)
+    del owner
+    gc.collect()
+    assert gone() is None

@@ -12,6 +12,8 @@ call a space's ``separate`` while pymunk frees the space (its shapes are removed
 first), when the space's route is gone; a call for a space without a route does
 nothing. An exception raised by kge's function is kept in the route's
 :class:`~kge.physics.callback_errors.CallbackErrors` (cffi cannot let it cross C).
+A bound method is held weakly (its object, which holds the space, must not be kept
+alive by this module: the route goes when the space goes); a plain function strongly.
 
 >>> import pymunk
 >>> space = pymunk.Space()
@@ -28,6 +30,7 @@ nothing. An exception raised by kge's function is kept in the route's
 
 from __future__ import annotations
 
+import inspect
 import weakref
 from collections.abc import Callable
 from typing import Any
@@ -40,8 +43,10 @@ from kge.physics.cp.capi import ffi
 #: kge's function for one arbiter (a ``cpArbiter *``)
 ArbiterFn = Callable[[Any], None]
 
-#: ``cpSpace *`` -> (begin, separate, where their exceptions go)
-_routes: dict[Any, tuple[ArbiterFn, ArbiterFn, CallbackErrors]] = {}
+#: ``cpSpace *`` -> (begin, separate, where their exceptions go); the functions are
+#: behind references (call one to get the function, or None once its object is gone)
+_routes: dict[Any, tuple[Callable[[], ArbiterFn | None], Callable[[], ArbiterFn | None],
+                         CallbackErrors]] = {}
 
 
 def _noop(arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
@@ -50,20 +55,26 @@ def _noop(arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
 
 def _begin(arb: Any, space: Any, data: Any) -> None:
     route = _routes.get(space)
-    if route is not None:
+    if route is not None and (fn := route[0]()) is not None:
         try:
-            route[0](arb)
+            fn(arb)
         except Exception as exc:
             route[2].keep(exc)
 
 
 def _separate(arb: Any, space: Any, data: Any) -> None:
     route = _routes.get(space)
-    if route is not None:
+    if route is not None and (fn := route[1]()) is not None:
         try:
-            route[1](arb)
+            fn(arb)
         except Exception as exc:
             route[2].keep(exc)
+
+
+def _held(fn: ArbiterFn) -> Callable[[], ArbiterFn | None]:
+    if inspect.ismethod(fn):
+        return weakref.WeakMethod(fn)
+    return lambda: fn
 
 
 _SIGNATURE = "void(*)(struct cpArbiter *, struct cpSpace *, void *)"
@@ -86,4 +97,6 @@ def route_contacts(
     key = space._space
     if key not in _routes:
         weakref.finalize(space, _routes.pop, key, None)
-    _routes[key] = (begin, separate, errors if errors is not None else CallbackErrors())
+    _routes[key] = (
+        _held(begin), _held(separate), errors if errors is not None else CallbackErrors()
+    )
