@@ -239,7 +239,11 @@ class ContactRecorder:
         return p0, p1, index[p0], index[p1]
 
     def _begin(self, cp_arb: Any) -> None:
-        p0, p1, i, j = self._slots(cp_arb)
+        pa, pb = self._shape_ptrs  # (what _slots does, without its frame)
+        _lib.cpArbiterGetShapes(cp_arb, pa, pb)
+        p0, p1 = pa[0], pb[0]
+        index = self.table.index
+        i, j = index[p0], index[p1]
         b0, b1 = _lib.cpShapeGetBody(p0), _lib.cpShapeGetBody(p1)
         d0 = _lib.cpBodyGetType(b0) == _CP_DYNAMIC
         d1 = _lib.cpBodyGetType(b1) == _CP_DYNAMIC
