@@ -135,6 +135,9 @@ def targets(results: list[Result], fitting: dict[str, dict[str, float]],
               if c.get("bytes_per_body_pymunk") else None)
     add("memory per body, kge / raw pymunk (fresh processes)", memory, 2.0, True)
     add("sync-out per moved body (sparse field)", c.get("sync_out_us"), 0.10, True, "µs")
+    # issue 36: kge's begin + end of one new contact (benchmarks/contact_cost.py)
+    add(f"new-contact bookkeeping, begin + end, rain-{c.get('contact_bodies', 5000):.0f}",
+        c.get("contact_us"), 3.0, True, "µs")
     despawn = c.get("despawn_kge_ms") if c.get("despawn_count") == 1000 else None
     add("despawning 1,000 bodies in one frame", despawn, 25.0, True, "ms")
     # a structural change costs what it changes: the same in a 10x larger world
@@ -543,6 +546,11 @@ def main(argv: list[str] | None = None) -> int:
         costs = costs_measure(args.quick)
         print("\nper-body costs:")
         print(costs_table(costs))
+        from benchmarks import contact_cost
+
+        progress("kge's work per new contact")
+        costs.update(contact_cost.measure(args.quick))
+        print(contact_cost.line(costs))
     features: dict[str, Any] = {}
     if not args.no_game and not args.scene:  # per-frame costs of game-layer features
         from benchmarks.features import feature_lines, run_features

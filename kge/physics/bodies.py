@@ -67,17 +67,22 @@ PYMUNK_TYPE = {
 
 
 class BodyRecord:
-    """One simulated body: its pymunk Body and the collider entities on it."""
+    """One simulated body: its pymunk Body, the collider entities on it and kge's
+    per-body state (kept here, not on the pymunk object)."""
 
     __slots__ = (
-        "applied", "body", "colliders", "enabled", "entity", "implicit", "in_space", "mass"
+        "applied", "awake", "body", "bullet", "colliders", "enabled", "entity", "implicit",
+        "in_space", "mass",
     )
 
     def __init__(self, entity: int, body: pymunk.Body, implicit: bool) -> None:
         self.entity = entity
         self.body = body
-        vars(body)["kge_entity"] = entity  # islands of bodies map back to entities
         self.implicit = implicit
+        #: what kge last saw of the body's sleep; a different RigidBody.awake is a user request
+        self.awake = True
+        #: RigidBody.bullet as last applied
+        self.bullet = False
         self.colliders: set[int] = set()
         self.enabled = True
         self.in_space = False
@@ -87,7 +92,7 @@ class BodyRecord:
         self.applied: tuple[Any, ...] | None = None
 
     @property
-    def kge_body(self) -> int | None:
+    def event_body(self) -> int | None:
         """The body entity as events name it (None for the implicit static body)."""
         return None if self.implicit else self.entity
 
@@ -109,9 +114,8 @@ class ColliderRecord:
 def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
     """A pymunk body of ``kind`` at the pose (dynamic bodies get mass 1 until sized).
 
-    Runs once per spawned body, so it writes through Chipmunk's setters directly
-    and sets kge's attributes in one ``__dict__`` update: pymunk routes every
-    Python-level attribute write through a ``__setattr__`` of its own.
+    Runs once per spawned body, so it writes through Chipmunk's setters directly:
+    pymunk routes every Python-level attribute write through a ``__setattr__`` of its own.
     """
     if kind is BodyType.DYNAMIC:
         body = pymunk.Body(1.0, math.inf)
@@ -120,12 +124,6 @@ def make_body(kind: BodyType, x: float, y: float, angle: float) -> pymunk.Body:
     cp = body_handle(body)
     _lib.cpBodySetPosition(cp, (flush(x), flush(y)))
     _lib.cpBodySetAngle(cp, flush(angle))
-    vars(body).update(
-        kge_bullet=False,
-        # what kge last saw; a different RigidBody.awake is a user request
-        kge_awake=True,
-        kge_dynamics=None,  # (gravity scale, damping factors) when a velocity_func is set
-    )
     return body
 
 
@@ -221,8 +219,8 @@ def scaled_gravity(gx: float, gy: float, scale: float) -> tuple[float, float]:
     return gx * k, gy * k
 
 
-def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float) -> None:
-    """velocity_func with gravity scale and Box2D damping (factors precomputed per substep).
+class Box2DVelocity:
+    """A body's velocity_func with gravity scale and Box2D damping (factors per substep).
 
     Box2D: ``v' = lin * (v + dt * (g + f/m))`` and ``w' = ang * (w + dt * t/I)``.
     Chipmunk's integrator gives ``v' = d * v + dt * (g' + f/m)`` and ``w' = d * w +
@@ -232,9 +230,22 @@ def box2d_velocity(body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt:
     sleep clock, so damped bodies never slept). With a torque (whose setter woke
     the body anyway) the result is damped after the integration.
     """
-    if body.body_type != DYNAMIC:
-        return
-    scale, lin, ang = body.kge_dynamics
+
+    __slots__ = ("ang", "lin", "scale")
+
+    def __init__(self, scale: float, lin: float, ang: float) -> None:
+        self.scale, self.lin, self.ang = scale, lin, ang
+
+    def __call__(
+        self, body: pymunk.Body, gravity: pymunk.Vec2d, damping: float, dt: float
+    ) -> None:
+        if body.body_type == DYNAMIC:
+            _box2d_velocity(body, gravity, dt, self.scale, self.lin, self.ang)
+
+
+def _box2d_velocity(
+    body: pymunk.Body, gravity: pymunk.Vec2d, dt: float, scale: float, lin: float, ang: float
+) -> None:
     gx, gy = scaled_gravity(gravity.x, gravity.y, scale)
     if body.torque == 0.0:
         v, f, inv_mass = body.velocity, body.force, 1.0 / body.mass
@@ -260,14 +271,12 @@ def configure_dynamics(body: pymunk.Body, rb: RigidBody, dt: float, substeps: in
     if rb.type is not BodyType.DYNAMIC or (
         rb.gravity_scale == 1.0 and rb.linear_damping == 0.0 and rb.angular_damping == 0.0
     ):
-        if getattr(body, "kge_dynamics", None) is not None:
+        if isinstance(body.velocity_func, Box2DVelocity):
             body.velocity_func = pymunk.Body.update_velocity
-            body.kge_dynamics = None
         return
     lin = max(0.0, 1.0 - rb.linear_damping * dt) ** (1.0 / substeps)
     ang = max(0.0, 1.0 - rb.angular_damping * dt) ** (1.0 / substeps)
-    body.kge_dynamics = (rb.gravity_scale, lin, ang)
-    body.velocity_func = box2d_velocity
+    body.velocity_func = Box2DVelocity(rb.gravity_scale, lin, ang)
 
 
 def can_sleep(space: pymunk.Space, body: pymunk.Body) -> bool:

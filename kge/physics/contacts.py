@@ -34,11 +34,29 @@ from typing import TYPE_CHECKING, Any
 import pymunk
 
 from kge.physics.callback_errors import CallbackErrors
-from kge.physics.cp import arbiter_handle, shape_handle
+from kge.physics.cp import arbiter_handle
 from kge.physics.cp import ffi as _ffi
 from kge.physics.cp import lib as _lib
-from kge.physics.events import ContactBegin, ContactEnd, Hit, PhysicsEvents, SensorBegin, SensorEnd
+from kge.physics.cp.collisions import route_contacts
+from kge.physics.events import (
+    ContactBegin,
+    ContactEnd,
+    Hit,
+    PhysicsEvents,
+    SensorBegin,
+    SensorEnd,
+    builder,
+)
 from kge.physics.impact import Moves, settle, undo
+from kge.physics.shape_table import (
+    BOUNCY,
+    GROUPED,
+    HIT,
+    HOOKED_FLAG,
+    ONE_WAY,
+    SENSOR,
+    ShapeTable,
+)
 from kge.validate import boolean, finite, non_negative
 
 if TYPE_CHECKING:
@@ -116,54 +134,68 @@ PostSolveFn = Callable[[PostSolve], Any]
 ContactFilterFn = Callable[[int, int], bool]
 
 
-def a_first(sa: pymunk.Shape, sb: pymunk.Shape) -> bool:
-    """True when ``sa`` is Box2D's fixture A of the pair."""
-    if sa.sensor != sb.sensor:
-        return bool(sa.sensor)
-    return (sa.kge_rank, sa.kge_collider) <= (sb.kge_rank, sb.kge_collider)
+def a_first(table: ShapeTable, i: int, j: int) -> bool:
+    """True when slot ``i`` is Box2D's fixture A of the pair (``i``, ``j``)."""
+    si, sj = table.flags[i] & SENSOR, table.flags[j] & SENSOR
+    if si != sj:
+        return bool(si)
+    return bool(table.order[i] <= table.order[j])
 
 
-def _geometry(arb: pymunk.Arbiter, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], float]:
+def _midpoints(cps: Any) -> tuple[Vec2, ...]:
+    """World points of a Chipmunk contact point set: midpoints of the two surfaces."""
+    p = cps.points[0]
+    pa, pb = p.pointA, p.pointB
+    first = (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))
+    if cps.count == 1:
+        return (first,)
+    p = cps.points[1]
+    pa, pb = p.pointA, p.pointB
+    return first, (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))
+
+
+def _geometry(cp_arb: Any, flip: bool) -> tuple[Vec2, tuple[Vec2, ...], float]:
     """Normal (A to B), world points (midpoints of the two surfaces) and separation.
 
     Read from Chipmunk's contact point set struct directly: pymunk's
-    ``contact_point_set`` builds a Vec2d per number, and this runs for every
-    new contact.
+    ``contact_point_set`` builds a Vec2d per number.
     """
-    cps = _lib.cpArbiterGetContactPointSet(arbiter_handle(arb))
+    cps = _lib.cpArbiterGetContactPointSet(cp_arb)
     n = cps.normal
-    nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
-    p = cps.points[0]
-    pa, pb = p.pointA, p.pointB
-    sep = p.distance
-    first = (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))
-    if cps.count == 1:
-        return (nx, ny), (first,), sep
-    p = cps.points[1]
-    pa, pb = p.pointA, p.pointB
-    return (nx, ny), (first, (0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y))), min(sep, p.distance)
+    sep = cps.points[0].distance
+    if cps.count == 2:
+        sep = min(sep, cps.points[1].distance)
+    return ((-n.x, -n.y) if flip else (n.x, n.y)), _midpoints(cps), sep
 
 
-def _approach(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2, point: Vec2) -> float:
-    """Speed at which B approaches A along the normal A->B at ``point`` (>= 0)."""
-    va = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(shape_handle(sa)), point)
-    vb = _lib.cpBodyGetVelocityAtWorldPoint(_lib.cpShapeGetBody(shape_handle(sb)), point)
-    rel = (vb.x - va.x) * normal[0] + (vb.y - va.y) * normal[1]
-    return max(0.0, -rel)
+_contact_begin = builder(ContactBegin)
+_contact_end = builder(ContactEnd)
+_sensor_begin = builder(SensorBegin)
+_sensor_end = builder(SensorEnd)
+_NO_BODY = -1
 
 
 class ContactRecorder:
-    """Owns the collision handlers of one space and records events into ``events``."""
+    """Owns the collision handlers of one space and records events into ``events``.
+
+    The handlers read kge's data about both shapes from the space's
+    :class:`~kge.physics.shape_table.ShapeTable` by slot. A plain contact (no
+    sensor, filter group, one-way platform, restitution, hit threshold, hook or
+    contact filter on either shape: the table's flags say so in one read) skips
+    every rule that cannot apply to it.
+    """
 
     def __init__(
-        self, world: World, space: pymunk.Space, events: PhysicsEvents, errors: CallbackErrors
+        self, world: World, space: pymunk.Space, events: PhysicsEvents, errors: CallbackErrors,
+        table: ShapeTable,
     ) -> None:
         self.world = world
         self.space = space
         self.events = events
+        self.table = table
         self.velocity_threshold = 1.0
-        #: canonical shape pair -> (A shape, B shape, is sensor pair)
-        self.active: dict[tuple[int, int], tuple[pymunk.Shape, pymunk.Shape, bool]] = {}
+        #: (slot A, slot B) of every touching pair -> is it a sensor pair
+        self.active: dict[tuple[int, int], bool] = {}
         self.contact_filter: ContactFilterFn | None = None
         self.pre_solve: list[PreSolveFn] = []
         self.post_solve: list[PostSolveFn] = []
@@ -188,94 +220,106 @@ class ContactRecorder:
         self.space = space
         # an exception in a handler (a WorldLockedError from a hook) is raised after the step
         guard = self._errors.guard
-        space.on_collision(None, None, begin=guard(self._begin), separate=guard(self._separate))
+        route_contacts(space, self._begin, self._separate, self._errors)
         space.on_collision(
             HOOKED, None, pre_solve=guard(self._pre_solve), post_solve=guard(self._post_solve)
         )
 
     # -- begin / separate (once per contact) ------------------------------------------
-    def _arbiter_shapes(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape]:
-        """``arb.shapes`` without its two allocations.
+    def _slots(self, cp_arb: Any) -> tuple[Any, Any, int, int]:
+        """Chipmunk's two shapes of the arbiter, in its order, and their slots.
 
         The two pointer cells are reused: they are read back at once, with no
         Python call in between that could run another callback.
         """
         pa, pb = self._shape_ptrs
-        _lib.cpArbiterGetShapes(arbiter_handle(arb), pa, pb)
-        return (
-            _from_handle(_lib.cpShapeGetUserData(pa[0])),
-            _from_handle(_lib.cpShapeGetUserData(pb[0])),
-        )
+        _lib.cpArbiterGetShapes(cp_arb, pa, pb)
+        p0, p1 = pa[0], pb[0]
+        index = self.table.index
+        return p0, p1, index[p0], index[p1]
 
-    def _begin(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = self._arbiter_shapes(arb)
-        b0, b1 = _lib.cpShapeGetBody(shape_handle(s0)), _lib.cpShapeGetBody(shape_handle(s1))
+    def _begin(self, cp_arb: Any) -> None:
+        pa, pb = self._shape_ptrs  # (what _slots does, without its frame)
+        _lib.cpArbiterGetShapes(cp_arb, pa, pb)
+        p0, p1 = pa[0], pb[0]
+        index = self.table.index
+        i, j = index[p0], index[p1]
+        b0, b1 = _lib.cpShapeGetBody(p0), _lib.cpShapeGetBody(p1)
         d0 = _lib.cpBodyGetType(b0) == _CP_DYNAMIC
         d1 = _lib.cpBodyGetType(b1) == _CP_DYNAMIC
-        if not (d0 or d1):
-            arb.process_collision = False  # Box2D: static/kinematic pairs never touch
-            return
-        cp_arb = arbiter_handle(arb)
-        if not _lib.cpArbiterGetProcessCollision(cp_arb):
-            return
-        fa, fb = s0.kge_filter, s1.kge_filter
-        if (fa.group_index > 0 or fb.group_index > 0) and not fa.collides_with(fb):
+        if not (d0 or d1) or not _lib.cpArbiterGetProcessCollision(cp_arb):
+            # Box2D: static/kinematic pairs never touch
             _lib.cpArbiterSetProcessCollision(cp_arb, False)
             return
-        sensor0 = _lib.cpShapeGetSensor(shape_handle(s0))
-        sensor1 = _lib.cpShapeGetSensor(shape_handle(s1))
-        if sensor0 != sensor1:
-            flip = not sensor0
+        table = self.table
+        flags = table.flags
+        f0, f1 = flags[i], flags[j]
+        either = f0 | f1
+        order = table.order
+        if (f0 ^ f1) & SENSOR:
+            flip = not f0 & SENSOR  # the sensor is side A
         else:
-            flip = (s0.kge_rank, s0.kge_collider) > (s1.kge_rank, s1.kge_collider)
-        sa, sb = (s1, s0) if flip else (s0, s1)
-        sensor = bool(sensor0 or sensor1)
-        normal, points, sep = _geometry(arb, flip)
-        one_way = sa.kge_oneway is not None or sb.kge_oneway is not None
-        if one_way and not sensor and not self._one_way_accepts(sa, sb, normal):
+            flip = order[i] > order[j]
+        ia, ib = (j, i) if flip else (i, j)
+        if either & GROUPED and not table.filters[i].collides_with(table.filters[j]):
+            _lib.cpArbiterSetProcessCollision(cp_arb, False)
+            return
+        sensor = bool(either & SENSOR)
+        collider, body, child = table.collider, table.body, table.child
+        ca, cb = collider[ia], collider[ib]
+        if (
+            not sensor and either & ONE_WAY
+            and not self._one_way_accepts(ia, ib, _geometry(cp_arb, flip)[0])
+        ):
             _lib.cpArbiterSetProcessCollision(cp_arb, False)
             return
         if self.contact_filter is not None:
             with self.world.locked():
-                ok = self.contact_filter(sa.kge_collider, sb.kge_collider)
+                ok = self.contact_filter(ca, cb)
             if not ok:
                 _lib.cpArbiterSetProcessCollision(cp_arb, False)
                 return
-        key = (id(sa), id(sb))
-        self.active[key] = (sa, sb, sensor)
-        ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
-        ka, kb = sa.kge_child, sb.kge_child
-        events = self.events
+        key = (ia, ib)
+        self.active[key] = sensor
+        ra, rb = body[ia], body[ib]
+        ba = None if ra == _NO_BODY else ra
+        bb = None if rb == _NO_BODY else rb
+        ka, kb = child[ia], child[ib]
         if sensor:
-            events.sensor_begin.append(SensorBegin(ca, cb, ba, bb, ka, kb))
+            self.events.sensor_begin.append(_sensor_begin(ca, cb, ba, bb, ka, kb))
             return
-        speed = _approach(sa, sb, normal, points[0])
+        normal, points, sep = _geometry(cp_arb, flip)
+        px, py = points[0]
+        va = _lib.cpBodyGetVelocityAtWorldPoint(b0, (px, py))
+        vb = _lib.cpBodyGetVelocityAtWorldPoint(b1, (px, py))
+        # B's speed towards A along the normal, in Chipmunk's order (the same number)
+        rel = (vb.x - va.x) * normal[0] + (vb.y - va.y) * normal[1]
+        speed = (rel if flip else -rel) if (rel > 0.0 if flip else rel < 0.0) else 0.0
         # Box2D's time of impact: a dynamic body against a static or kinematic one, or a
         # pair with a bullet (here also with a body pushed from outside this step)
-        if sep < -self.slop and (
-            not (d0 and d1) or b0 in self.toi or b1 in self.toi
-        ):
+        if sep < -self.slop and (not (d0 and d1) or b0 in self.toi or b1 in self.toi):
             moves = settle(cp_arb, self.slop, self.substep_dt)
             if moves:
                 self._settled[key] = moves
-                normal, points, sep = _geometry(arb, flip)
-        ea, eb = sa.kge_material[1], sb.kge_material[1]
-        e = ea if ea > eb else eb
-        if e > 0.0 and speed > self.velocity_threshold:
-            arb.restitution = e
-        events.contact_begin.append(
-            ContactBegin(ca, cb, ba, bb, normal, points, sep, speed, ka, kb)
+                normal, points, sep = _geometry(cp_arb, flip)
+        if either & BOUNCY:
+            ea, eb = table.restitution[i], table.restitution[j]
+            e = ea if ea > eb else eb
+            if e > 0.0 and speed > self.velocity_threshold:
+                _lib.cpArbiterSetRestitution(cp_arb, e)
+        self.events.contact_begin.append(
+            _contact_begin(ca, cb, ba, bb, normal, points, sep, speed, ka, kb)
         )
-        ta, tb = sa.kge_hit, sb.kge_hit
-        if ta is not None or tb is not None:
-            limit = max(t for t in (ta, tb) if t is not None)
+        if either & HIT:
+            ta, tb = table.hit[ia], table.hit[ib]
+            limit = tb if ta != ta else (ta if tb != tb or ta > tb else tb)  # NaN: none
             if speed > limit:
-                events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed, ka, kb))
+                self.events.hits.append(Hit(ca, cb, ba, bb, points[0], normal, speed, ka, kb))
 
-    @staticmethod
-    def _one_way_accepts(sa: pymunk.Shape, sb: pymunk.Shape, normal: Vec2) -> bool:
-        for plat, sign in ((sa, 1.0), (sb, -1.0)):
-            spec = plat.kge_oneway
+    def _one_way_accepts(self, ia: int, ib: int, normal: Vec2) -> bool:
+        oneway = self.table.oneway
+        for plat, sign in ((ia, 1.0), (ib, -1.0)):
+            spec = oneway[plat]
             if spec is None:
                 continue
             (ux, uy), min_cos = spec
@@ -284,39 +328,45 @@ class ContactRecorder:
                 return False
         return True
 
-    def _separate(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
-        s0, s1 = self._arbiter_shapes(arb)
-        key = (id(s0), id(s1))
-        rec = self.active.pop(key, None)
-        if rec is None:
-            rec = self.active.pop((key[1], key[0]), None)
-            if rec is None:
+    def _separate(self, cp_arb: Any) -> None:
+        _p0, _p1, i, j = self._slots(cp_arb)
+        key = (i, j)
+        sensor = self.active.pop(key, None)
+        if sensor is None:
+            key = (j, i)
+            sensor = self.active.pop(key, None)
+            if sensor is None:
                 return
         if self._pre_cache:
             self._pre_cache.pop(key, None)
-        sa, sb, sensor = rec
-        ca, cb, ba, bb = sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body
-        ka, kb = sa.kge_child, sb.kge_child
+        table = self.table
+        ia, ib = key
+        ra, rb = table.body[ia], table.body[ib]
+        ident = (
+            table.collider[ia], table.collider[ib], None if ra == _NO_BODY else ra,
+            None if rb == _NO_BODY else rb, table.child[ia], table.child[ib],
+        )
         if sensor:
-            self.events.sensor_end.append(SensorEnd(ca, cb, ba, bb, ka, kb))
+            self.events.sensor_end.append(_sensor_end(*ident))
         else:
-            self.events.contact_end.append(ContactEnd(ca, cb, ba, bb, ka, kb))
+            self.events.contact_end.append(_contact_end(*ident))
 
     # -- user hooks (per step, only for HOOKED shapes) -------------------------------------
-    def _ordered(self, arb: pymunk.Arbiter) -> tuple[pymunk.Shape, pymunk.Shape, bool] | None:
-        """Canonical (A, B, flip) of a hooked contact, or None to skip this call.
+    def _ordered(self, arb: pymunk.Arbiter) -> tuple[int, int, bool] | None:
+        """Canonical (slot A, slot B, flip) of a hooked contact, or None to skip this call.
 
         pymunk runs the (HOOKED, None) handler twice when both shapes are hooked,
         once per order; only the call seeing A first goes on.
         """
-        s0, s1 = arb.shapes
-        flip = not a_first(s0, s1)
-        if flip and s1.collision_type == HOOKED:
+        _p0, _p1, i, j = self._slots(arbiter_handle(arb))
+        table = self.table
+        flip = not a_first(table, i, j)
+        if flip and table.flags[j] & HOOKED_FLAG:
             return None
-        sa, sb = (s1, s0) if flip else (s0, s1)
-        if (id(sa), id(sb)) not in self.active or sa.sensor or sb.sensor:
+        ia, ib = (j, i) if flip else (i, j)
+        if (ia, ib) not in self.active or (table.flags[ia] | table.flags[ib]) & SENSOR:
             return None
-        return sa, sb, flip
+        return ia, ib, flip
 
     def _pre_solve(self, arb: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
         if not self.pre_solve:
@@ -324,16 +374,18 @@ class ContactRecorder:
         got = self._ordered(arb)
         if got is None:
             return
-        sa, sb, flip = got
-        key = (id(sa), id(sb))
+        ia, ib, flip = got
+        key = (ia, ib)
         contact = self._pre_cache.get(key) if self.substep > 0 else None
         fresh = contact is None
         if contact is None:
-            normal, points, sep = _geometry(arb, flip)
-            fr = (sa.kge_material[0] * sb.kge_material[0]) ** 0.5
+            table = self.table
+            normal, points, sep = _geometry(arbiter_handle(arb), flip)
+            fr = float(table.friction[ia] * table.friction[ib]) ** 0.5
             contact = PreSolve(
-                sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, points, sep,
-                True, fr, arb.restitution, 0.0, sa.kge_child, sb.kge_child,
+                int(table.collider[ia]), int(table.collider[ib]), table.body_entity(ia),
+                table.body_entity(ib), normal, points, sep, True, fr, arb.restitution, 0.0,
+                int(table.child[ia]), int(table.child[ib]),
             )
             with self.world.locked():
                 for fn in self.pre_solve:
@@ -361,13 +413,13 @@ class ContactRecorder:
         got = self._ordered(arb)
         if got is None:
             return
-        sa, sb, flip = got
-        key = (id(sa), id(sb))
+        ia, ib, flip = got
+        key = (ia, ib)
         j = arb.total_impulse  # applied to shapes[0]
         n = arb.normal  # shapes[0] -> shapes[1]
         acc = self._post_acc.get(key)
         if acc is None:
-            acc = self._post_acc[key] = [sa, sb, flip, 0.0, 0.0, 0, (0.0, 0.0)]
+            acc = self._post_acc[key] = [ia, ib, flip, 0.0, 0.0, 0, (0.0, 0.0)]
         nx, ny = (-n.x, -n.y) if flip else (n.x, n.y)
         # impulse on B = -impulse on shapes[0] when A is shapes[0]
         jb = (j.x, j.y) if flip else (-j.x, -j.y)
@@ -390,16 +442,21 @@ class ContactRecorder:
         """Call the post-solve hooks once per hooked contact with the step's impulses."""
         if not self._post_acc:
             return
-        items = sorted(
-            self._post_acc.values(),
-            key=lambda a: (a[0].kge_collider, a[1].kge_collider, a[0].kge_child, a[1].kge_child),
-        )
+        table = self.table
+
+        def ident(a: list[Any]) -> tuple[int, int, int, int]:
+            ia, ib = a[0], a[1]
+            return (int(table.collider[ia]), int(table.collider[ib]), int(table.child[ia]),
+                    int(table.child[ib]))
+
+        items = sorted(self._post_acc.values(), key=ident)
         self._post_acc.clear()
         with self.world.locked():
-            for sa, sb, _flip, jn, jt, count, normal in items:
+            for ia, ib, _flip, jn, jt, count, normal in items:
                 ev = PostSolve(
-                    sa.kge_collider, sb.kge_collider, sa.kge_body, sb.kge_body, normal, count,
-                    abs(jn), jt, sa.kge_child, sb.kge_child,
+                    int(table.collider[ia]), int(table.collider[ib]), table.body_entity(ia),
+                    table.body_entity(ib), normal, count, abs(jn), jt, int(table.child[ia]),
+                    int(table.child[ib]),
                 )
                 for fn in self.post_solve:
                     fn(ev)
@@ -408,6 +465,6 @@ class ContactRecorder:
         """Drop cached state of shapes leaving the space (their separates already ran)."""
         if not self._pre_cache:  # the usual case: no pre-solve hook holds a contact
             return
-        gone = {id(s) for s in shapes}
+        gone = {self.table.slot(s) for s in shapes}
         for key in [k for k in self._pre_cache if k[0] in gone or k[1] in gone]:
             del self._pre_cache[key]

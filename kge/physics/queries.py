@@ -6,8 +6,9 @@ alpha 0) and hits polygons on their rounded skin; its queries return sensors
 and know nothing about entities. This module turns them into kge answers:
 
 * every result names the **collider entity** and the **body entity** (None for
-  the implicit static body), read from the ``kge_collider`` / ``kge_body``
-  attributes the physics system puts on each pymunk shape;
+  the implicit static body), read from the space's
+  :class:`~kge.physics.shape_table.ShapeTable`, where the physics system
+  registers each pymunk shape it builds (other shapes are never reported);
 * geometry is exact and skin-free, as Box2D's ``RayCast`` and ``TestPoint``:
   a box of half-width 0.5 is hit at x = -0.5, not at its 0.01 m skin;
 * :func:`raycast` runs Box2D's callback protocol. pymunk finds the candidate
@@ -36,7 +37,7 @@ Filtering (the ``filter`` argument of every query):
 >>> import pymunk
 >>> space = pymunk.Space()
 >>> box = pymunk.Poly.create_box(space.static_body, (1.0, 1.0), radius=0.01)
->>> box.kge_collider, box.kge_body = 7, None
+>>> slot = ShapeTable.of(space).add(box, collider=7, body=None)
 >>> space.add(box)
 >>> hit = raycast(space, (-2.0, 0.0), (2.0, 0.0))
 >>> hit.collider, hit.point, hit.normal, hit.fraction
@@ -62,6 +63,7 @@ from kge.components.filter import Filter
 from kge.components.shapes import SHAPE_TYPES, Box, Chain, Circle, Edge, Polygon
 from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.cp import body_handle, lib, shape_handle
+from kge.physics.shape_table import SENSOR, ShapeTable
 from kge.validate import finite, number, vec2
 
 _poly_count = lib.cpPolyShapeGetCount
@@ -83,7 +85,6 @@ class RayMode(StrEnum):
 QueryFilter = Filter | Callable[[int], bool] | None
 
 _ALL = pymunk.ShapeFilter()
-_DEFAULT_FILTER = Filter()
 _MODES = ("closest", "all", "any")
 
 
@@ -121,31 +122,37 @@ class QueryHit:
 # --------------------------------------------------------------------------- filtering
 
 
-def _acceptor(filter: Any, sensors: bool, owner: str) -> Callable[[pymunk.Shape], bool]:
-    """Turn the user's ``filter`` into a shape predicate (entity-less shapes never pass)."""
+def _acceptor(
+    table: ShapeTable, filter: Any, sensors: bool, owner: str
+) -> Callable[[pymunk.Shape], bool]:
+    """Turn the user's ``filter`` into a shape predicate (shapes not in ``table`` never pass)."""
     if not isinstance(sensors, bool):
         raise ComponentTypeError(f"{owner}: sensors must be True or False, got {sensors!r}")
+    index, flags = table.index, table.flags
+
+    def slot(shape: pymunk.Shape) -> int | None:
+        """The shape's slot, None when it is not to be reported at all."""
+        i = index.get(shape_handle(shape))
+        if i is None or (not sensors and flags[i] & SENSOR):
+            return None
+        return i
+
     if filter is None:
 
         def accept(shape: pymunk.Shape) -> bool:
-            return getattr(shape, "kge_collider", None) is not None and (
-                sensors or not shape.sensor
-            )
+            return slot(shape) is not None
     elif isinstance(filter, Filter):
         query = filter
 
         def accept(shape: pymunk.Shape) -> bool:
-            if getattr(shape, "kge_collider", None) is None or (shape.sensor and not sensors):
-                return False
-            return query.collides_with(getattr(shape, "kge_filter", None) or _DEFAULT_FILTER)
+            i = slot(shape)
+            return i is not None and query.collides_with(table.filters[i])
     elif callable(filter):
         predicate = filter
 
         def accept(shape: pymunk.Shape) -> bool:
-            collider = getattr(shape, "kge_collider", None)
-            if collider is None or (shape.sensor and not sensors):
-                return False
-            return bool(predicate(collider))
+            i = slot(shape)
+            return i is not None and bool(predicate(int(table.collider[i])))
     else:
         raise ComponentTypeError(
             f"{owner}: filter must be a kge Filter, a predicate(collider_entity) -> bool "
@@ -160,12 +167,14 @@ def _space(space: Any, owner: str) -> pymunk.Space:
     return space
 
 
-def _one_per_collider(shapes: Iterable[pymunk.Shape]) -> list[pymunk.Shape]:
-    """First shape of each collider (chains have several), ordered by collider entity."""
-    seen: dict[int, pymunk.Shape] = {}
+def _one_per_collider(table: ShapeTable, shapes: Iterable[pymunk.Shape]) -> list[QueryHit]:
+    """A hit for the first shape of each collider (chains have several), by collider entity."""
+    seen: dict[int, int] = {}
+    index = table.index
     for s in shapes:
-        seen.setdefault(s.kge_collider, s)
-    return [seen[c] for c in sorted(seen)]
+        i = index[shape_handle(s)]
+        seen.setdefault(int(table.collider[i]), i)
+    return [QueryHit(c, table.body_entity(seen[c])) for c in sorted(seen)]
 
 
 # --------------------------------------------------------------------------- geometry
@@ -306,14 +315,18 @@ def _point_bb(p: Vec2) -> pymunk.BB:
 # --------------------------------------------------------------------------- ray cast
 
 
-def _hit(shape: pymunk.Shape, p1: Vec2, d: Vec2, t: float, normal: Vec2) -> RayHit:
+def _hit(
+    table: ShapeTable, shape: pymunk.Shape, p1: Vec2, d: Vec2, t: float, normal: Vec2
+) -> RayHit:
     point = (p1[0] + t * d[0], p1[1] + t * d[1])
     clean = (normal[0] + 0.0, normal[1] + 0.0)  # no -0.0 in results
-    return RayHit(shape.kge_collider, shape.kge_body, point, clean, t)
+    i = table.index[shape_handle(shape)]
+    return RayHit(int(table.collider[i]), table.body_entity(i), point, clean, t)
 
 
 def _ray_hits(
-    space: pymunk.Space, p1: Vec2, p2: Vec2, accept: Callable[[pymunk.Shape], bool]
+    space: pymunk.Space, table: ShapeTable, p1: Vec2, p2: Vec2,
+    accept: Callable[[pymunk.Shape], bool],
 ) -> Iterator[RayHit]:
     """Exact hits in increasing fraction (ties by collider entity), computed lazily.
 
@@ -339,7 +352,8 @@ def _ray_hits(
         exact = _ray_shape(shape, p1, d)
         if exact is not None:
             t, normal = exact
-            heapq.heappush(pending, (t, shape.kge_collider, order, _hit(shape, p1, d, t, normal)))
+            hit = _hit(table, shape, p1, d, t, normal)
+            heapq.heappush(pending, (t, hit.collider, order, hit))
     while pending:
         yield heapq.heappop(pending)[3]
 
@@ -385,7 +399,7 @@ def raycast(
     >>> space = pymunk.Space()
     >>> for i, x in enumerate((0.0, 3.0)):
     ...     s = pymunk.Circle(space.static_body, 0.5, (x, 0.0))
-    ...     s.kge_collider, s.kge_body = i + 1, None
+    ...     _ = ShapeTable.of(space).add(s, collider=i + 1, body=None)
     ...     space.add(s)
     >>> [round(h.fraction, 4) for h in raycast(space, (-2, 0), (12, 0), mode="all")]
     [0.1071, 0.3214]
@@ -405,15 +419,16 @@ def raycast(
         )
     if mode not in _MODES:
         raise ValidationError(f"raycast: mode must be one of {_MODES}, got {mode!r}")
-    accept = _acceptor(filter, sensors, "raycast")
+    table = ShapeTable.of(space)
+    accept = _acceptor(table, filter, sensors, "raycast")
 
     if callback is None and mode == "any":
         d = (b[0] - a[0], b[1] - a[1])
         for info in space.segment_query(a, b, 0.0, _ALL):
             if accept(info.shape) and (exact := _ray_shape(info.shape, a, d)) is not None:
-                return _hit(info.shape, a, d, *exact)
+                return _hit(table, info.shape, a, d, *exact)
         # a ray starting in a shape's skin: fall through to the complete search
-    hits = _ray_hits(space, a, b, accept)
+    hits = _ray_hits(space, table, a, b, accept)
     if callback is None:
         if mode == "all":
             return list(hits)
@@ -462,9 +477,10 @@ def query_aabb(
         raise ComponentTypeError(
             f"query_aabb: callback must be callable or None, got {type(callback).__name__}"
         )
-    accept = _acceptor(filter, sensors, "query_aabb")
+    table = ShapeTable.of(space)
+    accept = _acceptor(table, filter, sensors, "query_aabb")
     shapes = [s for s in space.bb_query(pymunk.BB(lo[0], lo[1], hi[0], hi[1]), _ALL) if accept(s)]
-    hits = [QueryHit(s.kge_collider, s.kge_body) for s in _one_per_collider(shapes)]
+    hits = _one_per_collider(table, shapes)
     if callback is None:
         return hits
     delivered: list[QueryHit] = []
@@ -485,9 +501,10 @@ def query_point(
     """
     space = _space(space, "query_point")
     q = vec2(p, "query_point", "p")
-    accept = _acceptor(filter, sensors, "query_point")
+    table = ShapeTable.of(space)
+    accept = _acceptor(table, filter, sensors, "query_point")
     shapes = [s for s in space.bb_query(_point_bb(q), _ALL) if accept(s) and _contains(s, q)]
-    return [QueryHit(s.kge_collider, s.kge_body) for s in _one_per_collider(shapes)]
+    return _one_per_collider(table, shapes)
 
 
 # --------------------------------------------------------------------------- shape overlap
@@ -571,7 +588,8 @@ def query_shape(
     space = _space(space, "query_shape")
     geometry = _as_kge_shape(shape)
     x, y, angle = _pose(transform)
-    accept = _acceptor(filter, sensors, "query_shape")
+    table = ShapeTable.of(space)
+    accept = _acceptor(table, filter, sensors, "query_shape")
     c, s = math.cos(angle), math.sin(angle)
     placement = pymunk.Transform(a=c, b=s, c=-s, d=c, tx=x, ty=y)
     best: dict[int, QueryHit] = {}
@@ -581,18 +599,20 @@ def query_shape(
             other = info.shape
             if not accept(other):
                 continue
+            i = table.index[shape_handle(other)]
+            collider, body = int(table.collider[i]), table.body_entity(i)
             cps = info.contact_point_set
             if cps.points:
                 deepest = min(cps.points, key=lambda cp: cp.distance)
                 hit = QueryHit(
-                    other.kge_collider,
-                    other.kge_body,
+                    collider,
+                    body,
                     (float(deepest.point_b[0]), float(deepest.point_b[1])),
                     (float(cps.normal[0]) + 0.0, float(cps.normal[1]) + 0.0),
                     float(deepest.distance),
                 )
             else:
-                hit = QueryHit(other.kge_collider, other.kge_body)
+                hit = QueryHit(collider, body)
             old = best.get(hit.collider)
             if old is None or (old.distance or 0.0) > (hit.distance or 0.0):
                 best[hit.collider] = hit

@@ -518,7 +518,9 @@ class Physics:
         if fn is None:
             return True
         with self._sim.world.locked():
-            return bool(fn(a.kge_collider, b.kge_collider))
+            table = self._sim.shapes
+            ca, cb = table.collider_of(a), table.collider_of(b)
+            return ca is None or cb is None or bool(fn(ca, cb))  # (None: not kge's shape)
 
     # -- queries (kge.physics.queries) ---------------------------------------------------------
     def _query_space(self, op: str) -> pymunk.Space:

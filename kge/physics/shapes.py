@@ -1,16 +1,10 @@
 """Building pymunk shapes from a :class:`~kge.components.collider.Collider`.
 
-Every pymunk shape kge builds carries these attributes, so queries, contact
-callbacks and debug drawing can map it back to entities without a lookup:
-
-``kge_collider``  the collider entity
-``kge_body``      the body entity (None for the implicit static body)
-``kge_filter``    the kge :class:`~kge.components.filter.Filter` value
-``kge_material``  (friction, restitution) as the user gave them
-``kge_rank``      Box2D's fixture order for choosing contact side A
-``kge_hit``       the collider's hit threshold (m/s) or None
-``kge_oneway``    a OneWayPlatform (up, min_cos) or None
-``kge_child``     Box2D's child index: the segment of a chain, 0 for other shapes
+Every pymunk shape kge builds is registered in the space's
+:class:`~kge.physics.shape_table.ShapeTable` (collider and body entity, chain
+child index, filter, material, hit threshold, Box2D's side-A rank), so queries
+and contact callbacks map it back to entities by its slot; nothing of kge's is
+stored on the pymunk object.
 
 Material: pymunk multiplies the two shapes' friction, so each shape gets
 ``sqrt(friction)`` and the pair gets sqrt(a)*sqrt(b) = sqrt(a*b), Box2D's mixing,
@@ -31,10 +25,8 @@ from kge.components.collider import Collider
 from kge.components.shapes import Box, Chain, Circle, Edge, Polygon, Shape
 from kge.physics.cp.static_bulk import chain_ends, chain_segments, reinit_segments
 from kge.physics.filtering import DEFAULT_FILTER, to_pymunk
+from kge.physics.shape_table import ShapeTable
 from kge.physics.tiny import flush_point, flush_points
-
-#: Box2D picks side A of a contact by shape type: edge/chain, then polygon, then circle.
-RANK_EDGE, RANK_POLYGON, RANK_CIRCLE = 0, 1, 2
 
 
 def build_shapes(
@@ -43,12 +35,19 @@ def build_shapes(
     collider_entity: int,
     body_entity: int | None,
     skin: float,
+    table: ShapeTable,
 ) -> list[pymunk.Shape]:
-    """The pymunk shapes of one collider (several for a chain), not yet in a space."""
+    """The pymunk shapes of one collider (several for a chain), not yet in a space,
+    registered in ``table``."""
+    shapes = _build(body, collider, skin)
+    table.add_collider(shapes, collider, collider_entity, body_entity)
+    return shapes
+
+
+def _build(body: pymunk.Body, collider: Collider, skin: float) -> list[pymunk.Shape]:
     geom = collider.shape
     friction = math.sqrt(collider.friction)
     pf = to_pymunk(collider.filter)
-    attrs = _attrs(collider, collider_entity, body_entity)
     # coordinates below 1e-100 m are zero to Chipmunk (see kge.physics.tiny)
     if isinstance(geom, Chain):
         # one tight loop: a tile map's outlines are 100,000s of segments
@@ -59,7 +58,6 @@ def build_shapes(
                 geom.loop,
                 skin,
                 friction,
-                attrs,
                 None if pf == DEFAULT_FILTER else pf,
                 collider.sensor,
             )
@@ -76,8 +74,6 @@ def build_shapes(
             shape.set_neighbors(*edge_neighbors(geom))
     # what apply_material does, minus the writes a fresh shape does not need
     # (elasticity is already 0, the filter and sensor flag are pymunk's defaults)
-    vars(shape).update(attrs)
-    vars(shape)["kge_child"] = 0
     shape.friction = friction
     if pf != DEFAULT_FILTER:
         shape.filter = pf
@@ -92,23 +88,6 @@ def edge_neighbors(edge: Edge) -> tuple[tuple[float, float], tuple[float, float]
     prev = edge.vertex0 if edge.vertex0 is not None else edge.v1
     nxt = edge.vertex3 if edge.vertex3 is not None else edge.v2
     return flush_point(prev), flush_point(nxt)
-
-
-def _attrs(collider: Collider, collider_entity: int, body_entity: int | None) -> dict[str, object]:
-    """The kge_* attributes every shape of ``collider`` starts with (but kge_child)."""
-    geom = collider.shape
-    rank = RANK_EDGE if isinstance(geom, (Edge, Chain)) else RANK_POLYGON
-    if isinstance(geom, Circle):
-        rank = RANK_CIRCLE
-    return {
-        "kge_collider": collider_entity,
-        "kge_body": body_entity,
-        "kge_rank": rank,
-        "kge_oneway": None,
-        "kge_material": (collider.friction, collider.restitution),
-        "kge_filter": collider.filter,
-        "kge_hit": collider.hit_threshold,
-    }
 
 
 def same_segments(old: object, new: Shape) -> bool:
@@ -135,14 +114,16 @@ def rebuild_in_place(
     collider_entity: int,
     body_entity: int | None,
     skin: float,
+    table: ShapeTable,
 ) -> None:
     """Turn ``shapes`` (out of any space; built for a shape of which
     ``collider.shape`` is :func:`same_segments`) into what :func:`build_shapes`
     would build for ``collider`` now, keeping the Python objects.
 
     Chipmunk's fields are initialised as for a new segment
-    (:func:`~kge.physics.cp.static_bulk.reinit_segments`) and the kge_* attributes
-    written again, so nothing of the old geometry or material survives.
+    (:func:`~kge.physics.cp.static_bulk.reinit_segments`) and their rows of
+    ``table`` written again (same slots), so nothing of the old geometry or
+    material survives.
     """
     geom = collider.shape
     pf = to_pymunk(collider.filter)
@@ -164,18 +145,14 @@ def rebuild_in_place(
         None if pf == DEFAULT_FILTER else pf,
         collider.sensor,
     )
-    attrs = _attrs(collider, collider_entity, body_entity)
-    for seg in segments:
-        vars(seg).update(attrs)
+    table.add_collider(segments, collider, collider_entity, body_entity)
 
 
-def apply_material(shape: pymunk.Shape, collider: Collider) -> None:
-    """Copy the collider's material, filter and flags onto an existing shape."""
+def apply_material(shape: pymunk.Shape, collider: Collider, table: ShapeTable) -> None:
+    """Copy the collider's material, filter and flags onto an existing shape (and its row)."""
     shape.friction = math.sqrt(collider.friction)
     shape.elasticity = 0.0
-    shape.kge_material = (collider.friction, collider.restitution)
-    shape.kge_filter = collider.filter
-    shape.kge_hit = collider.hit_threshold
+    table.set_material(shape, collider)
     if shape.filter != (pf := to_pymunk(collider.filter)):
         shape.filter = pf
     if shape.sensor != collider.sensor:

@@ -48,7 +48,7 @@ from kge.physics.bodies import (
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.contact_first import ContactFirst
 from kge.physics.contacts import HOOKED, ContactRecorder
-from kge.physics.cp import body_handle
+from kge.physics.cp import body_handle, shape_handle
 from kge.physics.cp import lib as _cp
 from kge.physics.cp.static_bulk import add_shapes, remove_shapes
 from kge.physics.events import PhysicsEvents
@@ -56,6 +56,7 @@ from kge.physics.joint_bridge import JointBridge
 from kge.physics.mass import MassData, combine, dynamic_mass, shape_mass
 from kge.physics.rest import RestClock
 from kge.physics.settings import PhysicsSettings
+from kge.physics.shape_table import ShapeTable
 from kge.physics.shapes import (
     apply_material,
     build_shapes,
@@ -95,8 +96,13 @@ class Simulation:
         self._hash_count = 0
         #: exceptions raised inside pymunk callbacks during a step, raised after it
         self.errors = CallbackErrors()
-        self.recorder = ContactRecorder(world, self.space, events, self.errors)
+        #: kge's data about every shape of the space, by slot (kge.physics.shape_table)
+        self.shapes = ShapeTable()
+        self.shapes.adopt(self.space)
+        self.recorder = ContactRecorder(world, self.space, events, self.errors, self.shapes)
         self.bodies: dict[int, BodyRecord] = {}
+        #: the entity of each pymunk body (islands of bodies map back to entities)
+        self.body_entities: dict[pymunk.Body, int] = {}
         self.colliders: dict[int, ColliderRecord] = {}
         self.pending: set[int] = set()  # colliders waiting for their body
         #: pending colliders whose reshaped segments wait to go back into the space
@@ -122,7 +128,7 @@ class Simulation:
         self.steps = 0
         #: body entity -> [fx, fy, torque about the centre of mass] for this step
         self.forces: dict[int, list[float]] = {}
-        self.ccd = _make_ccd(self.space, self.errors)
+        self.ccd = _make_ccd(self.space, self.errors, self.shapes)
         self.ccd_dirty: set[int] = set()
         #: bodies whose velocity came from outside the solver: their first move of the
         #: next step respects their contacts first (kge.physics.contact_first)
@@ -288,8 +294,9 @@ class Simulation:
             if threads > 1:
                 space.threads = threads
             self.space = space
+            self.shapes.adopt(space)
             self.recorder.bind(space)
-            self.ccd = _make_ccd(space, self.errors)
+            self.ccd = _make_ccd(space, self.errors, self.shapes)
             self.joints.space = space
             self._threads = threads
             self._hash_cell = None  # a fresh space has the tree again
@@ -385,7 +392,7 @@ class Simulation:
                 continue
             body = rec.body
             if rec.in_space and body.body_type == DYNAMIC and rec.colliders:
-                ccd.track(body, bullet=bool(body.kge_bullet))
+                ccd.track(body, bullet=rec.bullet)
             else:
                 ccd.untrack(body)
 
@@ -419,6 +426,7 @@ class Simulation:
         self.tf_dirty.discard(e)  # the body starts at the Transform: no teleport to apply
         rec = BodyRecord(e, body, implicit=rb is None)
         self.bodies[e] = rec
+        self.body_entities[body] = e
         if rb is not None:
             self.rb_dirty.add(e)
         if rb is None or rb.enabled:
@@ -446,13 +454,18 @@ class Simulation:
             self.space.remove(rec.body)
             rec.in_space = False
         del self.bodies[rec.entity]
+        self.body_entities.pop(rec.body, None)
         self.no_sleep.discard(rec.entity)
         self.bullets.discard(body_handle(rec.body))
         self._restale(rec.entity)
 
-    def _remove_shapes(self, crec: ColliderRecord) -> None:
+    def _remove_shapes(self, crec: ColliderRecord, keep: bool = False) -> None:
+        """Take the collider's shapes out of the space (``keep``: they come back, reshaped,
+        keeping their slots in the shape table)."""
         remove_shapes(self.space, crec.shapes)  # one call: a chain's thousands of segments
         self.recorder.forget_shapes(crec.shapes)
+        if not keep:
+            self.shapes.drop(crec.shapes)
 
     def _detach(self, crec: ColliderRecord) -> None:
         rec = self.bodies.get(crec.owner)
@@ -487,7 +500,7 @@ class Simulation:
             rec = self.bodies.get(owner)
             if rec is None:
                 continue
-            shapes = build_shapes(rec.body, col, c, rec.kge_body, self.skin)
+            shapes = build_shapes(rec.body, col, c, rec.event_body, self.skin, self.shapes)
             self._configure_shapes(c, col, shapes, fresh=True)
             if rec.in_space:
                 to_add.extend(shapes if len(shapes) < 64 else spread(shapes))
@@ -511,8 +524,10 @@ class Simulation:
         ctype = HOOKED if col.contact_hooks else 0
         if fresh and oneway is None and ctype == 0:
             return
+        table = self.shapes
         for s in shapes:
-            s.kge_oneway = oneway
+            table.set_oneway(s, oneway)
+            table.set_hooked(s, ctype == HOOKED)
             if s.collision_type != ctype:
                 s.collision_type = ctype
 
@@ -543,9 +558,11 @@ class Simulation:
             return
         rec = self.bodies.get(owner)
         refilter = False
+        table = self.shapes
         for s in crec.shapes:
-            refilter = refilter or s.kge_filter != col.filter or s.sensor != col.sensor
-            apply_material(s, col)
+            was = table.filters[table.index[shape_handle(s)]]
+            refilter = refilter or was != col.filter or s.sensor != col.sensor
+            apply_material(s, col, table)
         self._configure_shapes(e, col, crec.shapes)
         if rec is not None:
             self.mass_dirty.add(owner)
@@ -575,8 +592,8 @@ class Simulation:
         e = crec.entity
         if rec.in_space and crec.shapes:
             wake_neighbours(rec.body)  # as _detach
-        self._remove_shapes(crec)
-        rebuild_in_place(crec.shapes, rec.body, col, e, rec.kge_body, self.skin)
+        self._remove_shapes(crec, keep=True)
+        rebuild_in_place(crec.shapes, rec.body, col, e, rec.event_body, self.skin, self.shapes)
         self._configure_shapes(e, col, crec.shapes, fresh=True)  # new again
         crec.geometry = col.shape
         if rec.body.body_type != STATIC:
@@ -645,7 +662,7 @@ class Simulation:
                 # sync-out writes what changed since this: the component now holds it
                 self.poses.state[i, 3:6] = (vx, vy, w)
         configure_dynamics(body, rb, self.dt, self.substeps)
-        vars(body)["kge_bullet"] = rb.bullet  # (pymunk's __setattr__ adds nothing here)
+        rec.bullet = rb.bullet
         if rb.bullet and ptype == DYNAMIC:
             self.bullets.add(body_handle(body))
         else:
@@ -664,7 +681,7 @@ class Simulation:
             self.no_sleep.add(e)
         if not rec.in_space:
             return
-        if rb.awake != body.kge_awake:  # the user wrote awake
+        if rb.awake != rec.awake:  # the user wrote awake
             if rb.awake and body.is_sleeping:
                 body.activate()
             elif not rb.awake and not body.is_sleeping and rb.allow_sleep:
@@ -674,7 +691,7 @@ class Simulation:
 
     def _mark_awake(self, e: int, rb: RigidBody) -> None:
         raw_set(rb, "awake", True)
-        self.bodies[e].body.kge_awake = True
+        self.bodies[e].awake = True
         i = self.poses.slot.get(e)
         if i is not None and not self.poses_stale:
             self.poses.asleep[i] = False
@@ -697,10 +714,10 @@ class Simulation:
         self._flush_mass(rec.entity)  # sleep with the final mass
         island = sleep_island(self.space, body, self._wants_sleep)
         for member in island:
-            self._mark_asleep(member.kge_entity)
+            self._mark_asleep(self.body_entities[member])
         if not island:
             raw_set(rb, "awake", True)
-            body.kge_awake = True
+            rec.awake = True
 
     def _wants_sleep(self, body: pymunk.Body) -> bool:
         """Has the user asked this (awake) body to sleep, and may it?
@@ -708,14 +725,14 @@ class Simulation:
         Its own ``_apply_rigidbody`` may not have run yet in this sync-in: the
         request is the ``awake`` field differing from what kge last saw.
         """
-        e: int | None = getattr(body, "kge_entity", None)
+        e = self.body_entities.get(body)
         rec = None if e is None else self.bodies.get(e)
         if e is None or rec is None or rec.body is not body:
             return False
         rb = self.world.try_get(e, RigidBody)
         if rb is None:
             return False
-        if rb.awake or not body.kge_awake or not rb.allow_sleep or not rec.in_space:
+        if rb.awake or not rec.awake or not rb.allow_sleep or not rec.in_space:
             return False
         self._flush_mass(e)  # it may sleep now: with its final mass (harmless if it does not)
         return True
@@ -723,7 +740,7 @@ class Simulation:
     def _mark_asleep(self, e: int) -> None:
         """Record that the body of ``e`` was put to sleep during sync-in."""
         rec = self.bodies[e]
-        rec.body.kge_awake = False
+        rec.awake = False
         rb = self.world.try_get(e, RigidBody)
         if rb is not None:
             raw_set(rb, "awake", False)
@@ -951,7 +968,7 @@ class Simulation:
         blocker: list[pymunk.Body] = []
 
         def rested(body: pymunk.Body) -> bool:
-            e = getattr(body, "kge_entity", None)
+            e = self.body_entities.get(body)
             i = None if e is None else poses.slot.get(e)
             ok = (
                 i is not None and e not in self.no_sleep and poses.bodies[i] is body
@@ -965,16 +982,17 @@ class Simulation:
             body = poses.bodies[i]
             e = int(poses.entities[i])
             blockers.discard(e)
-            if body in looked or e in self.no_sleep or not body.kge_awake:
+            rec = self.bodies.get(e)
+            if body in looked or e in self.no_sleep or rec is None or not rec.awake:
                 continue
             blocker.clear()
             island = sleep_island(self.space, body, rested, looked)
             for member in island:
-                self._mark_asleep(member.kge_entity)
+                self._mark_asleep(self.body_entities[member])
             if not island:
                 # wait for what kept it awake to rest as long (its clock is watched)
                 for other in blocker:
-                    other_e = getattr(other, "kge_entity", None)
+                    other_e = self.body_entities.get(other)
                     if other_e is not None and other_e not in blockers:
                         blockers.add(other_e)
                         self._rest_epoch += 1
@@ -1033,7 +1051,7 @@ class Simulation:
                 body = poses.bodies[i]
                 if body.is_sleeping:
                     poses.asleep[i] = True
-                    body.kge_awake = False
+                    self.bodies[int(poses.entities[i])].awake = False
                     rb = self._targets.rigidbodies[0][i]
                     if rb is not None:
                         raw_set(rb, "awake", False)
@@ -1080,7 +1098,7 @@ class Simulation:
         for i in moved[has_rb[moved] & poses.asleep[moved]].tolist():
             poses.asleep[i] = False
             raw_set(rbs[i], "awake", True)
-            poses.bodies[i].kge_awake = True
+            self.bodies[int(poses.entities[i])].awake = True
 
     # -- teardown ---------------------------------------------------------------------------
     def close(self) -> None:
@@ -1088,14 +1106,15 @@ class Simulation:
             if rec.in_space:
                 rec.in_space = False
         self.bodies.clear()
+        self.body_entities.clear()
         self.colliders.clear()
         self.pending.clear()
 
 
-def _make_ccd(space: pymunk.Space, errors: CallbackErrors) -> Any:
+def _make_ccd(space: pymunk.Space, errors: CallbackErrors, shapes: ShapeTable) -> Any:
     """Continuous collision (kge.physics.ccd) when available; None otherwise."""
     try:
         from kge.physics.ccd import ContinuousCollision
     except ImportError:  # pragma: no cover - the module ships with kge
         return None
-    return ContinuousCollision(space, errors=errors)
+    return ContinuousCollision(space, errors=errors, shapes=shapes)

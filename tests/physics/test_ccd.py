@@ -19,6 +19,7 @@ from kge.components.filter import Filter
 from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.ccd import ContinuousCollision
 from kge.physics.filtering import to_pymunk
+from kge.physics.shape_table import ShapeTable
 from kge.physics.speed_cap import clamp_velocity
 
 DT = 1 / 60
@@ -27,12 +28,13 @@ WALL_X = 11.11
 PHASES = range(8)
 
 
-def tag(shape: pymunk.Shape, entity: int, flt: Filter | None = None) -> pymunk.Shape:
-    shape.kge_collider = entity
-    shape.kge_body = entity
-    shape.kge_filter = flt or Filter()
-    shape.filter = to_pymunk(shape.kge_filter)  # as the physics system does
-    shape.kge_oneway = None
+def tag(
+    space: pymunk.Space, shape: pymunk.Shape, entity: int, flt: Filter | None = None
+) -> pymunk.Shape:
+    """Register ``shape`` in the space's shape table as the physics system does."""
+    flt = flt or Filter()
+    ShapeTable.of(space).add(shape, entity, entity, filter=flt)
+    shape.filter = to_pymunk(flt)  # as the physics system does
     return shape
 
 
@@ -69,7 +71,7 @@ class Sim:
         if kind == pymunk.Body.STATIC:
             c, s = math.cos(angle), math.sin(angle)
             verts = [(pos[0] + c * x - s * y, pos[1] + s * x + c * y) for x, y in verts]
-        shape = tag(pymunk.Poly(body, verts, radius=SKIN), self._next(), flt)
+        shape = tag(self.space, pymunk.Poly(body, verts, radius=SKIN), self._next(), flt)
         shape.sensor = sensor
         if kind == pymunk.Body.STATIC:
             self.space.add(shape)
@@ -83,7 +85,7 @@ class Sim:
 
     def ball(self, pos: tuple[float, float], radius: float, *, bullet: bool = False) -> pymunk.Body:
         body = pymunk.Body()
-        shape = tag(pymunk.Circle(body, radius), self._next())
+        shape = tag(self.space, pymunk.Circle(body, radius), self._next())
         shape.density = 1.0
         body.position = pos
         self.space.add(body, shape)
@@ -178,7 +180,7 @@ def test_fast_kinematic_paddle_never_passes_over_a_resting_body(speed: float) ->
         sim = Sim()
         paddle = pymunk.Body(body_type=pymunk.Body.KINEMATIC)  # untracked, as kge leaves it
         verts = [(-0.05, -1.0), (0.05, -1.0), (0.05, 1.0), (-0.05, 1.0)]
-        sim.space.add(paddle, tag(pymunk.Poly(paddle, verts, radius=SKIN), 99))
+        sim.space.add(paddle, tag(sim.space, pymunk.Poly(paddle, verts, radius=SKIN), 99))
         paddle.position = (-phase * min(speed, 120.0) * DT / 8, 0.0)
         paddle.velocity = (speed, 0.0)
         ball = sim.ball((3.0, 0.0), 0.05)
@@ -202,7 +204,7 @@ def test_head_on_kinematic_wall_never_tunnels(wall_speed: float) -> None:
 
 def test_fast_fall_onto_a_thin_edge_lands_and_rests() -> None:
     sim = Sim(gravity=(0.0, -10.0))
-    ground = tag(pymunk.Segment(sim.space.static_body, (-5, 0), (5, 0), SKIN), 99)
+    ground = tag(sim.space, pymunk.Segment(sim.space.static_body, (-5, 0), (5, 0), SKIN), 99)
     sim.space.add(ground)
     ball = sim.ball((0.0, 5.0), 0.1)
     box = sim.box(pymunk.Body.DYNAMIC, (2.0, 5.0), (0.1, 0.1))
@@ -237,7 +239,9 @@ def test_sweep_respects_filters_sensors_and_joints() -> None:
     sim.box(pymunk.Body.STATIC, (5.0, 0.0), (0.05, 2.0), sensor=True)
     sim.box(pymunk.Body.STATIC, (7.0, 0.0), (0.05, 2.0), flt=Filter(group_index=-3))
     ghost = pymunk.Body()
-    shape = tag(pymunk.Circle(ghost, 0.05), 50, Filter(category_bits=0x4, group_index=-3))
+    shape = tag(
+        sim.space, pymunk.Circle(ghost, 0.05), 50, Filter(category_bits=0x4, group_index=-3)
+    )
     shape.density = 1.0
     sim.space.add(ghost, shape)
     sim.ccd.track(ghost)
@@ -260,12 +264,13 @@ def test_sweep_respects_filters_sensors_and_joints() -> None:
 def test_one_way_platform_lets_fast_bodies_through_from_below() -> None:
     sim = Sim(gravity=(0.0, -10.0))
     platform = tag(
+        sim.space,
         pymunk.Poly(
             sim.space.static_body, [(-3, 9.5), (3, 9.5), (3, 10.5), (-3, 10.5)], radius=SKIN
         ),
         77,
     )
-    platform.kge_oneway = ((0.0, 1.0), 0.5)
+    ShapeTable.of(sim.space).set_oneway(platform, ((0.0, 1.0), 0.5))
     sim.space.add(platform)
 
     def one_way(arb: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
@@ -345,7 +350,7 @@ def test_only_fast_bodies_are_armed_and_sliding_is_not_disturbed() -> None:
     sim = Sim(gravity=(0.0, -10.0))
     pts = [(x - 10.0, 0.0) for x in range(120)]
     for i, (a, b) in enumerate(itertools.pairwise(pts)):
-        seg = tag(pymunk.Segment(sim.space.static_body, a, b, SKIN), 200 + i)
+        seg = tag(sim.space, pymunk.Segment(sim.space.static_body, a, b, SKIN), 200 + i)
         seg.set_neighbors(pts[i - 1] if i else a, pts[i + 2] if i + 2 < len(pts) else b)
         seg.friction = 0.0
         sim.space.add(seg)
@@ -430,7 +435,10 @@ def test_pair_filter_is_honoured() -> None:
     calls: list[tuple[int, int]] = []
 
     def reject(a: pymunk.Shape, b: pymunk.Shape) -> bool:
-        calls.append((a.kge_collider, b.kge_collider))
+        table = ShapeTable.of(sim.space)
+        ca, cb = table.collider_of(a), table.collider_of(b)
+        assert ca is not None and cb is not None
+        calls.append((ca, cb))
         return False
 
     sim = Sim()
@@ -469,6 +477,7 @@ def _arena(seed: int, use_ccd: bool, n: int = 40, steps: int = 240) -> int:
     corners = [(-5.0, -5.0), (5.0, -5.0), (5.0, 5.0), (-5.0, 5.0)]
     for i in range(4):
         edge = tag(
+            sim.space,
             pymunk.Segment(sim.space.static_body, corners[i], corners[(i + 1) % 4], SKIN), 900 + i
         )
         edge.elasticity = 1.0
@@ -509,7 +518,7 @@ def _own_static_wall(sim: Sim, x: float, y: float = 0.0) -> tuple[pymunk.Body, p
     """A thin wall on its own static body (as kge makes one per static entity)."""
     body = pymunk.Body(body_type=pymunk.Body.STATIC)
     body.position = (x, y)
-    wall = tag(pymunk.Poly.create_box(body, (0.1, 4.0), radius=SKIN), sim._next())
+    wall = tag(sim.space, pymunk.Poly.create_box(body, (0.1, 4.0), radius=SKIN), sim._next())
     sim.space.add(body, wall)
     return body, wall
 

@@ -122,7 +122,7 @@ def _scene() -> tuple[pymunk.Space, pymunk.Body, list[pymunk.Shape]]:
     shapes: list[pymunk.Shape] = []
     for k in range(8):  # scenes side by side, as the batched LunarLander lays them
         points = [(32.0 * k + 2.0 * i, 0.4 * (i % 3)) for i in range(11)]
-        shapes += chain_segments(ground, points, False, 0.01, 0.0, {})
+        shapes += chain_segments(ground, points, False, 0.01, 0.0)
     paddle = pymunk.Poly.create_box(mover, (2.0, 0.2))
     shapes.append(paddle)
     add_shapes(space, shapes)
@@ -258,7 +258,7 @@ def test_reclassify_of_a_relaid_or_retyped_body_indexes_what_the_space_holds() -
     moon = pymunk.Body(body_type=pymunk.Body.STATIC)
     other = pymunk.Body(body_type=pymunk.Body.STATIC)
     space.add(moon, other)
-    first = chain_segments(moon, [(float(i), 0.0) for i in range(6)], False, 0.01, 0.0, {})
+    first = chain_segments(moon, [(float(i), 0.0) for i in range(6)], False, 0.01, 0.0)
     add_shapes(space, first)
     obs = _refreshed(space)
     obs.reclassify(moon)
@@ -266,7 +266,7 @@ def test_reclassify_of_a_relaid_or_retyped_body_indexes_what_the_space_holds() -
     for step in range(3):  # re-laid: the old segments leave, new ones join
         space.remove(*first)
         first = chain_segments(moon, [(float(i), 1.0 + step) for i in range(6)], False, 0.01,
-                               0.0, {})
+                               0.0)
         add_shapes(space, first)
         obs.reclassify(moon)
         _indexed_like_the_space(obs, space, [moon, other])
@@ -314,7 +314,7 @@ def test_nearby_rows_that_left_the_space_are_skipped_until_the_table_is_empty() 
     space = pymunk.Space()
     ground = pymunk.Body(body_type=pymunk.Body.STATIC)
     space.add(ground)
-    segments = chain_segments(ground, [(float(i), 0.0) for i in range(4)], False, 0.01, 0.0, {})
+    segments = chain_segments(ground, [(float(i), 0.0) for i in range(4)], False, 0.01, 0.0)
     add_shapes(space, segments)
     obs = _refreshed(space)
     near = obs.nearby(np.array([1.5]), np.array([0.0]), np.array([5.0]))[0]

@@ -11,6 +11,8 @@ are pinned against pymunk-built shapes in ``tests/physics/test_static_bulk.py``.
 
 from __future__ import annotations
 
+import gc
+import weakref
 from collections.abc import Callable
 from typing import Any
 
@@ -18,6 +20,7 @@ import pymunk
 import pymunk.batch as pb
 import pytest
 
+from kge.physics.callback_errors import CallbackErrors
 from kge.physics.cp import (
     FUNCTIONS,
     arbiter_handle,
@@ -35,6 +38,7 @@ from kge.physics.cp import (
 )
 from kge.physics.cp.bulk import ArbiterBodies, BodyReader
 from kge.physics.cp.capi import signature
+from kge.physics.cp.collisions import route_contacts
 
 
 def _xy(v: Any) -> tuple[float, float]:
@@ -348,6 +352,8 @@ def test_arbiter_functions_match_public() -> None:
         assert lib.cpArbiterGetFriction(ca) == arb.friction
         assert _xy(lib.cpArbiterGetSurfaceVelocity(ca)) == tuple(arb.surface_velocity)
         assert lib.cpArbiterGetProcessCollision(ca) == arb.process_collision == 1
+        lib.cpArbiterSetRestitution(ca, 0.25)
+        assert arb.restitution == 0.25
         lib.cpArbiterSetProcessCollision(ca, False)
         assert not arb.process_collision
         seen.append(True)
@@ -393,3 +399,46 @@ def test_arbiter_bodies_reader_matches_pymunk_batch() -> None:
     pb.get_space_arbiters(space, pb.ArbiterFields.BODY_A_ID | pb.ArbiterFields.BODY_B_ID, data)
     assert len(ids) == 6  # two bodies per contact
     assert ids == list(memoryview(data.int_buf()).cast("P"))
+
+
+def test_routed_contacts_get_the_arbiter_pymunk_would_wrap() -> None:
+    space = pymunk.Space()
+    body = pymunk.Body(1.0, 1.0)
+    ball, floor = pymunk.Circle(body, 0.5), pymunk.Circle(space.static_body, 0.5)
+    space.add(body, ball, floor)
+    seen: list[tuple[str, tuple[pymunk.Shape, ...]]] = []
+    errors = CallbackErrors()
+
+    def shapes(arb: Any) -> tuple[pymunk.Shape, ...]:
+        sa, sb = ffi.new("cpShape **"), ffi.new("cpShape **")
+        lib.cpArbiterGetShapes(arb, sa, sb)
+        return (ffi.from_handle(lib.cpShapeGetUserData(sa[0])),
+                ffi.from_handle(lib.cpShapeGetUserData(sb[0])))
+
+    def begin(arb: Any) -> None:
+        seen.append(("begin", shapes(arb)))
+        raise ValueError("kept, not printed")
+
+    route_contacts(space, begin, lambda arb: seen.append(("end", shapes(arb))), errors)
+    space.step(0.01)
+    space.remove(ball)
+    assert [kind for kind, _ in seen] == ["begin", "end"]
+    assert {s for _, pair in seen for s in pair} == {ball, floor}
+    with pytest.raises(ValueError, match="kept"):
+        errors.raise_pending()
+
+
+def test_a_routed_space_and_its_handler_object_are_collected() -> None:
+    class Owner:
+        def __init__(self) -> None:
+            self.space = pymunk.Space()  # the handler's object holds its space
+            route_contacts(self.space, self.begin, self.begin, None)
+
+        def begin(self, arb: Any) -> None:
+            pass
+
+    owner = Owner()
+    gone = weakref.ref(owner.space)
+    del owner
+    gc.collect()
+    assert gone() is None

@@ -1,9 +1,9 @@
 """Box2D query semantics (box2d-reference.md rows QueryAABB, RayCast callback,
 shape TestPoint / RayCast) on hand-built pymunk spaces.
 
-Shapes carry the attributes the physics system sets (``kge_collider``,
-``kge_body``, ``kge_filter``, ``sensor``) and the 0.01 m polygon/edge skin,
-so these tests see exactly what queries see inside a running kge world.
+Shapes are registered in the space's shape table as the physics system does it
+(collider and body entity, filter, sensor flag) and carry the 0.01 m polygon/edge
+skin, so these tests see exactly what queries see inside a running kge world.
 """
 
 from __future__ import annotations
@@ -21,14 +21,16 @@ from kge.components.shapes import Box, Chain, Circle, Edge, Polygon
 from kge.components.transform import Transform
 from kge.errors import ComponentTypeError, ValidationError
 from kge.physics.queries import QueryHit, RayHit, query_aabb, query_point, query_shape, raycast
+from kge.physics.shape_table import ShapeTable
 
 SKIN = 0.01
 
 
-def _tag(shape: pymunk.Shape, collider: int, body: int | None, flt: Filter, sensor: bool) -> None:
-    shape.kge_collider = collider
-    shape.kge_body = body
-    shape.kge_filter = flt
+def _tag(
+    space: pymunk.Space, shape: pymunk.Shape, collider: int, body: int | None, flt: Filter,
+    sensor: bool,
+) -> None:
+    ShapeTable.of(space).add(shape, collider, body, filter=flt, sensor=sensor)
     shape.sensor = sensor
 
 
@@ -79,7 +81,7 @@ class Scene:
         for s in shapes:
             if dynamic:
                 s.density = 1.0
-            _tag(s, entity, body_entity, flt or Filter(), sensor)
+            _tag(self.space, s, entity, body_entity, flt or Filter(), sensor)
         self.space.add(body, *shapes)
         return entity
 
@@ -503,7 +505,7 @@ def test_ray_cast_matches_pymunk_on_skinless_twins() -> None:
                 shape = pymunk.Segment(body, (-1, 0), (1, 0.5), skin)
             else:
                 shape = pymunk.Poly(body, [(0, 0), (1, 0), (1.2, 0.8), (0.1, 1)], radius=skin)
-            _tag(shape, entity, None, Filter(), False)
+            _tag(space, shape, entity, None, Filter(), False)
             space.add(body, shape)
     checked = 0
     for _ in range(300):
@@ -517,7 +519,8 @@ def test_ray_cast_matches_pymunk_on_skinless_twins() -> None:
         )
         assert isinstance(ours, list)
         assert [h.fraction for h in ours] == pytest.approx([i.alpha for i in theirs], abs=1e-9)
-        assert {h.collider for h in ours} == {i.shape.kge_collider for i in theirs}
+        table = ShapeTable.of(bare)
+        assert {h.collider for h in ours} == {table.collider_of(i.shape) for i in theirs}
         closest = raycast(skinned, p1, p2)
         assert closest == (ours[0] if ours else None)
         checked += bool(ours)

@@ -34,7 +34,7 @@ def _space() -> tuple[pymunk.Space, pymunk.Body]:
 def test_segments_match_pymunks_own() -> None:
     space, body = _space()
     pf = pymunk.ShapeFilter(categories=2, mask=5)
-    segs = chain_segments(body, LOOP, True, 0.01, 0.5, {"kge_collider": 7}, pf, False)
+    segs = chain_segments(body, LOOP, True, 0.01, 0.5, pf, False)
     assert len(segs) == len(LOOP)
     for i, s in enumerate(segs):
         ref = pymunk.Segment(None, LOOP[i], LOOP[(i + 1) % len(LOOP)], 0.01)
@@ -42,7 +42,7 @@ def test_segments_match_pymunks_own() -> None:
         assert (s.a, s.b, s.radius) == (ref.a, ref.b, ref.radius)
         assert s.friction == 0.5 and s.filter == pf and not s.sensor
         assert s.body is body and s.space is None
-        assert (s.kge_collider, s.kge_child) == (7, i)
+        assert not any(k.startswith("kge_") for k in vars(s))  # kge's data is in its table
     assert set(body.shapes) == set(segs)
     twin = pickle.loads(pickle.dumps(segs[2]))  # pymunk's own pickling works on them
     assert (twin.a, twin.b, twin.friction, twin.filter) == (segs[2].a, segs[2].b, 0.5, pf)
@@ -60,7 +60,7 @@ def _slide(bulk: bool) -> list[tuple[float, float, float]]:
     space, body = _space()
     floor = [(-30.0 + i, 0.0) for i in range(61)]
     if bulk:
-        add_shapes(space, chain_segments(body, floor, False, 0.01, 0.0, {}))
+        add_shapes(space, chain_segments(body, floor, False, 0.01, 0.0))
     else:  # pymunk's documented way, neighbours as kge set them before the bulk path
         n = len(floor)
         for i in range(n - 1):
@@ -89,7 +89,7 @@ def test_many_segments_add_in_bulk_and_are_freed() -> None:
     space, body = _space()
     n = 200
     pts = [(math.cos(2 * math.pi * i / n) * 10, math.sin(2 * math.pi * i / n) * 10) for i in range(n)]
-    segs = chain_segments(body, pts, True, 0.0, 0.2, {})
+    segs = chain_segments(body, pts, True, 0.0, 0.2)
     add_shapes(space, segs)  # the bulk path (16 or more shapes)
     assert len(space.shapes) == n and all(s.space is space for s in segs)
     assert space.point_query_nearest((10.0, 0.0), 0.1, pymunk.ShapeFilter()) is not None
@@ -106,13 +106,13 @@ def test_many_segments_add_in_bulk_and_are_freed() -> None:
 def test_add_shapes_refuses_and_rolls_back() -> None:
     space, body = _space()
     pts = [(float(i), 0.0) for i in range(60)]
-    segs = chain_segments(body, pts, False, 0.0, 0.0, {})
+    segs = chain_segments(body, pts, False, 0.0, 0.0)
     add_shapes(space, segs[:20])
     with pytest.raises(AssertionError, match="already added"):
         add_shapes(space, segs[20:] + segs[:1])  # 39 fresh ones, then one already in
     assert len(space.shapes) == 20 and all(s.space is None for s in segs[20:])
     other = pymunk.Body(body_type=pymunk.Body.STATIC)  # not in the space
-    loose = chain_segments(other, pts, False, 0.0, 0.0, {})
+    loose = chain_segments(other, pts, False, 0.0, 0.0)
     with pytest.raises(AssertionError, match="body must be added"):
         add_shapes(space, loose)
     assert len(space.shapes) == 20
@@ -121,7 +121,7 @@ def test_add_shapes_refuses_and_rolls_back() -> None:
 def test_obstacle_rows_in_bulk_equal_one_by_one() -> None:
     space, body = _space()
     pts = [(float(i), float(i % 3)) for i in range(40)]
-    segs = chain_segments(body, pts, False, 0.05, 0.0, {})
+    segs = chain_segments(body, pts, False, 0.05, 0.0)
     add_shapes(space, segs)
     dyn = pymunk.Body(1.0, 1.0)
     ball = pymunk.Circle(dyn, 0.5)
@@ -140,14 +140,14 @@ def test_obstacle_rows_in_bulk_equal_one_by_one() -> None:
 
 def test_obstacle_rows_are_reused_after_removals() -> None:
     space, body = _space()
-    first = chain_segments(body, [(float(i), 0.0) for i in range(41)], False, 0.0, 0.0, {})
+    first = chain_segments(body, [(float(i), 0.0) for i in range(41)], False, 0.0, 0.0)
     add_shapes(space, first)
     obs = Obstacles(space)
     obs._classify_many(first)
     space.remove(*first[:10])
     obs._classify_many(first[:10])  # out of the space: their rows are freed
     assert obs.live == 30 and len(obs._free) == 10
-    more = chain_segments(body, [(float(i), 5.0) for i in range(21)], False, 0.0, 0.0, {})
+    more = chain_segments(body, [(float(i), 5.0) for i in range(21)], False, 0.0, 0.0)
     add_shapes(space, more)
     obs._classify_many(more)  # 10 rows reused, 10 appended
     assert obs.live == 50 and not obs._free and len(obs.shapes) == 50
@@ -174,7 +174,7 @@ def test_a_new_static_owner_does_not_reread_every_other_box() -> None:
         body = pymunk.Body(body_type=pymunk.Body.STATIC)
         space.add(body)
         add_shapes(space, chain_segments(body, [(float(i), k * 2.0) for i in range(21)],
-                                         False, 0.0, 0.0, {}))
+                                         False, 0.0, 0.0))
         obs.reclassify(body)
     for order in (0, 0, 0):
         obs.refresh(*_read(space), order)  # settled: every owner seen, nothing moved
@@ -191,7 +191,7 @@ def test_a_new_static_owner_does_not_reread_every_other_box() -> None:
     body = pymunk.Body(body_type=pymunk.Body.STATIC)
     space.add(body)
     add_shapes(space, chain_segments(body, [(float(i), -5.0) for i in range(21)],
-                                     False, 0.0, 0.0, {}))
+                                     False, 0.0, 0.0))
     obs.reclassify(body)
     obs.refresh(*_read(space), 1)
     obs.refresh(*_read(space), 1)
@@ -219,7 +219,7 @@ def _resting_ball(space: pymunk.Space) -> pymunk.Body:
 
 def _removed_with_callbacks(bulk: bool) -> None:
     space, body = _space()
-    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0, {})
+    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0)
     add_shapes(space, segs)
     ball = _resting_ball(space)
     (circle,) = ball.shapes
@@ -249,7 +249,7 @@ def test_remove_shapes_is_space_remove(bulk: bool) -> None:
 
 def test_remove_shapes_in_a_locked_space_waits_for_the_step_end() -> None:
     space, body = _space()
-    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0, {})
+    segs = chain_segments(body, [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0)], False, 0.0, 0.0)
     add_shapes(space, segs)
     _resting_ball(space)
     during: list[bool] = []
@@ -269,7 +269,7 @@ def test_reinit_segments_makes_new_segments_in_place() -> None:
     old = [(0.0, 0.0), (2.0, 1.0), (4.0, 0.0), (6.0, 1.0)]
     new = [(0.0, -1.0), (3.0, 2.0), (5.0, 2.0), (8.0, -1.0)]
     pf = pymunk.ShapeFilter(categories=2, mask=5)
-    segs = chain_segments(body, old, False, 0.01, 0.5, {}, None, False)
+    segs = chain_segments(body, old, False, 0.01, 0.5, None, False)
     add_shapes(space, segs)
     with pytest.raises(ValueError, match="in a space"):
         reinit_segments(segs, body, chain_ends(new, False), 0.01, 0.5)
@@ -278,7 +278,7 @@ def test_reinit_segments_makes_new_segments_in_place() -> None:
     with pytest.raises(ValueError, match="pairs of ends"):
         reinit_segments(segs[:2], body, chain_ends(new, False), 0.01, 0.5)
     reinit_segments(segs, body, chain_ends(new, False), 0.02, 0.3, pf, True)
-    fresh = chain_segments(body, new, False, 0.02, 0.3, {}, pf, True)
+    fresh = chain_segments(body, new, False, 0.02, 0.3, pf, True)
     for s, f in zip(segs, fresh, strict=True):
         assert (s.a, s.b, s.normal, s.radius, s.friction, s.filter, s.sensor) == (
             f.a, f.b, f.normal, f.radius, f.friction, f.filter, f.sensor)

@@ -105,7 +105,7 @@ def _read(space: pymunk.Space) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def _chain(body: pymunk.Body, y: float) -> list[pymunk.Segment]:
     points = [(float(i), y + 0.3 * (i % 2)) for i in range(12)]
-    return chain_segments(body, points, False, 0.01, 0.0, {})
+    return chain_segments(body, points, False, 0.01, 0.0)
 
 
 def test_a_relaid_chain_keeps_its_owner_and_is_read_once() -> None:

@@ -186,10 +186,11 @@ def check_invariants(pw: PhysicsWorld | AppProbe) -> None:
     for constraint in space.constraints:
         assert id(constraint) in owned, "a constraint in the space belongs to no live joint"
     # -- contacts -------------------------------------------------------------------
+    table = sim.shapes
     active = {
-        ("sensor" if sensor else "contact", a.kge_collider, b.kge_collider, a.kge_child,
-         b.kge_child)
-        for a, b, sensor in sim.recorder.active.values()
+        ("sensor" if sensor else "contact", int(table.collider[a]), int(table.collider[b]),
+         int(table.child[a]), int(table.child[b]))
+        for (a, b), sensor in sim.recorder.active.items()
     }
     # ends produced by that sync are held for the next step's lists
     carried = world.resource(Physics)._carried
@@ -257,9 +258,13 @@ def check_no_leftovers(pw: PhysicsWorld | AppProbe) -> None:
                  "mass_dirty", "ccd_dirty"):
         assert not getattr(sim, name), f"Simulation.{name} not empty after a step"
     assert set(sim.poses.slot) <= set(sim.bodies), "pose table keeps dead bodies"
-    shapes = {id(s) for c in sim.colliders.values() for s in c.shapes}
+    table = sim.shapes
+    slots = {table.slot(s) for c in sim.colliders.values() for s in c.shapes}
     for key in sim.recorder.active:
-        assert key[0] in shapes and key[1] in shapes, "live contact of a removed shape"
+        assert key[0] in slots and key[1] in slots, "live contact of a removed shape"
+    assert len(table) == sum(len(c.shapes) for c in sim.colliders.values()), (
+        "the shape table keeps rows of removed shapes"
+    )
     assert len(sim.recorder._pre_cache) <= len(sim.recorder.active)
     ccd = sim.ccd
     if ccd is not None:

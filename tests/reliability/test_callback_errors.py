@@ -98,7 +98,7 @@ def test_a_failing_sweep_raises_from_the_step(
 def test_a_failing_contact_handler_raises_from_the_step(
     unraisable: list[Any], monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def failing(self: Any, arb: Any, space: Any, data: Any) -> None:
+    def failing(self: Any, arb: Any) -> None:  # kge's begin gets Chipmunk's arbiter
         raise Boom("begin")
 
     monkeypatch.setattr(ContactRecorder, "_begin", failing)  # before the handlers are bound

@@ -45,10 +45,11 @@ solver fails to stop at a contact the world accepted (crushed by others, or
 spinning into a wall): it is held for that substep and its approach removed.
 
 The sweep honours everything that decides whether two colliders touch: same
-body, sensors, Box2D filtering (``shape.kge_filter``), joints without
-``collide_bodies``, one-way platforms (``shape.kge_oneway``), an optional
-``pair_filter`` (the world's contact filter) and, for the guard, the contacts
-pymunk actually accepted in the last substep (pre-solve hooks). Moving
+body, sensors, Box2D filtering and one-way platforms (read from the space's
+:class:`~kge.physics.shape_table.ShapeTable`), joints without
+``collide_bodies``, an optional ``pair_filter`` (the world's contact filter)
+and, for the guard, the contacts pymunk actually accepted in the last substep
+(pre-solve hooks). Moving
 obstacles (kinematic bodies, and dynamic ones for bullets) are swept against
 in their own frame; a kinematic one carries what it hits along for the rest
 of the substep (never through static geometry), so a fast paddle pushes a

@@ -24,6 +24,7 @@ from kge.physics.ccd.parts import extent_of, parts_of
 from kge.physics.ccd.sweep import Tracked, grown
 from kge.physics.cp import body_shapes, shape_space
 from kge.physics.cp.bulk import BodyReader
+from kge.physics.shape_table import ShapeTable
 from kge.physics.speed_cap import clamp_one, largest, screen
 from kge.validate import boolean, integer, non_negative, positive
 
@@ -128,6 +129,7 @@ class ContinuousCollision:
         margin: float = 0.01,
         pair_filter: PairFilter | None = None,
         errors: CallbackErrors | None = None,
+        shapes: ShapeTable | None = None,
     ) -> None:
         if not isinstance(space, pymunk.Space):
             raise ComponentTypeError(
@@ -136,6 +138,8 @@ class ContinuousCollision:
         if pair_filter is not None and not callable(pair_filter):
             raise ComponentTypeError("ContinuousCollision.pair_filter must be callable or None")
         self.space = space
+        #: kge's data about the space's shapes (their filters and one-way platforms)
+        self.shapes = shapes if shapes is not None else ShapeTable.of(space)
         self.max_translation = positive(max_translation, "ContinuousCollision", "max_translation")
         self.max_rotation = positive(max_rotation, "ContinuousCollision", "max_rotation")
         self.threshold = positive(threshold, "ContinuousCollision", "threshold")

@@ -23,7 +23,6 @@ from typing import TYPE_CHECKING, Any
 
 import pymunk
 
-from kge.components.filter import Filter
 from kge.physics.ccd.parts import Part
 from kge.physics.cp import body_constraints, body_handle, shape_handle
 from kge.physics.cp import lib as _lib
@@ -37,7 +36,6 @@ if TYPE_CHECKING:
 #: (fraction, carry dx, carry dy, hold normal or None), see Tracked._time_of_impact
 _Impact = tuple[float, float, float, tuple[float, float] | None]
 _ALL = pymunk.ShapeFilter()
-_DEFAULT_FILTER = Filter()
 _DYNAMIC = pymunk.Body.DYNAMIC
 _KINEMATIC = pymunk.Body.KINEMATIC
 _STATIC = pymunk.Body.STATIC
@@ -204,7 +202,7 @@ class Tracked:
                     ob.body_type == _KINEMATIC
                     or (ob.body_type == _DYNAMIC and not self.owner._is_bullet(ob))
                 )
-                flt = getattr(s, "kge_filter", None) or _DEFAULT_FILTER
+                flt = self.owner.shapes.filter_of(s)
                 obstacles.append((s, s.bb, flt, ov[0] * dt, ov[1] * dt, carries))
         if not obstacles:
             return None
@@ -232,7 +230,7 @@ class Tracked:
             own = part.shape
             if own.sensor:
                 continue
-            own_filter = getattr(own, "kge_filter", None) or _DEFAULT_FILTER
+            own_filter = self.owner.shapes.filter_of(own)
             targets = [
                 (o, bb, odx, ody, carries)
                 for o, bb, f, odx, ody, carries in obstacles
@@ -274,7 +272,7 @@ class Tracked:
                         approach = -(nx * (tx - sx) + ny * (ty - sy))
                         if approach <= 0.0:
                             continue  # moving away from (or along) that surface
-                        one_way = getattr(other, "kge_oneway", None)
+                        one_way = self.owner.shapes.oneway_of(other)
                         if one_way is not None:
                             (ux, uy), min_cos = one_way
                             if nx * ux + ny * uy < min_cos:

@@ -3,7 +3,8 @@
 pymunk 7.3 is kge's physics backend through its public API, plus a private layer
 some hot paths need: Chipmunk's C functions (:mod:`.capi`), the private fields that
 hold each object's C struct and relations (:mod:`.handles`), pymunk's batch buffers
-(:mod:`.bulk`) and the chain-segment fast path that builds and re-initialises
+(:mod:`.bulk`), the contact callbacks that skip pymunk's per-call wrapper
+(:mod:`.collisions`) and the chain-segment fast path that builds and re-initialises
 pymunk shapes itself (:mod:`.static_bulk`). Everything of that layer kge uses is
 named here and pinned, function by function, to pymunk's public behaviour in
 ``tests/physics/test_door.py``; ``tests/architecture/test_door_only.py`` fails when

@@ -56,6 +56,10 @@ FUNCTIONS: dict[str, tuple[str, str]] = {
         "void(*)(struct cpArbiter *, unsigned char)",
         "Arbiter.process_collision =",
     ),
+    "cpArbiterSetRestitution": (
+        "void(*)(struct cpArbiter *, double)",
+        "Arbiter.restitution =",
+    ),
     "cpBodyEachArbiter": (
         "void(*)(struct cpBody *, void(*)(struct cpBody *, struct cpArbiter *, void *), void *)",
         "Body.each_arbiter",

@@ -71,14 +71,12 @@ def chain_segments(
     loop: bool,
     radius: float,
     friction: float,
-    attrs: dict[str, Any],
     shape_filter: pymunk.ShapeFilter | None = None,
     sensor: bool = False,
 ) -> list[pymunk.Segment]:
-    """The segments of one chain on ``body``, neighbours set, not yet in a space.
+    """The segments of one chain on ``body``, in chain order, neighbours set, not yet
+    in a space (kge's data about them lives in :mod:`kge.physics.shape_table`).
 
-    ``attrs`` (the kge_* attributes shared by every segment of the collider) is
-    copied onto each; ``kge_child`` is the segment's index in the chain.
     ``shape_filter`` (None: pymunk's default) and ``sensor`` are set on each.
     Neighbours: see :func:`chain_ends`.
     """
@@ -101,8 +99,6 @@ def chain_segments(
     for i in range(len(A)):
         seg = make(cls)
         d = seg.__dict__
-        d.update(attrs)
-        d["kge_child"] = i
         d["_body"] = body_ref
         c = new_segment(cp_body, A[i], B[i], radius)
         d["_shape"] = gc(c, _shape_free)
