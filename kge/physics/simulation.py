@@ -44,6 +44,7 @@ from kge.physics.bodies import (
     sleep_island,
     take_out,
     wake_neighbours,
+    woken_with,
 )
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.contact_first import ContactFirst
@@ -667,12 +668,25 @@ class Simulation:
         if rb.awake != body.kge_awake:  # the user wrote awake
             if rb.awake and body.is_sleeping:
                 body.activate()
+                self._mark_awake(e, rb)
             elif not rb.awake and not body.is_sleeping and rb.allow_sleep:
                 self._put_to_sleep(rec, rb)
         elif not body.is_sleeping and not rb.awake:
             self._mark_awake(e, rb)  # a velocity write woke it
 
     def _mark_awake(self, e: int, rb: RigidBody) -> None:
+        body = self.bodies[e].body
+        was_asleep = not body.kge_awake
+        self._awake_now(e, rb)
+        if was_asleep and body.space is self.space:
+            # its sleeping island woke with it, moving or not (see bodies.woken_with)
+            for other in woken_with(self.space, body):
+                other_e = getattr(other, "kge_entity", None)
+                other_rb = None if other_e is None else self.world.try_get(other_e, RigidBody)
+                if other_rb is not None and self.bodies[other_e].body is other:
+                    self._awake_now(other_e, other_rb)
+
+    def _awake_now(self, e: int, rb: RigidBody) -> None:
         raw_set(rb, "awake", True)
         self.bodies[e].body.kge_awake = True
         i = self.poses.slot.get(e)
@@ -733,6 +747,8 @@ class Simulation:
         if i is not None and not self.poses_stale:
             self.poses.asleep[i] = True
             self.poses.state[i, 3:] = 0.0
+            self.poses.rest[i] = 0.0  # Box2D: a woken body's clock starts from zero
+        self.rest.slept(e)
 
     def _flush_mass(self, e: int) -> None:
         """Apply a pending mass change now (it wakes the body, so before it sleeps)."""
@@ -926,12 +942,13 @@ class Simulation:
         """Read every moving body once and write the ones that changed to their
         components (:meth:`_write_out`); then Box2D's sleep rule for jointed islands."""
         self._write_out(raw)
-        if self.joints.handles:
+        if self.joints.handles or self.rest.pushed:
             self._rest_check()
 
     def _rest_check(self) -> None:
-        """Put to sleep the jointed islands whose bodies all rested for time_to_sleep
-        (kge.physics.rest: the joints' passes restart Chipmunk's own timer)."""
+        """Put to sleep the jointed or pushed islands whose bodies all rested for
+        time_to_sleep (kge.physics.rest: the joints' passes, forces and impulses restart
+        Chipmunk's own timer)."""
         s = self.settings
         if not s.sleep or self.poses_stale:
             return

@@ -132,9 +132,6 @@ def _asleep_from(trace: list[int]) -> int:
     ("apply_force", 90),  # 29: its ship is damped
     pytest.param("collision_filtering", 180, marks=pytest.mark.xfail(strict=True, reason=(
         "the box held on the ground by a prismatic joint creeps at 2 cm/s on kge"))),  # 103
-    pytest.param("top_down_car", 660, marks=pytest.mark.xfail(strict=True, reason=(
-        "an impulse every step (the tyres' friction) restarts Chipmunk's sleep clock; "
-        "Box2D's only wakes a sleeping body"))),  # 599
 ])
 def test_the_example_falls_asleep_as_on_pybox2d(name: str, frames: int) -> None:
     """Left alone (no key pressed), the example's dynamic bodies fall asleep on both
@@ -149,3 +146,16 @@ def test_the_example_falls_asleep_as_on_pybox2d(name: str, frames: int) -> None:
     # kge's bodies come to rest along other paths (its integrator and solver are
     # pymunk's): pybox2d's pulley sleeps from frame 238, kge.box2d's from 262
     assert abs(_asleep_from(got) - _asleep_from(ref)) <= max(30, _asleep_from(ref) // 4)
+
+
+def test_top_down_car_s_tyres_sleep_and_wake_as_on_pybox2d() -> None:
+    """The car stands still, and each frame its tyres get their friction impulses and
+    drag force with ``wake=True``. Box2D lets the island sleep after 0.5 s at rest
+    (pushes do not restart an awake body's clock), and the next frame's pushes wake it
+    for another 0.5 s: every body asleep after frames 29, 59, 89... on pybox2d. kge's
+    tyres never slept when each push restarted Chipmunk's own sleep timer."""
+    runs = _both("top_down_car", 200, _awake)
+    ref, got = runs["pybox2d"].trace, runs["kge"].trace
+    asleep = {e: [i for i, n in enumerate(r.trace) if not n] for e, r in runs.items()}
+    assert asleep["pybox2d"] == [29, 59, 89, 119, 149, 179]
+    assert asleep["kge"] == asleep["pybox2d"], (got, ref)
