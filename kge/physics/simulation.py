@@ -681,10 +681,13 @@ class Simulation:
         if was_asleep and body.space is self.space:
             # its sleeping island woke with it, moving or not (see bodies.woken_with)
             for other in woken_with(self.space, body):
-                other_e = getattr(other, "kge_entity", None)
-                other_rb = None if other_e is None else self.world.try_get(other_e, RigidBody)
-                if other_rb is not None and self.bodies[other_e].body is other:
-                    self._awake_now(other_e, other_rb)
+                other_e: int | None = getattr(other, "kge_entity", None)
+                rec = None if other_e is None else self.bodies.get(other_e)
+                if rec is None or rec.body is not other:
+                    continue
+                other_rb = self.world.try_get(rec.entity, RigidBody)
+                if other_rb is not None:
+                    self._awake_now(rec.entity, other_rb)
 
     def _awake_now(self, e: int, rb: RigidBody) -> None:
         raw_set(rb, "awake", True)
