@@ -215,6 +215,7 @@ if TYPE_CHECKING:
         from_array,
         solid,
     )
+    from kge.render.sheets import SheetError, SpriteSheet, load_sheet
     from kge.scaffold import ScaffoldError
     from kge.systems.animation import AnimationPlugin, Animations, shake
     from kge.systems.audio import AudioPlugin
@@ -248,6 +249,9 @@ _LAZY = {
     "checker": "kge.render.images",
     "from_array": "kge.render.images",
     "solid": "kge.render.images",
+    "SheetError": "kge.render.sheets",
+    "SpriteSheet": "kge.render.sheets",
+    "load_sheet": "kge.render.sheets",
     "AudioPlugin": "kge.systems.audio",
     "AnimationPlugin": "kge.systems.animation",
     "Animations": "kge.systems.animation",
@@ -420,12 +424,14 @@ __all__ = [
     "Shader",
     "ShaderWarning",
     "ShadowCaster",
+    "SheetError",
     "SnapshotError",
     "SoundData",
     "SoundHandle",
     "Spawn",
     "Spawners",
     "Sprite",
+    "SpriteSheet",
     "Stage",
     "StepTimeout",
     "System",
@@ -471,6 +477,7 @@ __all__ = [
     "load_game",
     "load_map",
     "load_scene",
+    "load_sheet",
     "register_script",
     "register_type",
     "run",

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 from importlib.util import find_spec
 
-REQUIRED = ("esper", "numpy", "pymunk", "pyglet", "pytiled_parser")
+REQUIRED = ("esper", "numpy", "pymunk", "pyglet", "soundfile")
 
 for _name in REQUIRED:
     if find_spec(_name) is None:

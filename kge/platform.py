@@ -9,6 +9,7 @@ False
 from __future__ import annotations
 
 import os
+import stat
 import sys
 
 
@@ -23,3 +24,18 @@ def has_display() -> bool:
     if sys.platform.startswith("linux") or "bsd" in sys.platform:
         return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
     return True
+
+
+def regular_file_size(path: str | os.PathLike[str]) -> int:
+    """The size of the regular file at ``path``, or a ``ValueError`` whose message
+    completes "<the file> ...": ``not found``, ``unreadable (<why>)`` or ``is not a
+    regular file`` (a folder, a device or a pipe, which a loader must not open)."""
+    try:
+        st = os.stat(path)
+    except FileNotFoundError:
+        raise ValueError("not found") from None
+    except OSError as exc:
+        raise ValueError(f"unreadable ({exc})") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise ValueError("is not a regular file")
+    return st.st_size

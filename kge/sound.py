@@ -50,6 +50,8 @@ class SoundData:
             raise ValidationError(f"SoundData.channels must be 1 or 2, got {self.channels!r}")
         if not 1000 <= self.rate <= 192000:
             raise ValidationError(f"SoundData.rate must be in [1000, 192000], got {self.rate!r}")
+        if not self.samples:
+            raise ValidationError("SoundData.samples is empty: a sound needs at least one frame")
         if len(self.samples) % (2 * self.channels):
             raise ValidationError("SoundData.samples must hold whole 16-bit frames")
         if not self.samples:  # no player can start a sound of no frames

@@ -64,7 +64,7 @@ demo_stamp="$VENV/.kge-installed-demo"
 test_stamp="$VENV/.kge-installed-test"
 if ! fresh "$test_stamp" && ! fresh "$demo_stamp"; then
   "$VENV/bin/python" -m pip install -q --upgrade pip >/dev/null 2>&1 || true
-  pip_step "kge and its runtime dependencies (pymunk, esper, pyglet, numpy, Pillow, pytiled-parser)" \
+  pip_step "kge and its runtime dependencies (pymunk, esper, pyglet, numpy, Pillow, soundfile, zstandard)" \
     "$demo_stamp" "."
 fi
 if [ "$PROFILE" = test ] && ! fresh "$test_stamp"; then

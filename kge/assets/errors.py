@@ -50,4 +50,5 @@ class AssetDecodeError(AssetError, ValueError):
 
 
 class DecoderMissingError(AssetDecodeError):
-    """No decoder for this audio format is installed (OGG/MP3 without FFmpeg or PyOgg)."""
+    """No decoder for a format is installed. kge no longer raises it (soundfile decodes
+    WAV, OGG, MP3 and FLAC with no system library); kept so code catching it imports."""

@@ -8,8 +8,8 @@ there is no display and GL is not loaded yet. Everything else in
 :mod:`kge.assets` stays importable and testable without pyglet.
 
 Decoder failures are translated into :class:`~kge.assets.errors.AssetDecodeError`
-with a hint: pyglet reads WAV by itself, but OGG, MP3 and FLAC need FFmpeg's
-shared libraries (or PyOgg for OGG/FLAC), and the error says so.
+naming the file. Sounds are decoded by soundfile (:mod:`kge.assets.sounds`):
+WAV, OGG, MP3 and FLAC need no system library.
 """
 
 from __future__ import annotations
@@ -20,26 +20,13 @@ import sys
 from types import ModuleType
 from typing import Any
 
-from kge.assets.errors import AssetDecodeError, DecoderMissingError
+from kge.assets.errors import AssetDecodeError
 from kge.assets.locate import Found
 from kge.sound import SoundData
 
 IMAGE_SUFFIXES = frozenset({".png", ".jpg", ".jpeg", ".bmp", ".gif", ".dds", ".tga"})
 SOUND_SUFFIXES = frozenset({".wav", ".wave", ".ogg", ".oga", ".mp3", ".flac", ".opus", ".m4a"})
 FONT_SUFFIXES = frozenset({".ttf", ".otf", ".ttc"})
-
-_DECODER_HINTS = {
-    ".ogg": "FFmpeg shared libraries (Debian/Ubuntu: apt install libavformat59 libavcodec59 "
-    "libswresample4 libavutil57; macOS: brew install ffmpeg; Windows: put the FFmpeg DLLs "
-    "on PATH) or PyOgg (pip install pyogg, plus libvorbisfile: apt install libvorbisfile3)",
-    ".mp3": "FFmpeg shared libraries (Debian/Ubuntu: apt install libavformat59 libavcodec59 "
-    "libswresample4 libavutil57; macOS: brew install ffmpeg; Windows: put the FFmpeg DLLs "
-    "on PATH)",
-}
-_DECODER_HINTS[".oga"] = _DECODER_HINTS[".ogg"]
-_DECODER_HINTS[".opus"] = _DECODER_HINTS[".ogg"]
-_DECODER_HINTS[".flac"] = _DECODER_HINTS[".ogg"].replace("libvorbisfile3", "libflac12")
-
 
 def pyglet_module(name: str) -> ModuleType:
     """Import ``pyglet.<name>``, choosing headless mode first when there is no display."""
@@ -53,56 +40,66 @@ def pyglet_module(name: str) -> ModuleType:
     return importlib.import_module(f"pyglet.{name}")
 
 
-def decoder_hint(suffix: str) -> str:
-    """How to make pyglet decode ``suffix`` (``.ogg``...), in one sentence."""
-    hint = _DECODER_HINTS.get(suffix.lower())
-    if hint is None:
-        return "pyglet decodes WAV without extra libraries; convert the file to WAV"
-    return f"install {hint}, or convert the file to WAV (decoded with no extra dependency)"
-
-
-def available_decoders(suffix: str) -> list[str]:
-    """Names of the pyglet decoders registered for ``suffix`` on this machine."""
-    media = pyglet_module("media")
-    return [type(d).__name__ for d in media.codecs.registry.get_decoders(suffix)]
+#: largest image decoded (width x height); a game can raise it
+MAX_IMAGE_PIXELS = 16384 * 16384
 
 
 def load_image(found: Found) -> Any:
-    """Decode an image file into a ``pyglet.image.AbstractImage`` (no GL texture yet)."""
+    """Decode an image file into a ``pyglet.image.ImageData`` (no GL texture yet).
+
+    Pillow decodes the whole file here, so a truncated or zero-byte PNG, a PNG
+    header of 0 x 0 pixels or an image over :data:`MAX_IMAGE_PIXELS` fails at
+    this call (never at a later frame), and every image arrives as 8-bit RGBA
+    (a 1 x 1 GIF without a colour table included).
+    """
     image_mod = pyglet_module("image")
     try:
         data = found.read_bytes()
-        return image_mod.load(found.name, file=io.BytesIO(data))
     except OSError as exc:
         raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc
-    except Exception as exc:  # pyglet's ImageDecodeException and friends
+    if not data:
+        raise AssetDecodeError(found.name, found.where, "the file is empty (0 bytes)")
+    from PIL import Image
+
+    try:
+        with Image.open(io.BytesIO(data)) as im:
+            w, h = im.size
+            if w <= 0 or h <= 0:
+                raise AssetDecodeError(found.name, found.where, f"the image is {w} x {h} pixels")
+            if w * h > MAX_IMAGE_PIXELS:
+                raise AssetDecodeError(
+                    found.name, found.where,
+                    f"{w} x {h} pixels is over kge.assets.loaders.MAX_IMAGE_PIXELS",
+                )
+            im.load()
+            rgba = im.convert("RGBA").transpose(Image.Transpose.FLIP_TOP_BOTTOM)
+            pixels = rgba.tobytes()
+    except AssetDecodeError:
+        raise
+    except Exception as exc:  # Pillow's many decoder errors
         raise AssetDecodeError(
             found.name, found.where, f"not a readable image ({type(exc).__name__}: {exc})"
         ) from exc
+    return image_mod.ImageData(w, h, "RGBA", pixels)
 
 
 def load_sound(found: Found, streaming: bool) -> Any:
-    """Decode a sound file into a pyglet ``StaticSource`` or ``StreamingSource``."""
-    media = pyglet_module("media")
-    suffix = found.suffix
+    """Decode a sound file into a pyglet ``StaticSource`` or ``StreamingSource``.
+
+    Every format goes through soundfile (:mod:`kge.assets.sounds`): WAV of any
+    common depth, OGG Vorbis/Opus, MP3 and FLAC, with no system library. Errors
+    are raised here, at the call, never at a later frame.
+    """
+    from kge.assets.sounds import static_source, streaming_source
+
     try:
-        path = found.path
-        if streaming and path is not None:  # pyglet keeps reading the file while it plays
-            return media.load(str(path), streaming=True)
-        return media.load(found.name, file=io.BytesIO(found.read_bytes()), streaming=streaming)
+        data = found.read_bytes()
     except OSError as exc:
         raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc
-    except Exception as exc:
-        if not media.codecs.registry.get_decoders(suffix or found.name):
-            raise DecoderMissingError(
-                found.name,
-                found.where,
-                f"no audio decoder for {suffix or 'this file type'} is available on this "
-                f"machine; {decoder_hint(suffix)}",
-            ) from exc
-        raise AssetDecodeError(
-            found.name, found.where, f"the {suffix} decoder failed ({type(exc).__name__}: {exc})"
-        ) from exc
+    media = pyglet_module("media")
+    if streaming:
+        return streaming_source(media, data, found.name, found.where)
+    return static_source(media, data, found.name, found.where)
 
 
 def load_generated(sound: SoundData) -> Any:

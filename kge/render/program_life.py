@@ -13,7 +13,13 @@ process dies with SIGSEGV in ``glDrawElements``.
 :func:`pin_programs` gives each object space one strong cache, shared by all its
 contexts: a program is compiled once per process (per object space) and never
 deleted while a context may still hold compiled copies of it. kge's own programs
-(tiles, particles, lights) are module-level for the same reason.
+(particles, lights) are module-level for the same reason.
+
+Uniforms are another matter: on the same driver a uniform set in context B, then set
+to the same value in context A, is not re-uploaded for A, which draws with the value
+it had before. Programs whose uniforms change per draw (kge's tile program: a layer's
+shift, tint and wrap) are therefore made once per context
+(:func:`kge.render.glutil.per_context`), so no other context ever changes them.
 """
 
 from __future__ import annotations

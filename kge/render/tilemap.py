@@ -24,48 +24,63 @@ import pyglet
 from pyglet import gl
 
 from kge.components.material import Material
+from kge.render.glutil import per_context
 from kge.render.groups import WORLD
+from kge.render.images import PixelImage
 from kge.render.passes import Frame
 from kge.render.programs import FS_HEAD, apply_frame_uniforms, material_program, set_uniforms
 from kge.render.textures import TextureCache
-from kge.tilemap.model import FLIP_D, FLIP_H, FLIP_V, LayerStyle, MapData, TileLayerData
+from kge.render.tileobjects import ObjectQuads, layer_objects, object_entities, place
+from kge.tilemap.model import (
+    FLIP_D,
+    FLIP_H,
+    FLIP_V,
+    LayerStyle,
+    MapData,
+    TileLayerData,
+)
+from kge.tilemap.objects import DEPTH_BASE, DEPTH_STEPS
 from kge.tilemap.runtime import CHUNK, TileMap, TileMaps
 
+# ``local`` is the point inside the tile image (0..1, flips applied; beyond 1 on
+# repeated image layers), ``rect`` the image's (u0, v0, u1, v1) in its texture.
+# Sampling is clamped half a texel inside the rect, so a tile never shows its
+# neighbour's texels in the sheet: no seams at fractional camera positions,
+# zooms below 1 or fractional layer offsets.
 _VERTEX = """#version 330 core
 in vec2 position;
-in vec2 tex_coords;
-in vec4 uv_rect;
-out vec2 uv;
-flat out vec4 rect;
+in vec2 local;
+in vec4 rect;
+out vec2 v_local;
+out vec4 v_rect;
 uniform WindowBlock { mat4 projection; mat4 view; } window;
 uniform vec2 shift;
 void main() {
-    uv = tex_coords;
-    rect = uv_rect;
+    v_local = local;
+    v_rect = rect;
     gl_Position = window.projection * window.view * vec4(position + shift, 0.0, 1.0);
 }
 """
 _FRAGMENT = """#version 330 core
-in vec2 uv;
-flat in vec4 rect;
+in vec2 v_local;
+in vec4 v_rect;
 out vec4 color;
 uniform sampler2D tile_texture;
 uniform vec4 tint;
+uniform int wrap;
 void main() {
-    // stay half a texel inside the tile's own image: a fragment on a tile's edge,
-    // wherever the camera sits, never samples the next tile of the sheet
-    vec2 inset = 0.5 / vec2(textureSize(tile_texture, 0));
-    vec2 lo = min(rect.xy, rect.zw) + inset;
-    vec2 hi = max(rect.xy, rect.zw) - inset;
-    color = texture(tile_texture, clamp(uv, lo, max(lo, hi))) * tint;
+    vec2 t = wrap == 1 ? fract(v_local) : clamp(v_local, 0.0, 1.0);
+    vec2 half_texel = 0.5 / vec2(textureSize(tile_texture, 0));
+    vec2 uv = clamp(mix(v_rect.xy, v_rect.zw, t), v_rect.xy + half_texel, v_rect.zw - half_texel);
+    color = texture(tile_texture, uv) * tint;
 }
 """
 # a tile layer drawn with a Material: the user's ``effect`` gets the layer's tint as its
 # colour and the clamped texture coordinate (see :mod:`kge.components.material`)
 _MATERIAL_VERTEX = """#version 150 core
 in vec2 position;
-in vec2 tex_coords;
-in vec4 uv_rect;
+in vec2 local;
+in vec4 rect;
 out vec4 v_color;
 out vec2 v_uv;
 out vec2 v_world;
@@ -75,8 +90,8 @@ uniform vec2 shift;
 uniform vec4 tint;
 void main() {
     v_world = position + shift;
-    v_uv = tex_coords;
-    v_rect = uv_rect;
+    v_uv = mix(rect.xy, rect.zw, local);
+    v_rect = rect;
     v_color = tint;
     gl_Position = window.projection * window.view * vec4(v_world, 0.0, 1.0);
 }
@@ -90,7 +105,6 @@ void main() {
     kge_out = effect(v_color, kge_texture, clamp(v_uv, lo, max(lo, hi)), v_world);
 }
 """
-_program_cache: list[Any] = []
 
 
 def layer_program(material: Material | None) -> Any:
@@ -105,24 +119,27 @@ def layer_program(material: Material | None) -> Any:
 
 
 def tile_program() -> Any:
-    if not _program_cache:
-        _program_cache.append(
-            pyglet.graphics.shader.ShaderProgram(
-                pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
-                pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
-            )
-        )
-    return _program_cache[0]
+    """The tile shader program of the current GL context (one per context: its
+    uniforms change per layer, see :mod:`kge.render.program_life`)."""
+    return per_context(
+        "tiles",
+        lambda: pyglet.graphics.shader.ShaderProgram(
+            pyglet.graphics.shader.Shader(_VERTEX, "vertex"),
+            pyglet.graphics.shader.Shader(_FRAGMENT, "fragment"),
+        ),
+    )
 
 
 class LayerGroup(pyglet.graphics.Group):
     """One layer's texture, tint and shift (offset + parallax), read at draw time."""
 
-    def __init__(self, program: Any, texture: Any, parent: Any,
-                 material: Material | None = None, textures: Any = None) -> None:  # fmt: skip
-        super().__init__(parent=parent)
+    def __init__(self, program: Any, texture: Any, parent: Any, order: int = 0,
+                 wrap: bool = False, material: Material | None = None,
+                 textures: Any = None) -> None:  # fmt: skip
+        super().__init__(order=order, parent=parent)
         self.program = program
         self.texture = texture
+        self.wrap = int(wrap)
         self.shift = (0.0, 0.0)
         self.tint = (1.0, 1.0, 1.0, 1.0)
         self.material = material if program is not tile_program() else None
@@ -133,7 +150,9 @@ class LayerGroup(pyglet.graphics.Group):
         self.program["shift"] = self.shift
         self.program["tint"] = self.tint
         m = self.material
-        if m is not None:  # read now: a tween changes them without touching a vertex
+        if m is None:
+            self.program["wrap"] = self.wrap
+        else:  # read now: a tween changes them without touching a vertex
             apply_frame_uniforms(self.program)
             set_uniforms(self.program, m.uniforms, self.textures, m.shader.uniforms)
         gl.glActiveTexture(gl.GL_TEXTURE0)
@@ -162,8 +181,9 @@ def tile_uvs(
     gids: np.ndarray,
     flags: np.ndarray,
     bounds: list[tuple[float, float, float, float]],
-) -> np.ndarray:
-    """(n, 4, 2) texture coordinates of n tiles (corners BL, BR, TR, TL), flips applied.
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per corner (BL, BR, TR, TL) of n tiles: the point inside the tile (n, 4, 2), flips
+    applied, and the tile's (u0, v0, u1, v1) texture rect (n, 4, 4).
 
     ``bounds[i]`` is image i's (u0, v0, u1, v1) inside its texture. Tiled flips
     the image diagonally, then horizontally, then vertically; a corner on
@@ -183,22 +203,16 @@ def tile_uvs(
     sy[fv] = 1.0 - sy[fv]
     sx[fh] = 1.0 - sx[fh]
     sx[fd], sy[fd] = sy[fd].copy(), sx[fd].copy()
-    # image fraction (u right, v up from the image's bottom)
-    u = (x[:, None] + sx * w[:, None]) / iw[:, None]
-    v = 1.0 - (y[:, None] + sy * h[:, None]) / ih[:, None]
-    out = np.empty((len(gids), 4, 2), np.float32)
-    out[..., 0] = b[:, 0, None] + u * (b[:, 2, None] - b[:, 0, None])
-    out[..., 1] = b[:, 1, None] + v * (b[:, 3, None] - b[:, 1, None])
-    return out
-
-
-def uv_rects(uvs: np.ndarray) -> np.ndarray:
-    """(n, 4, 4) per-corner (u0, v0, u1, v1) of each tile's image, from (n, 4, 2) uvs.
-
-    The fragment shader clamps sampling inside it (no bleeding from neighbours).
-    """
-    rect = np.concatenate([uvs.min(axis=1), uvs.max(axis=1)], axis=-1)
-    return np.repeat(rect[:, None, :], 4, axis=1).astype(np.float32)
+    local = np.empty((len(gids), 4, 2), np.float32)
+    local[..., 0] = sx
+    local[..., 1] = 1.0 - sy  # v up
+    # the tile's rect in the texture (u right, v up from the image's bottom)
+    u0 = b[:, 0] + x / iw * (b[:, 2] - b[:, 0])
+    u1 = b[:, 0] + (x + w) / iw * (b[:, 2] - b[:, 0])
+    v0 = b[:, 1] + (1.0 - (y + h) / ih) * (b[:, 3] - b[:, 1])
+    v1 = b[:, 1] + (1.0 - y / ih) * (b[:, 3] - b[:, 1])
+    rect = np.repeat(np.stack([u0, v0, u1, v1], axis=-1)[:, None, :], 4, axis=1)
+    return local, rect.astype(np.float32)
 
 
 def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarray) -> np.ndarray:
@@ -211,8 +225,12 @@ def tile_quads(data: MapData, rows: np.ndarray, cols: np.ndarray, gids: np.ndarr
     t = data.tiles
     w, h = t.rect[gids, 2].astype(float), t.rect[gids, 3].astype(float)
     ox, oy = t.offset[gids, 0].astype(float), t.offset[gids, 1].astype(float)
-    left = u.left_px + cols * u.tile_w + ox
-    bottom = (u.row0 + rows + 1) * u.tile_h + oy
+    if data.grid is None:
+        left = u.left_px + cols * u.tile_w + ox
+        bottom = (u.row0 + rows + 1) * u.tile_h + oy
+    else:
+        bx, by, _, bh = data.grid.cell_boxes(cols, rows)
+        left, bottom = bx + ox, by + bh + oy
     px = left[:, None] + _SX * w[:, None]
     py = bottom[:, None] - (1.0 - _SY) * h[:, None]
     x, y = u.points(px, py)
@@ -225,34 +243,81 @@ class _Chunk:
     anim_key: tuple[int, ...] = ()
 
 
-class MapDrawing:
-    """The drawing state of one map: textures, groups and live chunks."""
+def map_image(path: Any, key: tuple[int, int, int] | None) -> PixelImage:
+    """A map image as RGBA pixels (Pillow), its transparent colour made transparent."""
+    from PIL import Image
 
-    def __init__(self, tmap: TileMap, textures: TextureCache) -> None:
+    with Image.open(path) as im:
+        rgba = np.asarray(im.convert("RGBA"), np.uint8).copy()
+    if key is not None:
+        rgba[(rgba[..., :3] == np.array(key, np.uint8)).all(axis=-1)] = 0
+    return PixelImage(rgba.shape[1], rgba.shape[0], rgba[::-1].tobytes())
+
+
+def _quad_list(
+    program: Any, n: int, batch: Any, group: Any, pos: Any, local: Any, rect: Any
+) -> Any:
+    base = (np.arange(n) * 4)[:, None]
+    idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
+    return program.vertex_list_indexed(
+        n * 4,
+        gl.GL_TRIANGLES,
+        idx.tolist(),
+        batch=batch,
+        group=group,
+        position=("f", np.ascontiguousarray(pos, np.float32).ravel()),
+        local=("f", np.ascontiguousarray(local, np.float32).ravel()),
+        rect=("f", np.ascontiguousarray(rect, np.float32).ravel()),
+    )
+
+
+class MapDrawing:
+    """The drawing state of one map: textures, groups and live chunks.
+
+    Orthogonal layers draw layer by layer, as Tiled does. On isometric, staggered
+    and hexagonal maps each chunk draws its tiles in Tiled's order (back to front)
+    and chunks draw back to front too (taller tiles overlap the row behind them);
+    a tile layer with the property ``depth_sort: true`` draws each row of tiles at
+    its own depth order instead, so sprites with ``TileMap.depth_order`` (and the
+    map's tile objects) are drawn between the rows in front and behind them.
+    """
+
+    def __init__(self, tmap: TileMap, textures: TextureCache, poses: Any = None) -> None:
         self.map = tmap
         self.textures = textures
+        #: () -> the world's pose table (sprites' blended poses), or None
+        self.poses = poses
+        self.object_quads: list[ObjectQuads] = []
+        self._held: list[int] = []
         self.program = tile_program()
         data = tmap.data
-        self.tex = [textures.texture(str(p)) for p in data.tiles.images]
+        self.tex = [
+            textures.texture(map_image(p, k))
+            for p, k in zip(data.tiles.images, data.tiles.image_keys or [None] * 0, strict=False)
+        ]
         self.bounds = [_tex_bounds(t) for t in self.tex]
-        self.groups: dict[tuple[int, int], LayerGroup] = {}
+        self.groups: dict[tuple[int, int, int], LayerGroup] = {}
         self.chunks: dict[tuple[int, int, int], _Chunk] = {}
-        self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group)
+        self.images: dict[int, Any] = {}  # image layer position -> (vertex list, group, view)
+        self.extras: list[tuple[Any, LayerGroup, Any]] = []  # (list, group, style)
         self.animated = np.zeros(max(data.tiles.size, 1), bool)
         self.materials: dict[int, Material | None] = {}  #: tile layer position -> drawn with
         self._shaders: dict[int, int | None] = {}
         for g in data.tiles.animations:
             self.animated[g] = True
+        self._objects_built = False
 
     def group(
-        self, frame: Frame, li: int, image: int, texture: Any, draw_layer: int, order: int
+        self, frame: Frame, li: int, image: int, sub: int, draw_layer: int, order: int
     ) -> LayerGroup:
-        g = self.groups.get((li, image))
+        g = self.groups.get((li, image, sub))
         if g is None:
             parent = frame.groups.get(draw_layer, WORLD, order)
             material = self.materials.get(li)
-            g = self.groups[(li, image)] = LayerGroup(layer_program(material), texture, parent,
-                                                      material, self.textures)  # fmt: skip
+            g = self.groups[(li, image, sub)] = LayerGroup(
+                layer_program(material), self.tex[image], parent, order=sub,
+                material=material, textures=self.textures,
+            )  # fmt: skip
         return g
 
     def _materials_changed(self) -> None:
@@ -293,12 +358,14 @@ class MapDrawing:
                 if chunk is None or chunk.anim_key != anim:
                     self._drop(key)
                     self.chunks[key] = self._build(frame, li, layer, key, anim, draw_layer, order)
-            for (gl_li, _), g in self.groups.items():
+            for (gl_li, _, _), g in self.groups.items():
                 if gl_li == li:
                     g.shift, g.tint = shift, tint
         for key in [k for k in self.chunks if k not in wanted]:
             self._drop(key)
+        self._background(frame)
         self._image_layers(frame)
+        self._tile_objects(frame)
 
     def _placement(self, props: dict[str, Any], index: int) -> tuple[int, int]:
         layer = props.get("layer", self.map.draw_layer)
@@ -309,8 +376,11 @@ class MapDrawing:
     ) -> list[tuple[int, int, int]]:
         data = self.map.data
         u = data.units
-        tw, th = u.tile_size
         left, bottom, right, top = frame.view
+        grid = data.grid
+        if grid is not None and grid.orientation != "orthogonal":
+            return self._visible_cells(frame, li, shift)
+        tw, th = u.tile_size
         # the layer is drawn moved by ``shift``: look at the view moved back
         c0 = math.floor((left - shift[0] - u.origin[0]) / tw) - 1
         c1 = math.floor((right - shift[0] - u.origin[0]) / tw) + 1
@@ -321,6 +391,44 @@ class MapDrawing:
         if c1 < 0 or r1 < 0 or c0 >= data.cols or r0 >= data.rows:
             return []
         return [(li, cr, cc) for cr in range(cr0, cr1 + 1) for cc in range(cc0, cc1 + 1)]
+
+    def _visible_cells(
+        self, frame: Frame, li: int, shift: tuple[float, float]
+    ) -> list[tuple[int, int, int]]:
+        """Chunks whose cells' boxes (grown by the tallest tile) meet the view."""
+        data = self.map.data
+        grid = data.grid
+        assert grid is not None
+        u = data.units
+        left, bottom, right, top = frame.view
+        x0, y0 = u.pixel(left - shift[0], top - shift[1])  # map pixels, y down
+        x1, y1 = u.pixel(right - shift[0], bottom - shift[1])
+        tall = float(data.tiles.rect[:, 3].max(initial=0)) + abs(
+            float(data.tiles.offset.min(initial=0))
+        )
+        wide = float(data.tiles.rect[:, 2].max(initial=0))
+        y1 += tall  # a tall tile below the view reaches up into it
+        x0 -= wide
+        nr, nc = -(-data.rows // CHUNK), -(-data.cols // CHUNK)
+        key = ("cells", nr, nc)
+        boxes = self.__dict__.get("_chunk_boxes")
+        if boxes is None or boxes[0] != key:
+            cr, cc = np.meshgrid(np.arange(nr), np.arange(nc), indexing="ij")
+            corners = []
+            for dr, dc in ((0, 0), (0, 1), (1, 0), (1, 1)):
+                rr = np.minimum(cr * CHUNK + dr * (CHUNK - 1), data.rows - 1)
+                ccs = np.minimum(cc * CHUNK + dc * (CHUNK - 1), data.cols - 1)
+                bx, by, w, h = grid.cell_boxes(ccs, rr)
+                corners.append((bx, by, bx + w, by + h))
+            lo_x = np.minimum.reduce([c[0] for c in corners])
+            lo_y = np.minimum.reduce([c[1] for c in corners])
+            hi_x = np.maximum.reduce([c[2] for c in corners])
+            hi_y = np.maximum.reduce([c[3] for c in corners])
+            boxes = (key, cr, cc, lo_x, lo_y, hi_x, hi_y)
+            self.__dict__["_chunk_boxes"] = boxes
+        _, cr, cc, lo_x, lo_y, hi_x, hi_y = boxes
+        hit = (hi_x >= x0) & (lo_x <= x1) & (hi_y >= y0) & (lo_y <= y1)
+        return [(li, int(r), int(c)) for r, c in zip(cr[hit], cc[hit], strict=True)]
 
     def _anim_key(self, layer: TileLayerData, key: tuple[int, int, int]) -> tuple[int, ...]:
         """The frames the chunk's animated tiles show now: a change rebuilds the chunk."""
@@ -349,27 +457,34 @@ class MapDrawing:
         chunk = _Chunk(anim_key=anim)
         if not len(rr):
             return chunk
-        gids = sub[rr, cols].astype(np.int64)
-        flags = layer.flags[r0 : r0 + CHUNK, c0 : c0 + CHUNK][rr, cols]
+        rr, cols = rr + r0, cols + c0
+        grid = data.grid
+        flat = grid is None or grid.orientation == "orthogonal"
+        if not flat:  # Tiled's order: back to front
+            assert grid is not None
+            sort = grid.depth(cols, rr)
+            rr, cols = rr[sort], cols[sort]
+        gids = layer.gids[rr, cols].astype(np.int64)
+        flags = layer.flags[rr, cols]
         shown = self.map.shown[gids] if anim else gids
-        quads = tile_quads(data, rr + r0, cols + c0, gids)
-        uvs = tile_uvs(data, shown, flags, self.bounds)
+        quads = tile_quads(data, rr, cols, gids)
+        local, rect = tile_uvs(data, shown, flags, self.bounds)
         images = data.tiles.image[shown]
-        for image in np.unique(images).tolist():
-            sel = images == image
-            n = int(sel.sum())
-            base = (np.arange(n) * 4)[:, None]
-            idx = (base + np.array([0, 1, 2, 0, 2, 3])).ravel()
-            g = self.group(frame, li, image, self.tex[image], draw_layer, order)
-            vl = g.program.vertex_list_indexed(
-                n * 4,
-                gl.GL_TRIANGLES,
-                idx.tolist(),
-                batch=frame.batch,
-                group=g,
-                position=("f", quads[sel].ravel()),
-                tex_coords=("f", uvs[sel].ravel()),
-                uv_rect=("f", uv_rects(uvs[sel]).ravel()),
+        if flat:
+            subs = np.zeros(len(gids), np.int64)
+        elif _truthy(layer.properties.get("depth_sort")):
+            assert grid is not None
+            _, by, _, bh = grid.cell_boxes(cols, rr)
+            subs = np.round((by + bh / 2) * DEPTH_STEPS / grid.tile_h).astype(np.int64) - 1
+            order = DEPTH_BASE  # the sub-order is the depth, sprites interleave
+        else:
+            subs = np.full(len(gids), cr + cc if grid.orientation == "isometric" else cr)  # type: ignore[union-attr]
+        for image, s_ in sorted({(int(i), int(k)) for i, k in zip(images, subs, strict=True)}):
+            sel = (images == image) & (subs == s_)
+            parent_order = order + s_ if order == DEPTH_BASE else order
+            g = self.group(frame, li, image, s_, draw_layer, parent_order)
+            vl = _quad_list(
+                g.program, int(sel.sum()), frame.batch, g, quads[sel], local[sel], rect[sel]
             )
             chunk.lists.append(vl)
         return chunk
@@ -380,42 +495,147 @@ class MapDrawing:
             for vl in chunk.lists:
                 vl.delete()
 
+    def _background(self, frame: Frame) -> None:
+        """The map's background colour under everything of its draw layer, over the view."""
+        bg = self.map.data.background
+        if bg is None:
+            return
+        entry = self.__dict__.get("_bg")
+        if entry is None:
+            tex = self.textures.texture(PixelImage(1, 1, bytes((255, 255, 255, 255))))
+            g = LayerGroup(self.program, tex, frame.groups.get(self.map.draw_layer, WORLD, -2000))
+            b = _tex_bounds(tex)
+            vl = _quad_list(
+                self.program, 1, frame.batch, g, np.zeros((4, 2)), _SX_LOCAL, np.tile(b, (4, 1))
+            )
+            entry = self.__dict__["_bg"] = (vl, g)
+            self.extras.append((vl, g, None))
+        vl, g = entry
+        left, bottom, right, top = frame.view
+        vl.position[:] = [left, bottom, right, bottom, right, top, left, top]
+        g.tint = tuple(c / 255 for c in bg)
+
     def _image_layers(self, frame: Frame) -> None:
         data = self.map.data
         for i, layer in enumerate(data.image_layers):
             if not layer.style.visible:
                 continue
             entry = self.images.get(i)
-            if entry is None:
-                tex = self.textures.texture(str(layer.image))
+            shift = _shift(frame, data, layer.style)
+            u = data.units
+            iw, ih = layer.size
+            x0, y1 = u.point(u.left_px, u.row0 * u.tile_h if data.grid is None else 0.0)
+            w, h = u.length(iw), u.length(ih)
+            # repeated axes cover the view (in whole image steps from the layer's origin)
+            left, bottom, right, top = frame.view
+            rx, ry = layer.repeat
+            a0, a1 = (0.0, 1.0)
+            if rx:
+                a0 = math.floor((left - shift[0] - x0) / w)
+                a1 = math.ceil((right - shift[0] - x0) / w)
+            b0, b1 = (0.0, 1.0)
+            if ry:
+                b0 = math.floor((y1 - (top - shift[1])) / h)
+                b1 = math.ceil((y1 - (bottom - shift[1])) / h)
+            view = (a0, a1, b0, b1)
+            if entry is None or entry[2] != view:
+                if entry is not None:
+                    entry[0].delete()
+                tex = self.textures.texture(map_image(layer.image, layer.key))
                 draw_layer, order = self._placement(layer.properties, layer.index)
-                g = LayerGroup(self.program, tex, frame.groups.get(draw_layer, WORLD, order))
-                u = data.units
-                x0, y1 = u.point(u.left_px, u.row0 * u.tile_h)
-                x1, y0 = u.point(u.left_px + tex.width, u.row0 * u.tile_h + tex.height)
-                pos = np.array([x0, y0, x1, y0, x1, y1, x0, y1], np.float32)
-                b = _tex_bounds(tex)
-                uv = np.array([b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[3]], np.float32)
-                vl = self.program.vertex_list_indexed(
-                    4,
-                    gl.GL_TRIANGLES,
-                    [0, 1, 2, 0, 2, 3],
-                    batch=frame.batch,
-                    group=g,
-                    position=("f", pos),
-                    tex_coords=("f", uv),
-                    uv_rect=("f", np.tile(np.array(b, np.float32), 4)),
+                g = (
+                    entry[1]
+                    if entry is not None
+                    else LayerGroup(
+                        self.program, tex, frame.groups.get(draw_layer, WORLD, order), wrap=rx or ry
+                    )
                 )
-                entry = self.images[i] = (vl, g)
-            entry[1].shift = _shift(frame, data, layer.style)
+                xa, xb = x0 + a0 * w, x0 + a1 * w
+                ya, yb = y1 - b1 * h, y1 - b0 * h
+                pos = np.array([[xa, ya], [xb, ya], [xb, yb], [xa, yb]], float)
+                loc = np.array([[a0, -b1 + 1], [a1, -b1 + 1], [a1, -b0 + 1], [a0, -b0 + 1]])
+                loc = np.array([[p[0], p[1]] for p in loc], float)
+                b = _tex_bounds(tex)
+                vl = _quad_list(self.program, 1, frame.batch, g, pos, loc, np.tile(b, (4, 1)))
+                entry = self.images[i] = (vl, g, view)
+            entry[1].shift = shift
             entry[1].tint = _tint(layer.style)
+
+    def _tile_objects(self, frame: Frame) -> None:
+        """Tile objects of parallax object layers: drawn with the map, shifted like their
+        layer, around their entities' poses (:mod:`kge.render.tileobjects`)."""
+        data = self.map.data
+        world = self.map.world
+        if not self._objects_built:
+            self._objects_built = True
+            by_id = object_entities(world, self.map.objects)
+            for layer in data.object_layers:
+                if layer.style.parallax == (1.0, 1.0) or not layer.style.visible:
+                    continue
+                self._object_layer(frame, layer, by_id)
+        for q in self.object_quads:
+            q.group.shift, q.group.tint = _shift(frame, data, q.style), _tint(q.style)
+            place(q, frame, world, self._release)
+
+    def _object_layer(self, frame: Frame, layer: Any, by_id: dict[tuple[str, int], int]) -> None:
+        data = self.map.data
+        objs, gids, flags, entities, sizes = layer_objects(data, layer, by_id)
+        if not objs:
+            return
+        for e in entities:
+            self._hold(e)
+        local, rect = tile_uvs(data, gids, flags, self.bounds)
+        images = data.tiles.image[gids]
+        draw_layer, order = self._placement(layer.properties, layer.index)
+        for image in np.unique(images).tolist():
+            sel = images == image
+            n = int(sel.sum())
+            grp = LayerGroup(
+                self.program, self.tex[image], frame.groups.get(draw_layer, WORLD, order)
+            )
+            vl = _quad_list(
+                self.program, n, frame.batch, grp, np.zeros((n, 4, 2)), local[sel], rect[sel]
+            )
+            ents = [e for e, keep in zip(entities, sel.tolist(), strict=True) if keep]
+            self.object_quads.append(ObjectQuads(vl, grp, layer.style, ents, sizes[sel]))
+
+    def _hold(self, entity: int) -> None:
+        """Keep a pose-table row for an object entity (blended with the sprites)."""
+        table = self.poses() if self.poses is not None else None
+        if table is not None:
+            from kge.components.transform import Transform
+
+            table.acquire(entity, self.map.world.try_get(entity, Transform))
+            self._held.append(entity)
+
+    def _release(self, entity: int) -> None:
+        table = self.poses() if self.poses is not None else None
+        if table is not None and entity in self._held:
+            self._held.remove(entity)
+            table.release(entity)
 
     def delete(self) -> None:
         for key in list(self.chunks):
             self._drop(key)
-        for vl, _ in self.images.values():
+        for vl, _, _ in self.images.values():
             vl.delete()
         self.images.clear()
+        for vl, _, _ in self.extras:
+            vl.delete()
+        self.extras.clear()
+        for q in self.object_quads:
+            q.vlist.delete()
+        self.object_quads.clear()
+        for e in list(self._held):
+            self._release(e)
+        self.__dict__.pop("_bg", None)
+
+
+_SX_LOCAL = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+
+
+def _truthy(value: Any) -> bool:
+    return value is True or (isinstance(value, str) and value.lower() in ("true", "1", "yes"))
 
 
 def _tex_bounds(tex: Any) -> tuple[float, float, float, float]:
@@ -445,8 +665,9 @@ def _tint(style: LayerStyle) -> tuple[float, float, float, float]:
 class TilemapRenderer:
     """The render pass: draws every map in the world's :class:`TileMaps`."""
 
-    def __init__(self, world: Any) -> None:
+    def __init__(self, world: Any, poses: Any = None) -> None:
         self.world = world
+        self.poses = poses  #: () -> the world's pose table, or None
         self.textures: TextureCache | None = None
         self.drawings: dict[int, MapDrawing] = {}
 
@@ -462,7 +683,7 @@ class TilemapRenderer:
         for key, tmap in live.items():
             d = self.drawings.get(key)
             if d is None:
-                d = self.drawings[key] = MapDrawing(tmap, self.textures)
+                d = self.drawings[key] = MapDrawing(tmap, self.textures, self.poses)
             d.draw(frame)
 
     @property

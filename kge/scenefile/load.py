@@ -43,6 +43,7 @@ MAP_OPTIONS: dict[str, tuple[type, ...]] = {
     "friction": (int, float),
     "restitution": (int, float),
     "unknown": (str,),
+    "edits": (list,),  #: saves: [layer, col, row, gid] of the cells set since loading
 }
 
 
@@ -287,7 +288,7 @@ class Loader:
                         )
                 source = doc.source.paths.load(raw.get("source"), doc.source.where(
                     (*path, "source"), component="tilemap", field="source"))
-                options = {k: v for k, v in raw.items() if k != "source"}
+                options = {k: v for k, v in raw.items() if k not in ("source", "edits")}
                 kwargs = dict(options)
                 if "origin" in kwargs:
                     kwargs["origin"] = tuple(kwargs["origin"])
@@ -296,6 +297,11 @@ class Loader:
                 except Exception as exc:
                     raise SceneFileError(where, f"{exc}") from exc
                 refs.append(MapRef(source, options, handle))
+                try:
+                    handle.apply_edits(raw.get("edits", ()))
+                except Exception as exc:
+                    raise SceneFileError(doc.source.where(
+                        (*path, "edits"), component="tilemap", field="edits"), f"{exc}") from exc
         except BaseException:
             for ref in refs:
                 ref.handle.unload()

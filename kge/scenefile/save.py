@@ -149,11 +149,14 @@ class Writer:
         out: list[str] = []
         for tmap in maps.maps if maps is not None else ():
             ref = recorded.get(id(tmap))
-            options = dict(ref.options) if ref is not None else {"layer": tmap.draw_layer}
+            options = dict(ref.options) if ref is not None else dict(tmap.load_options)
             source = self.paths.save(str(tmap.path), Where(component="tilemap", field="source"))
             out += ["", header(("tilemap",), array=True), f"source = {value(source)}"]
             out += [f"{key(k)} = {value(v)}" for k, v in options.items() if k != "layer"
                     or v != 0]
+            edits = tmap.edits()
+            if edits and self.save:  # a scene file is the map as authored
+                out.append(f"edits = {value(edits)}")
         return out
 
     def entity_text(self, e: int, encoder: Encoder) -> list[str]:

@@ -128,6 +128,7 @@ class Animations:
             for entity in sorted(self.dirty):
                 self._sync_one(entity)
             self.dirty.clear()
+        self.table.ensure()  # clips first played since the last frame (play() of a new one)
         if self._carried:
             self._continue_carried()
         if self.state.version != self._compacted_at or self.table.version != self._table_at:

@@ -28,7 +28,9 @@ class TilemapPlugin(Plugin):
         maps_in(world)
         world.add_system(TileAnimationSystem())
         if not world.has_resource(MapFiles):
-            world.insert_resource(MapFiles(lambda name: map_file(world, name)))
+            world.insert_resource(
+                MapFiles(lambda name: map_file(world, name), lambda: asset_roots(world))
+            )
         state: dict[str, Any] = {}
 
         def draw_maps(frame: Any) -> None:
@@ -36,11 +38,20 @@ class TilemapPlugin(Plugin):
             if renderer is None:
                 from kge.render.tilemap import TilemapRenderer
 
-                renderer = state["renderer"] = TilemapRenderer(world)
+                renderer = state["renderer"] = TilemapRenderer(world, lambda: _poses(world))
             renderer(frame)
 
         draw_maps.state = state  # type: ignore[attr-defined]  # tests read the renderer
         passes_for(world).add(draw_maps, phase="before", name="tilemap", after=["animation"])
+
+
+def _poses(world: World) -> Any:
+    """The world's pose table (what sprites are drawn from), once it renders."""
+    from kge.systems.render import RenderSystem
+
+    rs = world.get_system(RenderSystem)
+    view = getattr(rs, "view", None) if rs is not None else None
+    return getattr(view, "poses", None)
 
 
 def map_file(world: World, name: str | Path) -> Path:
@@ -50,7 +61,7 @@ def map_file(world: World, name: str | Path) -> Path:
     """
     p = Path(name)
     if p.is_absolute() or p.is_file():
-        return p
+        return p.resolve()  # relative to the working directory now, never later
     from kge.assets import assets_for
 
     try:
@@ -63,6 +74,13 @@ def map_file(world: World, name: str | Path) -> Path:
             "Tiled maps and their tilesets must be files on disk"
         )
     return found.path
+
+
+def asset_roots(world: World) -> list[Path]:
+    """The folders of the world's asset store: a map's files may be there too."""
+    from kge.assets import DirLocation, assets_for
+
+    return [loc.root for loc in assets_for(world).locations if isinstance(loc, DirLocation)]
 
 
 __all__ = ["MapFiles", "TileMaps", "TilemapPlugin", "map_file"]

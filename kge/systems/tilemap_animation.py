@@ -26,8 +26,7 @@ from kge.components.animation import Clip, FrameRef
 from kge.schedule import Stage, System, SystemSet
 from kge.systems.animation import AnimationSystem, TweenSystem
 from kge.tilemap.model import GidTable
-from kge.tilemap.runtime import TileMap, TileMaps
-from kge.world import World
+from kge.tilemap.runtime import TileMaps
 
 
 @dataclass(slots=True)
@@ -78,20 +77,12 @@ class TileAnimationSystem(System):
     after = (AnimationSystem,)
     before = (TweenSystem,)
 
-    def attach(self, world: World) -> None:
-        super().attach(world)
-        self.clips: dict[int, tuple[TileMap, MapClips]] = {}
-
     def process(self, dt: float) -> None:
         maps = self.world.try_resource(TileMaps)
-        live = {id(m): m for m in maps.maps} if maps is not None else {}
-        for key in [k for k, (m, _) in self.clips.items() if live.get(k) is not m]:
-            del self.clips[key]  # unloaded (or a new map reusing the id)
-        for key, tmap in live.items():
+        for tmap in maps.maps if maps is not None else ():
             if not tmap.data.tiles.animations:
                 continue
-            entry = self.clips.get(key)
-            if entry is None:
-                entry = self.clips[key] = (tmap, MapClips.of(tmap.data.tiles))
-            clips = entry[1]
+            clips = tmap.clock
+            if clips is None:  # kept on the map: snapshots carry it, so a restore goes on
+                clips = tmap.clock = MapClips.of(tmap.data.tiles)
             tmap.shown[clips.gids] = clips.advance(dt)

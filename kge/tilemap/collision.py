@@ -123,12 +123,7 @@ class LayerCollision:
     # -- full build ---------------------------------------------------------------------
     def build(self) -> Iterator[Piece]:
         """Every collider of the layer (the map handle spawns them)."""
-        solid = self.kind == SOLID
-        for m in np.unique(self.material[solid]).tolist():
-            pieces = self._trace(m, 0, 0, self.kind.shape[1], self.kind.shape[0])
-            self.loops[m] = pieces
-            self.boxes[m] = _bboxes(pieces)
-            yield from pieces
+        yield from self._build_solid()
         for r in np.unique(np.nonzero(self.kind == ONE_WAY)[0]).tolist():
             self.runs[r] = self._runs(r)
             yield from self.runs[r]
@@ -136,6 +131,19 @@ class LayerCollision:
         for r, c in zip(rr.tolist(), cc.tolist(), strict=True):
             self.cells[(c, r)] = self._cell_shapes(c, r)
             yield from self.cells[(c, r)]
+
+    def _build_solid(self) -> Iterator[Piece]:
+        """The outlines of the solid cells, one set per material."""
+        solid = self.kind == SOLID
+        for m in np.unique(self.material[solid]).tolist():
+            pieces = self._trace(m, 0, 0, self.kind.shape[1], self.kind.shape[0])
+            self.loops[m] = pieces
+            self.boxes[m] = _bboxes(pieces)
+            yield from pieces
+
+    def _corners(self, cols: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """World positions of grid corners (col, row) (where the outlines' vertices go)."""
+        return self.data.units.corners(cols, rows)
 
     def _trace(
         self, m: int, c0: int, r0: int, c1: int, r1: int, known: dict[Any, Piece] | None = None
@@ -147,7 +155,6 @@ class LayerCollision:
         and most of its outlines come back unchanged).
         """
         mask = (self.kind[r0:r1, c0:c1] == SOLID) & (self.material[r0:r1, c0:c1] == m)
-        units = self.data.units
         mat = self.materials[m]
         loops = trace_loops(mask)
         if not loops:
@@ -155,7 +162,7 @@ class LayerCollision:
         # every corner of every loop converted at once
         sizes = np.array([len(loop) for loop in loops])
         cr = np.concatenate(loops) + np.array([c0, r0])
-        x, y = units.corners(cr[:, 0].astype(float), cr[:, 1].astype(float))
+        x, y = self._corners(cr[:, 0].astype(float), cr[:, 1].astype(float))
         ends = np.cumsum(sizes)
         starts = ends - sizes
         lo = np.minimum.reduceat(cr, starts).tolist()
@@ -231,9 +238,14 @@ class LayerCollision:
         units = self.data.units
         w, h = float(table.rect[gid, 2]), float(table.rect[gid, 3])
         ox, oy = (float(v) for v in table.offset[gid])
-        # the tile image's top-left in map pixels (tiles sit on the cell's bottom-left)
-        left = units.left_px + c * units.tile_w + ox
-        top = (self.data.units.row0 + r + 1) * units.tile_h - h + oy
+        # the tile image's top-left in map pixels (tiles sit on the cell box's bottom-left)
+        grid = self.data.grid
+        if grid is None:
+            left = units.left_px + c * units.tile_w + ox
+            top = (self.data.units.row0 + r + 1) * units.tile_h - h + oy
+        else:
+            bx, by, _, bh = grid.cell_box(c, r)
+            left, top = bx + ox, by + bh - h + oy
         cx, cy = units.point(left + w / 2, top + h / 2)
         mat = self.materials[int(self.material[r, c])]
         out = []
@@ -262,6 +274,20 @@ class LayerCollision:
         Returns (pieces to despawn, pieces to spawn); unchanged outlines keep
         their entities.
         """
+        gone, born, old_kind, new_kind = self._update_solid(c, r)
+        if ONE_WAY in (old_kind, new_kind):
+            gone += self.runs.pop(r, [])
+            self.runs[r] = self._runs(r)
+            born += self.runs[r]
+        gone += self.cells.pop((c, r), [])
+        if new_kind == SHAPES:
+            self.cells[(c, r)] = self._cell_shapes(c, r)
+            born += self.cells[(c, r)]
+        return gone, born
+
+    def _update_solid(self, c: int, r: int) -> tuple[list[Piece], list[Piece], int, int]:
+        """Re-classify cell (c, r) and re-trace the outlines it touches: (gone, born, old
+        kind, new kind)."""
         old_kind, old_mat = int(self.kind[r, c]), int(self.material[r, c])
         k, m = self._classify(self.layer.gids[r : r + 1, c : c + 1])
         self.kind[r, c], self.material[r, c] = k[0, 0], m[0, 0]
@@ -274,15 +300,7 @@ class LayerCollision:
             g, b = self._retrace(mat, c, r)
             gone += g
             born += b
-        if ONE_WAY in (old_kind, new_kind):
-            gone += self.runs.pop(r, [])
-            self.runs[r] = self._runs(r)
-            born += self.runs[r]
-        gone += self.cells.pop((c, r), [])
-        if new_kind == SHAPES:
-            self.cells[(c, r)] = self._cell_shapes(c, r)
-            born += self.cells[(c, r)]
-        return gone, born
+        return gone, born, old_kind, new_kind
 
     def _retrace(self, m: int, c: int, r: int) -> tuple[list[Piece], list[Piece]]:
         pieces = self.loops.get(m, [])

@@ -1,6 +1,6 @@
 """A loaded Tiled map as plain data: numpy gid grids and per-gid lookup tables.
 
-Everything here is independent of pytiled-parser (see :mod:`kge.tilemap.parse`)
+Everything here is independent of the file formats (see :mod:`kge.tilemap.parse`)
 and of GL: the collision builder, the object spawner and the renderer read it.
 
 Grids keep Tiled's order (row 0 at the top). Tiled stores flips in the top bits
@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from kge.tilemap.grid import GridShape
 from kge.tilemap.units import MapUnits
 
 TILED_FLIP_H = 0x80000000
@@ -73,6 +74,44 @@ class TilesetData:
     margin: int
     image: Path | None  #: the sheet (None for an image collection)
     offset: tuple[int, int] = (0, 0)  #: Tiled's tileoffset, pixels
+    wangsets: list[WangSet] = field(default_factory=list)
+
+
+@dataclass(slots=True)
+class WangSet:
+    """A terrain (Wang) set: colours and, per tile, the colour at its 8 corners and edges.
+
+    ``wangids`` rows follow Tiled's order: top, top-right, right, bottom-right,
+    bottom, bottom-left, left, top-left (0 = no colour). Tiled 0.9-1.4 terrains
+    and 1.1-1.4 Wang sets are converted to this (Tiled 1.5's) form on load.
+    """
+
+    name: str
+    kind: str  #: "corner", "edge" or "mixed"
+    colors: list[str]  #: colour names; colour i is ``i + 1`` in wangids
+    gids: np.ndarray  #: (n,) uint32 tiles of the set
+    wangids: np.ndarray  #: (n, 8) uint8
+    probability: np.ndarray  #: (n,) float: how often a matching tile is picked
+
+
+@dataclass(slots=True)
+class ObjectData:
+    """One Tiled object (templates applied), Tiled pixels, y down."""
+
+    id: int
+    name: str
+    cls: str
+    kind: str  #: rectangle, ellipse, point, polygon, polyline, tile or text
+    x: float
+    y: float
+    width: float = 0.0
+    height: float = 0.0
+    rotation: float = 0.0  #: degrees clockwise
+    gid: int = 0  #: raw gid with Tiled's flip bits (tile objects)
+    visible: bool = True
+    points: tuple[tuple[float, float], ...] = ()
+    text: dict[str, Any] = field(default_factory=dict)  #: text objects: text, pixelsize...
+    properties: dict[str, Any] = field(default_factory=dict)
 
 
 @dataclass(slots=True)
@@ -114,15 +153,18 @@ class ImageLayerData:
     style: LayerStyle
     properties: dict[str, Any]
     repeat: tuple[bool, bool] = (False, False)
+    size: tuple[int, int] = (0, 0)  #: the image's pixels
+    key: tuple[int, int, int] | None = None  #: transparent colour
 
 
 @dataclass(slots=True)
 class ObjectLayerData:
     name: str
     index: int
-    objects: list[Any]  #: pytiled-parser objects, in file order
+    objects: list[ObjectData]  #: in file order
     style: LayerStyle
     properties: dict[str, Any]
+    draworder: str = "topdown"
 
 
 @dataclass(slots=True)
@@ -137,6 +179,8 @@ class GidTable:
     kind: np.ndarray  #: uint8 collision kind (EMPTY, SOLID, ONE_WAY, SHAPES)
     images: list[Path] = field(default_factory=list)
     image_sizes: list[tuple[int, int]] = field(default_factory=list)
+    #: per image: the tileset's transparent colour (drawn fully transparent), or None
+    image_keys: list[tuple[int, int, int] | None] = field(default_factory=list)
     shapes: dict[int, list[TileShape]] = field(default_factory=dict)
     properties: dict[int, dict[str, Any]] = field(default_factory=dict)
     classes: dict[int, str] = field(default_factory=dict)
@@ -167,6 +211,12 @@ class MapData:
     #: where the camera centre must be for parallax layers to sit at their map position
     #: (Tiled's parallax origin, default the map's top-left corner), world metres
     parallax_origin: tuple[float, float] = (0.0, 0.0)
+    grid: GridShape | None = None  #: the cells' geometry (orientation)
+    version: str = ""  #: the file format version the map was saved in
+
+    @property
+    def orientation(self) -> str:
+        return self.grid.orientation if self.grid is not None else "orthogonal"
 
     def layer(self, name: str) -> TileLayerData:
         for layer in self.tile_layers:

@@ -28,11 +28,19 @@ from kge.components.filter import Filter
 from kge.components.rigidbody import BodyType, RigidBody
 from kge.components.shapes import Box, Chain, Circle, Polygon
 from kge.components.sprite import Sprite
+from kge.components.text import Text
 from kge.components.tilemap import MapObject
 from kge.components.transform import Transform
 from kge.errors import KgeError
 from kge.tilemap.errors import TilemapError, TilemapWarning
-from kge.tilemap.model import GID_MASK, TILED_FLIP_H, TILED_FLIP_V, MapData, ObjectLayerData
+from kge.tilemap.model import (
+    GID_MASK,
+    TILED_FLIP_H,
+    TILED_FLIP_V,
+    MapData,
+    ObjectData,
+    ObjectLayerData,
+)
 
 Unknown = Literal["warn", "error", "ignore"]
 
@@ -100,22 +108,6 @@ class Spawners:
         return self._entries.get(cls)
 
 
-def _kind(obj: Any) -> str:
-    import pytiled_parser.tiled_object as to
-
-    for cls, name in (
-        (to.Tile, "tile"),
-        (to.Ellipse, "ellipse"),
-        (to.Polygon, "polygon"),
-        (to.Polyline, "polyline"),
-        (to.Point, "point"),
-        (to.Text, "text"),
-    ):
-        if isinstance(obj, cls):
-            return name
-    return "rectangle"
-
-
 def _truthy(value: Any) -> bool:
     return value is True or (isinstance(value, str) and value.lower() in ("true", "1", "yes"))
 
@@ -155,10 +147,10 @@ def _components(
     where: str,
 ) -> list[Any] | None:
     units = data.units
-    kind = _kind(obj)
-    gid = int(getattr(obj, "gid", 0) or 0)
+    kind = obj.kind
+    gid = int(obj.gid)
     tile = gid & GID_MASK
-    cls = obj.class_ or (data.tiles.classes.get(tile, "") if tile else "")
+    cls = obj.cls or (data.tiles.classes.get(tile, "") if tile else "")
     entry = spawners.get(cls) if cls else None
     if cls and entry is None:
         if unknown == "error":
@@ -176,19 +168,26 @@ def _components(
         props.update(data.tiles.properties.get(tile, {}))
     if entry is not None:
         props.update(entry.defaults)
-    props.update(dict(obj.properties or {}))
-    ax, ay = units.point(float(obj.coordinates.x), float(obj.coordinates.y))
-    angle = -math.radians(float(obj.rotation or 0.0))
-    w, h = units.length(float(obj.size.width)), units.length(float(obj.size.height))
+    props.update(obj.properties)
+    style = layer.style
+    grid = data.grid
+    px, py = grid.object_px(obj.x, obj.y) if grid is not None else (obj.x, obj.y)
+    ax, ay = units.point(px + style.offset[0], py + style.offset[1])
+    angle = -math.radians(float(obj.rotation))
+    ow, oh = obj.width, obj.height
+    if tile and (ow <= 0 or oh <= 0):  # tile objects saved without a size: the tile's
+        ow, oh = float(data.tiles.rect[tile, 2]), float(data.tiles.rect[tile, 3])
+    w, h = units.length(ow), units.length(oh)
     points: tuple[tuple[float, float], ...] = ()
     if kind in ("rectangle", "ellipse", "text"):
         off = _rotate((w / 2, -h / 2), angle)
-    elif kind == "tile":
-        off = _rotate((w / 2, h / 2), angle)
+    elif kind == "tile":  # anchored bottom-left (bottom-centre on isometric maps)
+        iso = data.orientation == "isometric"
+        off = _rotate((0.0 if iso else w / 2, h / 2), angle)
     else:
         off = (0.0, 0.0)
         if kind in ("polygon", "polyline"):
-            points = tuple(units.vector(float(p.x), float(p.y)) for p in obj.points)
+            points = tuple(units.vector(x, y) for x, y in obj.points)
     transform = Transform(ax + off[0], ay + off[1], angle)
     mobj = MapObject(
         map=str(data.path),
@@ -202,8 +201,10 @@ def _components(
         points=points,
     )
     comps: list[Any] = [transform, mobj]
-    if tile:
-        comps.append(_sprite(data, obj, tile, w, h, draw_layer, layer.index))
+    if tile and style.parallax == (1.0, 1.0):  # (parallax layers are drawn with the map)
+        comps.append(_sprite(data, layer, obj, tile, w, h, draw_layer))
+    elif kind == "text":
+        comps.append(_text(obj, style, w, h, units.pixels_per_meter, draw_layer, layer.index))
     if _truthy(props.get("collider")):
         comps.append(_collider(kind, w, h, points, props))
         body = str(props.get("body", "static")).lower()
@@ -235,21 +236,84 @@ def _components(
 
 
 def _sprite(
-    data: MapData, obj: Any, tile: int, w: float, h: float, layer: int, index: int
+    data: MapData,
+    layer: ObjectLayerData,
+    obj: ObjectData,
+    tile: int,
+    w: float,
+    h: float,
+    draw_layer: int,
 ) -> Sprite:
+    """The Sprite of a tile object: its layer's opacity, tint and visibility, its own flips."""
     table = data.tiles
     img = table.images[int(table.image[tile])]
     x, y, tw, th = (int(v) for v in table.rect[tile])
     iw, ih = table.image_sizes[int(table.image[tile])]
     region = None if (x, y, tw, th) == (0, 0, iw, ih) else (x, y, tw, th)
+    style = layer.style
+    r, g, b, a = style.tint
+    order = layer.index - 1000
+    if data.orientation != "orthogonal" and layer.draworder == "topdown":
+        order = depth_order(data, obj)
     return Sprite(
         str(img),
-        layer=layer,
-        order=index - 1000,
+        layer=int(layer.properties.get("layer", draw_layer)),
+        order=order,
         region=region,
         size=(w, h),
-        flip_x=bool(int(obj.gid) & TILED_FLIP_H),
-        flip_y=bool(int(obj.gid) & TILED_FLIP_V),
+        tint=(r, g, b),
+        opacity=round(255 * style.opacity * a / 255),
+        visible=style.visible and obj.visible,
+        flip_x=bool(obj.gid & TILED_FLIP_H),
+        flip_y=bool(obj.gid & TILED_FLIP_V),
+    )
+
+
+def depth_order(data: MapData, obj: ObjectData) -> int:
+    """Draw order of a tile object among depth-sorted tile rows (see TileMap.depth_order)."""
+    grid = data.grid
+    assert grid is not None
+    _, py = grid.object_px(obj.x, obj.y)
+    return DEPTH_BASE + round(py * DEPTH_STEPS / max(grid.tile_h, 1))
+
+
+#: tile rows of non-orthogonal maps and their objects sort in orders from here up
+DEPTH_BASE = 100_000
+DEPTH_STEPS = 4  #: orders per tile height of depth (objects between two rows)
+
+
+def _text(
+    obj: ObjectData, style: Any, w: float, h: float, ppm: float, layer: int, index: int
+) -> Text:
+    """A Tiled text object as kge Text, aligned in its box as Tiled aligns it."""
+    t = obj.text
+    halign = str(t.get("halign", "left"))
+    valign = str(t.get("valign", "top"))
+    ax = {"left": 0.0, "center": 0.5, "right": 1.0, "justify": 0.0}.get(halign, 0.0)
+    ay = {"top": 1.0, "center": 0.5, "bottom": 0.0}.get(valign, 1.0)
+    r, g, b, a = (0, 0, 0, 255)
+    if t.get("color"):
+        from kge.tilemap.values import color
+
+        r, g, b, a = color(t["color"], obj.name, "text colour")
+    tr, tg, tb, ta = style.tint
+    pixelsize = float(t.get("pixelsize", 16))
+    return Text(
+        str(t.get("text", "")),
+        size=max(pixelsize * 0.75, 1.0),  # points: 16 map pixels at 96 dpi
+        color=(
+            r * tr // 255,
+            g * tg // 255,
+            b * tb // 255,
+            round(a * ta / 255 * style.opacity),
+        ),
+        anchor=(ax, ay),
+        bold=str(t.get("bold", "0")).lower() in ("1", "true"),
+        offset=((ax - 0.5) * w, (ay - 0.5) * h),
+        layer=layer,
+        order=index - 1000,
+        visible=style.visible and obj.visible,
+        font=str(t["fontfamily"]) if t.get("fontfamily") else None,
     )
 
 

@@ -1,126 +1,365 @@
-"""Tiled files (TMX/TSX or JSON/TSJ) -> :class:`~kge.tilemap.model.MapData`.
+"""Tiled files (TMX/TSX/TX or JSON) -> :class:`~kge.tilemap.model.MapData`.
 
-pytiled-parser reads the files (external and embedded tilesets, image
-collections, infinite maps, group layers); this module turns its objects into
-numpy grids and lookup tables once, and refuses what kge cannot use with a
-:class:`TilemapError` naming the file and layer.
+kge reads Tiled's files itself (:mod:`kge.tilemap.source`), so that every file
+a map names is read through one confined reader with size limits
+(:mod:`kge.tilemap.files`), every version of the format since Tiled 1.0 gets
+Tiled's defaults for what it omits, and every refusal is a
+:class:`TilemapError` naming the file, the layer and what is wrong, raised
+before anything is allocated or spawned.
 """
 
 from __future__ import annotations
 
-import json
-import xml.etree.ElementTree as ElementTree
-from collections.abc import Iterator
+import os
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from kge.tilemap.errors import TilemapError
+from kge.tilemap.files import MapLimits, MapReader
+from kge.tilemap.grid import ORIENTATIONS, GridShape
+from kge.tilemap.layerdata import decode_tiles
 from kge.tilemap.model import (
-    EMPTY,
-    ONE_WAY,
-    SHAPES,
-    SOLID,
-    GidTable,
+    GID_MASK,
     ImageLayerData,
     LayerStyle,
     MapData,
+    ObjectData,
     ObjectLayerData,
     TileLayerData,
-    TilesetData,
-    TileShape,
     split_gids,
 )
+from kge.tilemap.source import MapSource
+from kge.tilemap.tilesets import TilesetBuilder
+from kge.tilemap.tileshapes import covers_tile
 from kge.tilemap.units import MapUnits
+from kge.tilemap.values import color, flag, number, properties
 
-SUPPORTED_ORIENTATIONS = ("orthogonal",)
+__all__ = ["covers_tile", "read_map"]
 
 
 def read_map(
-    path: str | Path,
+    path: str | os.PathLike[str],
     *,
     pixels_per_meter: float | None = None,
     origin: tuple[float, float] = (0.0, 0.0),
+    roots: Iterable[str | os.PathLike[str]] = (),
+    limits: MapLimits | None = None,
 ) -> MapData:
-    """Parse the map at ``path``; ``pixels_per_meter`` defaults to the tile width."""
-    import pytiled_parser
+    """Parse the map at ``path``; ``pixels_per_meter`` defaults to the tile width.
 
-    p = Path(path)
+    ``roots`` are folders besides the map's own that its tilesets, templates
+    and images may be in; ``limits`` bounds sizes (see :class:`MapLimits`).
+    """
+    p = Path(os.path.abspath(path))
     if not p.is_file():
-        raise TilemapError(f"map file {str(p)!r} not found")
+        raise TilemapError(f"map file {str(path)!r} not found")
+    reader = MapReader(p, roots, limits)
     try:
-        tmap = pytiled_parser.parse_map(p)
-    except FileNotFoundError as exc:
-        raise TilemapError(
-            f"{p}: file {exc.filename or exc} not found (a tileset or template)"
-        ) from exc
-    except (
-        ValueError,
-        KeyError,
-        TypeError,
-        AttributeError,
-        IndexError,
-        OSError,
-        ElementTree.ParseError,
-        json.JSONDecodeError,
-    ) as exc:
+        return _build(MapSource(reader), pixels_per_meter, origin)
+    except TilemapError:
+        raise
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError, OverflowError) as exc:
         raise TilemapError(f"{p}: cannot read the map ({type(exc).__name__}: {exc})") from exc
-    if tmap.orientation not in SUPPORTED_ORIENTATIONS:
+    except RecursionError:
+        raise TilemapError(f"{p}: the file nests too deeply to be a Tiled map") from None
+
+
+def _style(d: dict[str, Any], where: str) -> LayerStyle:
+    tint = d.get("tintcolor")
+    return LayerStyle(
+        opacity=min(max(number(d, "opacity", where, "layer", 1.0, integer=False), 0.0), 1.0),
+        visible=flag(d, "visible", True),
+        tint=(255, 255, 255, 255) if not tint else color(tint, where, "tintcolor"),
+        offset=(
+            number(d, "offsetx", where, "layer", 0.0, integer=False),
+            number(d, "offsety", where, "layer", 0.0, integer=False),
+        ),
+        parallax=(
+            number(d, "parallaxx", where, "layer", 1.0, integer=False),
+            number(d, "parallaxy", where, "layer", 1.0, integer=False),
+        ),
+    )
+
+
+def _flatten(
+    layers: list[Any], outer: LayerStyle, prefix: str, where: str
+) -> Iterator[tuple[str, dict[str, Any], LayerStyle]]:
+    """Leaf layers in draw order, each with its name path and combined style."""
+    for d in layers:
+        name = f"{prefix}{d.get('name', '')}"
+        style = outer.nested(_style(d, f"{where}: layer {name!r}"))
+        if d.get("type") == "group":
+            yield from _flatten(d.get("layers") or [], style, f"{name}/", where)
+        elif d.get("type") in ("tilelayer", "objectgroup", "imagelayer"):
+            yield name, d, style
+        else:
+            raise TilemapError(f"{where}: layer {name!r} has unknown type {d.get('type')!r}")
+
+
+def _grid_shape(doc: dict[str, Any], where: str, limits: MapLimits) -> GridShape:
+    orientation = str(doc.get("orientation", "orthogonal"))
+    if orientation not in ORIENTATIONS:
         raise TilemapError(
-            f"{p}: orientation {tmap.orientation!r} is not supported (orthogonal maps only)"
+            f"{where}: orientation {orientation!r} is not a Tiled orientation "
+            f"({', '.join(ORIENTATIONS)})"
         )
-    tw, th = int(tmap.tile_size.width), int(tmap.tile_size.height)
-    ppm = float(pixels_per_meter) if pixels_per_meter is not None else float(tw)
+    cols = number(doc, "width", where, "map", minimum=0)
+    rows = number(doc, "height", where, "map", minimum=0)
+    tw = number(doc, "tilewidth", where, "map", minimum=1)
+    th = number(doc, "tileheight", where, "map", minimum=1)
+    limits.check(f"{where}: the map's width x height in tiles", cols * rows, "tiles")
+    axis = str(doc.get("staggeraxis", "y"))
+    index = str(doc.get("staggerindex", "odd"))
+    if axis not in ("x", "y") or index not in ("odd", "even"):
+        raise TilemapError(
+            f"{where}: staggeraxis {axis!r} / staggerindex {index!r} are not x|y / odd|even"
+        )
+    side = number(doc, "hexsidelength", where, "map", 0, minimum=0)
+    return GridShape(orientation, tw, th, cols, rows, axis, index, side)
+
+
+def _extent(
+    doc: dict[str, Any], flat: list[Any], grid: GridShape, where: str, limits: MapLimits
+) -> tuple[int, int, int, int]:
+    """(first column, first row, columns, rows) of the grid holding every layer."""
+    if not flag(doc, "infinite", False):  # maps before Tiled 1.1 have no "infinite"
+        return 0, 0, grid.cols, grid.rows
+    if grid.orientation != "orthogonal":
+        raise TilemapError(
+            f"{where}: infinite {grid.orientation} maps are not supported; in Tiled uncheck "
+            "Map > Map Properties > Infinite (kge reads infinite orthogonal maps)"
+        )
+    boxes = []
+    for name, d, _ in flat:
+        for ch in d.get("chunks") or []:
+            w = f"{where}: layer {name!r}: chunk"
+            boxes.append(
+                (
+                    number(ch, "x", w, "chunk"),
+                    number(ch, "y", w, "chunk"),
+                    number(ch, "width", w, "chunk", minimum=1),
+                    number(ch, "height", w, "chunk", minimum=1),
+                )
+            )
+    if not boxes:
+        return 0, 0, 1, 1
+    x0 = min(b[0] for b in boxes)
+    y0 = min(b[1] for b in boxes)
+    x1 = max(b[0] + b[2] for b in boxes)
+    y1 = max(b[1] + b[3] for b in boxes)
+    limits.check(
+        f"{where}: the chunks' span ({x1 - x0} x {y1 - y0} tiles)", (x1 - x0) * (y1 - y0), "tiles"
+    )
+    return x0, y0, x1 - x0, y1 - y0
+
+
+def _tile_grid(
+    d: dict[str, Any], where: str, col0: int, row0: int, cols: int, rows: int
+) -> np.ndarray:
+    chunks = d.get("chunks")
+    out = np.zeros((rows, cols), np.uint32)
+    if chunks:
+        for ch in chunks:
+            w, h = int(ch["width"]), int(ch["height"])
+            data = decode_tiles(ch.get("data"), w * h, f"{where}: chunk at {ch['x']},{ch['y']}")
+            y, x = int(ch["y"]) - row0, int(ch["x"]) - col0
+            out[y : y + h, x : x + w] = data.reshape(h, w)
+        return out
+    if "data" not in d:
+        return out
+    lw = number(d, "width", where, "tile layer", cols, minimum=0)
+    lh = number(d, "height", where, "tile layer", rows, minimum=0)
+    if (lw, lh) != (cols, rows):
+        raise TilemapError(f"{where}: the layer is {lw} x {lh} tiles, the map {cols} x {rows}")
+    out[:] = decode_tiles(d["data"], cols * rows, where).reshape(rows, cols)
+    return out
+
+
+class _Objects:
+    """Object dicts (templates applied) -> :class:`ObjectData`, with unique ids."""
+
+    def __init__(self, source: MapSource, tilesets: list[dict[str, Any]], limits: MapLimits):
+        self.source = source
+        self.tilesets = tilesets
+        self.limits = limits
+        self.count = 0
+        self.used: set[int] = set()
+        self.pending: list[ObjectData] = []
+
+    def _template(self, o: dict[str, Any], where: str) -> dict[str, Any]:
+        t = self.source.template(self.source.path, str(o["template"]))
+        merged = {**t["object"], **{k: v for k, v in o.items() if k != "template"}}
+        if "properties" in o and "properties" in t["object"]:
+            names = {p.get("name") for p in o["properties"]}
+            merged["properties"] = [
+                *(p for p in t["object"]["properties"] if p.get("name") not in names),
+                *o["properties"],
+            ]
+        ts = t.get("tileset")
+        if "gid" in t["object"] and "gid" not in o and isinstance(ts, dict):
+            merged["gid"] = self._template_gid(int(t["object"]["gid"]), ts, where)
+        return merged
+
+    def _template_gid(self, gid: int, ts: dict[str, Any], where: str) -> int:
+        local = (gid & GID_MASK) - int(ts.get("firstgid", 1))
+        for m in self.tilesets:
+            if m.get("_file") == ts.get("_path"):
+                return (gid & ~GID_MASK & 0xFFFFFFFF) | (int(m["firstgid"]) + local)
+        raise TilemapError(
+            f"{where}: its template's tileset {ts.get('source')!r} is not one of the map's "
+            "tilesets (add it to the map in Tiled)"
+        )
+
+    def convert(self, o: dict[str, Any], where: str) -> ObjectData:
+        self.count += 1
+        self.limits.check(f"{self.source.path}: the number of objects", self.count, "objects")
+        if o.get("template"):
+            o = self._template(o, where)
+        oid = number(o, "id", where, "object", 0, minimum=0)
+        what = f"{where}: object {oid or '(no id)'}"
+        gid = number(o, "gid", what, "object", 0, minimum=0)
+        if gid > 0xFFFFFFFF:
+            raise TilemapError(f"{what}: gid {gid} is not a gid (0 to 2^32 - 1)")
+        kind = (
+            "tile"
+            if gid
+            else "ellipse"
+            if o.get("ellipse")
+            else "point"
+            if o.get("point")
+            else "polygon"
+            if o.get("polygon")
+            else "polyline"
+            if o.get("polyline")
+            else "text"
+            if isinstance(o.get("text"), dict)
+            else "rectangle"
+        )
+        pts: tuple[tuple[float, float], ...] = ()
+        if kind in ("polygon", "polyline"):
+            pts = tuple((float(q["x"]), float(q["y"])) for q in o[kind])
+        text = dict(o["text"]) if kind == "text" else {}
+        if kind == "text" and "text" not in text:
+            text["text"] = ""
+        obj = ObjectData(
+            id=oid,
+            name=str(o.get("name", "")),
+            cls=str(o.get("class", "") or ""),
+            kind=kind,
+            x=number(o, "x", what, "object", 0.0, integer=False),
+            y=number(o, "y", what, "object", 0.0, integer=False),
+            width=number(o, "width", what, "object", 0.0, integer=False, minimum=0),
+            height=number(o, "height", what, "object", 0.0, integer=False, minimum=0),
+            rotation=number(o, "rotation", what, "object", 0.0, integer=False),
+            gid=gid,
+            visible=flag(o, "visible", True),
+            points=pts,
+            text=text,
+            properties=properties(o.get("properties"), what),
+        )
+        if oid:
+            self.used.add(oid)
+        else:  # objects before Tiled 0.11 have no id: numbered after the others
+            self.pending.append(obj)
+        return obj
+
+    def finish(self) -> None:
+        nxt = max(self.used, default=0) + 1
+        for obj in self.pending:
+            obj.id = nxt
+            nxt += 1
+
+
+def _build(source: MapSource, ppm_arg: float | None, origin: tuple[float, float]) -> MapData:
+    doc, p, reader = source.doc, source.path, source.reader
+    where = str(p)
+    limits = reader.limits
+    grid = _grid_shape(doc, where, limits)
+    ppm = float(ppm_arg) if ppm_arg is not None else float(grid.tile_w)
     if not np.isfinite(ppm) or ppm <= 0:
-        raise TilemapError(
-            f"{p}: pixels_per_meter must be a positive number, got {pixels_per_meter!r}"
+        raise TilemapError(f"{p}: pixels_per_meter must be a positive number, got {ppm_arg!r}")
+    tilesets, table = TilesetBuilder(reader).build(doc["tilesets"])
+    flat = list(_flatten(doc["layers"], LayerStyle(), "", where))
+    col0, row0, cols, rows = _extent(doc, flat, grid, where, limits)
+    if (col0, row0, cols, rows) != (0, 0, grid.cols, grid.rows):
+        grid = GridShape(
+            grid.orientation,
+            grid.tile_w,
+            grid.tile_h,
+            cols,
+            rows,
+            grid.stagger_axis,
+            grid.stagger_index,
+            grid.side,
+            col0,
+            row0,
         )
-    tilesets, table = _tilesets(p, tmap.tilesets)
-    flat = list(_flatten(tmap.layers, LayerStyle(), ""))
-    col0, row0, cols, rows = _extent(tmap, flat)
-    units = MapUnits(tw, th, ppm, col0, row0, rows, (float(origin[0]), float(origin[1])))
+    height = None if grid.orientation == "orthogonal" else grid.size_px[1]
+    units = MapUnits(
+        grid.tile_w,
+        grid.tile_h,
+        ppm,
+        col0,
+        row0,
+        rows,
+        (float(origin[0]), float(origin[1])),
+        height,
+    )
+    objects = _Objects(source, doc["tilesets"], limits)
     tile_layers: list[TileLayerData] = []
     image_layers: list[ImageLayerData] = []
     object_layers: list[ObjectLayerData] = []
-    for index, (name, layer, style) in enumerate(flat):
-        props = dict(layer.properties or {})
-        if isinstance(layer, pytiled_parser.TileLayer):
-            raw = _grid(p, name, layer, col0, row0, cols, rows)
-            gids, flags = split_gids(raw)
+    for index, (name, d, style) in enumerate(flat):
+        lw = f"{p}: layer {name!r}"
+        props = properties(d.get("properties"), lw)
+        kind = d["type"]
+        if kind == "tilelayer":
+            gids, flags = split_gids(_tile_grid(d, lw, col0, row0, cols, rows))
             bad = ~table.known(gids)
             if bad.any():
                 r, c = (int(v[0]) for v in np.nonzero(bad))
                 raise TilemapError(
-                    f"{p}: layer {name!r}: tile id {int(gids[r, c])} at column {c + col0}, "
-                    f"row {r + row0} is in no tileset"
+                    f"{lw}: tile id {int(gids[r, c])} at column {c + col0}, row {r + row0} "
+                    "is in no tileset"
                 )
             tile_layers.append(TileLayerData(name, index, gids, flags, style, props))
-        elif isinstance(layer, pytiled_parser.ImageLayer):
-            if layer.image is None:
+        elif kind == "imagelayer":
+            if not d.get("image"):
                 continue
-            img = Path(layer.image)
-            if not img.is_absolute():
-                img = p.parent / img
-            _need(p, f"layer {name!r}: image", img)
+            img = reader.resolve(p, str(d["image"]))
+            size = reader.image_size(p, img, f"layer {name!r}: image")
+            key = d.get("transparentcolor")
             image_layers.append(
-                ImageLayerData(name, index, img, style, props, (layer.repeat_x, layer.repeat_y))
+                ImageLayerData(
+                    name,
+                    index,
+                    img,
+                    style,
+                    props,
+                    (flag(d, "repeatx", False), flag(d, "repeaty", False)),
+                    size,
+                    None if not key else color(key, lw, "transparent colour")[:3],
+                )
             )
-        elif isinstance(layer, pytiled_parser.ObjectLayer):
-            for obj in layer.tiled_objects:
-                gid = getattr(obj, "gid", None)
-                if gid is not None:
-                    g = int(gid) & 0x0FFFFFFF
-                    if g >= table.size or table.tileset[g] < 0:
-                        raise TilemapError(
-                            f"{p}: layer {name!r}: object {obj.id} ({obj.name!r}): tile id {g} "
-                            "is in no tileset"
-                        )
-            object_layers.append(
-                ObjectLayerData(name, index, list(layer.tiled_objects), style, props)
-            )
-    bg = tmap.background_color
-    po = tmap.parallax_origin
+        else:
+            objs = [objects.convert(o, lw) for o in d.get("objects") or []]
+            for obj in objs:
+                g = obj.gid & GID_MASK
+                if obj.gid and (g >= table.size or table.tileset[g] < 0):
+                    raise TilemapError(
+                        f"{lw}: object {obj.id} ({obj.name!r}): tile id {g} is in no tileset"
+                    )
+            order = str(d.get("draworder", "topdown"))
+            object_layers.append(ObjectLayerData(name, index, objs, style, props, order))
+    objects.finish()
+    bg = doc.get("backgroundcolor")
+    po = (
+        number(doc, "parallaxoriginx", where, "map", 0.0, integer=False),
+        number(doc, "parallaxoriginy", where, "map", 0.0, integer=False),
+    )
     return MapData(
         path=p,
         units=units,
@@ -131,257 +370,9 @@ def read_map(
         tile_layers=tile_layers,
         image_layers=image_layers,
         object_layers=object_layers,
-        properties=dict(tmap.properties or {}),
-        background=None if bg is None else (bg.red, bg.green, bg.blue, bg.alpha),
-        parallax_origin=units.point(float(po.x), float(po.y)),
+        properties=properties(doc.get("properties"), where),
+        background=None if not bg else color(bg, where, "backgroundcolor"),
+        parallax_origin=units.point(*po),
+        grid=grid,
+        version=str(doc.get("version", "")),
     )
-
-
-def _need(map_path: Path, what: str, file: Path) -> None:
-    if not file.is_file():
-        raise TilemapError(f"{map_path}: {what} {str(file)!r} not found")
-
-
-def _style(layer: Any) -> LayerStyle:
-    tint = layer.tint_color
-    return LayerStyle(
-        opacity=float(layer.opacity),
-        visible=bool(layer.visible),
-        tint=(255, 255, 255, 255)
-        if tint is None
-        else (tint.red, tint.green, tint.blue, tint.alpha),
-        offset=(float(layer.offset.x), float(layer.offset.y)),
-        parallax=(float(layer.parallax_factor.x), float(layer.parallax_factor.y)),
-    )
-
-
-def _flatten(
-    layers: list[Any], outer: LayerStyle, prefix: str
-) -> Iterator[tuple[str, Any, LayerStyle]]:
-    """Leaf layers in draw order, each with its name path and combined style."""
-    import pytiled_parser
-
-    for layer in layers:
-        style = outer.nested(_style(layer))
-        name = f"{prefix}{layer.name}"
-        if isinstance(layer, pytiled_parser.LayerGroup):
-            yield from _flatten(layer.layers or [], style, f"{name}/")
-        else:
-            yield name, layer, style
-
-
-def _extent(tmap: Any, flat: list[tuple[str, Any, LayerStyle]]) -> tuple[int, int, int, int]:
-    """(first column, first row, columns, rows) of the grid holding every layer."""
-    if not tmap.infinite:
-        return 0, 0, int(tmap.map_size.width), int(tmap.map_size.height)
-    boxes = [
-        (int(ch.coordinates.x), int(ch.coordinates.y), int(ch.size.width), int(ch.size.height))
-        for _, layer, _ in flat
-        for ch in (getattr(layer, "chunks", None) or [])
-    ]
-    if not boxes:
-        return 0, 0, 1, 1
-    x0 = min(b[0] for b in boxes)
-    y0 = min(b[1] for b in boxes)
-    x1 = max(b[0] + b[2] for b in boxes)
-    y1 = max(b[1] + b[3] for b in boxes)
-    return x0, y0, x1 - x0, y1 - y0
-
-
-def _grid(p: Path, name: str, layer: Any, col0: int, row0: int, cols: int, rows: int) -> np.ndarray:
-    out = np.zeros((rows, cols), np.uint32)
-    try:
-        if layer.chunks:
-            for ch in layer.chunks:
-                data = np.asarray(ch.data, np.int64).reshape(
-                    int(ch.size.height), int(ch.size.width)
-                )
-                y, x = int(ch.coordinates.y) - row0, int(ch.coordinates.x) - col0
-                out[y : y + data.shape[0], x : x + data.shape[1]] = data
-        elif layer.data:
-            data = np.asarray(layer.data, np.int64)
-            out[: data.shape[0], : data.shape[1]] = data.reshape(data.shape[0], -1)
-    except (ValueError, TypeError) as exc:
-        raise TilemapError(f"{p}: layer {name!r}: tile data does not fit the map ({exc})") from exc
-    return out
-
-
-def _tilesets(p: Path, raw: dict[int, Any]) -> tuple[list[TilesetData], GidTable]:
-    sets: list[TilesetData] = []
-    size = 1
-    for firstgid, ts in sorted(raw.items()):
-        ids = [int(t) for t in (ts.tiles or {})]
-        count = max([int(ts.tile_count or 0), *(i + 1 for i in ids)])
-        size = max(size, firstgid + count)
-    table = GidTable(
-        size=size,
-        tileset=np.full(size, -1, np.int16),
-        image=np.full(size, -1, np.int32),
-        rect=np.zeros((size, 4), np.int32),
-        offset=np.zeros((size, 2), np.int32),
-        kind=np.zeros(size, np.uint8),
-    )
-    image_ids: dict[Path, int] = {}
-
-    def image_id(img: Path, w: int, h: int, what: str) -> int:
-        img = img if img.is_absolute() else p.parent / img
-        _need(p, what, img)
-        if img not in image_ids:
-            image_ids[img] = len(table.images)
-            table.images.append(img)
-            table.image_sizes.append((w, h))
-        return image_ids[img]
-
-    for index, (firstgid, ts) in enumerate(sorted(raw.items())):
-        count = max([int(ts.tile_count or 0), *(int(i) + 1 for i in (ts.tiles or {}))])
-        offset = (
-            (0, 0) if ts.tile_offset is None else (int(ts.tile_offset.x), int(ts.tile_offset.y))
-        )
-        tw, th = int(ts.tile_width), int(ts.tile_height)
-        sheet = None if ts.image is None else Path(ts.image)
-        sets.append(
-            TilesetData(
-                ts.name,
-                firstgid,
-                count,
-                tw,
-                th,
-                int(ts.columns or 0),
-                int(ts.spacing or 0),
-                int(ts.margin or 0),
-                sheet,
-                offset,
-            )
-        )
-        span = slice(firstgid, firstgid + count)
-        table.offset[span] = offset
-        if sheet is not None:
-            img = image_id(
-                sheet,
-                int(ts.image_width or 0),
-                int(ts.image_height or 0),
-                f"tileset {ts.name!r}: image",
-            )
-            cols = max(int(ts.columns or 1), 1)
-            local = np.arange(int(ts.tile_count or 0))
-            sheet_gids = firstgid + local
-            table.tileset[sheet_gids] = index
-            table.image[sheet_gids] = img
-            step_x, step_y = tw + int(ts.spacing or 0), th + int(ts.spacing or 0)
-            table.rect[sheet_gids, 0] = int(ts.margin or 0) + (local % cols) * step_x
-            table.rect[sheet_gids, 1] = int(ts.margin or 0) + (local // cols) * step_y
-            table.rect[sheet_gids, 2] = tw
-            table.rect[sheet_gids, 3] = th
-        tileset_props = dict(ts.properties or {})
-        for tid, tile in (ts.tiles or {}).items():
-            g = firstgid + int(tid)
-            table.tileset[g] = index
-            if tile.image is not None:
-                w, h = int(tile.image_width or tw), int(tile.image_height or th)
-                table.image[g] = image_id(
-                    Path(tile.image), w, h, f"tileset {ts.name!r}: tile {tid} image"
-                )
-                if tile.width and tile.height:  # a sub-rectangle of the image (Tiled 1.9+)
-                    table.rect[g] = (int(tile.x), int(tile.y), int(tile.width), int(tile.height))
-                else:
-                    table.rect[g] = (0, 0, w, h)
-            props = {**tileset_props, **dict(tile.properties or {})}
-            if props:
-                table.properties[g] = props
-            if tile.class_:
-                table.classes[g] = tile.class_
-            shapes = _tile_shapes(tile)
-            if shapes:
-                table.shapes[g] = shapes
-            if tile.animation:
-                frames = np.array([firstgid + int(f.tile_id) for f in tile.animation], np.uint32)
-                ends = np.cumsum([max(int(f.duration), 1) / 1000.0 for f in tile.animation])
-                table.animations[g] = (frames, ends)
-        if tileset_props:
-            for g in range(firstgid, firstgid + count):
-                table.properties.setdefault(g, dict(tileset_props))
-    _classify(table)
-    return sets, table
-
-
-def _tile_shapes(tile: Any) -> list[TileShape]:
-    import pytiled_parser.tiled_object as to
-
-    layer = tile.objects
-    out: list[TileShape] = []
-    for obj in getattr(layer, "tiled_objects", None) or []:
-        x, y = float(obj.coordinates.x), float(obj.coordinates.y)
-        w, h = float(obj.size.width), float(obj.size.height)
-        if isinstance(obj, to.Ellipse):
-            out.append(TileShape("ellipse", x, y, w, h))
-        elif isinstance(obj, (to.Polygon, to.Polyline)):
-            pts = tuple((float(q.x), float(q.y)) for q in obj.points)
-            out.append(TileShape("polygon", x, y, points=pts))
-        elif isinstance(obj, to.Rectangle) and w > 0 and h > 0:
-            out.append(TileShape("rectangle", x, y, w, h))
-    return out
-
-
-def _truthy(value: Any) -> bool:
-    return value is True or (isinstance(value, str) and value.lower() in ("true", "1", "yes"))
-
-
-def _as_box(s: TileShape) -> tuple[float, float, float, float] | None:
-    """(left, top, right, bottom) of an axis-aligned rectangle shape, else None."""
-    if s.kind == "rectangle":
-        return (s.x, s.y, s.x + s.width, s.y + s.height)
-    if s.kind == "polygon" and len(s.points) == 4:
-        xs = [s.x + p[0] for p in s.points]
-        ys = [s.y + p[1] for p in s.points]
-        # four corners of a box: each edge horizontal or vertical, two distinct x and y
-        edges = zip(s.points, s.points[1:] + s.points[:1], strict=True)
-        straight = all(abs(p[0] - q[0]) < 1e-6 or abs(p[1] - q[1]) < 1e-6 for p, q in edges)
-        if straight and max(xs) - min(xs) > 1e-6 and max(ys) - min(ys) > 1e-6:
-            return (min(xs), min(ys), max(xs), max(ys))
-    return None
-
-
-def covers_tile(shapes: list[TileShape], w: float, h: float) -> bool:
-    """True when the shapes are boxes whose union is exactly the w x h tile.
-
-    Such a tile is solid like a tile marked ``solid``: it joins its neighbours'
-    merged outline instead of becoming colliders of its own (one full rectangle,
-    two halves, a square drawn as a polygon...). Exact on the tile's own
-    coordinates: the box edges cut the tile into cells, and every cell must be
-    covered, nothing outside the tile.
-
-    >>> covers_tile([TileShape("rectangle", 0, 0, 16, 8), TileShape("rectangle", 0, 8, 16, 8)],
-    ...             16, 16)
-    True
-    >>> covers_tile([TileShape("rectangle", 0, 0, 16, 12)], 16, 16)
-    False
-    """
-    boxes = [_as_box(s) for s in shapes]
-    if not boxes or w <= 0 or h <= 0 or any(b is None for b in boxes):
-        return False
-    arr = np.round(np.array(boxes, float), 6)  # edges within 1e-6 px are one edge
-    if arr[:, 0].min() < 0 or arr[:, 1].min() < 0 or arr[:, 2].max() > w or arr[:, 3].max() > h:
-        return False
-    xs = np.unique(np.concatenate([[0.0, float(w)], arr[:, 0], arr[:, 2]]))
-    ys = np.unique(np.concatenate([[0.0, float(h)], arr[:, 1], arr[:, 3]]))
-    covered = np.zeros((len(ys) - 1, len(xs) - 1), bool)
-    for x0, y0, x1, y1 in arr.tolist():
-        i0, i1 = np.searchsorted(xs, [x0, x1])
-        j0, j1 = np.searchsorted(ys, [y0, y1])
-        covered[j0:j1, i0:i1] = True
-    return bool(covered.all())
-
-
-def _classify(table: GidTable) -> None:
-    """Collision kind per gid from its properties and collision shapes."""
-    for g, props in table.properties.items():
-        if _truthy(props.get("one_way")):
-            table.kind[g] = ONE_WAY
-        elif _truthy(props.get("solid")):
-            table.kind[g] = SOLID
-    for g, shapes in table.shapes.items():
-        if table.kind[g] != EMPTY:
-            continue
-        w, h = int(table.rect[g, 2]), int(table.rect[g, 3])
-        full = covers_tile(shapes, w, h)
-        table.kind[g] = SOLID if full else SHAPES

@@ -31,10 +31,14 @@ class MapUnits:
     row0: int  #: Tiled row of the grid's first row
     rows: int  #: rows in the grid
     origin: tuple[float, float] = (0.0, 0.0)  #: world position of the grid's bottom-left
+    #: the map's pixel height when it is not rows x tile height (isometric, hexagonal...)
+    height_px: float | None = None
 
     @property
     def bottom_px(self) -> float:
         """Tiled's pixel y of the grid's bottom edge."""
+        if self.height_px is not None:
+            return float(self.height_px)
         return float((self.row0 + self.rows) * self.tile_h)
 
     @property
@@ -69,6 +73,11 @@ class MapUnits:
     def tile_size(self) -> tuple[float, float]:
         """One grid cell in metres."""
         return (self.tile_w / self.pixels_per_meter, self.tile_h / self.pixels_per_meter)
+
+    def pixel(self, x: float, y: float) -> tuple[float, float]:
+        """A world point (metres, y up) as Tiled map pixels (y down): :meth:`point` inverted."""
+        s = self.pixels_per_meter
+        return (self.left_px + (x - self.origin[0]) * s, self.bottom_px - (y - self.origin[1]) * s)
 
     def cell_at(self, x: float, y: float) -> tuple[int, int]:
         """The (column, row) grid index (0-based, row 0 at the top) under a world point."""

@@ -190,8 +190,14 @@ def write_map(
     *,
     properties: dict[str, Any] | None = None,
     orientation: str = "orthogonal",
+    stagger_axis: str = "y",
+    stagger_index: str = "odd",
+    hex_side: int = 0,
 ) -> None:
-    """Write a TMX map (CSV tile data); the size comes from the first tile layer."""
+    """Write a TMX map (CSV tile data); the size comes from the first tile layer.
+
+    Staggered and hexagonal maps get ``stagger_axis``/``stagger_index`` (and
+    hexagonal ones ``hex_side``, Tiled's ``hexsidelength``)."""
     path = Path(path)
     grids = [s.grid for s in _leaves(layers) if isinstance(s, TileLayerSpec)]
     rows = len(grids[0]) if grids else 1
@@ -212,11 +218,18 @@ def write_map(
         gid = first + max(ts.count, max(ts.tiles, default=-1) + 1)
     ids = [0]
     body = "".join(_layer(s, ids) for s in layers)
+    stagger = ""
+    if orientation in ("staggered", "hexagonal"):
+        stagger = f' staggeraxis="{stagger_axis}" staggerindex="{stagger_index}"'
+        if orientation == "hexagonal":
+            stagger += f' hexsidelength="{int(hex_side)}"'
+
     path.write_text(
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         f'<map version="1.10" tiledversion="1.10.2" orientation="{orientation}" '
         'renderorder="right-down" '
-        f'width="{cols}" height="{rows}" tilewidth="{tile_w}" tileheight="{tile_h}" infinite="0" '
+        f'width="{cols}" height="{rows}" tilewidth="{tile_w}" tileheight="{tile_h}"{stagger} '
+        'infinite="0" '
         f'nextlayerid="{ids[0] + 1}" nextobjectid="1000">'
         f"{_props(properties or {})}{sets}{body}</map>\n"
     )

@@ -344,3 +344,25 @@ def test_bad_gifs_are_refused_with_the_file_named(tmp_path: Path) -> None:
     (tmp_path / "junk.gif").write_bytes(b"not an image")
     with pytest.raises(ValidationError, match="not an image Pillow can read"):
         gif_clip(str(tmp_path / "junk.gif"))
+
+
+def test_playing_a_clip_not_yet_played_after_frames_were_drawn(make_app: Any, sheet: Any) -> None:
+    """play() of a clip the animator has not played yet, after rendering: the clip table's
+    arrays are rebuilt before the frame is drawn (it indexed stale arrays: IndexError)."""
+    clips = {
+        "idle": Clip.grid(sheet, (4, 1), frames=[0], duration=0.1),
+        "run": Clip.grid(sheet, (4, 1), frames=[1, 2, 3, 2], duration=0.1),
+        "jump": Clip.grid(sheet, (4, 1), frames=[3], duration=0.1),
+    }
+
+    def setup(world: World) -> None:
+        world.spawn(Transform(), Sprite(sheet, size=(1, 1)), Animator(clips))
+
+    app = make_app(setup, fixed_dt=DT)
+    assert centre_colour(app) == COLOURS[0]
+    app.step(1)
+    app.world.get(1, Animator).play("run")
+    app.step(1)
+    assert centre_colour(app) == COLOURS[1]
+    app.world.get(1, Animator).play("jump")
+    assert centre_colour(app) == COLOURS[3]

@@ -20,7 +20,6 @@ from kge.assets import (
     AssetError,
     AssetNotFoundError,
     Assets,
-    DecoderMissingError,
     SoundData,
     tone,
 )
@@ -146,17 +145,12 @@ def test_undecodable_files_raise_decode_errors(store: Assets, sound_dir: Path):
         store.image("broken.png")
 
 
-def test_ogg_without_decoder_says_what_to_install(store: Assets, sound_dir: Path):
-    from kge.assets.loaders import available_decoders
-
+def test_corrupt_ogg_is_refused_at_the_call_naming_the_file(store: Assets, sound_dir: Path):
     (sound_dir / "music.ogg").write_bytes(b"OggS" + bytes(200))
     with pytest.raises(AssetDecodeError) as info:
         store.sound("music.ogg")
-    message = str(info.value)
-    assert str(sound_dir / "music.ogg") in message
-    if not available_decoders(".ogg"):  # this machine: no FFmpeg, no PyOgg
-        assert isinstance(info.value, DecoderMissingError)
-        assert "FFmpeg" in message and "pyogg" in message and "WAV" in message
+    assert str(sound_dir / "music.ogg") in str(info.value)
+    assert "not a readable sound" in str(info.value)
 
 
 def test_images_load_as_pyglet_images_and_are_cached(tmp_path: Path):

@@ -113,16 +113,18 @@ def test_run_without_a_display_says_so_instead_of_running_silently() -> None:
 
 def test_a_python_without_kge_is_told_which_python_to_use(tmp_path: Path) -> None:
     root = Path(__file__).resolve().parents[2]
-    # -S: no site-packages, as the system Python in a fresh checkout
+    # -S: no site-packages, as the system Python in a fresh checkout (and no PYTHONPATH
+    # naming a kge checkout, as the suite's own environment may)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     example = subprocess.run(
         [sys.executable, "-S", str(root / "examples" / "pong.py")],
-        cwd=tmp_path, capture_output=True, text=True, timeout=60,
+        cwd=tmp_path, capture_output=True, text=True, timeout=60, env=env,
     )  # fmt: skip
     assert example.returncode == 1
     assert "has no kge" in example.stderr and ".venv/bin/python" in example.stderr
     package = subprocess.run(
         [sys.executable, "-S", "-m", "kge", "testbed", "--list"],
-        cwd=root, capture_output=True, text=True, timeout=60,
+        cwd=root, capture_output=True, text=True, timeout=60, env=env,
     )  # fmt: skip
     assert package.returncode == 1
     last = package.stderr.strip().splitlines()[-1]

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import Any
+
 import pytest
 
 from kge.schedule import Stage
@@ -25,3 +28,12 @@ class Stepper:
 @pytest.fixture
 def sim() -> Stepper:
     return Stepper()
+
+
+@pytest.fixture
+def apps() -> Iterator[list[Any]]:
+    """Apps a render test made, closed after it."""
+    made: list[Any] = []
+    yield made
+    for a in made:
+        a.close()

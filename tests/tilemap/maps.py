@@ -39,8 +39,9 @@ def sheet() -> np.ndarray:
 ANIMATION = [(4, 100), (5, 100)]
 
 
-def tileset(external: str | None = None, animation: list[tuple[int, int]] | None = None
-            ) -> TilesetSpec:
+def tileset(
+    external: str | None = None, animation: list[tuple[int, int]] | None = None
+) -> TilesetSpec:
     return TilesetSpec(
         "tiles",
         "tiles.png",

@@ -106,15 +106,16 @@ def test_the_drawn_pixels_follow_the_clip(level: tuple[App, TileMap]) -> None:
 def test_map_clips_use_the_animation_systems_clip_state(level: tuple[App, TileMap]) -> None:
     """One clip-table row per animated gid, advanced by ClipState (no ticker of its own)."""
     app, tmap = level
-    (system,) = [s for s in app.world.schedule.systems() if isinstance(s, TileAnimationSystem)]
+    assert [s for s in app.world.schedule.systems() if isinstance(s, TileAnimationSystem)]
     app.step(1)
-    (_, clips) = system.clips[id(tmap)]
+    clips = tmap.clock
     assert isinstance(clips, MapClips) and clips.gids.tolist() == [ANIM_A]
     assert len(clips.state) == 1 and clips.state.playing.all()
     assert clips.state.table.infos[0].clip.durations == pytest.approx((0.1, 0.05, 0.2))
     tmap.unload()
+    time = clips.state.time.copy()
     app.step(1)
-    assert id(tmap) not in system.clips
+    assert np.array_equal(clips.state.time, time)  # an unloaded map's clock stops
 
 
 def test_the_platformer_levels_water_animates(tmp_path: Path) -> None:

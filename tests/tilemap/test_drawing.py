@@ -6,7 +6,6 @@ import os
 
 os.environ.setdefault("PYGLET_HEADLESS", "1")
 
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -23,14 +22,6 @@ from .maps import ANIM_A, COLORS, DECOR, GROUND, MARK, ONE_WAY, write_level
 
 SIZE = (200, 160)
 PPM = 20  # window pixels per metre; a tile is 1 m
-
-
-@pytest.fixture
-def apps() -> Iterator[list[App]]:
-    made: list[App] = []
-    yield made
-    for a in made:
-        a.close()
 
 
 def render(apps: list[App], setup: Any) -> tuple[App, np.ndarray]:

@@ -39,24 +39,24 @@ def test_missing_tileset_image(tmp_path: Path, sim: Stepper) -> None:
         load_map(sim.world, path)
 
 
-def test_unsupported_orientation(tmp_path: Path, sim: Stepper) -> None:
+def test_unknown_orientation(tmp_path: Path, sim: Stepper) -> None:
     ts = TilesetSpec("t", "tiles.png", 16, 16, columns=4, count=8, image_size=(64, 32))
     from kge.tilemap.writer import TileLayerSpec
 
     write_map(
-        tmp_path / "iso.tmx", 16, 16, [ts], [TileLayerSpec("L", floor())], orientation="isometric"
+        tmp_path / "ob.tmx", 16, 16, [ts], [TileLayerSpec("L", floor())], orientation="oblique"
     )
-    with pytest.raises(TilemapError, match="orientation 'isometric' is not supported"):
-        load_map(sim.world, tmp_path / "iso.tmx")
+    with pytest.raises(TilemapError, match="orientation 'oblique' is not a Tiled orientation"):
+        load_map(sim.world, tmp_path / "ob.tmx")
 
 
-def test_unsupported_encoding(tmp_path: Path, sim: Stepper) -> None:
+def test_corrupt_zstd_layer(tmp_path: Path, sim: Stepper) -> None:
     path = write_level(tmp_path, floor())
     text = path.read_text()
     start = text.index('<data encoding="csv">')
     end = text.index("</data>")
     path.write_text(text[:start] + '<data encoding="base64" compression="zstd">AAAA' + text[end:])
-    with pytest.raises(TilemapError, match=r"level.tmx: cannot read the map .*zstd"):
+    with pytest.raises(TilemapError, match=r"level.tmx: layer 'Ground': corrupt zstd data"):
         load_map(sim.world, path)
 
 

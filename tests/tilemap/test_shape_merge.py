@@ -39,7 +39,9 @@ def _write(folder: Path, grid: np.ndarray) -> Path:
             ]
         },
         3: {  # the bottom three quarters only: a collider of its own
-            "collision": [{"kind": "rectangle", "x": 0, "y": T / 4, "width": T, "height": 3 * T / 4}]
+            "collision": [
+                {"kind": "rectangle", "x": 0, "y": T / 4, "width": T, "height": 3 * T / 4}
+            ]
         },
     }
     ts = TilesetSpec("t", "t.png", T, T, columns=4, count=4, image_size=(4 * T, T), tiles=tiles)

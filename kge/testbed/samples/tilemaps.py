@@ -23,8 +23,7 @@ from kge.systems.animation import tweens_of
 from kge.testbed import png
 from kge.testbed.registry import sample
 from kge.testbed.samples.build import named
-from kge.tilemap import load_map
-from kge.tilemap.runtime import TileMaps
+from kge.tilemap import load_map, maps_in
 from kge.tilemap.writer import ObjectLayerSpec, TileLayerSpec, TilesetSpec, write_map
 from kge.world import World
 
@@ -261,7 +260,7 @@ def rippling_water(world: World) -> None:
 
 @rippling_water.claim
 def _the_water_layer_has_its_material_and_it_moves(app: Any) -> None:
-    (tmap,) = app.world.resource(TileMaps).maps
+    (tmap,) = maps_in(app.world).maps
     strength = tmap.materials["Water"].uniforms["strength"]
     assert 0.2 < strength <= 0.9, f"the tween drives the layer's material: {strength}"
 
@@ -293,3 +292,53 @@ def _balls_stay_inside_the_cave_outlines(app: Any) -> None:
     for e in named(world, "ball"):
         x, y = world.get(e, Transform).position
         assert 0.0 < x < 100.0 and 0.0 < y < 100.0, f"a ball left the map through a wall: {x, y}"
+
+
+def _iso_sheet() -> np.ndarray:
+    """Two 32 x 16 diamonds: a grey floor and a brown wall with a lighter top edge."""
+    img = np.zeros((16, 64, 4), np.uint8)
+    y, x = np.mgrid[0:16, 0:32] + 0.5
+    diamond = np.abs(x - 16) / 16 + np.abs(y - 8) / 8 <= 1.0
+    img[:, :32][diamond] = (150, 150, 160, 255)
+    img[:, 32:][diamond] = (120, 80, 50, 255)
+    img[:, 32:][diamond & (y < 5)] = (170, 120, 80, 255)
+    return img
+
+
+@sample(
+    "Tilemaps",
+    "Isometric Room",
+    help="An isometric Tiled map seen from above: its walls merge into outlines on the "
+    "diamonds, and pucks slide without gravity, bouncing off them.",
+)
+def isometric_room(world: World, n: int = 12) -> None:
+    folder = Path(tempfile.mkdtemp(prefix="kge-iso-"))
+    png.write(folder / "iso.png", _iso_sheet())
+    ts = TilesetSpec("iso", "iso.png", 32, 16, columns=2, count=2, image_size=(64, 16),
+                     tiles={1: {"properties": {"solid": True}}})  # fmt: skip
+    walls = np.zeros((n, n), np.int64)
+    walls[[0, -1], :] = walls[:, [0, -1]] = 2
+    walls[n // 2 - 1 : n // 2 + 1, n // 2 - 1 : n // 2 + 1] = 2  # a pillar in the middle
+    layers = [TileLayerSpec("Floor", np.ones((n, n), np.int64)), TileLayerSpec("Walls", walls)]
+    write_map(folder / "room.tmx", 32, 16, [ts], layers, orientation="isometric")
+    room = load_map(world, folder / "room.tmx")
+    for i, (col, row) in enumerate(((2, 2), (2, n - 3), (n - 3, 2), (n - 3, n - 3), (3, 7))):
+        world.spawn(
+            Transform(*room.cell_center(col, row)),
+            RigidBody(gravity_scale=0.0, velocity=(2.0 - i, 1.5 if i % 2 else -1.5)),
+            Collider(Circle(0.12), restitution=1.0, friction=0.0),
+            Name("puck"),
+        )
+
+
+@isometric_room.claim
+def _pucks_stay_in_the_room(app: Any) -> None:
+    world = app.world
+    (room,) = maps_in(world).maps
+    n = room.data.cols
+    for e in named(world, "puck"):
+        cell = room.cell_at(world.get(e, Transform).position)
+        assert cell is not None and 0 < cell[0] < n - 1 and 0 < cell[1] < n - 1, (
+            f"a puck crossed a wall: cell {cell}"
+        )
+        assert room.tile("Walls", *cell) == 0, f"a puck is inside a wall cell {cell}"
