@@ -8,13 +8,20 @@ from __future__ import annotations
 
 import ctypes
 import ctypes.util
+import json
 import os
+import selectors
 import shutil
 import subprocess
-from collections.abc import Iterator
+import time
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from typing import Any
 
 import pytest
+
+#: seconds to wait for any one report (a busy machine is slow, never wrong)
+TIMEOUT = 60.0
 
 
 def need(tool: str) -> str:
@@ -96,3 +103,56 @@ def virtual_display(screen: str = "800x600x24") -> Iterator[tuple[str, dict[str,
         server.terminate()
         server.wait(timeout=10)
         os.close(read)
+
+
+class Reports:
+    """A windowed child's reports, one JSON object per line of its stdout, read as they
+    come: a test waits for the report it expects before its next input (never a fixed
+    sleep). Lines that are not JSON objects (the child's own output) are kept in
+    ``text``."""
+
+    def __init__(self, proc: subprocess.Popen[bytes]) -> None:
+        assert proc.stdout is not None
+        self.proc, self.stream = proc, proc.stdout
+        self.sel = selectors.DefaultSelector()
+        self.sel.register(self.stream, selectors.EVENT_READ)
+        self.buf = b""
+        self.seen: list[dict[str, Any]] = []
+        self.text: list[str] = []
+
+    def _take_lines(self, want: Callable[[dict[str, Any]], object]) -> dict[str, Any] | None:
+        while b"\n" in self.buf:
+            line, self.buf = self.buf.split(b"\n", 1)
+            try:
+                got = json.loads(line)
+            except ValueError:
+                got = None
+            if not isinstance(got, dict):
+                self.text.append(line.decode(errors="replace"))
+                continue
+            self.seen.append(got)
+            if want(got):
+                return got
+        return None
+
+    def wait(self, want: Callable[[dict[str, Any]], object], what: str) -> dict[str, Any]:
+        """The first report (from now on) for which ``want`` is true."""
+        deadline = time.monotonic() + TIMEOUT
+        while True:
+            got = self._take_lines(want)
+            if got is not None:
+                return got
+            left = deadline - time.monotonic()
+            if left <= 0 or (self.proc.poll() is not None and not self.sel.select(0)):
+                raise AssertionError(f"the app never reported {what}; it said {self.seen}")
+            if self.sel.select(timeout=left):
+                chunk = os.read(self.stream.fileno(), 4096)
+                if not chunk:
+                    raise AssertionError(f"the app exited before {what}; it said {self.seen}")
+                self.buf += chunk
+
+    def rest(self) -> list[str]:
+        """Read to the end of the child's output (call once it exits); the text lines."""
+        self.buf += self.stream.read()
+        self._take_lines(lambda _: False)
+        return self.text

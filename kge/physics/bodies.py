@@ -371,6 +371,32 @@ def _one_component(space: pymunk.Space, sleepers: list[pymunk.Body]) -> bool:
     return want <= reached
 
 
+def woken_with(
+    space: pymunk.Space, body: pymunk.Body, seen_awake: Callable[[pymunk.Body], bool]
+) -> list[pymunk.Body]:
+    """The bodies Chipmunk woke together with ``body`` that kge still takes for sleepers.
+
+    Waking one body of a sleeping component wakes the whole component (Box2D: the
+    next step's island solve wakes every body of the island). kge learns of a wake
+    in sync-out from a body's motion, so a woken body that does not move (held by a
+    joint, no gravity) would keep reading asleep. The component is every body
+    reached from ``body`` through contacts and joints that Chipmunk has awake and
+    kge last saw asleep (``seen_awake`` False: kge's own record of the body).
+    """
+    found: list[pymunk.Body] = []
+    seen = {body}
+    todo = [body]
+    while todo:
+        for other in neighbours(space, todo.pop()):
+            if other in seen:
+                continue
+            seen.add(other)
+            if other.body_type == DYNAMIC and not other.is_sleeping and not seen_awake(other):
+                found.append(other)
+                todo.append(other)
+    return found
+
+
 def wake_neighbours(body: pymunk.Body) -> None:
     """Wake ``body`` and every dynamic body touching or jointed to it.
 

@@ -137,6 +137,7 @@ class Physics:
                 return None
             body.activate()
             self._mark_awake(entity)
+        self._sim.rest.watch(entity)  # Box2D's clock, not Chipmunk's (kge.physics.rest)
         return rec
 
     def _mark_awake(self, entity: int) -> None:
@@ -226,6 +227,7 @@ class Physics:
                     continue
                 rec.body.activate()
                 self._mark_awake(rec.entity)
+            self._sim.rest.watch(rec.entity)
             self._write_velocity(rec.entity, cb, vx, vy, w)
 
     def _push_distinct(
@@ -267,9 +269,10 @@ class Physics:
         cbs = [body_handle(r.body) for r in recs]  # Chipmunk's setters mapped over the bodies
         set_all(_set_velocity, cbs, zip(vx, vy, strict=True))
         set_all(_set_angular_velocity, cbs, w)
-        push = sim.contact_first.push
+        push, watch = sim.contact_first.push, sim.rest.watch
         for rec in recs:
             push(rec.entity, rec.body)
+            watch(rec.entity)
         # the read, with these velocities, is the space as it is: the step's continuous
         # collision and joints take it instead of reading again (Simulation.fresh_read)
         sim.fresh_read = self._rows.patch(v)

@@ -25,6 +25,17 @@ neighbour costs nothing until that neighbour's own time crosses it.
 Sleeping joints are then left alone by the joint bridge (Box2D does not solve a
 sleeping island), and wake with their bodies: a contact from an awake body, a
 write from user code, a joint changed.
+
+Forces and impulses are the other writes: Box2D's ``ApplyForce``,
+``ApplyLinearImpulse`` and the like wake a *sleeping* body (its time at rest
+starts again from zero) and leave an awake body's clock to its velocity, so a
+body pushed every step by a force that does not move it (a top-down car's tyre
+friction, an idle thruster) still sleeps after 0.5 s, and a push with ``wake``
+then wakes it for another 0.5 s. Chipmunk's force and velocity setters restart
+its timer instead, so :meth:`RestClock.watch` hands such a body to this clock
+until it sleeps. A body put to sleep starts from zero when it wakes
+(``PoseTable.rest`` is zeroed when it is put to sleep), whether or not a step saw
+it asleep.
 """
 
 from __future__ import annotations
@@ -48,6 +59,21 @@ class RestClock:
         self._watched = np.empty(0, dtype=bool)  # by slot: a body of a restless joint
         self._any = False  # some slot is watched
         self._counting = False  # the clocks ran at the last tick (else they read 0)
+        #: entities pushed by forces or impulses since they last slept (watched too)
+        self.pushed: set[int] = set()
+        self._pushed_epoch = 0
+
+    def watch(self, entity: int) -> None:
+        """A force or an impulse reached the awake body of ``entity``: its clock decides
+        when it sleeps (Chipmunk's setters restarted Chipmunk's own timer)."""
+        if entity not in self.pushed:
+            self.pushed.add(entity)
+            self._pushed_epoch += 1
+
+    def slept(self, entity: int) -> None:
+        """The body of ``entity`` was put to sleep: a push must watch it again once it
+        wakes (its time at rest, zeroed by the caller, starts again from zero then)."""
+        self.pushed.discard(entity)
 
     def tick(
         self,
@@ -63,16 +89,23 @@ class RestClock:
 
         ``watched()`` gives the entities of bodies held by restless joints; it is
         called again only when ``watched_epoch`` or the table's slots changed (a
-        body that kept an island awake is watched too: bump the epoch).
+        body that kept an island awake is watched too: bump the epoch). The bodies
+        :meth:`watch` was told of are watched as well.
         """
         state = poses.state
-        key = (poses.epoch, watched_epoch)
+        key = (poses.epoch, watched_epoch + self._pushed_epoch)
         if key != self._key:
             mask = np.zeros(len(state), dtype=bool)
             slot = poses.slot
             for e in watched():
                 i = slot.get(e)
                 if i is not None:
+                    mask[i] = True
+            for e in [*self.pushed]:
+                i = slot.get(e)
+                if i is None:
+                    self.pushed.discard(e)  # gone (or no longer moving)
+                else:
                     mask[i] = True
             self._watched, self._key, self._any = mask, key, bool(mask.any())
         if not self._any:

@@ -60,7 +60,9 @@ class PhysicsSettings:
     #: pymunk's SimpleMotor and RotaryLimitJoint; limit overshoot is removed by the
     #: position pass, not by velocity). Holds a load (landing legs) with many
     #: iterations; kge's default, once per substep on the pivot-folded hinge, brakes
-    #: a heavy pendulum better at few iterations. kge.box2d turns it on.
+    #: a heavy pendulum better at few iterations. kge.box2d turns it on. Prismatic
+    #: limits are then solved in pymunk's iterations too (a pymunk SlideJoint along
+    #: the axis), and left b2_linearSlop past their bound by the position pass.
     iterated_hinges: bool = False
     #: iterated hinges: the most speed, rad/s, a limit adds to push an overshooting
     #: hinge back (pymunk's bias). 0 is Box2D's rule: the limit only stops the hinge,

@@ -44,6 +44,7 @@ from kge.physics.bodies import (
     sleep_island,
     take_out,
     wake_neighbours,
+    woken_with,
 )
 from kge.physics.callback_errors import CallbackErrors
 from kge.physics.contact_first import ContactFirst
@@ -684,12 +685,33 @@ class Simulation:
         if rb.awake != rec.awake:  # the user wrote awake
             if rb.awake and body.is_sleeping:
                 body.activate()
+                self._mark_awake(e, rb)
             elif not rb.awake and not body.is_sleeping and rb.allow_sleep:
                 self._put_to_sleep(rec, rb)
         elif not body.is_sleeping and not rb.awake:
             self._mark_awake(e, rb)  # a velocity write woke it
 
     def _mark_awake(self, e: int, rb: RigidBody) -> None:
+        rec = self.bodies[e]
+        was_asleep = not rec.awake
+        self._awake_now(e, rb)
+        body = rec.body
+        if was_asleep and body.space is self.space:
+            # its sleeping island woke with it, moving or not (see bodies.woken_with)
+            for other in woken_with(self.space, body, self._seen_awake):
+                other_rec = self.bodies.get(self.body_entities.get(other, -1))
+                if other_rec is None or other_rec.body is not other:
+                    continue
+                other_rb = self.world.try_get(other_rec.entity, RigidBody)
+                if other_rb is not None:
+                    self._awake_now(other_rec.entity, other_rb)
+
+    def _seen_awake(self, body: pymunk.Body) -> bool:
+        """kge's record of ``body`` says awake (a body kge does not own counts as awake)."""
+        rec = self.bodies.get(self.body_entities.get(body, -1))
+        return rec is None or rec.body is not body or rec.awake
+
+    def _awake_now(self, e: int, rb: RigidBody) -> None:
         raw_set(rb, "awake", True)
         self.bodies[e].awake = True
         i = self.poses.slot.get(e)
@@ -750,6 +772,8 @@ class Simulation:
         if i is not None and not self.poses_stale:
             self.poses.asleep[i] = True
             self.poses.state[i, 3:] = 0.0
+            self.poses.rest[i] = 0.0  # Box2D: a woken body's clock starts from zero
+        self.rest.slept(e)
 
     def _flush_mass(self, e: int) -> None:
         """Apply a pending mass change now (it wakes the body, so before it sleeps)."""
@@ -943,12 +967,13 @@ class Simulation:
         """Read every moving body once and write the ones that changed to their
         components (:meth:`_write_out`); then Box2D's sleep rule for jointed islands."""
         self._write_out(raw)
-        if self.joints.handles:
+        if self.joints.handles or self.rest.pushed:
             self._rest_check()
 
     def _rest_check(self) -> None:
-        """Put to sleep the jointed islands whose bodies all rested for time_to_sleep
-        (kge.physics.rest: the joints' passes restart Chipmunk's own timer)."""
+        """Put to sleep the jointed or pushed islands whose bodies all rested for
+        time_to_sleep (kge.physics.rest: the joints' passes, forces and impulses restart
+        Chipmunk's own timer)."""
         s = self.settings
         if not s.sleep or self.poses_stale:
             return

@@ -10,8 +10,10 @@ from kge.components.joints import PrismaticJoint, PulleyJoint
 from tests.joints.conftest import Sim
 
 
-def test_motor_limit_and_no_drift() -> None:
+@pytest.mark.parametrize("iterated", [False, True], ids=["custom-limit", "iterated-limit"])
+def test_motor_limit_and_no_drift(iterated: bool) -> None:
     sim = Sim(gravity=(0.0, 0.0))
+    sim.iterated_hinges = iterated
     box = sim.add_body((0.0, 0.0), box=(0.5, 0.5))
     j = PrismaticJoint(None, box, anchor=(0.0, 0.0), local_axis_a=(2.0, 0.0), enable_motor=True,
                        motor_speed=1.0, max_motor_force=100.0, enable_limit=True,

@@ -9,52 +9,14 @@ fails, naming them, when they are absent.
 
 from __future__ import annotations
 
-import json
-import os
-import selectors
 import subprocess
 import sys
-import time
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 from .. import xvfb
-from ..xvfb import virtual_display
+from ..xvfb import TIMEOUT, Reports, virtual_display
 
 HERE = Path(__file__).parent
-TIMEOUT = 60.0  #: seconds to wait for any one report (a busy machine is slow, never wrong)
-
-
-
-class Reports:
-    """The app's JSON lines, read as they come."""
-
-    def __init__(self, proc: subprocess.Popen[bytes]) -> None:
-        assert proc.stdout is not None
-        self.proc, self.stream = proc, proc.stdout
-        self.sel = selectors.DefaultSelector()
-        self.sel.register(self.stream, selectors.EVENT_READ)
-        self.buf = b""
-        self.seen: list[dict[str, Any]] = []
-
-    def wait(self, want: Callable[[dict[str, Any]], object], what: str) -> dict[str, Any]:
-        deadline = time.monotonic() + TIMEOUT
-        while True:
-            while b"\n" in self.buf:
-                line, self.buf = self.buf.split(b"\n", 1)
-                got = json.loads(line)
-                self.seen.append(got)
-                if want(got):
-                    return got
-            left = deadline - time.monotonic()
-            if left <= 0 or (self.proc.poll() is not None and not self.sel.select(0)):
-                raise AssertionError(f"the app never reported {what}; it said {self.seen}")
-            if self.sel.select(timeout=left):
-                chunk = os.read(self.stream.fileno(), 4096)
-                if not chunk:
-                    raise AssertionError(f"the app exited before {what}; it said {self.seen}")
-                self.buf += chunk
 
 
 def test_real_window_clicks_typing_enter_and_the_system_clipboard(tmp_path: Path) -> None:
