@@ -167,6 +167,11 @@ BOUNDED = {
     "Physics._sim.ccd._obstacles.": "CCD obstacle rows (a pool with a free list)",
     "Physics._sim.ccd._index": "CCD index, refreshed at its next query",
     "Physics._sim.ccd._untracked": "CCD rows of the last query",
+    # kge's per-shape slots (shape_table.py): freed slots are cleared and reused
+    "Physics._sim.shapes.shapes": "shape slots (a pool with a free list)",
+    "Physics._sim.shapes.filters": "shape slots (a pool with a free list)",
+    "Physics._sim.shapes.oneway": "shape slots (a pool with a free list)",
+    "Physics._sim.shapes._free": "shape slots (a pool with a free list)",
 }
 
 
@@ -229,6 +234,8 @@ class GameChurn:
         self.spawned = 0
         self.overlays = 0
         self.manual: list[tuple[int, int]] = []  # (despawn at frame, entity), sorted
+        #: churned entities still alive, for the teardown: dead ones leave it every frame
+        #: (kept for ever, they were the run's own leak, 1.25 ids a frame)
         self.churned: set[int] = set()
         self.panel = 0
         self.tmap: Any = None
@@ -339,6 +346,8 @@ class GameChurn:
             _, e = self.manual.pop(0)
             if world.exists(e):
                 world.despawn(e)
+        # those despawned here, by their Fuse or by a despawn queued last frame
+        self.churned.difference_update([e for e in self.churned if not world.exists(e)])
 
     def teardown(self, app: App) -> None:
         """Pop the overlays, despawn everything churned, refill the floor."""
@@ -369,6 +378,7 @@ class Sample:
     tween_rows: int
     particles: int
     bodies: int
+    held: int = 0  #: entities the churn itself holds for its teardown (its own table)
 
 
 @dataclass
@@ -456,6 +466,7 @@ def run(
                     tween_rows=tables.get("Tweens.group", 0),
                     particles=sum(v for k, v in tables.items() if k.endswith("pool.data")),
                     bodies=len(probe.sim.space.bodies) if app.world is base else -1,
+                    held=len(churn.churned),
                 )
                 report.samples.append(s)
                 if log is not None:
