@@ -92,16 +92,14 @@ class EffectDrawer(ParticleDrawer):
         world = self.world
         for drawer in (self, self.plain):
             for entity in [e for e in drawer.meshes if e not in particles.states]:
-                drawer.meshes.pop(entity).vertex_list.delete()
+                drawer.drop(entity)
         for entity, st in particles.states.items():
             em = world.try_get(entity, ParticleEmitter)
             if em is None:
                 continue
             rich = world.has(entity, ParticleFlipbook) or world.has(entity, ParticleStretch)
             mine, other = (self, self.plain) if rich else (self.plain, self)
-            dropped = other.meshes.pop(entity, None)
-            if dropped is not None:
-                dropped.vertex_list.delete()
+            other.drop(entity)  # it changed kind: the other drawer's list goes
             mine.upload(entity, em, st)
         self.trails.draw()
 

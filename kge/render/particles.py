@@ -283,7 +283,7 @@ class ParticleDrawer:
         if particles is None:
             return
         for entity in [e for e in self.meshes if e not in particles.states]:
-            _delete(self.meshes.pop(entity).vertex_list)
+            self.drop(entity)
         for entity, st in particles.states.items():
             em = self.world.try_get(entity, ParticleEmitter)
             if em is None:
@@ -334,6 +334,13 @@ class ParticleDrawer:
              n: int) -> None:  # fmt: skip
         """Before the rows are written: a subclass adjusts ``mesh.rows[:n]`` and writes its
         own attributes of the ``n`` live particles."""
+
+    def drop(self, entity: int) -> None:
+        """Free ``entity``'s vertex list, if it has one, and forget it in its domain's
+        :class:`LiveDraw` (a list deleted without that stays in ``LiveDraw.live``)."""
+        mesh = self.meshes.pop(entity, None)
+        if mesh is not None:
+            _delete(mesh.vertex_list)
 
     def close(self) -> None:
         for mesh in self.meshes.values():
