@@ -168,11 +168,6 @@ BOUNDED = {
     "Physics._sim.shapes.": "shape slots (a pool with a free list; a freed slot holds no shape)",
     "Physics._sim.ccd._index": "CCD index, refreshed at its next query",
     "Physics._sim.ccd._untracked": "CCD rows of the last query",
-    # kge's per-shape slots (shape_table.py): freed slots are cleared and reused
-    "Physics._sim.shapes.shapes": "shape slots (a pool with a free list)",
-    "Physics._sim.shapes.filters": "shape slots (a pool with a free list)",
-    "Physics._sim.shapes.oneway": "shape slots (a pool with a free list)",
-    "Physics._sim.shapes._free": "shape slots (a pool with a free list)",
 }
 
 
