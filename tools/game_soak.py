@@ -165,6 +165,7 @@ BOUNDED = {
     # physics pools owned by the physics team: capacity kept for the peak population
     "Physics._sim._speed_cap.": "capacity of the speed-cap scratch arrays",
     "Physics._sim.ccd._obstacles.": "CCD obstacle rows (a pool with a free list)",
+    "Physics._sim.shapes.": "shape slots (a pool with a free list; a freed slot holds no shape)",
     "Physics._sim.ccd._index": "CCD index, refreshed at its next query",
     "Physics._sim.ccd._untracked": "CCD rows of the last query",
 }
