@@ -183,6 +183,13 @@ from kge.components.ui import (
     UINode,
 )
 from kge.input import Gamepad, GamepadEvent, TextEvent
+from kge.touch import (
+    DragGesture,
+    PinchGesture,
+    RotateGesture,
+    TapGesture,
+    TouchPoint,
+)
 from kge.transitions import Crossfade, Fade, Slide, Wipe  # base class: kge.transitions.Transition
 from kge.ui import (
     ButtonClicked,
@@ -518,6 +525,7 @@ __all__ += [
     "DialogButton",
     "DialogClosed",
     "DragCancelled",
+    "DragGesture",
     "DragStarted",
     "Draggable",
     "DropTarget",
@@ -533,9 +541,11 @@ __all__ += [
     "Label",
     "LoadingScreen",
     "Panel",
+    "PinchGesture",
     "ProgressBar",
     "RadioGroup",
     "RichText",
+    "RotateGesture",
     "ScrollList",
     "ScrollView",
     "Slide",
@@ -543,6 +553,7 @@ __all__ += [
     "SpinBox",
     "Style",
     "Tabs",
+    "TapGesture",
     "TextArea",
     "TextEvent",
     "TextInput",
@@ -550,6 +561,7 @@ __all__ += [
     "Theme",
     "Toggle",
     "Tooltip",
+    "TouchPoint",
     "TreeDrop",
     "TreeItem",
     "TreeView",

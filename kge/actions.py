@@ -15,6 +15,7 @@ Bindings are written as short strings, so they save and load as plain data:
 ``"pad:a"``            a gamepad button on any pad; ``"pad1:a"`` on pad 1 only
 ``"pad:lefttrigger"``  a trigger as a button: down past 0.5, up again under 0.4
 ``"pad:leftx"``        a gamepad axis (only in axes); ``"pad:lefty"`` is up-positive
+``"touch:tap"``        a gesture (tap, double_tap, drag, pinch, rotate; :mod:`kge.touch`)
 =====================  =====================================================
 
 >>> from kge.input import Input
@@ -51,6 +52,7 @@ from kge.action_clock import BUFFER_WINDOW, ActionClock, Combo, Hook, check_wind
 from kge.errors import KgeError, ValidationError
 from kge.input import PAD_AXES, PAD_BUTTONS, Input
 from kge.keys import Key, Mouse, key_name
+from kge.touch import GESTURES
 
 BindingLike = int | str
 #: what :meth:`InputMap.declare` takes
@@ -78,7 +80,8 @@ MODIFIERS: dict[str, tuple[int, int]] = {
 
 @dataclass(slots=True, frozen=True)
 class Binding:
-    """One physical input: ``kind`` is "key", "mouse", "pad" (button) or "axis"."""
+    """One physical input: ``kind`` is "key", "mouse", "pad" (button), "axis" or "touch"
+    (a gesture)."""
 
     kind: str
     code: int | str
@@ -92,6 +95,8 @@ class Binding:
         if self.kind == "mouse":
             name = next(n for n, v in _MOUSE_CODES.items() if v == self.code)
             return f"mouse:{chord}{name}"
+        if self.kind == "touch":
+            return f"touch:{self.code}"
         return f"pad{'' if self.pad is None else self.pad}:{self.code}"
 
 
@@ -156,7 +161,13 @@ def parse_binding(value: BindingLike | Binding, *, axis: bool = False) -> Bindin
         allowed = sorted(PAD_AXES if axis else PAD_BUTTONS)
         raise ValidationError(f"binding {value!r}: unknown gamepad {'axis' if axis else 'button'} "
                               f"{name!r}; expected one of {', '.join(allowed)}")  # fmt: skip
-    raise ValidationError(f"binding {value!r}: kind must be key, mouse or pad, got {kind!r}")
+    if kind == "touch":
+        if name not in GESTURES:
+            raise ValidationError(
+                f"binding {value!r}: unknown gesture {name!r}; gestures are {', '.join(GESTURES)}"
+            )
+        return Binding("touch", name)
+    raise ValidationError(f"binding {value!r}: kind must be key, mouse, pad or touch, got {kind!r}")
 
 
 @dataclass(slots=True, frozen=True)
@@ -431,6 +442,9 @@ class InputMap:
             code = int(b.code)
             fns = {"held": inp.mouse_held, "pressed": inp.mouse_pressed}
             return fns.get(which, inp.mouse_released)(code)
+        if b.kind == "touch":
+            touch = {"held": inp.gesture_held, "pressed": inp.gesture_pressed}
+            return touch.get(which, inp.gesture_released)(str(b.code))
         pads = {"held": inp.pad_held, "pressed": inp.pad_pressed, "released": inp.pad_released}
         return pads[which](str(b.code), b.pad)
 

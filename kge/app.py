@@ -626,6 +626,7 @@ class App(Host):
         self._in_frame = True
         try:
             self.input.refresh_world_position()
+            self.input.touch.advance(real_dt)  # taps are timed in real time too
             self.actions.update(real_dt)  # holds, taps, buffers, combos: real time
             top, *below = self._running_worlds()
             self._run_world(top, steps, game_dt, with_input=True)
@@ -649,6 +650,7 @@ class App(Host):
         log.begin_frame()
         if with_input:  # action events and hooks, input hooks and the UI
             self.actions.clock.deliver(world.emit)
+            inp.touch.deliver(world.emit)  # TouchPoint and the gesture events (kge.touch)
             schedule.run(Stage.INPUT, game_dt)
         for _ in range(steps):
             if self._scene_ops:

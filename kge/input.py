@@ -32,6 +32,9 @@ False
 
 Gamepads (see :class:`Gamepad`) are fed the same way: the window connects pyglet's
 controllers, tests call :meth:`Input.connect_gamepad` and drive the returned pad.
+Touch points and gestures (:mod:`kge.touch`) too: :meth:`Input.touch_down`,
+:meth:`Input.touch_move`, :meth:`Input.touch_up`, and the mouse's left button as
+touch 0 when :attr:`Input.emulate_touch_from_mouse` is set.
 """
 
 from __future__ import annotations
@@ -42,7 +45,8 @@ from dataclasses import dataclass, field
 
 from kge.errors import ValidationError
 from kge.keys import Mouse
-from kge.validate import finite, in_range, integer, non_negative, vec2
+from kge.touch import GESTURES, MOUSE_TOUCH_ID, TouchPoint, TouchState
+from kge.validate import boolean, finite, in_range, integer, non_negative, vec2
 
 Vec2 = tuple[float, float]
 
@@ -238,6 +242,18 @@ class Gamepad:
             self.rumble_fn(float(weak), float(strong), float(duration))
 
 
+def _check_gesture(gesture: str) -> str:
+    if gesture not in GESTURES:
+        raise ValidationError(f"unknown gesture {gesture!r}; gestures are {', '.join(GESTURES)}")
+    return gesture
+
+
+def _touch_id(id: object, call: str) -> int:
+    if isinstance(id, bool) or not isinstance(id, int) or id < 0:
+        raise ValidationError(f"Input.{call}: a touch id is an int >= 0, got {id!r}")
+    return id
+
+
 def _check_button(button: str) -> str:
     if button not in PAD_BUTTONS:
         raise ValidationError(
@@ -261,6 +277,7 @@ class Input:
     _keys: _Edges = field(default_factory=_Edges)
     _buttons: _Edges = field(default_factory=_Edges)
     _pads: _Edges = field(default_factory=_Edges)  # codes: (pad index, button)
+    _gestures: _Edges = field(default_factory=_Edges)  # codes: gesture names
     _fixed: bool = False
     _muted: bool = False
     _captured: bool = False
@@ -272,6 +289,13 @@ class Input:
     events: list[AnyEvent] = field(default_factory=list)
     gamepads: dict[int, Gamepad] = field(default_factory=dict)
     screen_to_world: Callable[[Vec2], Vec2] = field(default=lambda p: p, repr=False)
+    #: the mouse's left button is touch 0 too (Godot's "emulate touch from mouse"):
+    #: gestures can be tried on a desktop, where pyglet has no touch events
+    emulate_touch_from_mouse: bool = False
+    touch: TouchState = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        self.touch = TouchState(self._gestures, lambda p: self.screen_to_world(p))
 
     # -- keys --------------------------------------------------------------------------
     def held(self, key: int) -> bool:
@@ -391,6 +415,63 @@ class Input:
             elif held and v < TRIGGER_UP:
                 self.pad_release(index, axis)
 
+    # -- touch -------------------------------------------------------------------------
+    def touches(self) -> list[TouchPoint]:
+        """The fingers down now and those lifted this frame (phase "ended"), by id."""
+        if self._off:
+            return []
+        t = self.touch
+        down = [f.point(f.phase) for f in t.fingers.values()]
+        return sorted(down + t.ended, key=lambda p: p.id)
+
+    def gesture_held(self, gesture: str) -> bool:
+        """Is ``gesture`` (drag, pinch, rotate) going on? (Taps are never held.)"""
+        return _check_gesture(gesture) in self._gestures.down_now(self._off)
+
+    def gesture_pressed(self, gesture: str) -> bool:
+        """Did ``gesture`` begin (a tap: happen) this frame, or this fixed step inside one?"""
+        return _check_gesture(gesture) in self._gestures.edges(self._view)[0]
+
+    def gesture_released(self, gesture: str) -> bool:
+        return _check_gesture(gesture) in self._gestures.edges(self._view)[1]
+
+    def drag_delta(self, world: bool = False) -> Vec2:
+        """How far the dragging fingers' centre moved this frame: pixels, or metres."""
+        if self._off:
+            return (0.0, 0.0)
+        return self.touch.drag_delta_world if world else self.touch.drag_delta
+
+    def pinch_scale(self) -> float:
+        """This frame's pinch factor (1 when none): ``camera.zoom *= inp.pinch_scale()``."""
+        return 1.0 if self._off else self.touch.pinch
+
+    def rotation_delta(self) -> float:
+        """Radians two fingers turned this frame, counter-clockwise (0 when none)."""
+        return 0.0 if self._off else self.touch.rotation
+
+    def touch_down(self, id: int, at: Vec2) -> None:
+        """Finger ``id`` touches screen pixel ``at`` (origin bottom-left)."""
+        self.touch.down(_touch_id(id, "touch_down"), vec2(at, "Input.touch_down", "at"))
+
+    def touch_move(self, id: int, at: Vec2) -> None:
+        self.touch.move(_touch_id(id, "touch_move"), vec2(at, "Input.touch_move", "at"))
+
+    def touch_up(self, id: int, at: Vec2 | None = None) -> None:
+        """Finger ``id`` lifts (at screen pixel ``at``, or where it last was)."""
+        point = None if at is None else vec2(at, "Input.touch_up", "at")
+        self.touch.up(_touch_id(id, "touch_up"), point)
+
+    def _emulate_touch(self, kind: str, button: int) -> None:
+        if not boolean(self.emulate_touch_from_mouse, "Input", "emulate_touch_from_mouse"):
+            return
+        down = MOUSE_TOUCH_ID in self.touch.fingers
+        if kind == "move" and down:
+            self.touch.move(MOUSE_TOUCH_ID, self.mouse_screen)
+        elif button == Mouse.LEFT and kind == "down" and not down:
+            self.touch.down(MOUSE_TOUCH_ID, self.mouse_screen)
+        elif button == Mouse.LEFT and kind == "up" and down:
+            self.touch.up(MOUSE_TOUCH_ID, self.mouse_screen)
+
     # -- feeding (window events or tests) ----------------------------------------------
     def press(self, key: int, modifiers: int = 0) -> None:
         """A key goes down (a repeat while held is not a new press)."""
@@ -434,6 +515,7 @@ class Input:
         self.events.append(
             MouseEvent("move", 0, self.mouse_screen, self.mouse_world, modifiers=self.modifiers)
         )
+        self._emulate_touch("move", 0)
 
     def mouse_down(
         self, button: int = Mouse.LEFT, at: Vec2 | None = None, modifiers: int = 0
@@ -462,6 +544,7 @@ class Input:
         self.events.append(
             MouseEvent(kind, button, self.mouse_screen, self.mouse_world, modifiers=modifiers)
         )
+        self._emulate_touch(kind, button)
 
     def click(self, button: int = Mouse.LEFT, at: Vec2 | None = None, modifiers: int = 0) -> None:
         """Down and up in the same frame: both edges are visible this frame."""
@@ -511,6 +594,10 @@ class Input:
         self.events[:] = [ev for ev in self.events if not isinstance(ev, TextEvent)]
 
     @property
+    def _families(self) -> tuple[_Edges, ...]:
+        return (self._keys, self._buttons, self._pads, self._gestures)
+
+    @property
     def _view(self) -> bool | None:
         """Which edges queries see: fixed step (True), frame (False), none (muted)."""
         return None if self._off else self._fixed
@@ -549,13 +636,13 @@ class Input:
     # -- the App's clock -----------------------------------------------------------------
     def begin_step(self) -> None:
         """A fixed step starts: its queries see the edges since the previous step began."""
-        for edges in (self._keys, self._buttons, self._pads):
+        for edges in self._families:
             edges.begin_step()
         self._fixed = True
 
     def end_step(self) -> None:
         """The fixed step ended: those edges are spent for fixed-step code."""
-        for edges in (self._keys, self._buttons, self._pads):
+        for edges in self._families:
             edges.end_step()
         self._fixed = False
 
@@ -563,16 +650,18 @@ class Input:
         """Forget this frame's edges, events, text and scroll (the App calls it)."""
         self._fixed = False
         self._captured = False
-        for edges in (self._keys, self._buttons, self._pads):
+        for edges in self._families:
             edges.end_frame()
+        self.touch.end_frame()
         self.scroll = (0.0, 0.0)
         self.text = ""
         self.events.clear()
 
     def reset(self) -> None:
         """Release everything (a scene change or a lost window focus)."""
-        for edges in (self._keys, self._buttons, self._pads):
+        for edges in self._families:
             edges.reset()
+        self.touch.reset()
         self._fixed = False
         self._captured = False
         self.scroll = (0.0, 0.0)

@@ -7,6 +7,7 @@ its store, and :mod:`kge.sound` for sounds generated in code.
 
 from kge.assets.errors import AssetDecodeError, AssetError, AssetNotFoundError, DecoderMissingError
 from kge.assets.locate import DirLocation, Found, PackageLocation
+from kge.assets.preload import AssetsLoaded, BackgroundPreload
 from kge.assets.store import (
     Assets,
     FontAsset,
@@ -22,6 +23,8 @@ __all__ = [
     "AssetError",
     "AssetNotFoundError",
     "Assets",
+    "AssetsLoaded",
+    "BackgroundPreload",
     "DecoderMissingError",
     "DirLocation",
     "FontAsset",

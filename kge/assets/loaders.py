@@ -52,7 +52,13 @@ def load_image(found: Found) -> Any:
     this call (never at a later frame), and every image arrives as 8-bit RGBA
     (a 1 x 1 GIF without a colour table included).
     """
-    image_mod = pyglet_module("image")
+    pyglet_module("image")  # headless mode is chosen before Pillow runs
+    return image_from_pixels(*decode_image(found))
+
+
+def decode_image(found: Found) -> tuple[int, int, bytes]:
+    """Read and decode an image with Pillow: (width, height, RGBA bytes bottom row first).
+    Touches no pyglet, so a worker thread may call it."""
     try:
         data = found.read_bytes()
     except OSError as exc:
@@ -80,7 +86,13 @@ def load_image(found: Found) -> Any:
         raise AssetDecodeError(
             found.name, found.where, f"not a readable image ({type(exc).__name__}: {exc})"
         ) from exc
-    return image_mod.ImageData(w, h, "RGBA", pixels)
+    return w, h, pixels
+
+
+def image_from_pixels(w: int, h: int, pixels: bytes) -> Any:
+    """Decoded RGBA pixels as a ``pyglet.image.ImageData`` (the GL texture is made on the
+    main thread at first draw)."""
+    return pyglet_module("image").ImageData(w, h, "RGBA", pixels)
 
 
 def load_sound(found: Found, streaming: bool) -> Any:
@@ -100,6 +112,13 @@ def load_sound(found: Found, streaming: bool) -> Any:
     if streaming:
         return streaming_source(media, data, found.name, found.where)
     return static_source(media, data, found.name, found.where)
+
+
+def sound_from_pcm(pcm: Any, rate: int) -> Any:
+    """Decoded 16-bit frames (``kge.assets.sounds.decode``) as a pyglet ``StaticSource``."""
+    from kge.assets.sounds import static_from_pcm
+
+    return static_from_pcm(pyglet_module("media"), pcm, rate)
 
 
 def load_generated(sound: SoundData) -> Any:

@@ -101,7 +101,12 @@ def _stereo_at_most(pcm: np.ndarray) -> np.ndarray:
 
 def static_source(media: Any, data: bytes, name: str, where: str) -> Any:
     """A pyglet StaticSource of the decoded sound (``media``: the pyglet.media module)."""
-    pcm, rate = decode(data, name, where)
+    return static_from_pcm(media, *decode(data, name, where))
+
+
+def static_from_pcm(media: Any, pcm: np.ndarray, rate: int) -> Any:
+    """A pyglet StaticSource over frames :func:`decode` returned (a worker thread may
+    decode; this part runs where pyglet is used)."""
     fmt = media.codecs.AudioFormat(channels=pcm.shape[1], sample_size=16, sample_rate=rate)
     return _static(media, np.ascontiguousarray(pcm).tobytes(), fmt)
 

@@ -42,16 +42,16 @@ kge.assets.errors.AssetNotFoundError: asset 'sfx/miss.wav' not found. Searched, 
 
 from __future__ import annotations
 
+import builtins
 import os
 import struct
-import time
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, Literal, cast, overload
 
 from kge.assets import headers, loaders
-from kge.assets.errors import AssetDecodeError, AssetError, AssetNotFoundError
+from kge.assets.errors import AssetDecodeError, AssetNotFoundError
 from kge.assets.fontinfo import family_name
 from kge.assets.locate import (
     DirLocation,
@@ -62,6 +62,7 @@ from kge.assets.locate import (
     normalize_name,
     split_package_name,
 )
+from kge.assets.preload import BackgroundPreload, Decoded, Preload
 from kge.errors import ValidationError
 from kge.sound import SoundData, SoundRef, tone  # noqa: F401  (tone: doctest)
 
@@ -270,21 +271,40 @@ class Assets:
     def font(self, name: str | os.PathLike[str]) -> FontAsset:
         """Register a font file with pyglet (once) and return its family name."""
         found = self.resolve(name)
-        key = ("font", found.where)
-        if key not in self._cache:
+        if ("font", found.where) not in self._cache:
             try:
                 data = found.read_bytes()
             except OSError as exc:
                 raise AssetDecodeError(found.name, found.where, f"unreadable: {exc}") from exc
-            family = family_name(data)
-            if family is None:
-                raise AssetDecodeError(
-                    found.name, found.where, "not a TrueType/OpenType font (no name table)"
-                )
-            loaders.register_font(found)
-            self._cache[key] = FontAsset(family, found.where)
-        font: FontAsset = self._cache[key]
+            self._register_font(found, data)
+        font: FontAsset = self._cache[("font", found.where)]
         return font
+
+    def _register_font(self, found: Found, data: builtins.bytes) -> None:
+        family = family_name(data)
+        if family is None:
+            raise AssetDecodeError(
+                found.name, found.where, "not a TrueType/OpenType font (no name table)"
+            )
+        loaders.register_font(found)
+        self._cache[("font", found.where)] = FontAsset(family, found.where)
+
+    def adopt(self, decoded: Decoded) -> Any:
+        """Make an asset decoded off the main thread (:func:`decode`) ready to use and
+        cache it as :meth:`load` would; its object (image, sound, font or bytes). Call
+        it on the main thread: it builds pyglet objects."""
+        found, kind, value = decoded.found, decoded.kind, decoded.value
+        key = (kind, found.where)
+        if kind == "bytes":
+            return value
+        if key not in self._cache:
+            if kind == "image":
+                self._cache[key] = loaders.image_from_pixels(*value)
+            elif kind == "sound":
+                self._cache[key] = loaders.sound_from_pcm(*value)
+            else:
+                self._register_font(found, value)
+        return self._cache[key]
 
     def load(self, name: str | os.PathLike[str]) -> Any:
         """Load ``name`` by its suffix: image, sound (static), font or raw bytes."""
@@ -315,78 +335,29 @@ class Assets:
             del self._cache[k]
         return bool(stale)
 
-    def preload(self, names: Iterable[str | os.PathLike[str]]) -> Preload:
-        """Queue ``names`` for loading a few at a time (see :class:`Preload`)."""
+    @overload
+    def preload(
+        self, names: Iterable[str | os.PathLike[str]], *, background: Literal[True]
+    ) -> BackgroundPreload: ...
+
+    @overload
+    def preload(
+        self, names: Iterable[str | os.PathLike[str]], *, background: bool = False
+    ) -> Preload: ...
+
+    def preload(
+        self, names: Iterable[str | os.PathLike[str]], *, background: bool = False
+    ) -> Preload:
+        """Queue ``names`` for loading a few at a time (see :class:`Preload`); with
+        ``background=True``, decoding runs on worker threads
+        (:class:`kge.assets.preload.BackgroundPreload`)."""
+        if background:
+            return BackgroundPreload(self, names)
         return Preload(self, names)
 
     def __repr__(self) -> str:
         where = ", ".join(loc.describe("") for loc in self._locations)
         return f"Assets([{where}])"
-
-
-class Preload:
-    """Loads a list of assets in small slices so a loading screen can draw between them.
-
-    ``step()`` loads until its time budget is spent; ``loaded`` and ``queued``
-    (and ``progress`` in 0..1) drive a progress bar. Failures do not stop the
-    rest: they are collected in ``failed``, and :meth:`finish` raises one
-    :class:`AssetError` listing them all.
-
-    >>> import tempfile, pathlib
-    >>> root = pathlib.Path(tempfile.mkdtemp())
-    >>> _ = (root / "level.txt").write_bytes(b"1 2 3")
-    >>> job = Assets(root, anchor=root).preload(["level.txt", "missing.txt"])
-    >>> job.step(max_items=1), job.loaded, job.queued, job.done
-    (1, 1, 2, False)
-    >>> job.step(), job.progress, sorted(job.failed)
-    (1, 1.0, ['missing.txt'])
-    """
-
-    def __init__(self, store: Assets, names: Iterable[str | os.PathLike[str]]) -> None:
-        self.store = store
-        self._pending = [normalize_name(n) for n in names]
-        self._pending.reverse()  # pop() from the end keeps the given order
-        self.queued = len(self._pending)
-        self.loaded = 0
-        self.failed: dict[str, AssetError] = {}
-
-    @property
-    def done(self) -> bool:
-        return not self._pending
-
-    @property
-    def progress(self) -> float:
-        """Fraction of the queue processed (loaded or failed), 1.0 when empty."""
-        if self.queued == 0:
-            return 1.0
-        return (self.loaded + len(self.failed)) / self.queued
-
-    def step(self, budget: float = 1.0 / 120.0, max_items: int | None = None) -> int:
-        """Load queued assets for about ``budget`` seconds (at least one); return the count."""
-        start = time.perf_counter()
-        count = 0
-        while self._pending:
-            if max_items is not None and count >= max_items:
-                break
-            if count and time.perf_counter() - start >= budget:
-                break
-            name = self._pending.pop()
-            try:
-                self.store.load(name)
-            except AssetError as exc:
-                self.failed[name] = exc
-            else:
-                self.loaded += 1
-            count += 1
-        return count
-
-    def finish(self) -> None:
-        """Load everything left; raise one error naming every asset that failed."""
-        while self._pending:
-            self.step(budget=float("inf"))
-        if self.failed:
-            details = "\n".join(f"* {exc}" for exc in self.failed.values())
-            raise AssetError(f"{len(self.failed)} of {self.queued} assets failed:\n{details}")
 
 
 _default: Assets | None = None

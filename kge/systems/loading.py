@@ -8,9 +8,12 @@
 The screen is an ordinary scene with a UI panel (title, :class:`~kge.components.ui.
 ProgressBar`, percent label). Its system loads through :meth:`kge.assets.Assets.preload`
 for ``budget`` seconds per frame (or ``items_per_frame`` assets, deterministic in
-tests), and when the list is done replaces itself with ``then`` (through the
-transition, if one is given). Assets that failed to load raise one
-:class:`~kge.assets.errors.AssetError` naming them all, at the frame that finished.
+tests), and when the list is done emits :class:`~kge.assets.preload.AssetsLoaded` into
+its world and replaces itself with ``then`` (through the transition, if one is given).
+With ``background=True`` worker threads decode the files (Pillow, soundfile, file reads)
+while the screen keeps drawing, and each frame only finishes the decoded ones
+(:class:`~kge.assets.preload.BackgroundPreload`). Assets that failed to load raise
+one :class:`~kge.assets.errors.AssetError` naming them all, at the frame that finished.
 """
 
 from __future__ import annotations
@@ -20,12 +23,14 @@ import os
 from collections.abc import Iterable
 from typing import Any
 
-from kge.assets.store import Assets, Preload, assets_for
+from kge.assets.preload import Preload
+from kge.assets.store import Assets, assets_for
 from kge.components.ui import Label, Panel, ProgressBar, UINode
 from kge.host import Host
 from kge.scene import Scene, SceneLike
 from kge.schedule import Stage, System
 from kge.transitions import Transition
+from kge.validate import boolean
 from kge.world import World
 
 
@@ -42,6 +47,7 @@ class LoadingScreen(Scene):
         budget: float = 1.0 / 120.0,
         items_per_frame: int | None = None,
         title: str = "Loading",
+        background: bool = False,
         **then_kwargs: Any,
     ) -> None:
         self.names = list(assets)
@@ -51,13 +57,14 @@ class LoadingScreen(Scene):
         self.budget = float(budget)
         self.items_per_frame = items_per_frame
         self.title = title
+        self.background = boolean(background, "LoadingScreen", "background")
         self.then_kwargs = then_kwargs
         self.preload: Preload | None = None
         self.name = "loading"
 
     def setup(self, world: World, *args: Any, **kwargs: Any) -> None:
         store = self.store or assets_for(world)
-        self.preload = store.preload(self.names)
+        self.preload = store.preload(self.names, background=self.background)
         panel = world.spawn(
             UINode(width="40%", layout="column", padding=16, spacing=10, align="stretch"), Panel()
         )
@@ -86,6 +93,7 @@ class _Loader(System):
         if not job.done:
             return
         self.finished = True
+        self.world.emit(job.event())
         job.finish()  # raises if any asset failed
         host = self.world.try_resource(Host)
         if host is not None:
